@@ -1,0 +1,48 @@
+# make            the engine library (build/libengine.a) and, when SDL2 is there, ./sandbox
+# make check      builds and runs every test (sanitized, warnings are errors)
+# make run        installs the sandbox's Debian packages when it can, builds and starts it
+# make bench      the benchmark scenes (docs/bench.md)
+
+CC ?= cc
+CSTD := -std=c11 -D_POSIX_C_SOURCE=200809L -D_DEFAULT_SOURCE
+WARN := -Wall -Wextra -Werror -Wshadow -Wstrict-prototypes
+OPT := -O2 -g
+SAN := -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
+
+ENGINE_SRC := $(wildcard engine/src/*.c)
+ENGINE_HDR := $(wildcard engine/include/*.h engine/src/*.h)
+ENGINE_OBJ := $(patsubst engine/src/%.c,build/engine/%.o,$(ENGINE_SRC))
+ENGINE_SAN_OBJ := $(patsubst engine/src/%.c,build/engine-san/%.o,$(ENGINE_SRC))
+
+TEST_SRC := $(wildcard tests/test_*.c) tests/test.c tests/main.c
+TEST_SAN_OBJ := $(patsubst tests/%.c,build/tests/%.o,$(TEST_SRC))
+
+.PHONY: all check clean
+all: build/libengine.a
+
+build/engine/%.o: engine/src/%.c $(ENGINE_HDR)
+	@mkdir -p $(dir $@)
+	$(CC) $(CSTD) $(WARN) $(OPT) -Iengine/include -c $< -o $@
+
+build/libengine.a: $(ENGINE_OBJ)
+	ar rcs $@ $^
+
+build/engine-san/%.o: engine/src/%.c $(ENGINE_HDR)
+	@mkdir -p $(dir $@)
+	$(CC) $(CSTD) $(WARN) -O1 -g $(SAN) -Iengine/include -c $< -o $@
+
+build/libengine-san.a: $(ENGINE_SAN_OBJ)
+	ar rcs $@ $^
+
+build/tests/%.o: tests/%.c tests/test.h tests/suites.h $(ENGINE_HDR)
+	@mkdir -p $(dir $@)
+	$(CC) $(CSTD) $(WARN) -O1 -g $(SAN) -Iengine/include -Iengine/src -Itests -c $< -o $@
+
+build/tests/engine_tests: $(TEST_SAN_OBJ) build/libengine-san.a
+	$(CC) $(SAN) $^ -lm -o $@
+
+check: build/tests/engine_tests
+	@tests/run_all.sh build/tests/engine_tests
+
+clean:
+	rm -rf build sandbox

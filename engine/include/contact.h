@@ -1,0 +1,43 @@
+#ifndef CONTACT_H
+#define CONTACT_H
+
+/*
+ * One entry of a scene's per-step record: two bodies in contact, the
+ * collision axis and what the engine did about it. The sandbox draws these;
+ * tests read them. Entries are owned by the scene (see scene_get_contact).
+ */
+
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+#include "vector.h"
+
+typedef struct body body_t;
+
+/* Where the entry came from. */
+typedef enum {
+    CONTACT_WORLD = 0, /* the world contact pipeline (scene_set_contacts_enabled) */
+    CONTACT_SEED,      /* a seed collision force creator (create_collision) */
+} contact_kind_t;
+
+typedef struct {
+    contact_kind_t kind;
+    body_t *body1;
+    body_t *body2;
+    /* Unit collision axis pointing from body1 toward body2. */
+    vector_t axis;
+    /* Contact points (world, metres): 0 to 2. A seed collision has 1 or 2. */
+    size_t point_count;
+    vector_t points[2];
+    /* Signed distance of each point along axis (m): negative when the bodies
+     * overlap, positive for a speculative contact not yet touching. */
+    double separation[2];
+    /* Impulse magnitudes (N s) applied at each point this step: along the
+     * axis (pushing body2 away from body1, >= 0 for world contacts) and along
+     * the tangent perp(axis) = (-axis.y, axis.x), on body2. For a seed
+     * collision the impulse of its handler is in normal_impulse[0]. */
+    double normal_impulse[2];
+    double tangent_impulse[2];
+} contact_t;
+
+#endif // #ifndef CONTACT_H

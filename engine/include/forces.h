@@ -1,0 +1,60 @@
+#ifndef FORCES_H
+#define FORCES_H
+
+/*
+ * Force creators for the common forces and collisions. Each create_* function
+ * registers a force creator with the scene that depends on the bodies it
+ * names, so it is dropped when one of them is removed.
+ */
+
+#include "body.h"
+#include "scene.h"
+#include "vector.h"
+
+/* Newtonian gravity between the centroids of two bodies: each is pulled
+ * toward the other with G m1 m2 / r^2 (N). G > 0 in N m^2 / kg^2. The force
+ * is left out while the centroids are closer than a small distance
+ * (1e-9 m) to avoid dividing by zero. */
+void create_newtonian_gravity(scene_t *scene, double G, body_t *body1, body_t *body2);
+
+/* A Hooke spring of constant k (N/m, >= 0) and rest length 0 between the two
+ * centroids: each body is pulled toward the other with k |x2 - x1|. */
+void create_spring(scene_t *scene, double k, body_t *body1, body_t *body2);
+
+/* Linear drag -gamma v (gamma in kg/s, >= 0) on body's centroid. */
+void create_drag(scene_t *scene, double gamma, body_t *body);
+
+/* Called when two bodies start colliding: the bodies in the order they were
+ * registered, the collision axis (unit, from body1 toward body2), the aux the
+ * collision was created with, and its force constant. */
+typedef void (*collision_handler_t)(body_t *body1, body_t *body2, vector_t axis, void *aux,
+                                    double force_const);
+
+/*
+ * Registers a collision between two bodies: at every tick, if they overlap
+ * (find_collision) and did not overlap at the previous tick, handler is
+ * called once. It is not called again until they have separated. aux stays
+ * owned by the caller (the scene never frees it).
+ */
+void create_collision(scene_t *scene, body_t *body1, body_t *body2,
+                      collision_handler_t handler, void *aux, double force_const);
+
+/* Both bodies are removed when they collide. */
+void create_destructive_collision(scene_t *scene, body_t *body1, body_t *body2);
+
+/*
+ * The seed's collision response: an impulse along axis on body1 of
+ * reduced_mass * (1 + elasticity) * (u_b - u_a), where u is each body's
+ * velocity component along axis and the reduced mass is m_a m_b / (m_a + m_b)
+ * (the other body's mass when one is INFINITY); body2 gets the opposite
+ * impulse. The elasticity is force_const. aux is unused.
+ */
+void physics_collision_handler(body_t *body1, body_t *body2, vector_t axis, void *aux,
+                               double force_const);
+
+/* A collision with physics_collision_handler: elasticity 0 sticks (common
+ * velocity along the axis), 1 is elastic, above 1 adds energy. elasticity
+ * >= 0. */
+void create_physics_collision(scene_t *scene, body_t *body1, body_t *body2, double elasticity);
+
+#endif // #ifndef FORCES_H

@@ -1,0 +1,133 @@
+#ifndef SCENE_H
+#define SCENE_H
+
+/*
+ * A scene: the bodies, the force creators that act on them, and optionally a
+ * world contact pipeline (every body collides with every other, with friction,
+ * resting contact and stacking).
+ *
+ * One scene_tick runs these stages in order, each skipped when the scene has
+ * nothing for it (docs/design.md has the picture):
+ *   1. force creators, in the order they were added;
+ *   2. world contacts, when enabled: broadphase, narrowphase, solver;
+ *   3. integrate every body (the scene's integrator);
+ *   4. reap the bodies marked removed and their force creators (below);
+ *   5. the step's record (contacts, collisions) is published for reading.
+ *
+ * Removal contract: body_remove (or scene_remove_body) only marks a body. The
+ * body stays in the scene, counted by scene_bodies and returned by
+ * scene_get_body, until the end of the next scene_tick, which frees it (and
+ * its info), keeps the order of the other bodies, and in the same tick drops
+ * every force creator whose bodies list holds a removed body, freeing its aux
+ * with its freer. A dropped force creator is never called again.
+ *
+ * Ownership: the scene owns its bodies (scene_add_body hands one over) and the
+ * aux of each force creator that was given a freer.
+ */
+
+#include <stdbool.h>
+#include <stddef.h>
+#include "body.h"
+#include "contact.h"
+#include "list.h"
+#include "vector.h"
+
+typedef struct scene scene_t;
+
+/* A force creator: called once per tick (more for multi-stage integrators)
+ * with its aux; it adds forces and impulses to bodies. */
+typedef void (*force_creator_t)(void *aux);
+
+/* A new empty scene: no gravity, world contacts off, seed integrator. */
+scene_t *scene_init(void);
+
+/* Frees the scene, its bodies, and the aux of every force creator that has a
+ * freer. */
+void scene_free(scene_t *scene);
+
+/* The number of bodies, including those marked removed but not yet reaped. */
+size_t scene_bodies(scene_t *scene);
+
+/* The body at index (0 <= index < scene_bodies), in the order added. */
+body_t *scene_get_body(scene_t *scene, size_t index);
+
+/* Adds a body; the scene now owns it. A body belongs to one scene only. */
+void scene_add_body(scene_t *scene, body_t *body);
+
+/* Deprecated: use body_remove. Marks the body at index for removal. */
+void scene_remove_body(scene_t *scene, size_t index);
+
+/* Deprecated: use scene_add_bodies_force_creator. A force creator that
+ * depends on no body (it is never dropped by removal). */
+void scene_add_force_creator(scene_t *scene, force_creator_t forcer, void *aux,
+                             free_func_t freer);
+
+/*
+ * Adds a force creator that depends on `bodies` (the scene takes the list; the
+ * list never frees the bodies in it, whatever freer it was made with). When
+ * any of them is removed, the force creator is dropped and freer(aux) is
+ * called (freer may be NULL).
+ */
+void scene_add_bodies_force_creator(scene_t *scene, force_creator_t forcer, void *aux,
+                                    list_t *bodies, free_func_t freer);
+
+/* Advances the scene by dt seconds (finite, > 0): the stages listed above. */
+void scene_tick(scene_t *scene, double dt);
+
+/* Additions beyond the seed API. */
+
+/* Uniform gravitational acceleration (m/s^2) for every body of finite mass,
+ * applied by the integrator; default (0, 0). Cheaper than a force creator per
+ * body and known exactly to the contact solver. */
+void scene_set_gravity(scene_t *scene, vector_t gravity);
+vector_t scene_get_gravity(scene_t *scene);
+
+/* How scene_tick advances bodies. SEED is body_tick's scheme (velocity by
+ * force and impulse, position by the mean of old and new velocity); it is
+ * exact for constant forces and is the default. */
+typedef enum {
+    INTEGRATOR_SEED = 0,
+    INTEGRATOR_EXPLICIT_EULER,
+    INTEGRATOR_SYMPLECTIC_EULER,
+} integrator_t;
+
+void scene_set_integrator(scene_t *scene, integrator_t integrator);
+integrator_t scene_get_integrator(scene_t *scene);
+
+/*
+ * World contacts: when enabled (default off), every pair of bodies that the
+ * collision filters allow (body_set_collision_filter) and of which at least
+ * one has finite mass collides: rotation, friction (Coulomb, per body, mixed
+ * by geometric mean), restitution (per body elasticity, mixed by max),
+ * resting contact and stacking. Seed collision force creators keep working
+ * alongside; give a pair handled by one of them filters that keep it out of
+ * world contacts, or it is resolved twice.
+ */
+void scene_set_contacts_enabled(scene_t *scene, bool enabled);
+bool scene_get_contacts_enabled(scene_t *scene);
+
+/* Contact solver iterations per step: velocity (default 8) and position
+ * (default 3); each >= 1. More iterations: stiffer stacks, slower steps. */
+void scene_set_solver_iterations(scene_t *scene, size_t velocity_iterations,
+                                 size_t position_iterations);
+
+/*
+ * The step's record: every contact touching or about to touch at the last
+ * scene_tick (world contacts with their impulses) and every seed collision
+ * whose handler ran in it. Read-only; valid until the next scene_tick or
+ * until the scene is freed.
+ */
+size_t scene_contact_count(scene_t *scene);
+const contact_t *scene_get_contact(scene_t *scene, size_t index);
+
+/* Counters of the last scene_tick, for tests and the sandbox's HUD. */
+typedef struct {
+    size_t broadphase_pairs;   /* pairs whose bounding boxes overlapped */
+    size_t contacts;           /* manifolds with at least one point */
+    size_t contact_points;     /* points over all manifolds */
+    size_t removed_bodies;     /* bodies reaped at the end of the tick */
+} scene_stats_t;
+
+scene_stats_t scene_get_stats(scene_t *scene);
+
+#endif // #ifndef SCENE_H

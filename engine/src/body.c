@@ -1,0 +1,310 @@
+#include "body.h"
+#include <math.h>
+#include "body_private.h"
+#include "check.h"
+#include "integrator.h"
+#include "memory.h"
+#include "polygon_array.h"
+
+static const double DEFAULT_FRICTION = 0.6;
+
+static void check_mass(double mass) {
+    REQUIRE(!isnan(mass), "mass is NaN");
+    REQUIRE(mass > 0.0, "mass must be > 0 or INFINITY (got %g)", mass);
+}
+
+/* Takes the shape list's vertices into an array, counter-clockwise. */
+static vector_t *take_vertices(list_t *shape, size_t *count) {
+    const char *problem = polygon_check(shape);
+    REQUIRE(problem == NULL, "bad shape: %s", problem);
+    *count = list_size(shape);
+    vector_t *vertices = memory_alloc(*count * sizeof(vector_t));
+    for (size_t i = 0; i < *count; i++) vertices[i] = *(vector_t *)list_get(shape, i);
+    if (polygon_array_signed_area(vertices, *count) < 0.0) {
+        for (size_t i = 0; i < *count / 2; i++) {
+            vector_t swap = vertices[i];
+            vertices[i] = vertices[*count - 1 - i];
+            vertices[*count - 1 - i] = swap;
+        }
+    }
+    list_free(shape);
+    return vertices;
+}
+
+body_t *body_init_with_info(list_t *shape, double mass, rgb_color_t color, void *info,
+                            free_func_t info_freer) {
+    REQUIRE_NOT_NULL(shape);
+    check_mass(mass);
+    body_t *body = memory_calloc(1, sizeof(body_t));
+    body->local_vertices = take_vertices(shape, &body->count);
+    size_t n = body->count;
+    body->local_normals = memory_alloc(n * sizeof(vector_t));
+    body->world_vertices = memory_alloc(n * sizeof(vector_t));
+    body->world_normals = memory_alloc(n * sizeof(vector_t));
+
+    body->centroid = polygon_array_centroid(body->local_vertices, n);
+    for (size_t i = 0; i < n; i++) {
+        body->local_vertices[i] = vec_subtract(body->local_vertices[i], body->centroid);
+        body->radius = fmax(body->radius, vec_get_length(body->local_vertices[i]));
+    }
+    for (size_t i = 0; i < n; i++) {
+        vector_t edge = vec_subtract(body->local_vertices[(i + 1) % n], body->local_vertices[i]);
+        body->local_normals[i] = vec_normalize((vector_t){edge.y, -edge.x});
+    }
+    body->mass = mass;
+    body->inverse_mass = isinf(mass) ? 0.0 : 1.0 / mass;
+    body->inertia = isinf(mass) ? INFINITY : polygon_array_moment(body->local_vertices, n, mass);
+    body->inverse_inertia = isinf(mass) ? 0.0 : 1.0 / body->inertia;
+    body->friction = DEFAULT_FRICTION;
+    body->category = 1;
+    body->mask = UINT32_MAX;
+    body->color = color;
+    body->info = info;
+    body->info_freer = info_freer;
+    return body;
+}
+
+body_t *body_init(list_t *shape, double mass, rgb_color_t color) {
+    return body_init_with_info(shape, mass, color, NULL, NULL);
+}
+
+void body_free(body_t *body) {
+    REQUIRE_NOT_NULL(body);
+    if (body->info_freer != NULL) body->info_freer(body->info);
+    memory_free(body->local_vertices);
+    memory_free(body->local_normals);
+    memory_free(body->world_vertices);
+    memory_free(body->world_normals);
+    memory_free(body);
+}
+
+void body_update_world(body_t *body) {
+    if (body->world_valid) return;
+    double c = cos(body->angle), s = sin(body->angle);
+    aabb_t bounds = {{INFINITY, INFINITY}, {-INFINITY, -INFINITY}};
+    for (size_t i = 0; i < body->count; i++) {
+        vector_t p = vec_add(body->centroid, vec_rotate_cs(body->local_vertices[i], c, s));
+        body->world_vertices[i] = p;
+        body->world_normals[i] = vec_rotate_cs(body->local_normals[i], c, s);
+        bounds.min.x = fmin(bounds.min.x, p.x);
+        bounds.min.y = fmin(bounds.min.y, p.y);
+        bounds.max.x = fmax(bounds.max.x, p.x);
+        bounds.max.y = fmax(bounds.max.y, p.y);
+    }
+    body->bounds = bounds;
+    body->world_valid = true;
+}
+
+list_t *body_get_shape(body_t *body) {
+    REQUIRE_NOT_NULL(body);
+    body_update_world(body);
+    list_t *shape = list_init(body->count, memory_free);
+    for (size_t i = 0; i < body->count; i++) {
+        vector_t *vertex = memory_alloc(sizeof(vector_t));
+        *vertex = body->world_vertices[i];
+        list_add(shape, vertex);
+    }
+    return shape;
+}
+
+polygon_t body_get_polygon(body_t *body) {
+    REQUIRE_NOT_NULL(body);
+    body_update_world(body);
+    return (polygon_t){body->count, body->world_vertices, body->world_normals};
+}
+
+aabb_t body_get_bounds(body_t *body) {
+    REQUIRE_NOT_NULL(body);
+    body_update_world(body);
+    return body->bounds;
+}
+
+vector_t body_get_centroid(body_t *body) {
+    REQUIRE_NOT_NULL(body);
+    return body->centroid;
+}
+
+vector_t body_get_velocity(body_t *body) {
+    REQUIRE_NOT_NULL(body);
+    return body->velocity;
+}
+
+double body_get_mass(body_t *body) {
+    REQUIRE_NOT_NULL(body);
+    return body->mass;
+}
+
+rgb_color_t body_get_color(body_t *body) {
+    REQUIRE_NOT_NULL(body);
+    return body->color;
+}
+
+double body_get_rotation(body_t *body) {
+    REQUIRE_NOT_NULL(body);
+    return body->angle;
+}
+
+void *body_get_info(body_t *body) {
+    REQUIRE_NOT_NULL(body);
+    return body->info;
+}
+
+void body_set_centroid(body_t *body, vector_t x) {
+    REQUIRE_NOT_NULL(body);
+    REQUIRE_FINITE_VECTOR(x);
+    body->centroid = x;
+    body->world_valid = false;
+}
+
+void body_set_velocity(body_t *body, vector_t v) {
+    REQUIRE_NOT_NULL(body);
+    REQUIRE_FINITE_VECTOR(v);
+    body->velocity = v;
+}
+
+void body_set_rotation(body_t *body, double angle) {
+    REQUIRE_NOT_NULL(body);
+    REQUIRE_FINITE(angle);
+    body->angle = angle;
+    body->world_valid = false;
+}
+
+void body_set_color(body_t *body, rgb_color_t color) {
+    REQUIRE_NOT_NULL(body);
+    body->color = color;
+}
+
+void body_add_force(body_t *body, vector_t force) {
+    REQUIRE_NOT_NULL(body);
+    REQUIRE_FINITE_VECTOR(force);
+    body->force = vec_add(body->force, force);
+}
+
+void body_add_impulse(body_t *body, vector_t impulse) {
+    REQUIRE_NOT_NULL(body);
+    REQUIRE_FINITE_VECTOR(impulse);
+    body->impulse = vec_add(body->impulse, impulse);
+}
+
+void body_add_torque(body_t *body, double torque) {
+    REQUIRE_NOT_NULL(body);
+    REQUIRE_FINITE(torque);
+    body->torque += torque;
+}
+
+void body_add_force_at(body_t *body, vector_t force, vector_t point) {
+    REQUIRE_FINITE_VECTOR(point);
+    body_add_force(body, force);
+    body->torque += vec_cross(vec_subtract(point, body->centroid), force);
+}
+
+void body_add_impulse_at(body_t *body, vector_t impulse, vector_t point) {
+    REQUIRE_FINITE_VECTOR(point);
+    body_add_impulse(body, impulse);
+    body->angular_impulse += vec_cross(vec_subtract(point, body->centroid), impulse);
+}
+
+vector_t body_get_point_velocity(body_t *body, vector_t point) {
+    REQUIRE_NOT_NULL(body);
+    return vec_add(body->velocity,
+                   vec_cross_scalar(body->angular_velocity, vec_subtract(point, body->centroid)));
+}
+
+void body_tick(body_t *body, double dt) {
+    REQUIRE_NOT_NULL(body);
+    REQUIRE(isfinite(dt) && dt > 0.0, "dt must be finite and > 0 (got %g)", dt);
+    integrator_advance(body, dt, VEC_ZERO, INTEGRATOR_SEED);
+}
+
+void body_reset(body_t *body) {
+    REQUIRE_NOT_NULL(body);
+    body->force = VEC_ZERO;
+    body->torque = 0.0;
+    body->impulse = VEC_ZERO;
+    body->angular_impulse = 0.0;
+}
+
+void body_remove(body_t *body) {
+    REQUIRE_NOT_NULL(body);
+    body->removed = true;
+}
+
+bool body_is_removed(body_t *body) {
+    REQUIRE_NOT_NULL(body);
+    return body->removed;
+}
+
+double body_get_angular_velocity(body_t *body) {
+    REQUIRE_NOT_NULL(body);
+    return body->angular_velocity;
+}
+
+void body_set_angular_velocity(body_t *body, double omega) {
+    REQUIRE_NOT_NULL(body);
+    REQUIRE_FINITE(omega);
+    body->angular_velocity = omega;
+}
+
+double body_get_inertia(body_t *body) {
+    REQUIRE_NOT_NULL(body);
+    return body->inertia;
+}
+
+void body_set_inertia(body_t *body, double inertia) {
+    REQUIRE_NOT_NULL(body);
+    REQUIRE(inertia > 0.0, "inertia must be > 0 or INFINITY (got %g)", inertia);
+    body->inertia = inertia;
+    body->inverse_inertia = isinf(inertia) ? 0.0 : 1.0 / inertia;
+}
+
+double body_get_elasticity(body_t *body) {
+    REQUIRE_NOT_NULL(body);
+    return body->elasticity;
+}
+
+void body_set_elasticity(body_t *body, double elasticity) {
+    REQUIRE_NOT_NULL(body);
+    REQUIRE(isfinite(elasticity) && elasticity >= 0.0,
+            "elasticity must be finite and >= 0 (got %g)", elasticity);
+    body->elasticity = elasticity;
+}
+
+double body_get_friction(body_t *body) {
+    REQUIRE_NOT_NULL(body);
+    return body->friction;
+}
+
+void body_set_friction(body_t *body, double friction) {
+    REQUIRE_NOT_NULL(body);
+    REQUIRE(isfinite(friction) && friction >= 0.0, "friction must be finite and >= 0 (got %g)",
+            friction);
+    body->friction = friction;
+}
+
+void body_set_collision_filter(body_t *body, uint32_t category, uint32_t mask, uint32_t group) {
+    REQUIRE_NOT_NULL(body);
+    body->category = category;
+    body->mask = mask;
+    body->group = group;
+}
+
+bool body_contains_point(body_t *body, vector_t point) {
+    REQUIRE_NOT_NULL(body);
+    body_update_world(body);
+    for (size_t i = 0; i < body->count; i++) {
+        if (vec_dot(body->world_normals[i], vec_subtract(point, body->world_vertices[i])) > 0.0) {
+            return false;
+        }
+    }
+    return true;
+}
+
+double body_get_kinetic_energy(body_t *body) {
+    REQUIRE_NOT_NULL(body);
+    double energy = 0.0;
+    if (body->inverse_mass > 0.0) energy += 0.5 * body->mass * vec_get_length_squared(body->velocity);
+    if (body->inverse_inertia > 0.0) {
+        energy += 0.5 * body->inertia * body->angular_velocity * body->angular_velocity;
+    }
+    return energy;
+}

@@ -1,0 +1,68 @@
+#ifndef BODY_PRIVATE_H
+#define BODY_PRIVATE_H
+
+/* The body's fields, shared with the scene, the integrator and the contact
+ * pipeline (which read and write them in bulk); everyone else uses body.h. */
+
+#include <stdint.h>
+#include "body.h"
+
+struct body {
+    /* Shape in the body frame, relative to the centroid, counter-clockwise. */
+    size_t count;
+    vector_t *local_vertices;
+    vector_t *local_normals;
+
+    /* World polygon, recomputed lazily after the pose changes. */
+    vector_t *world_vertices;
+    vector_t *world_normals;
+    aabb_t bounds;
+    bool world_valid;
+
+    /* Pose and motion. */
+    vector_t centroid;
+    double angle;
+    vector_t velocity;
+    double angular_velocity;
+
+    double mass, inverse_mass;
+    double inertia, inverse_inertia;
+    /* Largest distance from the centroid to a vertex (m). */
+    double radius;
+
+    /* Accumulated since the last tick. */
+    vector_t force;
+    double torque;
+    vector_t impulse;
+    double angular_impulse;
+    /* Position and angle corrections from the contact solver, added by the
+     * integrator after it advances the pose (they move without changing the
+     * velocity). */
+    vector_t position_correction;
+    double angle_correction;
+
+    double elasticity;
+    double friction;
+    uint32_t category, mask, group;
+
+    rgb_color_t color;
+    void *info;
+    free_func_t info_freer;
+    bool removed;
+
+    /* Set by the scene: a number no other body of the scene has had, so
+     * contact caches can match pairs across steps even as indices shift. */
+    uint32_t id;
+    /* Set by the scene each step: the body's row in the solver's arrays. */
+    uint32_t solver_index;
+};
+
+/* Recomputes the world vertices, normals and bounds if the pose changed. */
+void body_update_world(body_t *body);
+
+/* Rotates body-frame vector v into the world frame. */
+static inline vector_t body_rotate(const body_t *body, vector_t v) {
+    return vec_rotate(v, body->angle);
+}
+
+#endif // #ifndef BODY_PRIVATE_H

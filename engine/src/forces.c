@@ -1,0 +1,186 @@
+#include "forces.h"
+#include <math.h>
+#include "body_private.h"
+#include "check.h"
+#include "collision.h"
+#include "memory.h"
+#include "scene_private.h"
+
+/* Below this distance (m) Newtonian gravity is left out: the force would be
+ * unbounded and its direction undefined. */
+static const double GRAVITY_MIN_DISTANCE = 1e-9;
+
+typedef struct {
+    double constant;
+    body_t *body1;
+    body_t *body2;
+} pair_aux_t;
+
+static list_t *bodies_list(body_t *body1, body_t *body2) {
+    list_t *bodies = list_init(2, NULL);
+    list_add(bodies, body1);
+    if (body2 != NULL) list_add(bodies, body2);
+    return bodies;
+}
+
+static void add_pair_force_creator(scene_t *scene, force_creator_t forcer, double constant,
+                                   body_t *body1, body_t *body2) {
+    pair_aux_t *aux = memory_alloc(sizeof(pair_aux_t));
+    *aux = (pair_aux_t){constant, body1, body2};
+    scene_add_bodies_force_creator(scene, forcer, aux, bodies_list(body1, body2), memory_free);
+}
+
+static void newtonian_gravity(void *data) {
+    pair_aux_t *aux = data;
+    vector_t r = vec_subtract(aux->body2->centroid, aux->body1->centroid);
+    double distance = vec_get_length(r);
+    if (distance < GRAVITY_MIN_DISTANCE) return;
+    double magnitude = aux->constant * aux->body1->mass * aux->body2->mass / (distance * distance);
+    if (!isfinite(magnitude)) return; /* two infinite masses: neither can move */
+    vector_t force = vec_multiply(magnitude / distance, r);
+    body_add_force(aux->body1, force);
+    body_add_force(aux->body2, vec_negate(force));
+}
+
+void create_newtonian_gravity(scene_t *scene, double G, body_t *body1, body_t *body2) {
+    REQUIRE_NOT_NULL(scene);
+    REQUIRE_NOT_NULL(body1);
+    REQUIRE_NOT_NULL(body2);
+    REQUIRE(isfinite(G) && G >= 0.0, "G must be finite and >= 0 (got %g)", G);
+    add_pair_force_creator(scene, newtonian_gravity, G, body1, body2);
+}
+
+static void spring(void *data) {
+    pair_aux_t *aux = data;
+    vector_t stretch = vec_subtract(aux->body2->centroid, aux->body1->centroid);
+    vector_t force = vec_multiply(aux->constant, stretch);
+    body_add_force(aux->body1, force);
+    body_add_force(aux->body2, vec_negate(force));
+}
+
+void create_spring(scene_t *scene, double k, body_t *body1, body_t *body2) {
+    REQUIRE_NOT_NULL(scene);
+    REQUIRE_NOT_NULL(body1);
+    REQUIRE_NOT_NULL(body2);
+    REQUIRE(isfinite(k) && k >= 0.0, "k must be finite and >= 0 (got %g)", k);
+    add_pair_force_creator(scene, spring, k, body1, body2);
+}
+
+static void drag(void *data) {
+    pair_aux_t *aux = data;
+    body_add_force(aux->body1, vec_multiply(-aux->constant, aux->body1->velocity));
+}
+
+void create_drag(scene_t *scene, double gamma, body_t *body) {
+    REQUIRE_NOT_NULL(scene);
+    REQUIRE_NOT_NULL(body);
+    REQUIRE(isfinite(gamma) && gamma >= 0.0, "gamma must be finite and >= 0 (got %g)", gamma);
+    add_pair_force_creator(scene, drag, gamma, body, NULL);
+}
+
+typedef struct {
+    scene_t *scene;
+    body_t *body1;
+    body_t *body2;
+    collision_handler_t handler;
+    void *aux;
+    double force_const;
+    bool colliding;
+} collision_aux_t;
+
+/* The vertex of `body` deepest along -axis: where body2 reaches furthest into
+ * body1 for body = body2 and axis from body1 toward body2. */
+static vector_t deepest_vertex(body_t *body, vector_t axis) {
+    body_update_world(body);
+    vector_t deepest = body->world_vertices[0];
+    for (size_t i = 1; i < body->count; i++) {
+        if (vec_dot(body->world_vertices[i], axis) < vec_dot(deepest, axis)) {
+            deepest = body->world_vertices[i];
+        }
+    }
+    return deepest;
+}
+
+static void record_seed_collision(collision_aux_t *aux, collision_info_t info,
+                                  vector_t body2_impulse_before) {
+    vector_t applied = vec_subtract(aux->body2->impulse, body2_impulse_before);
+    contact_t entry = {
+        .kind = CONTACT_SEED,
+        .body1 = aux->body1,
+        .body2 = aux->body2,
+        .axis = info.axis,
+        .point_count = 1,
+        .points = {deepest_vertex(aux->body2, info.axis)},
+        .separation = {-info.depth},
+        .normal_impulse = {vec_dot(applied, info.axis)},
+    };
+    scene_record_contact(aux->scene, &entry);
+}
+
+static void collision_force_creator(void *data) {
+    collision_aux_t *aux = data;
+    collision_info_t info = find_collision(aux->body1, aux->body2);
+    if (!info.collided) {
+        aux->colliding = false;
+        return;
+    }
+    if (aux->colliding) return;
+    aux->colliding = true;
+    vector_t body2_impulse_before = aux->body2->impulse;
+    aux->handler(aux->body1, aux->body2, info.axis, aux->aux, aux->force_const);
+    record_seed_collision(aux, info, body2_impulse_before);
+}
+
+void create_collision(scene_t *scene, body_t *body1, body_t *body2,
+                      collision_handler_t handler, void *aux, double force_const) {
+    REQUIRE_NOT_NULL(scene);
+    REQUIRE_NOT_NULL(body1);
+    REQUIRE_NOT_NULL(body2);
+    REQUIRE_NOT_NULL(handler);
+    REQUIRE(body1 != body2, "a body cannot collide with itself");
+    collision_aux_t *collision = memory_alloc(sizeof(collision_aux_t));
+    *collision = (collision_aux_t){scene, body1, body2, handler, aux, force_const, false};
+    scene_add_bodies_force_creator(scene, collision_force_creator, collision,
+                                   bodies_list(body1, body2), memory_free);
+}
+
+static void destructive_collision_handler(body_t *body1, body_t *body2, vector_t axis, void *aux,
+                                          double force_const) {
+    (void)axis, (void)aux, (void)force_const;
+    body_remove(body1);
+    body_remove(body2);
+}
+
+void create_destructive_collision(scene_t *scene, body_t *body1, body_t *body2) {
+    create_collision(scene, body1, body2, destructive_collision_handler, NULL, 0.0);
+}
+
+void physics_collision_handler(body_t *body1, body_t *body2, vector_t axis, void *aux,
+                               double force_const) {
+    (void)aux;
+    REQUIRE_NOT_NULL(body1);
+    REQUIRE_NOT_NULL(body2);
+    REQUIRE(isfinite(force_const) && force_const >= 0.0,
+            "elasticity must be finite and >= 0 (got %g)", force_const);
+    double m1 = body1->mass, m2 = body2->mass;
+    double reduced_mass;
+    if (isinf(m1) && isinf(m2)) return; /* neither can move */
+    if (isinf(m1)) {
+        reduced_mass = m2;
+    } else if (isinf(m2)) {
+        reduced_mass = m1;
+    } else {
+        reduced_mass = m1 * m2 / (m1 + m2);
+    }
+    double u1 = vec_dot(body1->velocity, axis);
+    double u2 = vec_dot(body2->velocity, axis);
+    vector_t impulse = vec_multiply(reduced_mass * (1.0 + force_const) * (u2 - u1), axis);
+    body_add_impulse(body1, impulse);
+    body_add_impulse(body2, vec_negate(impulse));
+}
+
+void create_physics_collision(scene_t *scene, body_t *body1, body_t *body2, double elasticity) {
+    REQUIRE(isfinite(elasticity) && elasticity >= 0.0,
+            "elasticity must be finite and >= 0 (got %g)", elasticity);
+    create_collision(scene, body1, body2, physics_collision_handler, NULL, elasticity);
+}

@@ -1,0 +1,205 @@
+#include "polygon.h"
+#include <math.h>
+#include "check.h"
+#include "memory.h"
+#include "polygon_array.h"
+
+/* Copies a list's vertices into a small stack buffer when they fit, so the
+ * seed functions share the array code without allocating in the common case. */
+enum { STACK_VERTICES = 64 };
+
+typedef struct {
+    vector_t stack[STACK_VERTICES];
+    vector_t *vertices;
+    size_t count;
+} vertex_buffer_t;
+
+static void buffer_load(vertex_buffer_t *buffer, list_t *polygon) {
+    buffer->count = list_size(polygon);
+    buffer->vertices = buffer->count <= STACK_VERTICES
+                           ? buffer->stack
+                           : memory_alloc(buffer->count * sizeof(vector_t));
+    for (size_t i = 0; i < buffer->count; i++) {
+        vector_t *vertex = list_get(polygon, i);
+        REQUIRE(vertex != NULL, "vertex %zu is NULL", i);
+        buffer->vertices[i] = *vertex;
+    }
+}
+
+static void buffer_release(vertex_buffer_t *buffer) {
+    if (buffer->vertices != buffer->stack) memory_free(buffer->vertices);
+}
+
+double polygon_array_signed_area(const vector_t *vertices, size_t count) {
+    double twice_area = 0.0;
+    for (size_t i = 0; i < count; i++) {
+        twice_area += vec_cross(vertices[i], vertices[(i + 1) % count]);
+    }
+    return 0.5 * twice_area;
+}
+
+vector_t polygon_array_centroid(const vector_t *vertices, size_t count) {
+    if (count == 0) return VEC_ZERO;
+    /* Work relative to the first vertex: the shoelace sums then do not lose
+     * digits to a polygon far from the origin. */
+    vector_t origin = vertices[0];
+    double twice_area = 0.0;
+    vector_t sum = VEC_ZERO;
+    for (size_t i = 0; i < count; i++) {
+        vector_t a = vec_subtract(vertices[i], origin);
+        vector_t b = vec_subtract(vertices[(i + 1) % count], origin);
+        double cross = vec_cross(a, b);
+        twice_area += cross;
+        sum = vec_add(sum, vec_multiply(cross, vec_add(a, b)));
+    }
+    if (twice_area == 0.0) {
+        /* Degenerate: fall back to the vertex mean so callers get a point. */
+        vector_t mean = VEC_ZERO;
+        for (size_t i = 0; i < count; i++) mean = vec_add(mean, vertices[i]);
+        return vec_multiply(1.0 / (double)count, mean);
+    }
+    return vec_add(origin, vec_multiply(1.0 / (3.0 * twice_area), sum));
+}
+
+double polygon_array_moment(const vector_t *vertices, size_t count, double mass) {
+    vector_t centroid = polygon_array_centroid(vertices, count);
+    double numerator = 0.0, denominator = 0.0;
+    for (size_t i = 0; i < count; i++) {
+        vector_t a = vec_subtract(vertices[i], centroid);
+        vector_t b = vec_subtract(vertices[(i + 1) % count], centroid);
+        double cross = vec_cross(a, b);
+        numerator += cross * (vec_dot(a, a) + vec_dot(a, b) + vec_dot(b, b));
+        denominator += cross;
+    }
+    /* I = rho/12 sum cross (a.a + a.b + b.b), rho = mass / area,
+     * area = sum cross / 2; the ratio is winding-independent. */
+    return mass * numerator / (6.0 * denominator);
+}
+
+const char *polygon_array_check(const vector_t *vertices, size_t count) {
+    if (count < 3) return "polygon has fewer than 3 vertices";
+    for (size_t i = 0; i < count; i++) {
+        if (!vec_is_finite(vertices[i])) return "polygon has a vertex that is not finite";
+    }
+    double area = polygon_array_signed_area(vertices, count);
+    double scale = 0.0;
+    for (size_t i = 0; i < count; i++) {
+        scale = fmax(scale, vec_get_length_squared(vec_subtract(vertices[i], vertices[0])));
+    }
+    if (!(fabs(area) > 1e-12 * scale) || scale == 0.0) return "polygon has zero area";
+    double sign = area > 0.0 ? 1.0 : -1.0;
+    for (size_t i = 0; i < count; i++) {
+        vector_t edge = vec_subtract(vertices[(i + 1) % count], vertices[i]);
+        if (vec_get_length_squared(edge) <= 1e-24 * scale) return "polygon repeats a vertex";
+        vector_t next = vec_subtract(vertices[(i + 2) % count], vertices[(i + 1) % count]);
+        /* A turn against the winding, or a straight angle, means the polygon
+         * is not strictly convex; collinear vertices would give zero-length
+         * edge normals trouble in the narrowphase. */
+        double turn = sign * vec_cross(edge, next);
+        if (turn <= 1e-12 * scale) return "polygon is not strictly convex";
+    }
+    /* Every turn has the same sign; the polygon could still wind around more
+     * than once (a pentagram). Its turning angles then add up to more than
+     * 2 pi. */
+    double total_turn = 0.0;
+    for (size_t i = 0; i < count; i++) {
+        vector_t edge = vec_subtract(vertices[(i + 1) % count], vertices[i]);
+        vector_t next = vec_subtract(vertices[(i + 2) % count], vertices[(i + 1) % count]);
+        total_turn += atan2(fabs(vec_cross(edge, next)), vec_dot(edge, next));
+    }
+    if (total_turn > 2.0 * M_PI + 1e-6) return "polygon winds around more than once";
+    return NULL;
+}
+
+double polygon_area(list_t *polygon) {
+    REQUIRE_NOT_NULL(polygon);
+    vertex_buffer_t buffer;
+    buffer_load(&buffer, polygon);
+    double area = polygon_array_signed_area(buffer.vertices, buffer.count);
+    buffer_release(&buffer);
+    return area;
+}
+
+vector_t polygon_centroid(list_t *polygon) {
+    REQUIRE_NOT_NULL(polygon);
+    vertex_buffer_t buffer;
+    buffer_load(&buffer, polygon);
+    vector_t centroid = polygon_array_centroid(buffer.vertices, buffer.count);
+    buffer_release(&buffer);
+    return centroid;
+}
+
+double polygon_moment_of_inertia(list_t *polygon, double mass) {
+    REQUIRE_NOT_NULL(polygon);
+    REQUIRE(mass > 0.0, "mass must be > 0 (got %g)", mass);
+    const char *problem = polygon_check(polygon);
+    REQUIRE(problem == NULL, "%s", problem);
+    vertex_buffer_t buffer;
+    buffer_load(&buffer, polygon);
+    double moment = polygon_array_moment(buffer.vertices, buffer.count, mass);
+    buffer_release(&buffer);
+    return moment;
+}
+
+const char *polygon_check(list_t *polygon) {
+    if (polygon == NULL) return "polygon is NULL";
+    vertex_buffer_t buffer;
+    buffer.count = list_size(polygon);
+    for (size_t i = 0; i < buffer.count; i++) {
+        if (list_get(polygon, i) == NULL) return "polygon has a NULL vertex";
+    }
+    buffer_load(&buffer, polygon);
+    const char *problem = polygon_array_check(buffer.vertices, buffer.count);
+    buffer_release(&buffer);
+    return problem;
+}
+
+bool polygon_is_counterclockwise(list_t *polygon) {
+    return polygon_area(polygon) > 0.0;
+}
+
+void polygon_translate(list_t *polygon, vector_t translation) {
+    REQUIRE_NOT_NULL(polygon);
+    for (size_t i = 0; i < list_size(polygon); i++) {
+        vector_t *vertex = list_get(polygon, i);
+        *vertex = vec_add(*vertex, translation);
+    }
+}
+
+void polygon_rotate(list_t *polygon, double angle, vector_t point) {
+    REQUIRE_NOT_NULL(polygon);
+    double c = cos(angle), s = sin(angle);
+    for (size_t i = 0; i < list_size(polygon); i++) {
+        vector_t *vertex = list_get(polygon, i);
+        *vertex = vec_add(point, vec_rotate_cs(vec_subtract(*vertex, point), c, s));
+    }
+}
+
+static vector_t *vector_new(vector_t v) {
+    vector_t *copy = memory_alloc(sizeof(vector_t));
+    *copy = v;
+    return copy;
+}
+
+list_t *polygon_make_regular(size_t sides, double radius, vector_t center, double angle) {
+    REQUIRE(sides >= 3, "a polygon needs at least 3 sides (got %zu)", sides);
+    REQUIRE(radius > 0.0 && isfinite(radius), "radius must be finite and > 0 (got %g)", radius);
+    list_t *polygon = list_init(sides, memory_free);
+    for (size_t i = 0; i < sides; i++) {
+        double theta = angle + 2.0 * M_PI * (double)i / (double)sides;
+        list_add(polygon, vector_new(vec_add(center, (vector_t){radius * cos(theta),
+                                                                  radius * sin(theta)})));
+    }
+    return polygon;
+}
+
+list_t *polygon_make_box(vector_t center, double half_width, double half_height) {
+    REQUIRE(half_width > 0.0 && half_height > 0.0,
+            "half extents must be > 0 (got %g, %g)", half_width, half_height);
+    list_t *polygon = list_init(4, memory_free);
+    list_add(polygon, vector_new(vec_add(center, (vector_t){-half_width, -half_height})));
+    list_add(polygon, vector_new(vec_add(center, (vector_t){half_width, -half_height})));
+    list_add(polygon, vector_new(vec_add(center, (vector_t){half_width, half_height})));
+    list_add(polygon, vector_new(vec_add(center, (vector_t){-half_width, half_height})));
+    return polygon;
+}

@@ -1,0 +1,224 @@
+#include "scene.h"
+#include <math.h>
+#include "body_private.h"
+#include "check.h"
+#include "integrator.h"
+#include "memory.h"
+#include "scene_private.h"
+
+typedef struct {
+    force_creator_t forcer;
+    void *aux;
+    free_func_t freer;
+    /* The bodies the force creator depends on; NULL for none. */
+    list_t *bodies;
+} force_entry_t;
+
+struct scene {
+    body_t **bodies;
+    size_t body_count, body_capacity;
+    uint32_t next_body_id;
+
+    force_entry_t *forces;
+    size_t force_count, force_capacity;
+
+    vector_t gravity;
+    integrator_t integrator;
+
+    contact_t *record;
+    size_t record_count, record_capacity;
+    scene_stats_t stats;
+};
+
+scene_t *scene_init(void) {
+    scene_t *scene = memory_calloc(1, sizeof(scene_t));
+    scene->integrator = INTEGRATOR_SEED;
+    return scene;
+}
+
+/* Frees a bodies list without letting its freer touch the bodies, which the
+ * scene owns. */
+static void free_body_list(list_t *bodies) {
+    if (bodies == NULL) return;
+    while (list_size(bodies) > 0) list_remove(bodies, list_size(bodies) - 1);
+    list_free(bodies);
+}
+
+static void force_entry_free(force_entry_t *entry) {
+    if (entry->freer != NULL) entry->freer(entry->aux);
+    free_body_list(entry->bodies);
+}
+
+void scene_free(scene_t *scene) {
+    REQUIRE_NOT_NULL(scene);
+    for (size_t i = 0; i < scene->force_count; i++) force_entry_free(&scene->forces[i]);
+    for (size_t i = 0; i < scene->body_count; i++) body_free(scene->bodies[i]);
+    memory_free(scene->forces);
+    memory_free(scene->bodies);
+    memory_free(scene->record);
+    memory_free(scene);
+}
+
+size_t scene_bodies(scene_t *scene) {
+    REQUIRE_NOT_NULL(scene);
+    return scene->body_count;
+}
+
+body_t *scene_get_body(scene_t *scene, size_t index) {
+    REQUIRE_NOT_NULL(scene);
+    REQUIRE(index < scene->body_count, "index %zu out of range (%zu bodies)", index,
+            scene->body_count);
+    return scene->bodies[index];
+}
+
+void scene_add_body(scene_t *scene, body_t *body) {
+    REQUIRE_NOT_NULL(scene);
+    REQUIRE_NOT_NULL(body);
+    memory_reserve((void **)&scene->bodies, &scene->body_capacity, scene->body_count + 1,
+                   sizeof(body_t *));
+    body->id = scene->next_body_id++;
+    scene->bodies[scene->body_count++] = body;
+}
+
+void scene_remove_body(scene_t *scene, size_t index) {
+    body_remove(scene_get_body(scene, index));
+}
+
+void scene_add_force_creator(scene_t *scene, force_creator_t forcer, void *aux,
+                             free_func_t freer) {
+    scene_add_bodies_force_creator(scene, forcer, aux, NULL, freer);
+}
+
+void scene_add_bodies_force_creator(scene_t *scene, force_creator_t forcer, void *aux,
+                                    list_t *bodies, free_func_t freer) {
+    REQUIRE_NOT_NULL(scene);
+    REQUIRE_NOT_NULL(forcer);
+    memory_reserve((void **)&scene->forces, &scene->force_capacity, scene->force_count + 1,
+                   sizeof(force_entry_t));
+    scene->forces[scene->force_count++] = (force_entry_t){forcer, aux, freer, bodies};
+}
+
+void scene_set_gravity(scene_t *scene, vector_t gravity) {
+    REQUIRE_NOT_NULL(scene);
+    REQUIRE_FINITE_VECTOR(gravity);
+    scene->gravity = gravity;
+}
+
+vector_t scene_get_gravity(scene_t *scene) {
+    REQUIRE_NOT_NULL(scene);
+    return scene->gravity;
+}
+
+void scene_set_integrator(scene_t *scene, integrator_t integrator) {
+    REQUIRE_NOT_NULL(scene);
+    REQUIRE(integrator == INTEGRATOR_SEED || integrator == INTEGRATOR_EXPLICIT_EULER ||
+                integrator == INTEGRATOR_SYMPLECTIC_EULER,
+            "unknown integrator %d", (int)integrator);
+    scene->integrator = integrator;
+}
+
+integrator_t scene_get_integrator(scene_t *scene) {
+    REQUIRE_NOT_NULL(scene);
+    return scene->integrator;
+}
+
+size_t scene_contact_count(scene_t *scene) {
+    REQUIRE_NOT_NULL(scene);
+    return scene->record_count;
+}
+
+const contact_t *scene_get_contact(scene_t *scene, size_t index) {
+    REQUIRE_NOT_NULL(scene);
+    REQUIRE(index < scene->record_count, "index %zu out of range (%zu contacts)", index,
+            scene->record_count);
+    return &scene->record[index];
+}
+
+scene_stats_t scene_get_stats(scene_t *scene) {
+    REQUIRE_NOT_NULL(scene);
+    return scene->stats;
+}
+
+void scene_record_contact(scene_t *scene, const contact_t *entry) {
+    memory_reserve((void **)&scene->record, &scene->record_capacity, scene->record_count + 1,
+                   sizeof(contact_t));
+    scene->record[scene->record_count++] = *entry;
+}
+
+/* Stage 1. A force creator may add force creators (they run from the next
+ * tick on, since the count is read once) and may remove bodies. */
+static void stage_forces(scene_t *scene) {
+    size_t count = scene->force_count;
+    for (size_t i = 0; i < count; i++) scene->forces[i].forcer(scene->forces[i].aux);
+}
+
+/* Stage 3. Returns whether any body is marked removed (those are not
+ * advanced: they are freed next). */
+static bool stage_integrate(scene_t *scene, double dt) {
+    bool removed = false;
+    for (size_t i = 0; i < scene->body_count; i++) {
+        body_t *body = scene->bodies[i];
+        if (body->removed) {
+            removed = true;
+            continue;
+        }
+        integrator_advance(body, dt, scene->gravity, scene->integrator);
+    }
+    return removed;
+}
+
+static bool depends_on_removed_body(const force_entry_t *entry) {
+    if (entry->bodies == NULL) return false;
+    for (size_t j = 0; j < list_size(entry->bodies); j++) {
+        if (body_is_removed(list_get(entry->bodies, j))) return true;
+    }
+    return false;
+}
+
+/* Drops record entries that name a removed body, which is about to be freed. */
+static void forget_removed_in_record(scene_t *scene) {
+    size_t kept = 0;
+    for (size_t i = 0; i < scene->record_count; i++) {
+        const contact_t *entry = &scene->record[i];
+        if (entry->body1->removed || entry->body2->removed) continue;
+        scene->record[kept++] = *entry;
+    }
+    scene->record_count = kept;
+}
+
+/* Stage 4: force creators first, since their aux may still point at the
+ * bodies; then the bodies, keeping the order of the rest. */
+static void stage_reap(scene_t *scene) {
+    size_t kept = 0;
+    for (size_t i = 0; i < scene->force_count; i++) {
+        force_entry_t *entry = &scene->forces[i];
+        if (depends_on_removed_body(entry)) {
+            force_entry_free(entry);
+        } else {
+            scene->forces[kept++] = *entry;
+        }
+    }
+    scene->force_count = kept;
+
+    forget_removed_in_record(scene);
+    kept = 0;
+    for (size_t i = 0; i < scene->body_count; i++) {
+        body_t *body = scene->bodies[i];
+        if (body->removed) {
+            body_free(body);
+            scene->stats.removed_bodies++;
+        } else {
+            scene->bodies[kept++] = body;
+        }
+    }
+    scene->body_count = kept;
+}
+
+void scene_tick(scene_t *scene, double dt) {
+    REQUIRE_NOT_NULL(scene);
+    REQUIRE(isfinite(dt) && dt > 0.0, "dt must be finite and > 0 (got %g)", dt);
+    scene->record_count = 0;
+    scene->stats = (scene_stats_t){0};
+    if (scene->force_count > 0) stage_forces(scene);
+    if (stage_integrate(scene, dt)) stage_reap(scene);
+}
