@@ -41,8 +41,14 @@ build/tests/%.o: tests/%.c tests/test.h tests/suites.h $(ENGINE_HDR)
 build/tests/engine_tests: $(TEST_SAN_OBJ) build/libengine-san.a
 	$(CC) $(SAN) $^ -lm -o $@
 
-check: build/tests/engine_tests
-	@tests/run_all.sh build/tests/engine_tests
+# Programs `make check` runs; app/app.mk adds the sandbox's smoke tests.
+CHECK_PROGRAMS := build/tests/engine_tests
+
+-include app/app.mk
+-include tests/bench/bench.mk
+
+check: $(CHECK_PROGRAMS)
+	@tests/run_all.sh $(CHECK_PROGRAMS)
 
 clean:
 	rm -rf build sandbox
