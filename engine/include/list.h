@@ -10,8 +10,9 @@
  * then calls the freer on every element still in it. list_remove hands the
  * removed element back to the caller, who then owns it.
  *
- * Programmer errors (a NULL list, an index out of range) stop the program
- * with a message on stderr naming the function and the bad value.
+ * Programmer errors (a NULL list, an index out of range, an initial capacity
+ * whose size in bytes overflows a size_t) stop the program with a message on
+ * stderr naming the function and the bad value. NULL elements are allowed.
  */
 
 typedef struct list list_t;

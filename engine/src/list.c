@@ -1,4 +1,5 @@
 #include "list.h"
+#include <stdint.h>
 #include <string.h>
 #include "check.h"
 #include "memory.h"
@@ -11,6 +12,10 @@ struct list {
 };
 
 list_t *list_init(size_t initial_capacity, free_func_t freer) {
+    /* Otherwise the byte count below wraps around to a small block that the
+     * list then believes holds initial_capacity elements. */
+    REQUIRE(initial_capacity <= SIZE_MAX / sizeof(void *),
+            "initial capacity %zu is too large", initial_capacity);
     list_t *list = memory_alloc(sizeof(list_t));
     list->capacity = initial_capacity;
     list->items = memory_alloc((initial_capacity == 0 ? 1 : initial_capacity) * sizeof(void *));
