@@ -14,6 +14,14 @@
  */
 double integrator_position_weight(integrator_t integrator);
 
+/* The body's linear acceleration from its force and gravity (m/s^2). */
+vector_t integrator_acceleration(const body_t *body, vector_t gravity);
+
+/* The velocity and angular velocity the body would end the step with if
+ * nothing but its accumulated force, torque and impulses acted. */
+void integrator_free_velocity(const body_t *body, double dt, vector_t gravity, vector_t *velocity,
+                              double *angular_velocity);
+
 /* Advances body by dt with gravity (m/s^2, ignored for infinite mass), its
  * accumulated force, torque, impulses and contact corrections; then clears
  * those accumulators. */

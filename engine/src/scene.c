@@ -5,6 +5,7 @@
 #include "integrator.h"
 #include "memory.h"
 #include "scene_private.h"
+#include "world.h"
 
 typedef struct {
     force_creator_t forcer;
@@ -25,6 +26,10 @@ struct scene {
     vector_t gravity;
     integrator_t integrator;
 
+    /* The world contact pipeline; NULL while contacts are off. */
+    world_t *world;
+    size_t velocity_iterations, position_iterations;
+
     contact_t *record;
     size_t record_count, record_capacity;
     scene_stats_t stats;
@@ -33,6 +38,8 @@ struct scene {
 scene_t *scene_init(void) {
     scene_t *scene = memory_calloc(1, sizeof(scene_t));
     scene->integrator = INTEGRATOR_SEED;
+    scene->velocity_iterations = 8;
+    scene->position_iterations = 3;
     return scene;
 }
 
@@ -56,6 +63,7 @@ void scene_free(scene_t *scene) {
     memory_free(scene->forces);
     memory_free(scene->bodies);
     memory_free(scene->record);
+    if (scene->world != NULL) world_free(scene->world);
     memory_free(scene);
 }
 
@@ -120,6 +128,37 @@ void scene_set_integrator(scene_t *scene, integrator_t integrator) {
 integrator_t scene_get_integrator(scene_t *scene) {
     REQUIRE_NOT_NULL(scene);
     return scene->integrator;
+}
+
+void scene_set_contacts_enabled(scene_t *scene, bool enabled) {
+    REQUIRE_NOT_NULL(scene);
+    if (enabled && scene->world == NULL) {
+        scene->world = world_init();
+        world_set_iterations(scene->world, scene->velocity_iterations,
+                             scene->position_iterations);
+    } else if (!enabled && scene->world != NULL) {
+        world_free(scene->world);
+        scene->world = NULL;
+    }
+}
+
+bool scene_get_contacts_enabled(scene_t *scene) {
+    REQUIRE_NOT_NULL(scene);
+    return scene->world != NULL;
+}
+
+void scene_set_solver_iterations(scene_t *scene, size_t velocity_iterations,
+                                 size_t position_iterations) {
+    REQUIRE_NOT_NULL(scene);
+    REQUIRE(velocity_iterations >= 1 && velocity_iterations <= 1000,
+            "velocity_iterations must be in [1, 1000] (got %zu)", velocity_iterations);
+    REQUIRE(position_iterations >= 1 && position_iterations <= 1000,
+            "position_iterations must be in [1, 1000] (got %zu)", position_iterations);
+    scene->velocity_iterations = velocity_iterations;
+    scene->position_iterations = position_iterations;
+    if (scene->world != NULL) {
+        world_set_iterations(scene->world, velocity_iterations, position_iterations);
+    }
 }
 
 size_t scene_contact_count(scene_t *scene) {
@@ -220,5 +259,9 @@ void scene_tick(scene_t *scene, double dt) {
     scene->record_count = 0;
     scene->stats = (scene_stats_t){0};
     if (scene->force_count > 0) stage_forces(scene);
+    if (scene->world != NULL && scene->body_count > 0) {
+        world_step_t step = {dt, scene->gravity, scene->integrator};
+        world_step(scene->world, scene->bodies, scene->body_count, &step, scene, &scene->stats);
+    }
     if (stage_integrate(scene, dt)) stage_reap(scene);
 }

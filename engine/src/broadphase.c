@@ -1,0 +1,179 @@
+#include "broadphase.h"
+#include <math.h>
+#include <string.h>
+#include "memory.h"
+
+typedef struct {
+    int32_t ix, iy;
+    uint32_t proxy;
+} cell_entry_t;
+
+struct broadphase {
+    cell_entry_t *entries, *sorted;
+    size_t entry_capacity, sorted_capacity;
+    uint32_t *bucket_start; /* size bucket_count + 1 */
+    size_t bucket_capacity;
+    uint32_t *large;
+    size_t large_capacity;
+    broadphase_pair_t *pairs;
+    size_t pair_count, pair_capacity;
+};
+
+broadphase_t *broadphase_init(void) {
+    return memory_calloc(1, sizeof(broadphase_t));
+}
+
+void broadphase_free(broadphase_t *broadphase) {
+    memory_free(broadphase->entries);
+    memory_free(broadphase->sorted);
+    memory_free(broadphase->bucket_start);
+    memory_free(broadphase->large);
+    memory_free(broadphase->pairs);
+    memory_free(broadphase);
+}
+
+bool broadphase_filters_allow(const broadphase_proxy_t *a, const broadphase_proxy_t *b) {
+    if (a->fixed && b->fixed) return false;
+    if ((a->category & b->mask) == 0 || (b->category & a->mask) == 0) return false;
+    return a->group == 0 || a->group != b->group;
+}
+
+static void add_pair(broadphase_t *broadphase, uint32_t a, uint32_t b) {
+    memory_reserve((void **)&broadphase->pairs, &broadphase->pair_capacity,
+                   broadphase->pair_count + 1, sizeof(broadphase_pair_t));
+    broadphase->pairs[broadphase->pair_count++] =
+        a < b ? (broadphase_pair_t){a, b} : (broadphase_pair_t){b, a};
+}
+
+/* A cell about twice the mean extent of the movable bodies: each such body
+ * then covers at most four cells and a cell holds a few bodies. */
+static double choose_cell_size(const broadphase_proxy_t *proxies, size_t count) {
+    double sum = 0.0;
+    size_t movable = 0;
+    for (size_t i = 0; i < count; i++) {
+        if (proxies[i].fixed) continue;
+        aabb_t box = proxies[i].box;
+        sum += fmax(box.max.x - box.min.x, box.max.y - box.min.y);
+        movable++;
+    }
+    double size = movable > 0 ? 2.0 * sum / (double)movable : 1.0;
+    return size > 1e-6 ? size : 1e-6;
+}
+
+static uint32_t hash_cell(int32_t ix, int32_t iy, uint32_t mask) {
+    uint32_t h = (uint32_t)ix * 73856093u ^ (uint32_t)iy * 19349663u;
+    return (h ^ (h >> 15)) & mask;
+}
+
+static int32_t cell_index(double coordinate, double inverse_size) {
+    double cell = floor(coordinate * inverse_size);
+    /* Keep far-away bodies from overflowing the cell coordinates. */
+    if (cell > 1e9) cell = 1e9;
+    if (cell < -1e9) cell = -1e9;
+    return (int32_t)cell;
+}
+
+/* Writes the (cell, proxy) entries; proxies covering too many cells go to
+ * the large list. Returns the number of entries. */
+static size_t fill_entries(broadphase_t *broadphase, const broadphase_proxy_t *proxies,
+                           size_t count, double inverse_size, size_t *large_count) {
+    size_t n = 0;
+    *large_count = 0;
+    for (size_t i = 0; i < count; i++) {
+        aabb_t box = proxies[i].box;
+        int32_t x0 = cell_index(box.min.x, inverse_size), x1 = cell_index(box.max.x, inverse_size);
+        int32_t y0 = cell_index(box.min.y, inverse_size), y1 = cell_index(box.max.y, inverse_size);
+        double cells = ((double)x1 - x0 + 1.0) * ((double)y1 - y0 + 1.0);
+        if (cells > BROADPHASE_MAX_CELLS) {
+            memory_reserve((void **)&broadphase->large, &broadphase->large_capacity,
+                           *large_count + 1, sizeof(uint32_t));
+            broadphase->large[(*large_count)++] = (uint32_t)i;
+            continue;
+        }
+        memory_reserve((void **)&broadphase->entries, &broadphase->entry_capacity,
+                       n + (size_t)cells, sizeof(cell_entry_t));
+        for (int32_t iy = y0; iy <= y1; iy++) {
+            for (int32_t ix = x0; ix <= x1; ix++) {
+                broadphase->entries[n++] = (cell_entry_t){ix, iy, (uint32_t)i};
+            }
+        }
+    }
+    return n;
+}
+
+/* Counting sort of the entries by bucket. Returns the bucket count. */
+static size_t sort_entries(broadphase_t *broadphase, size_t n) {
+    size_t buckets = 64;
+    while (buckets < 2 * n) buckets *= 2;
+    uint32_t mask = (uint32_t)(buckets - 1);
+    memory_reserve((void **)&broadphase->bucket_start, &broadphase->bucket_capacity, buckets + 1,
+                   sizeof(uint32_t));
+    memory_reserve((void **)&broadphase->sorted, &broadphase->sorted_capacity, n,
+                   sizeof(cell_entry_t));
+    uint32_t *start = broadphase->bucket_start;
+    memset(start, 0, (buckets + 1) * sizeof(uint32_t));
+    for (size_t i = 0; i < n; i++) {
+        start[hash_cell(broadphase->entries[i].ix, broadphase->entries[i].iy, mask) + 1]++;
+    }
+    for (size_t b = 0; b < buckets; b++) start[b + 1] += start[b];
+    for (size_t i = 0; i < n; i++) {
+        const cell_entry_t *entry = &broadphase->entries[i];
+        broadphase->sorted[start[hash_cell(entry->ix, entry->iy, mask)]++] = *entry;
+    }
+    /* The fill advanced each start to the next bucket's; shift back. */
+    for (size_t b = buckets; b > 0; b--) start[b] = start[b - 1];
+    start[0] = 0;
+    return buckets;
+}
+
+/* Pairs that share a cell; a pair sharing several cells is reported only in
+ * the cell holding the lower-left corner of the boxes' intersection. */
+static void pairs_in_buckets(broadphase_t *broadphase, const broadphase_proxy_t *proxies,
+                             size_t buckets, double inverse_size) {
+    const cell_entry_t *sorted = broadphase->sorted;
+    for (size_t b = 0; b < buckets; b++) {
+        uint32_t begin = broadphase->bucket_start[b], end = broadphase->bucket_start[b + 1];
+        for (uint32_t p = begin; p + 1 < end; p++) {
+            const broadphase_proxy_t *a = &proxies[sorted[p].proxy];
+            for (uint32_t q = p + 1; q < end; q++) {
+                if (sorted[q].ix != sorted[p].ix || sorted[q].iy != sorted[p].iy) continue;
+                const broadphase_proxy_t *c = &proxies[sorted[q].proxy];
+                if (!aabb_overlaps(a->box, c->box) || !broadphase_filters_allow(a, c)) continue;
+                int32_t corner_x = cell_index(fmax(a->box.min.x, c->box.min.x), inverse_size);
+                int32_t corner_y = cell_index(fmax(a->box.min.y, c->box.min.y), inverse_size);
+                if (corner_x != sorted[p].ix || corner_y != sorted[p].iy) continue;
+                add_pair(broadphase, sorted[p].proxy, sorted[q].proxy);
+            }
+        }
+    }
+}
+
+/* Large proxies against everything; a pair of two large ones once. */
+static void pairs_with_large(broadphase_t *broadphase, const broadphase_proxy_t *proxies,
+                             size_t count, size_t large_count) {
+    for (size_t l = 0; l < large_count; l++) {
+        uint32_t big = broadphase->large[l];
+        for (size_t i = 0; i < count; i++) {
+            if (i == big) continue;
+            bool other_large_seen = false;
+            for (size_t m = 0; m < l; m++) other_large_seen |= broadphase->large[m] == i;
+            if (other_large_seen) continue;
+            if (!aabb_overlaps(proxies[big].box, proxies[i].box)) continue;
+            if (!broadphase_filters_allow(&proxies[big], &proxies[i])) continue;
+            add_pair(broadphase, big, (uint32_t)i);
+        }
+    }
+}
+
+size_t broadphase_find_pairs(broadphase_t *broadphase, const broadphase_proxy_t *proxies,
+                             size_t count, const broadphase_pair_t **pairs) {
+    broadphase->pair_count = 0;
+    double inverse_size = 1.0 / choose_cell_size(proxies, count);
+    size_t large_count;
+    size_t n = fill_entries(broadphase, proxies, count, inverse_size, &large_count);
+    size_t buckets = sort_entries(broadphase, n);
+    pairs_in_buckets(broadphase, proxies, buckets, inverse_size);
+    if (large_count > 0) pairs_with_large(broadphase, proxies, count, large_count);
+    *pairs = broadphase->pairs;
+    return broadphase->pair_count;
+}

@@ -1,0 +1,275 @@
+#include "solver.h"
+#include <math.h>
+
+const double SOLVER_RESTITUTION_THRESHOLD = 1.0;
+const double SOLVER_LINEAR_SLOP = 0.005;
+/* Fraction of the overlap beyond the slop removed per position iteration,
+ * and the most removed at once (m): Box2D's values, tuned for stacking. */
+static const double POSITION_CORRECTION_RATE = 0.2;
+static const double MAX_POSITION_CORRECTION = 0.2;
+/* The block solve needs a well-conditioned 2x2 matrix; beyond this
+ * condition number the two points are solved one at a time. */
+static const double MAX_CONDITION_NUMBER = 1000.0;
+
+static vector_t tangent_of(vector_t normal) {
+    return vec_perpendicular(normal);
+}
+
+/* Relative velocity of b's point over a's point. */
+static vector_t relative_velocity(const solver_body_t *a, const solver_body_t *b,
+                                  const solver_point_t *p) {
+    return vec_subtract(vec_add(b->v, vec_cross_scalar(b->w, p->r_b)),
+                        vec_add(a->v, vec_cross_scalar(a->w, p->r_a)));
+}
+
+static vector_t start_relative_velocity(const solver_body_t *a, const solver_body_t *b,
+                                        const solver_point_t *p) {
+    return vec_subtract(vec_add(b->v_start, vec_cross_scalar(b->w_start, p->r_b)),
+                        vec_add(a->v_start, vec_cross_scalar(a->w_start, p->r_a)));
+}
+
+static void apply_impulse(solver_body_t *a, solver_body_t *b, const solver_point_t *p,
+                          vector_t impulse) {
+    a->v = vec_subtract(a->v, vec_multiply(a->inverse_mass, impulse));
+    a->w -= a->inverse_inertia * vec_cross(p->r_a, impulse);
+    b->v = vec_add(b->v, vec_multiply(b->inverse_mass, impulse));
+    b->w += b->inverse_inertia * vec_cross(p->r_b, impulse);
+}
+
+/* The earliest time in [0, dt] at which s + v t + a t^2 / 2 reaches 0, or a
+ * negative number when it does not. */
+static double time_of_impact(double s, double v, double a, double dt) {
+    if (fabs(a) < 1e-12) return v < 0.0 ? -s / v : -1.0;
+    double discriminant = v * v - 2.0 * a * s;
+    if (discriminant < 0.0) return -1.0;
+    double root = sqrt(discriminant);
+    /* Both roots without cancellation: q = -(v + sign(v) root) / 2. */
+    double q = -0.5 * (v + (v >= 0.0 ? root : -root));
+    double t1 = q / (0.5 * a), t2 = q != 0.0 ? s / q : -1.0;
+    double best = INFINITY;
+    if (t1 >= 0.0) best = fmin(best, t1);
+    if (t2 >= 0.0) best = fmin(best, t2);
+    return best <= dt ? best : -1.0;
+}
+
+/*
+ * The lower bound on a point's end-of-step relative normal velocity.
+ *
+ * Touching or overlapping: no approach (0), or the restitution rebound when
+ * the approach is fast. Apart by s > 0: the approach may close at most s by
+ * the end of the step; with the integrator's position weight w that bounds
+ * the end velocity by (-s / dt - (1 - w) vn_start) / w, never above 0 (a
+ * slow approach is not turned into a rebound; the position pass removes the
+ * little overlap left). When the gap closes within the step at restitution
+ * speed, the exact answer for constant accelerations is known: the point
+ * hits at time tau with speed vi and leaves at -e vi, so both the end
+ * velocity and the end separation are set to their exact values. That keeps
+ * bounce heights exact to rounding at any dt (tests/test_contacts.c).
+ */
+static void set_target(solver_point_t *p, const solver_body_t *a, const solver_body_t *b,
+                       vector_t normal, double restitution, const solver_settings_t *settings) {
+    double dt = settings->dt, w = settings->position_weight;
+    double vn_start = vec_dot(normal, start_relative_velocity(a, b, p));
+    double vn_free = vec_dot(normal, relative_velocity(a, b, p));
+    p->impact = false;
+    if (p->separation <= 0.0) {
+        p->target = vn_free < -SOLVER_RESTITUTION_THRESHOLD ? -restitution * vn_free : 0.0;
+        return;
+    }
+    if (w == 0.0) {
+        p->target = -INFINITY; /* the end velocity cannot move the body this step */
+        return;
+    }
+    double an = vec_dot(normal, vec_subtract(b->acceleration, a->acceleration));
+    double tau = time_of_impact(p->separation, vn_start, an, dt);
+    double vi = tau >= 0.0 ? vn_start + an * tau : 0.0;
+    if (tau >= 0.0 && vi < -SOLVER_RESTITUTION_THRESHOLD) {
+        double rest = dt - tau, leave = -restitution * vi;
+        double end_separation = leave * rest + 0.5 * an * rest * rest;
+        double end_velocity = leave + an * rest;
+        if (end_separation < 0.0) { /* would hit again within the step: rests */
+            end_separation = 0.0;
+            end_velocity = fmax(end_velocity, 0.0);
+        }
+        p->impact = true;
+        p->target = end_velocity;
+        p->position_target = end_separation;
+        return;
+    }
+    p->target = fmin((-p->separation / dt - (1.0 - w) * vn_start) / w, 0.0);
+}
+
+static void prepare(solver_contact_t *c, solver_body_t *bodies, const solver_settings_t *s) {
+    solver_body_t *a = &bodies[c->a], *b = &bodies[c->b];
+    vector_t tangent = tangent_of(c->normal);
+    double ma = a->inverse_mass, mb = b->inverse_mass;
+    double ia = a->inverse_inertia, ib = b->inverse_inertia;
+    for (int i = 0; i < c->point_count; i++) {
+        solver_point_t *p = &c->points[i];
+        double rna = vec_cross(p->r_a, c->normal), rnb = vec_cross(p->r_b, c->normal);
+        double k_normal = ma + mb + ia * rna * rna + ib * rnb * rnb;
+        p->normal_mass = k_normal > 0.0 ? 1.0 / k_normal : 0.0;
+        double rta = vec_cross(p->r_a, tangent), rtb = vec_cross(p->r_b, tangent);
+        double k_tangent = ma + mb + ia * rta * rta + ib * rtb * rtb;
+        p->tangent_mass = k_tangent > 0.0 ? 1.0 / k_tangent : 0.0;
+        set_target(p, a, b, c->normal, c->restitution, s);
+    }
+    c->block = false;
+    if (c->point_count == 2) {
+        solver_point_t *p1 = &c->points[0], *p2 = &c->points[1];
+        double rn1a = vec_cross(p1->r_a, c->normal), rn1b = vec_cross(p1->r_b, c->normal);
+        double rn2a = vec_cross(p2->r_a, c->normal), rn2b = vec_cross(p2->r_b, c->normal);
+        c->k11 = ma + mb + ia * rn1a * rn1a + ib * rn1b * rn1b;
+        c->k22 = ma + mb + ia * rn2a * rn2a + ib * rn2b * rn2b;
+        c->k12 = ma + mb + ia * rn1a * rn2a + ib * rn1b * rn2b;
+        double det = c->k11 * c->k22 - c->k12 * c->k12;
+        if (c->k11 * c->k11 < MAX_CONDITION_NUMBER * det) {
+            c->block = true;
+            double inv = 1.0 / det;
+            c->m11 = inv * c->k22;
+            c->m12 = -inv * c->k12;
+            c->m22 = inv * c->k11;
+        }
+    }
+}
+
+static void warm_start(solver_contact_t *c, solver_body_t *bodies) {
+    solver_body_t *a = &bodies[c->a], *b = &bodies[c->b];
+    vector_t tangent = tangent_of(c->normal);
+    for (int i = 0; i < c->point_count; i++) {
+        solver_point_t *p = &c->points[i];
+        vector_t impulse = vec_add(vec_multiply(p->normal_impulse, c->normal),
+                                   vec_multiply(p->tangent_impulse, tangent));
+        apply_impulse(a, b, p, impulse);
+    }
+}
+
+static void solve_friction(solver_contact_t *c, solver_body_t *a, solver_body_t *b) {
+    vector_t tangent = tangent_of(c->normal);
+    for (int i = 0; i < c->point_count; i++) {
+        solver_point_t *p = &c->points[i];
+        double vt = vec_dot(tangent, relative_velocity(a, b, p));
+        double limit = c->friction * p->normal_impulse;
+        double total = fmax(-limit, fmin(p->tangent_impulse - p->tangent_mass * vt, limit));
+        double delta = total - p->tangent_impulse;
+        p->tangent_impulse = total;
+        apply_impulse(a, b, p, vec_multiply(delta, tangent));
+    }
+}
+
+static void solve_normal_point(solver_contact_t *c, solver_body_t *a, solver_body_t *b,
+                               solver_point_t *p) {
+    double vn = vec_dot(c->normal, relative_velocity(a, b, p));
+    double total = fmax(p->normal_impulse - p->normal_mass * (vn - p->target), 0.0);
+    double delta = total - p->normal_impulse;
+    p->normal_impulse = total;
+    apply_impulse(a, b, p, vec_multiply(delta, c->normal));
+}
+
+/* Applies new accumulated normal impulses x1, x2 to both points. */
+static void apply_block(solver_contact_t *c, solver_body_t *a, solver_body_t *b, double x1,
+                        double x2) {
+    solver_point_t *p1 = &c->points[0], *p2 = &c->points[1];
+    apply_impulse(a, b, p1, vec_multiply(x1 - p1->normal_impulse, c->normal));
+    apply_impulse(a, b, p2, vec_multiply(x2 - p2->normal_impulse, c->normal));
+    p1->normal_impulse = x1;
+    p2->normal_impulse = x2;
+}
+
+/*
+ * Both normal impulses at once: the linear complementarity problem
+ * vn = K x + b', x >= 0, vn >= target, x (vn - target) = 0, solved by
+ * enumerating its four cases (both active, either alone, none), as in Box2D.
+ */
+static void solve_normal_block(solver_contact_t *c, solver_body_t *a, solver_body_t *b) {
+    solver_point_t *p1 = &c->points[0], *p2 = &c->points[1];
+    double a1 = p1->normal_impulse, a2 = p2->normal_impulse;
+    double b1 = vec_dot(c->normal, relative_velocity(a, b, p1)) - p1->target;
+    double b2 = vec_dot(c->normal, relative_velocity(a, b, p2)) - p2->target;
+    b1 -= c->k11 * a1 + c->k12 * a2;
+    b2 -= c->k12 * a1 + c->k22 * a2;
+
+    double x1 = -(c->m11 * b1 + c->m12 * b2), x2 = -(c->m12 * b1 + c->m22 * b2);
+    if (x1 >= 0.0 && x2 >= 0.0) {
+        apply_block(c, a, b, x1, x2);
+        return;
+    }
+    x1 = -p1->normal_mass * b1;
+    if (x1 >= 0.0 && c->k12 * x1 + b2 >= 0.0) {
+        apply_block(c, a, b, x1, 0.0);
+        return;
+    }
+    x2 = -p2->normal_mass * b2;
+    if (x2 >= 0.0 && c->k12 * x2 + b1 >= 0.0) {
+        apply_block(c, a, b, 0.0, x2);
+        return;
+    }
+    if (b1 >= 0.0 && b2 >= 0.0) apply_block(c, a, b, 0.0, 0.0);
+}
+
+static void solve_velocity(solver_contact_t *c, solver_body_t *bodies) {
+    solver_body_t *a = &bodies[c->a], *b = &bodies[c->b];
+    solve_friction(c, a, b);
+    if (c->block) {
+        solve_normal_block(c, a, b);
+    } else {
+        for (int i = 0; i < c->point_count; i++) solve_normal_point(c, a, b, &c->points[i]);
+    }
+}
+
+/* Where the integrator will put each body with the solved velocities. */
+static void advance(solver_body_t *bodies, size_t count, const solver_settings_t *s) {
+    double w = s->position_weight;
+    for (size_t i = 0; i < count; i++) {
+        solver_body_t *body = &bodies[i];
+        body->dx = vec_multiply(s->dt, vec_add(vec_multiply(1.0 - w, body->v_start),
+                                               vec_multiply(w, body->v)));
+        body->dtheta = s->dt * ((1.0 - w) * body->w_start + w * body->w);
+    }
+}
+
+/*
+ * One non-linear Gauss-Seidel pass over positions. The separation is
+ * re-estimated from the displacements so far, to first order in the
+ * rotation (a step turns a body by a small angle), and pushed back toward
+ * -slop by a fraction of the overlap; impact points go to their exact end
+ * separation. Only positions move: no energy is added.
+ */
+static void solve_position(solver_contact_t *c, solver_body_t *bodies) {
+    solver_body_t *a = &bodies[c->a], *b = &bodies[c->b];
+    for (int i = 0; i < c->point_count; i++) {
+        solver_point_t *p = &c->points[i];
+        vector_t moved = vec_subtract(vec_add(b->dx, vec_cross_scalar(b->dtheta, p->r_b)),
+                                      vec_add(a->dx, vec_cross_scalar(a->dtheta, p->r_a)));
+        double separation = p->separation + vec_dot(c->normal, moved);
+        double error;
+        if (p->impact) {
+            /* A rebound is placed exactly (both ways); a landing only pushed
+             * out, so that a neighbour's push is not undone. */
+            error = separation - p->position_target;
+            if (p->position_target == 0.0) error = fmin(error, 0.0);
+        } else {
+            error = fmax(-MAX_POSITION_CORRECTION,
+                         fmin(POSITION_CORRECTION_RATE * (separation + SOLVER_LINEAR_SLOP), 0.0));
+        }
+        if (error == 0.0) continue;
+        vector_t correction = vec_multiply(-error * p->normal_mass, c->normal);
+        a->dx = vec_subtract(a->dx, vec_multiply(a->inverse_mass, correction));
+        a->dtheta -= a->inverse_inertia * vec_cross(p->r_a, correction);
+        b->dx = vec_add(b->dx, vec_multiply(b->inverse_mass, correction));
+        b->dtheta += b->inverse_inertia * vec_cross(p->r_b, correction);
+    }
+}
+
+void solver_solve(solver_contact_t *contacts, size_t contact_count, solver_body_t *bodies,
+                  size_t body_count, const solver_settings_t *settings) {
+    for (size_t i = 0; i < contact_count; i++) prepare(&contacts[i], bodies, settings);
+    for (size_t i = 0; i < contact_count; i++) warm_start(&contacts[i], bodies);
+    for (int iteration = 0; iteration < settings->velocity_iterations; iteration++) {
+        for (size_t i = 0; i < contact_count; i++) solve_velocity(&contacts[i], bodies);
+    }
+    advance(bodies, body_count, settings);
+    for (int iteration = 0; iteration < settings->position_iterations; iteration++) {
+        for (size_t i = 0; i < contact_count; i++) solve_position(&contacts[i], bodies);
+    }
+}

@@ -1,0 +1,39 @@
+#ifndef WORLD_H
+#define WORLD_H
+
+/*
+ * The world contact pipeline of a scene (stage 2 of scene_tick): bounding
+ * boxes -> broadphase pairs -> narrowphase manifolds -> solver, then the
+ * solver's impulses and position corrections are handed to the bodies'
+ * accumulators for the integrator (stage 3) to apply, and the step's
+ * contacts are appended to the scene's record.
+ *
+ * It keeps last step's contacts, keyed by the pair's body ids, to warm-start
+ * this step's with their impulses. All arrays are reused: a warm step
+ * allocates nothing.
+ */
+
+#include <stddef.h>
+#include "body.h"
+#include "scene.h"
+
+typedef struct world world_t;
+
+world_t *world_init(void);
+void world_free(world_t *world);
+
+void world_set_iterations(world_t *world, size_t velocity_iterations, size_t position_iterations);
+
+typedef struct {
+    double dt;
+    vector_t gravity;
+    integrator_t integrator;
+} world_step_t;
+
+/* Runs the pipeline over bodies[0..count) (removed bodies take no part),
+ * writes impulses and corrections into the bodies, appends each contact to
+ * scene's record and fills the counters of stats. */
+void world_step(world_t *world, body_t **bodies, size_t count, const world_step_t *step,
+                scene_t *scene, scene_stats_t *stats);
+
+#endif // #ifndef WORLD_H
