@@ -6,7 +6,12 @@
  *
  * The seed functions (area, centroid, translate, rotate) accept either
  * winding; their results for a counter-clockwise polygon are the usual ones
- * (the area is positive for counter-clockwise, negative for clockwise).
+ * (the area is positive for counter-clockwise, negative for clockwise). They
+ * do not require a usable body shape: with fewer than 3 vertices or no area
+ * the area is 0 and the centroid is the mean of the vertices (the origin for
+ * an empty list). A NULL list or a NULL vertex stops the program with a
+ * message naming the function ("engine error in polygon_area: vertex 2 is
+ * NULL").
  * Bodies need convex counter-clockwise polygons: polygon_check tells whether
  * a list is usable and why not, without stopping the program, so that user
  * data (a click in the sandbox, a scene file) can be refused softly.

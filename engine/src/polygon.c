@@ -14,15 +14,21 @@ typedef struct {
     size_t count;
 } vertex_buffer_t;
 
-static void buffer_load(vertex_buffer_t *buffer, list_t *polygon) {
+/* The vertex at index i, which must not be NULL; `function` is the public
+ * function to name in the message. */
+static vector_t *get_vertex(list_t *polygon, size_t i, const char *function) {
+    vector_t *vertex = list_get(polygon, i);
+    if (vertex == NULL) engine_fail(function, "vertex %zu is NULL", i);
+    return vertex;
+}
+
+static void buffer_load(vertex_buffer_t *buffer, list_t *polygon, const char *function) {
     buffer->count = list_size(polygon);
     buffer->vertices = buffer->count <= STACK_VERTICES
                            ? buffer->stack
                            : memory_alloc(buffer->count * sizeof(vector_t));
     for (size_t i = 0; i < buffer->count; i++) {
-        vector_t *vertex = list_get(polygon, i);
-        REQUIRE(vertex != NULL, "vertex %zu is NULL", i);
-        buffer->vertices[i] = *vertex;
+        buffer->vertices[i] = *get_vertex(polygon, i, function);
     }
 }
 
@@ -114,7 +120,7 @@ const char *polygon_array_check(const vector_t *vertices, size_t count) {
 double polygon_area(list_t *polygon) {
     REQUIRE_NOT_NULL(polygon);
     vertex_buffer_t buffer;
-    buffer_load(&buffer, polygon);
+    buffer_load(&buffer, polygon, __func__);
     double area = polygon_array_signed_area(buffer.vertices, buffer.count);
     buffer_release(&buffer);
     return area;
@@ -123,7 +129,7 @@ double polygon_area(list_t *polygon) {
 vector_t polygon_centroid(list_t *polygon) {
     REQUIRE_NOT_NULL(polygon);
     vertex_buffer_t buffer;
-    buffer_load(&buffer, polygon);
+    buffer_load(&buffer, polygon, __func__);
     vector_t centroid = polygon_array_centroid(buffer.vertices, buffer.count);
     buffer_release(&buffer);
     return centroid;
@@ -135,7 +141,7 @@ double polygon_moment_of_inertia(list_t *polygon, double mass) {
     const char *problem = polygon_check(polygon);
     REQUIRE(problem == NULL, "%s", problem);
     vertex_buffer_t buffer;
-    buffer_load(&buffer, polygon);
+    buffer_load(&buffer, polygon, __func__);
     double moment = polygon_array_moment(buffer.vertices, buffer.count, mass);
     buffer_release(&buffer);
     return moment;
@@ -148,7 +154,7 @@ const char *polygon_check(list_t *polygon) {
     for (size_t i = 0; i < buffer.count; i++) {
         if (list_get(polygon, i) == NULL) return "polygon has a NULL vertex";
     }
-    buffer_load(&buffer, polygon);
+    buffer_load(&buffer, polygon, __func__);
     const char *problem = polygon_array_check(buffer.vertices, buffer.count);
     buffer_release(&buffer);
     return problem;
@@ -161,7 +167,7 @@ bool polygon_is_counterclockwise(list_t *polygon) {
 void polygon_translate(list_t *polygon, vector_t translation) {
     REQUIRE_NOT_NULL(polygon);
     for (size_t i = 0; i < list_size(polygon); i++) {
-        vector_t *vertex = list_get(polygon, i);
+        vector_t *vertex = get_vertex(polygon, i, __func__);
         *vertex = vec_add(*vertex, translation);
     }
 }
@@ -170,7 +176,7 @@ void polygon_rotate(list_t *polygon, double angle, vector_t point) {
     REQUIRE_NOT_NULL(polygon);
     double c = cos(angle), s = sin(angle);
     for (size_t i = 0; i < list_size(polygon); i++) {
-        vector_t *vertex = list_get(polygon, i);
+        vector_t *vertex = get_vertex(polygon, i, __func__);
         *vertex = vec_add(point, vec_rotate_cs(vec_subtract(*vertex, point), c, s));
     }
 }
