@@ -161,6 +161,7 @@ const char *polygon_check(list_t *polygon) {
 }
 
 bool polygon_is_counterclockwise(list_t *polygon) {
+    REQUIRE_NOT_NULL(polygon);
     return polygon_area(polygon) > 0.0;
 }
 
