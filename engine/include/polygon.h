@@ -51,11 +51,13 @@ bool polygon_is_counterclockwise(list_t *polygon);
 
 /* A new list of new vertices: a regular polygon with `sides` vertices on a
  * circle of radius `radius` about `center`, the first vertex at angle `angle`
- * (radians) from the +x axis, counter-clockwise. sides >= 3, radius > 0. */
+ * (radians) from the +x axis, counter-clockwise. sides >= 3, radius finite
+ * and > 0, center and angle finite. */
 list_t *polygon_make_regular(size_t sides, double radius, vector_t center, double angle);
 
 /* A new list of new vertices: the axis-aligned rectangle with the given
- * centre and half extents (both > 0), counter-clockwise. */
+ * centre (finite) and half extents (both finite and > 0), counter-clockwise,
+ * starting at the lower-left corner. */
 list_t *polygon_make_box(vector_t center, double half_width, double half_height);
 
 /* A read-only view of a body's convex polygon in world coordinates,

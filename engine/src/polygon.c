@@ -191,6 +191,8 @@ static vector_t *vector_new(vector_t v) {
 list_t *polygon_make_regular(size_t sides, double radius, vector_t center, double angle) {
     REQUIRE(sides >= 3, "a polygon needs at least 3 sides (got %zu)", sides);
     REQUIRE(radius > 0.0 && isfinite(radius), "radius must be finite and > 0 (got %g)", radius);
+    REQUIRE_FINITE_VECTOR(center);
+    REQUIRE_FINITE(angle);
     list_t *polygon = list_init(sides, memory_free);
     for (size_t i = 0; i < sides; i++) {
         double theta = angle + 2.0 * M_PI * (double)i / (double)sides;
@@ -201,8 +203,10 @@ list_t *polygon_make_regular(size_t sides, double radius, vector_t center, doubl
 }
 
 list_t *polygon_make_box(vector_t center, double half_width, double half_height) {
-    REQUIRE(half_width > 0.0 && half_height > 0.0,
-            "half extents must be > 0 (got %g, %g)", half_width, half_height);
+    REQUIRE(half_width > 0.0 && half_height > 0.0 && isfinite(half_width) &&
+                isfinite(half_height),
+            "half extents must be finite and > 0 (got %g, %g)", half_width, half_height);
+    REQUIRE_FINITE_VECTOR(center);
     list_t *polygon = list_init(4, memory_free);
     list_add(polygon, vector_new(vec_add(center, (vector_t){-half_width, -half_height})));
     list_add(polygon, vector_new(vec_add(center, (vector_t){half_width, -half_height})));
