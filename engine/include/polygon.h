@@ -40,10 +40,14 @@ void polygon_rotate(list_t *polygon, double angle, vector_t point);
  * polygon of the given mass. Either winding. */
 double polygon_moment_of_inertia(list_t *polygon, double mass);
 
-/* NULL when the list is a usable body shape: at least 3 vertices, all finite,
- * convex, non-zero area and no repeated vertex; clockwise is usable (bodies
- * reverse it). Otherwise a static message naming the problem, e.g.
- * "polygon is not convex (turns clockwise at vertex 3)". */
+/* NULL when the list is a usable body shape: at least 3 vertices, none NULL,
+ * all finite, non-zero area, no repeated vertex (consecutive duplicates),
+ * strictly convex (three collinear consecutive vertices are refused too) and
+ * winding around once; clockwise is usable (bodies reverse it). Otherwise a
+ * static message naming the problem, one of: "polygon is NULL", "polygon has
+ * fewer than 3 vertices", "polygon has a NULL vertex", "polygon has a vertex
+ * that is not finite", "polygon has zero area", "polygon repeats a vertex",
+ * "polygon is not strictly convex", "polygon winds around more than once". */
 const char *polygon_check(list_t *polygon);
 
 /* True when the vertices run counter-clockwise (positive signed area). */

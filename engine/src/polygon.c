@@ -94,9 +94,14 @@ const char *polygon_array_check(const vector_t *vertices, size_t count) {
     }
     if (!(fabs(area) > 1e-12 * scale) || scale == 0.0) return "polygon has zero area";
     double sign = area > 0.0 ? 1.0 : -1.0;
+    /* Zero-length edges first: the turn test below would otherwise meet one
+     * as the `next` edge and blame convexity. */
     for (size_t i = 0; i < count; i++) {
         vector_t edge = vec_subtract(vertices[(i + 1) % count], vertices[i]);
         if (vec_get_length_squared(edge) <= 1e-24 * scale) return "polygon repeats a vertex";
+    }
+    for (size_t i = 0; i < count; i++) {
+        vector_t edge = vec_subtract(vertices[(i + 1) % count], vertices[i]);
         vector_t next = vec_subtract(vertices[(i + 2) % count], vertices[(i + 1) % count]);
         /* A turn against the winding, or a straight angle, means the polygon
          * is not strictly convex; collinear vertices would give zero-length
