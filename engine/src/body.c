@@ -8,15 +8,17 @@
 
 static const double DEFAULT_FRICTION = 0.6;
 
-static void check_mass(double mass) {
-    REQUIRE(!isnan(mass), "mass is NaN");
-    REQUIRE(mass > 0.0, "mass must be > 0 or INFINITY (got %g)", mass);
+/* body_init and body_init_with_info share this; `function` is the one the
+ * caller called, so that a refusal names it. */
+static void check_mass(double mass, const char *function) {
+    if (isnan(mass)) engine_fail(function, "mass is NaN");
+    if (!(mass > 0.0)) engine_fail(function, "mass must be > 0 or INFINITY (got %g)", mass);
 }
 
 /* Takes the shape list's vertices into an array, counter-clockwise. */
-static vector_t *take_vertices(list_t *shape, size_t *count) {
+static vector_t *take_vertices(list_t *shape, size_t *count, const char *function) {
     const char *problem = polygon_check(shape);
-    REQUIRE(problem == NULL, "bad shape: %s", problem);
+    if (problem != NULL) engine_fail(function, "bad shape: %s", problem);
     *count = list_size(shape);
     vector_t *vertices = memory_alloc(*count * sizeof(vector_t));
     for (size_t i = 0; i < *count; i++) vertices[i] = *(vector_t *)list_get(shape, i);
@@ -31,12 +33,12 @@ static vector_t *take_vertices(list_t *shape, size_t *count) {
     return vertices;
 }
 
-body_t *body_init_with_info(list_t *shape, double mass, rgb_color_t color, void *info,
-                            free_func_t info_freer) {
-    REQUIRE_NOT_NULL(shape);
-    check_mass(mass);
+static body_t *body_create(list_t *shape, double mass, rgb_color_t color, void *info,
+                           free_func_t info_freer, const char *function) {
+    if (shape == NULL) engine_fail(function, "shape is NULL");
+    check_mass(mass, function);
     body_t *body = memory_calloc(1, sizeof(body_t));
-    body->local_vertices = take_vertices(shape, &body->count);
+    body->local_vertices = take_vertices(shape, &body->count, function);
     size_t n = body->count;
     body->local_normals = memory_alloc(n * sizeof(vector_t));
     body->world_vertices = memory_alloc(n * sizeof(vector_t));
@@ -64,8 +66,13 @@ body_t *body_init_with_info(list_t *shape, double mass, rgb_color_t color, void 
     return body;
 }
 
+body_t *body_init_with_info(list_t *shape, double mass, rgb_color_t color, void *info,
+                            free_func_t info_freer) {
+    return body_create(shape, mass, color, info, info_freer, __func__);
+}
+
 body_t *body_init(list_t *shape, double mass, rgb_color_t color) {
-    return body_init_with_info(shape, mass, color, NULL, NULL);
+    return body_create(shape, mass, color, NULL, NULL, __func__);
 }
 
 void body_free(body_t *body) {
