@@ -200,14 +200,18 @@ void body_add_torque(body_t *body, double torque) {
 }
 
 void body_add_force_at(body_t *body, vector_t force, vector_t point) {
+    REQUIRE_NOT_NULL(body);
+    REQUIRE_FINITE_VECTOR(force);
     REQUIRE_FINITE_VECTOR(point);
-    body_add_force(body, force);
+    body->force = vec_add(body->force, force);
     body->torque += vec_cross(vec_subtract(point, body->centroid), force);
 }
 
 void body_add_impulse_at(body_t *body, vector_t impulse, vector_t point) {
+    REQUIRE_NOT_NULL(body);
+    REQUIRE_FINITE_VECTOR(impulse);
     REQUIRE_FINITE_VECTOR(point);
-    body_add_impulse(body, impulse);
+    body->impulse = vec_add(body->impulse, impulse);
     body->angular_impulse += vec_cross(vec_subtract(point, body->centroid), impulse);
 }
 
