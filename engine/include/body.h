@@ -37,9 +37,15 @@ typedef struct body body_t;
 /*
  * A body of the given shape (a list of heap vector_t *, world coordinates,
  * either winding), mass (kg, > 0, INFINITY allowed) and colour. The body takes
- * ownership of `shape` and frees it. It starts at rest, rotation 0, with its
- * centroid at the shape's area centroid. Its moment of inertia is that of a
- * uniform polygon of that mass; elasticity 0, friction 0.6.
+ * ownership of `shape`: it copies the vertices and frees the list at once with
+ * list_free, so give the list a freer (free) for its vertices. The caller must
+ * not use `shape` afterwards. A clockwise shape is stored reversed, so
+ * body_get_shape then lists the vertices in the opposite order. The body
+ * starts at rest, rotation 0, with its centroid at the shape's area centroid.
+ * Its moment of inertia is that of a uniform polygon of that mass; elasticity
+ * 0, friction 0.6. A refused shape or mass aborts with a message naming the
+ * function called, e.g. "engine error in body_init: bad shape: polygon is not
+ * strictly convex" or "engine error in body_init: mass is NaN".
  */
 body_t *body_init(list_t *shape, double mass, rgb_color_t color);
 
