@@ -1,0 +1,223 @@
+/*
+ * The canonical scenes (bench_scenes.h) on Box2D 2.4.1 (Debian libbox2d-dev):
+ * c++ -O2 bench_box2d.cpp -lbox2d.
+ *
+ * Settings: Box2D's defaults are kept: 8 velocity and 3 position iterations
+ * per step, warm starting, continuous collision (time of impact of dynamic
+ * bodies against static ones), linear slop 0.005 m, polygon skin radius
+ * 0.01 m, restitution threshold 1 m/s, at most 2 m of translation per step,
+ * single precision (float). Friction is mixed by sqrt(f1 f2) and
+ * restitution by max, as in our engine, so shapes get the scene's values
+ * directly. Two variants: "box2d" with Box2D's default sleeping (bodies at
+ * rest for 0.5 s stop being simulated), and "box2d-nosleep" with sleeping
+ * off (SetAllowSleeping(false)), run on the scenes where bodies come to rest
+ * (pile, pyramid, stack2, overlap, orbit), since our engine has no sleeping
+ * (in orbit, the heavy body moves at 0.01 m/s, under Box2D's sleep
+ * tolerance, and loses its velocity every time it falls asleep).
+ * Mass: fixture density = scene mass / polygon area.
+ * Penetration: -separations of b2WorldManifold over touching contacts after
+ * the step (separations include the polygon skins).
+ */
+
+#include <box2d/box2d.h>
+#include <vector>
+
+#ifndef BENCH_BOX2D_PACKAGE
+#define BENCH_BOX2D_PACKAGE "unknown"
+#endif
+#include "bench_scenes.h"
+
+namespace {
+
+struct GravityPair {
+    int body1, body2;
+    double G;
+};
+
+struct B2World {
+    b2World world;
+    std::vector<b2Body *> bodies;
+    std::vector<GravityPair> pairs;
+    explicit B2World(double gy) : world(b2Vec2(0.0f, (float)gy)) {}
+};
+
+void b2_describe(FILE *out) {
+    fprintf(out,
+            "# box2d: Box2D b2_version %d.%d.%d (package %s; 2.4.1 still says 2.4.0), float; defaults kept: 8 velocity / 3 position iterations, "
+            "warm starting, continuous collision, linear slop %g m, polygon radius %g m, "
+            "restitution threshold 1 m/s, max translation %g m/step; box2d = default sleeping on, "
+            "box2d-nosleep = sleeping off (pile, pyramid, stack2, overlap, orbit)\n",
+            b2_version.major, b2_version.minor, b2_version.revision, BENCH_BOX2D_PACKAGE,
+            (double)b2_linearSlop,
+            (double)b2_polygonRadius, (double)b2_maxTranslation);
+}
+
+void b2_describe_none(FILE *out) {
+    (void)out;
+}
+
+void *b2_world_new_common(double gy, int capacity, bool sleep) {
+    B2World *w = new B2World(gy);
+    w->world.SetAllowSleeping(sleep);
+    w->bodies.reserve((size_t)(capacity > 0 ? capacity : 4));
+    return w;
+}
+
+void *b2_world_new(double gy, int contacts, int capacity) {
+    (void)contacts; /* non-colliding bodies get maskBits 0 */
+    return b2_world_new_common(gy, capacity, true);
+}
+
+void *b2_world_new_nosleep(double gy, int contacts, int capacity) {
+    (void)contacts;
+    return b2_world_new_common(gy, capacity, false);
+}
+
+void b2_world_free(void *world) {
+    delete static_cast<B2World *>(world);
+}
+
+int b2_add(B2World *w, b2Body *body) {
+    w->bodies.push_back(body);
+    return (int)w->bodies.size() - 1;
+}
+
+int b2_add_static_box(void *world, double cx, double cy, double hx, double hy, double friction,
+                      double elasticity) {
+    B2World *w = static_cast<B2World *>(world);
+    b2BodyDef def;
+    def.type = b2_staticBody;
+    def.position.Set((float)cx, (float)cy);
+    b2Body *body = w->world.CreateBody(&def);
+    b2PolygonShape box;
+    box.SetAsBox((float)hx, (float)hy);
+    b2FixtureDef fixture;
+    fixture.shape = &box;
+    fixture.friction = (float)friction;
+    fixture.restitution = (float)elasticity;
+    body->CreateFixture(&fixture);
+    return b2_add(w, body);
+}
+
+int b2_add_body(void *world, const bench_shape_t *shape, double x, double y, double angle,
+                double mass, double friction, double elasticity, int collides) {
+    B2World *w = static_cast<B2World *>(world);
+    b2BodyDef def;
+    def.type = b2_dynamicBody;
+    def.position.Set((float)x, (float)y);
+    def.angle = (float)angle;
+    b2Body *body = w->world.CreateBody(&def);
+    b2Vec2 verts[b2_maxPolygonVertices];
+    int n = bench_shape_vertex_count(shape);
+    for (int i = 0; i < n; i++) {
+        double vx, vy;
+        bench_shape_vertex(shape, i, &vx, &vy);
+        verts[i].Set((float)vx, (float)vy);
+    }
+    b2PolygonShape polygon;
+    polygon.Set(verts, n);
+    b2FixtureDef fixture;
+    fixture.shape = &polygon;
+    fixture.density = (float)(mass / bench_shape_area(shape));
+    fixture.friction = (float)friction;
+    fixture.restitution = (float)elasticity;
+    if (!collides) fixture.filter.maskBits = 0;
+    body->CreateFixture(&fixture);
+    return b2_add(w, body);
+}
+
+void b2_set_velocity(void *world, int body, double vx, double vy) {
+    B2World *w = static_cast<B2World *>(world);
+    w->bodies[(size_t)body]->SetLinearVelocity(b2Vec2((float)vx, (float)vy));
+}
+
+void b2_add_gravity_pair(void *world, int body1, int body2, double G) {
+    B2World *w = static_cast<B2World *>(world);
+    GravityPair pair = {body1, body2, G};
+    w->pairs.push_back(pair);
+}
+
+void b2_step(void *world, double dt) {
+    B2World *w = static_cast<B2World *>(world);
+    for (const GravityPair &pair : w->pairs) {
+        b2Body *a = w->bodies[(size_t)pair.body1], *b = w->bodies[(size_t)pair.body2];
+        b2Vec2 d = b->GetWorldCenter() - a->GetWorldCenter();
+        double r2 = (double)d.x * d.x + (double)d.y * d.y, r = sqrt(r2);
+        if (r < 1e-9) continue;
+        double f = pair.G * a->GetMass() * b->GetMass() / r2 / r;
+        b2Vec2 force((float)(f * d.x), (float)(f * d.y));
+        a->ApplyForceToCenter(force, true);
+        b->ApplyForceToCenter(-force, true);
+    }
+    w->world.Step((float)dt, 8, 3);
+}
+
+void b2_get_state(void *world, int body, bench_state_t *out) {
+    B2World *w = static_cast<B2World *>(world);
+    b2Body *b = w->bodies[(size_t)body];
+    b2Vec2 p = b->GetWorldCenter(), v = b->GetLinearVelocity();
+    out->x = p.x;
+    out->y = p.y;
+    out->angle = b->GetAngle();
+    out->vx = v.x;
+    out->vy = v.y;
+    out->omega = b->GetAngularVelocity();
+}
+
+double b2_contact_penetration(b2Contact *c) {
+    double pen = 0.0;
+    if (!c->IsTouching()) return 0.0;
+    b2WorldManifold wm;
+    c->GetWorldManifold(&wm);
+    for (int i = 0; i < c->GetManifold()->pointCount; i++) {
+        if (-wm.separations[i] > pen) pen = -wm.separations[i];
+    }
+    return pen;
+}
+
+double b2_max_penetration(void *world) {
+    B2World *w = static_cast<B2World *>(world);
+    double pen = 0.0;
+    for (b2Contact *c = w->world.GetContactList(); c; c = c->GetNext()) {
+        double p = b2_contact_penetration(c);
+        if (p > pen) pen = p;
+    }
+    return pen;
+}
+
+double b2_pair_penetration(void *world, int body1, int body2) {
+    B2World *w = static_cast<B2World *>(world);
+    b2Body *a = w->bodies[(size_t)body1], *b = w->bodies[(size_t)body2];
+    double pen = 0.0;
+    for (b2Contact *c = w->world.GetContactList(); c; c = c->GetNext()) {
+        b2Body *ba = c->GetFixtureA()->GetBody(), *bb = c->GetFixtureB()->GetBody();
+        if ((ba == a && bb == b) || (ba == b && bb == a)) {
+            double p = b2_contact_penetration(c);
+            if (p > pen) pen = p;
+        }
+    }
+    return pen;
+}
+
+const bench_ops_t box2d_ops = {
+    "box2d",         NULL,          0,
+    0,               b2_describe,   b2_world_new,
+    b2_world_free,   b2_add_static_box, b2_add_body,
+    b2_set_velocity, b2_add_gravity_pair, b2_step,
+    b2_get_state,    b2_max_penetration, b2_pair_penetration,
+};
+
+const bench_ops_t box2d_nosleep_ops = {
+    "box2d-nosleep",   "pile,pyramid,stack2,overlap,orbit", 0,
+    0,                 b2_describe_none,              b2_world_new_nosleep,
+    b2_world_free,     b2_add_static_box,             b2_add_body,
+    b2_set_velocity,   b2_add_gravity_pair,           b2_step,
+    b2_get_state,      b2_max_penetration,            b2_pair_penetration,
+};
+
+} // namespace
+
+int main(int argc, char **argv) {
+    const bench_ops_t *ops[2] = {&box2d_ops, &box2d_nosleep_ops};
+    return bench_main(argc, argv, ops, 2);
+}

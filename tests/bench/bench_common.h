@@ -1,0 +1,277 @@
+#ifndef BENCH_COMMON_H
+#define BENCH_COMMON_H
+
+/*
+ * Shared by the three benchmark programs (bench_engine.c, bench_chipmunk.c,
+ * bench_box2d.cpp): the constants of the canonical scenes of
+ * /work/shared/bench/SCENES.md, their random generator, a monotonic timer,
+ * median and mean, the printing of one result line, and the small interface
+ * (bench_ops_t) through which bench_scenes.h builds and runs every scene the
+ * same way on every engine.
+ *
+ * Plain C11 that also compiles as C++ (no designated initialisers, no
+ * compound literals, no implicit void * conversions).
+ *
+ * Output format, one line per scene, size and engine:
+ *   engine=NAME scene=NAME size=N runs=R mean_ms=M median_ms=M [more key=value]
+ * mean_ms and median_ms are the mean and the median over the R runs of each
+ * run's mean milliseconds per step (only the engine's step call is timed:
+ * building the scene and reading states for the quality figures are not).
+ * Lines starting with '#' are comments (settings, compiler).
+ */
+
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#ifndef M_PI
+#define M_PI 3.14159265358979323846
+#endif
+
+/* ---- Scene constants (SCENES.md). Units: m, kg, s. ---- */
+
+#define BENCH_GRAVITY_Y (-10.0)
+#define BENCH_G_ABS 10.0
+#define BENCH_DT (1.0 / 60.0)
+#define BENCH_FRICTION 0.6
+#define BENCH_DEFAULT_RUNS 5
+
+/* pile(N) */
+#define PILE_STEPS 600
+#define PILE_SETTLED_FIRST 301 /* settled figures: steps 301..600 (1-based) */
+#define PILE_COLUMNS 70
+#define PILE_PITCH 1.12
+#define PILE_JITTER 0.1
+#define PILE_RADIUS 0.5
+#define PILE_LEFT 0.0
+#define PILE_RIGHT 80.0
+static const int pile_sides[5] = {3, 4, 5, 6, 8};
+
+/* pyramid(B) */
+#define PYRAMID_STEPS 600
+#define PYRAMID_HALF 0.5
+#define PYRAMID_GROUND_HALF_WIDTH 100.0
+
+/* bounce(e) */
+#define BOUNCE_FLOOR_HALF_WIDTH 50.0
+#define BOUNCE_START_BOTTOM 10.0
+#define BOUNCE_APEXES 5
+#define BOUNCE_MAX_TIME 30.0 /* s; far beyond the ~8 s five bounces take */
+
+/* cradle(n) */
+#define CRADLE_STRIKER_X (-3.0)
+#define CRADLE_SPEED 2.0
+#define CRADLE_STEPS 300 /* 5 s: the striker arrives at t = 1 s */
+
+/* orbit */
+#define ORBIT_G 1.0
+#define ORBIT_MASS_A 1000.0
+#define ORBIT_MASS_B 1.0
+#define ORBIT_X_B 10.0
+#define ORBIT_VY_B 10.0
+#define ORBIT_HALF 0.1
+#define ORBIT_PERIODS 10
+
+/* stack2(r) */
+#define STACK2_STEPS 600
+#define STACK2_GROUND_HALF_WIDTH 20.0
+
+/* tunnel(v) */
+#define TUNNEL_STEPS 120
+#define TUNNEL_PHASES 16
+#define TUNNEL_WALL_HALF_WIDTH 0.05
+#define TUNNEL_WALL_HALF_HEIGHT 5.0
+#define TUNNEL_BULLET_HALF 0.1
+#define TUNNEL_START_X (-5.0)
+static const double tunnel_speeds[10] = {1, 2, 5, 10, 20, 50, 100, 200, 500, 1000};
+
+/* overlap */
+#define OVERLAP_STEPS 300
+#define OVERLAP_BASE 4
+#define OVERLAP_PITCH 0.75
+#define OVERLAP_GROUND_HALF_WIDTH 20.0
+
+/* ---- Random numbers ----
+ * SCENES.md: s0 = 12345; s(k+1) = (1103515245 s(k) + 12345) mod 2^31;
+ * u(k) = s(k) / 2^31. Interpretation used here: the state starts at
+ * s = 12345, and every draw FIRST advances the state, then returns the new
+ * state divided by 2^31 (so the first number drawn is u(1) = s(1) / 2^31;
+ * s0 itself is never returned). The product is computed in 64 bits, exactly.
+ */
+typedef struct {
+    uint64_t s;
+} bench_rng_t;
+
+static inline void bench_rng_init(bench_rng_t *rng) {
+    rng->s = 12345u;
+}
+
+static inline double bench_rng_next(bench_rng_t *rng) {
+    rng->s = (1103515245ull * rng->s + 12345ull) % 2147483648ull;
+    return (double)rng->s / 2147483648.0;
+}
+
+/* ---- Timing and statistics ---- */
+
+/* Milliseconds on the monotonic clock. */
+static inline double bench_now_ms(void) {
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec * 1e3 + (double)ts.tv_nsec * 1e-6;
+}
+
+static inline double bench_mean(const double *values, int count) {
+    double sum = 0.0;
+    for (int i = 0; i < count; i++) sum += values[i];
+    return count > 0 ? sum / count : NAN;
+}
+
+static inline int bench_compare_doubles(const void *a, const void *b) {
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* The median (mean of the two middle values for an even count). */
+static inline double bench_median(const double *values, int count) {
+    if (count <= 0) return NAN;
+    double *sorted = (double *)malloc(sizeof(double) * (size_t)count);
+    if (sorted == NULL) return NAN;
+    memcpy(sorted, values, sizeof(double) * (size_t)count);
+    qsort(sorted, (size_t)count, sizeof(double), bench_compare_doubles);
+    double m = count % 2 ? sorted[count / 2] : 0.5 * (sorted[count / 2 - 1] + sorted[count / 2]);
+    free(sorted);
+    return m;
+}
+
+/* "1/60" when 1/dt is (close to) a whole number, else "%g". */
+static inline void bench_format_dt(char *out, size_t size, double dt) {
+    double inverse = 1.0 / dt;
+    if (fabs(inverse - floor(inverse + 0.5)) < 1e-6 * inverse) {
+        snprintf(out, size, "1/%.0f", floor(inverse + 0.5));
+    } else {
+        snprintf(out, size, "%g", dt);
+    }
+}
+
+/* Prints one result line: the fixed keys, then `quality` (key=value pairs
+ * separated by spaces, may be empty). settled_ms may be NULL. */
+static inline void bench_print_result(const char *engine, const char *scene, const char *size,
+                                      int runs, const double *run_ms, const double *settled_ms,
+                                      const char *quality) {
+    printf("engine=%s scene=%s size=%s runs=%d", engine, scene, size, runs);
+    if (run_ms != NULL) {
+        printf(" mean_ms=%.4g median_ms=%.4g", bench_mean(run_ms, runs),
+               bench_median(run_ms, runs));
+    }
+    if (settled_ms != NULL) printf(" settled_median_ms=%.4g", bench_median(settled_ms, runs));
+    if (quality != NULL && quality[0] != '\0') printf(" %s", quality);
+    printf("\n");
+    fflush(stdout);
+}
+
+/* ---- The engine interface the scenes are written against ----
+ * Each program fills one bench_ops_t per engine variant; bench_scenes.h
+ * builds every scene through it, so all engines get the same bodies in the
+ * same order with the same numbers. Bodies are named by the int the add
+ * functions return (static boxes included).
+ */
+
+/* A body shape, centred on its centroid in the body's own frame: sides == 0
+ * is a box of half extents (hx, hy); sides >= 3 a regular polygon of
+ * circumradius `radius` whose first vertex is at angle 0 (the body's angle
+ * then turns it). */
+typedef struct {
+    int sides;
+    double radius;
+    double hx, hy;
+} bench_shape_t;
+
+typedef struct {
+    double x, y, angle;   /* centroid (m), rotation (rad) */
+    double vx, vy, omega; /* linear (m/s) and angular (rad/s) velocity */
+} bench_state_t;
+
+typedef struct bench_ops {
+    /* The name printed after engine=. */
+    const char *name;
+    /* NULL, or a comma list of the only scenes this variant runs. */
+    const char *only_scenes;
+    /* How the engine combines two shapes' coefficients: friction by geometric
+     * mean (0) or by product (1); restitution by max (0) or by product (1).
+     * The scenes pick per-shape values so that the pair gets the scene's
+     * coefficient either way (see bench_shape_friction). */
+    int friction_product;
+    int restitution_product;
+    /* Prints '#' comment lines: version and settings. */
+    void (*describe)(FILE *out);
+    /* A new world with gravity (0, gy); contacts: whether bodies collide at
+     * all (orbit: 0). body_capacity is a hint. */
+    void *(*world_new)(double gy, int contacts, int body_capacity);
+    void (*world_free)(void *world);
+    /* A static (infinite mass) axis-aligned box. */
+    int (*add_static_box)(void *world, double cx, double cy, double hx, double hy,
+                          double friction, double elasticity);
+    /* A dynamic body of the given mass (kg), placed with its centroid at
+     * (x, y) and rotated by angle; collides == 0 keeps it out of contacts. */
+    int (*add_body)(void *world, const bench_shape_t *shape, double x, double y, double angle,
+                    double mass, double friction, double elasticity, int collides);
+    void (*set_velocity)(void *world, int body, double vx, double vy);
+    /* Newtonian gravity G m1 m2 / r^2 between the two bodies' centroids,
+     * applied at every step from now on. */
+    void (*add_gravity_pair)(void *world, int body1, int body2, double G);
+    /* One fixed step of dt seconds (the only thing that is timed). */
+    void (*step)(void *world, double dt);
+    void (*get_state)(void *world, int body, bench_state_t *out);
+    /* The largest penetration (m, >= 0) over the contacts the engine holds
+     * after the last step; 0 when none overlaps. */
+    double (*max_penetration)(void *world);
+    /* The same restricted to the pair (body1, body2); 0 when not in contact. */
+    double (*pair_penetration)(void *world, int body1, int body2);
+} bench_ops_t;
+
+/* Polygon area (m^2) of a shape: mass = area at density 1. */
+static inline double bench_shape_area(const bench_shape_t *shape) {
+    if (shape->sides == 0) return 4.0 * shape->hx * shape->hy;
+    return 0.5 * shape->sides * shape->radius * shape->radius * sin(2.0 * M_PI / shape->sides);
+}
+
+/* The i-th vertex of a shape in its own frame, counter-clockwise (boxes start
+ * at the lower-left corner). */
+static inline void bench_shape_vertex(const bench_shape_t *shape, int i, double *x, double *y) {
+    if (shape->sides == 0) {
+        static const double sx[4] = {-1, 1, 1, -1}, sy[4] = {-1, -1, 1, 1};
+        *x = sx[i] * shape->hx;
+        *y = sy[i] * shape->hy;
+    } else {
+        double a = 2.0 * M_PI * i / shape->sides;
+        *x = shape->radius * cos(a);
+        *y = shape->radius * sin(a);
+    }
+}
+
+static inline int bench_shape_vertex_count(const bench_shape_t *shape) {
+    return shape->sides == 0 ? 4 : shape->sides;
+}
+
+/* Moment of inertia about the centroid of a uniform shape of mass m. */
+static inline double bench_shape_inertia(const bench_shape_t *shape, double mass) {
+    if (shape->sides == 0) return mass * (4.0 * shape->hx * shape->hx + 4.0 * shape->hy * shape->hy) / 12.0;
+    double s = 2.0 * M_PI / shape->sides;
+    return mass * shape->radius * shape->radius * (2.0 + cos(s)) / 6.0;
+}
+
+/* Per-shape friction so that two shapes with it give the pair `mu`. */
+static inline double bench_shape_friction(const bench_ops_t *ops, double mu) {
+    return ops->friction_product ? sqrt(mu) : mu;
+}
+
+/* Per-shape elasticity of static bodies: with max mixing 0 (the dynamic
+ * body's value rules), with product mixing 1 (likewise). */
+static inline double bench_static_elasticity(const bench_ops_t *ops) {
+    return ops->restitution_product ? 1.0 : 0.0;
+}
+
+#endif // #ifndef BENCH_COMMON_H
