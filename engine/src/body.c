@@ -5,6 +5,7 @@
 #include "integrator.h"
 #include "memory.h"
 #include "polygon_array.h"
+#include "scalar.h"
 
 static const double DEFAULT_FRICTION = 0.6;
 
@@ -93,10 +94,10 @@ void body_update_world(body_t *body) {
         vector_t p = vec_add(body->centroid, vec_rotate_cs(body->local_vertices[i], c, s));
         body->world_vertices[i] = p;
         body->world_normals[i] = vec_rotate_cs(body->local_normals[i], c, s);
-        bounds.min.x = fmin(bounds.min.x, p.x);
-        bounds.min.y = fmin(bounds.min.y, p.y);
-        bounds.max.x = fmax(bounds.max.x, p.x);
-        bounds.max.y = fmax(bounds.max.y, p.y);
+        bounds.min.x = min_of(bounds.min.x, p.x);
+        bounds.min.y = min_of(bounds.min.y, p.y);
+        bounds.max.x = max_of(bounds.max.x, p.x);
+        bounds.max.y = max_of(bounds.max.y, p.y);
     }
     body->bounds = bounds;
     body->world_valid = true;

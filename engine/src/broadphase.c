@@ -2,6 +2,7 @@
 #include <math.h>
 #include <string.h>
 #include "memory.h"
+#include "scalar.h"
 
 typedef struct {
     int32_t ix, iy;
@@ -53,7 +54,7 @@ static double choose_cell_size(const broadphase_proxy_t *proxies, size_t count) 
     for (size_t i = 0; i < count; i++) {
         if (proxies[i].fixed) continue;
         aabb_t box = proxies[i].box;
-        sum += fmax(box.max.x - box.min.x, box.max.y - box.min.y);
+        sum += max_of(box.max.x - box.min.x, box.max.y - box.min.y);
         movable++;
     }
     double size = movable > 0 ? 2.0 * sum / (double)movable : 1.0;
@@ -139,8 +140,8 @@ static void pairs_in_buckets(broadphase_t *broadphase, const broadphase_proxy_t 
                 if (sorted[q].ix != sorted[p].ix || sorted[q].iy != sorted[p].iy) continue;
                 const broadphase_proxy_t *c = &proxies[sorted[q].proxy];
                 if (!aabb_overlaps(a->box, c->box) || !broadphase_filters_allow(a, c)) continue;
-                int32_t corner_x = cell_index(fmax(a->box.min.x, c->box.min.x), inverse_size);
-                int32_t corner_y = cell_index(fmax(a->box.min.y, c->box.min.y), inverse_size);
+                int32_t corner_x = cell_index(max_of(a->box.min.x, c->box.min.x), inverse_size);
+                int32_t corner_y = cell_index(max_of(a->box.min.y, c->box.min.y), inverse_size);
                 if (corner_x != sorted[p].ix || corner_y != sorted[p].iy) continue;
                 add_pair(broadphase, sorted[p].proxy, sorted[q].proxy);
             }

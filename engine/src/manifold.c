@@ -1,6 +1,7 @@
 #include "manifold.h"
 #include <math.h>
 #include "body_private.h"
+#include "scalar.h"
 
 /* Prefer polygon a as the reference unless b's face is clearly better, so
  * the choice (and so the feature ids) does not flicker between steps when
@@ -13,17 +14,23 @@ typedef struct {
 } face_separation_t;
 
 /* The edge of `reference` whose outward normal separates `other` the most:
- * for each edge, the least signed distance of other's vertices from it. */
-static face_separation_t max_face_separation(const body_t *reference, const body_t *other) {
+ * for each edge, the least signed distance of other's vertices from it.
+ * Stops early once an edge separates by more than margin. */
+static face_separation_t max_face_separation(const body_t *reference, const body_t *other,
+                                             double margin) {
     face_separation_t best = {-INFINITY, 0};
     for (size_t i = 0; i < reference->count; i++) {
         vector_t normal = reference->world_normals[i];
-        vector_t origin = reference->world_vertices[i];
+        double offset = vec_dot(normal, reference->world_vertices[i]);
         double least = INFINITY;
         for (size_t j = 0; j < other->count; j++) {
-            least = fmin(least, vec_dot(normal, vec_subtract(other->world_vertices[j], origin)));
+            least = min_of(least, vec_dot(normal, other->world_vertices[j]));
         }
-        if (least > best.separation) best = (face_separation_t){least, i};
+        least -= offset;
+        if (least > best.separation) {
+            best = (face_separation_t){least, i};
+            if (least > margin) break;
+        }
     }
     return best;
 }
@@ -70,9 +77,9 @@ manifold_t manifold_collide(body_t *a, body_t *b, double margin) {
     manifold_t manifold = {VEC_ZERO, 0, {{VEC_ZERO, 0.0, 0}, {VEC_ZERO, 0.0, 0}}};
     body_update_world(a);
     body_update_world(b);
-    face_separation_t face_a = max_face_separation(a, b);
+    face_separation_t face_a = max_face_separation(a, b, margin);
     if (face_a.separation > margin) return manifold;
-    face_separation_t face_b = max_face_separation(b, a);
+    face_separation_t face_b = max_face_separation(b, a, margin);
     if (face_b.separation > margin) return manifold;
 
     bool flip = face_b.separation > face_a.separation + REFERENCE_TOLERANCE;

@@ -30,8 +30,11 @@ struct scene {
     world_t *world;
     size_t velocity_iterations, position_iterations;
 
+    /* Seed collisions are recorded as they happen; world contacts are
+     * appended the first time the record is read after a tick. */
     contact_t *record;
     size_t record_count, record_capacity;
+    bool record_needs_world;
     scene_stats_t stats;
 };
 
@@ -161,13 +164,28 @@ void scene_set_solver_iterations(scene_t *scene, size_t velocity_iterations,
     }
 }
 
+/* Stage 5, on demand: a scene nobody observes pays nothing for its record. */
+static void publish_world_record(scene_t *scene) {
+    if (!scene->record_needs_world) return;
+    scene->record_needs_world = false;
+    if (scene->world == NULL) return;
+    size_t count = world_contact_count(scene->world);
+    memory_reserve((void **)&scene->record, &scene->record_capacity, scene->record_count + count,
+                   sizeof(contact_t));
+    for (size_t i = 0; i < count; i++) {
+        scene->record[scene->record_count++] = world_get_contact(scene->world, i);
+    }
+}
+
 size_t scene_contact_count(scene_t *scene) {
     REQUIRE_NOT_NULL(scene);
+    publish_world_record(scene);
     return scene->record_count;
 }
 
 const contact_t *scene_get_contact(scene_t *scene, size_t index) {
     REQUIRE_NOT_NULL(scene);
+    publish_world_record(scene);
     REQUIRE(index < scene->record_count, "index %zu out of range (%zu contacts)", index,
             scene->record_count);
     return &scene->record[index];
@@ -257,11 +275,13 @@ void scene_tick(scene_t *scene, double dt) {
     REQUIRE_NOT_NULL(scene);
     REQUIRE(isfinite(dt) && dt > 0.0, "dt must be finite and > 0 (got %g)", dt);
     scene->record_count = 0;
+    scene->record_needs_world = false;
     scene->stats = (scene_stats_t){0};
     if (scene->force_count > 0) stage_forces(scene);
     if (scene->world != NULL && scene->body_count > 0) {
         world_step_t step = {dt, scene->gravity, scene->integrator};
-        world_step(scene->world, scene->bodies, scene->body_count, &step, scene, &scene->stats);
+        world_step(scene->world, scene->bodies, scene->body_count, &step, &scene->stats);
+        scene->record_needs_world = true;
     }
     if (stage_integrate(scene, dt)) stage_reap(scene);
 }

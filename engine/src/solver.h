@@ -22,18 +22,24 @@
 #include <stdint.h>
 #include "vector.h"
 
+/* What the velocity iterations touch, kept small so that thousands of
+ * bodies stay in cache: one row per body. */
 typedef struct {
-    vector_t v;           /* velocity being solved: ends as the step's new velocity */
+    vector_t v;              /* velocity being solved: ends as the step's new velocity */
     double w;
-    vector_t v_start;     /* at the start of the step */
-    double w_start;
-    vector_t v_free;      /* what it would be at the end without contacts */
-    double w_free;
-    vector_t acceleration; /* (force / mass) + gravity: for times of impact */
     double inverse_mass, inverse_inertia;
-    vector_t dx;          /* displacement this step, advanced then corrected */
+} solver_velocity_t;
+
+/* What the rest of the solve needs, one row per body. */
+typedef struct {
+    vector_t v_start;        /* at the start of the step */
+    double w_start;
+    vector_t v_free;         /* at the end of the step if no contact acted */
+    double w_free;
+    vector_t acceleration;   /* (force / mass) + gravity: for times of impact */
+    vector_t dx;             /* displacement this step: advanced, then corrected */
     double dtheta;
-} solver_body_t;
+} solver_state_t;
 
 typedef struct {
     vector_t r_a, r_b;       /* from each centroid to the contact point (world) */
@@ -48,7 +54,7 @@ typedef struct {
 } solver_point_t;
 
 typedef struct {
-    uint32_t a, b;           /* rows in the solver_body_t array */
+    uint32_t a, b;           /* body rows */
     vector_t normal;         /* unit, from a toward b */
     double friction, restitution;
     int point_count;
@@ -74,9 +80,11 @@ extern const double SOLVER_RESTITUTION_THRESHOLD;
 extern const double SOLVER_LINEAR_SLOP;
 
 /* Everything after the narrowphase: prepare, warm start, velocity
- * iterations, advance, position iterations. On return bodies[i].v and .w are
- * the new velocities and .dx, .dtheta the displacements of the step. */
-void solver_solve(solver_contact_t *contacts, size_t contact_count, solver_body_t *bodies,
-                  size_t body_count, const solver_settings_t *settings);
+ * iterations, advance, position iterations. On entry each body's v, w are
+ * its free velocities; on return they are its new velocities, and its state's
+ * dx, dtheta are the displacements of the step. */
+void solver_solve(solver_contact_t *contacts, size_t contact_count,
+                  solver_velocity_t *velocities, solver_state_t *states, size_t body_count,
+                  const solver_settings_t *settings);
 
 #endif // #ifndef SOLVER_H

@@ -13,29 +13,41 @@
  * (m), so a contact is found a step before it forms. */
 static const double CONTACT_MARGIN = 0.01;
 
+/* What a contact needs beyond the solver's constraint: who, where, and the
+ * key that finds it again next step. */
 typedef struct {
     uint64_t key;
-    solver_contact_t contact;
+    body_t *body_a, *body_b;
+    vector_t points[2];
+} contact_source_t;
+
+/* Last step's impulses of one pair, for warm starting. */
+typedef struct {
+    uint64_t key;
+    int point_count;
+    uint32_t ids[2];
+    double normal_impulse[2], tangent_impulse[2];
 } cached_contact_t;
 
 struct world {
     broadphase_t *broadphase;
     broadphase_proxy_t *proxies;
     size_t proxy_capacity;
-    solver_body_t *bodies;
-    size_t body_capacity;
+    solver_velocity_t *velocities;
+    size_t velocity_capacity;
+    solver_state_t *states;
+    size_t state_capacity;
     double *margins;
     size_t margin_capacity;
 
-    /* This step's contacts and their pair keys, in parallel. */
+    /* This step's contacts, with their sources in parallel. */
     solver_contact_t *contacts;
-    uint64_t *keys;
-    size_t contact_count, contact_capacity, key_capacity;
+    contact_source_t *sources;
+    size_t contact_count, contact_capacity, source_capacity;
 
     /* Last step's contacts, in an open-addressing table by key. */
     cached_contact_t *cache;
     size_t cache_capacity; /* a power of two, or 0 */
-    size_t cache_count;
 
     int velocity_iterations, position_iterations;
 };
@@ -51,10 +63,11 @@ world_t *world_init(void) {
 void world_free(world_t *world) {
     broadphase_free(world->broadphase);
     memory_free(world->proxies);
-    memory_free(world->bodies);
+    memory_free(world->velocities);
+    memory_free(world->states);
     memory_free(world->margins);
     memory_free(world->contacts);
-    memory_free(world->keys);
+    memory_free(world->sources);
     memory_free(world->cache);
     memory_free(world);
 }
@@ -75,35 +88,42 @@ static size_t hash_key(uint64_t key, size_t mask) {
     return (size_t)key & mask;
 }
 
-/* Loads each body's row for the solver and its broadphase proxy. */
-static void load_bodies(world_t *world, body_t **bodies, size_t count, const world_step_t *step) {
-    memory_reserve((void **)&world->bodies, &world->body_capacity, count, sizeof(solver_body_t));
+static void reserve_rows(world_t *world, size_t count) {
+    memory_reserve((void **)&world->velocities, &world->velocity_capacity, count,
+                   sizeof(solver_velocity_t));
+    memory_reserve((void **)&world->states, &world->state_capacity, count, sizeof(solver_state_t));
     memory_reserve((void **)&world->proxies, &world->proxy_capacity, count,
                    sizeof(broadphase_proxy_t));
     memory_reserve((void **)&world->margins, &world->margin_capacity, count, sizeof(double));
+}
+
+/* Loads each body's rows for the solver and its broadphase proxy. */
+static void load_bodies(world_t *world, body_t **bodies, size_t count, const world_step_t *step) {
+    reserve_rows(world, count);
     double dt = step->dt;
     for (size_t i = 0; i < count; i++) {
         body_t *body = bodies[i];
         body->solver_index = (uint32_t)i;
         body_update_world(body);
-        solver_body_t *row = &world->bodies[i];
-        row->v_start = body->velocity;
-        row->w_start = body->angular_velocity;
-        integrator_free_velocity(body, dt, step->gravity, &row->v_free, &row->w_free);
-        row->v = row->v_free;
-        row->w = row->w_free;
-        row->acceleration = integrator_acceleration(body, step->gravity);
-        row->inverse_mass = body->inverse_mass;
-        row->inverse_inertia = body->inverse_inertia;
+        solver_state_t *state = &world->states[i];
+        solver_velocity_t *velocity = &world->velocities[i];
+        state->v_start = body->velocity;
+        state->w_start = body->angular_velocity;
+        integrator_free_velocity(body, dt, step->gravity, &state->v_free, &state->w_free);
+        state->acceleration = integrator_acceleration(body, step->gravity);
+        velocity->v = state->v_free;
+        velocity->w = state->w_free;
+        velocity->inverse_mass = body->inverse_mass;
+        velocity->inverse_inertia = body->inverse_inertia;
 
-        double speed = fmax(vec_get_length(row->v_start), vec_get_length(row->v_free));
-        double spin = fmax(fabs(row->w_start), fabs(row->w_free)) * body->radius;
+        /* How far any point of the body can move this step, bounded. */
+        double speed = fmax(vec_get_length(state->v_start), vec_get_length(state->v_free));
+        double spin = fmax(fabs(state->w_start), fabs(state->w_free)) * body->radius;
         double margin = dt * (speed + spin) + CONTACT_MARGIN;
         world->margins[i] = margin;
         broadphase_proxy_t *proxy = &world->proxies[i];
-        proxy->box = body->bounds;
-        proxy->box.min = vec_subtract(proxy->box.min, (vector_t){margin, margin});
-        proxy->box.max = vec_add(proxy->box.max, (vector_t){margin, margin});
+        proxy->box.min = vec_subtract(body->bounds.min, (vector_t){margin, margin});
+        proxy->box.max = vec_add(body->bounds.max, (vector_t){margin, margin});
         proxy->fixed = body->inverse_mass == 0.0 && body->inverse_inertia == 0.0;
         proxy->category = body->removed ? 0 : body->category;
         proxy->mask = body->mask;
@@ -111,23 +131,23 @@ static void load_bodies(world_t *world, body_t **bodies, size_t count, const wor
     }
 }
 
-static const solver_contact_t *find_cached(const world_t *world, uint64_t key) {
+static const cached_contact_t *find_cached(const world_t *world, uint64_t key) {
     if (world->cache_capacity == 0) return NULL;
     size_t mask = world->cache_capacity - 1;
     for (size_t slot = hash_key(key, mask);; slot = (slot + 1) & mask) {
         const cached_contact_t *entry = &world->cache[slot];
         if (entry->key == UINT64_MAX) return NULL;
-        if (entry->key == key) return &entry->contact;
+        if (entry->key == key) return entry;
     }
 }
 
 /* Copies last step's impulses to the points that are the same features. */
-static void warm_from_cache(solver_contact_t *contact, const solver_contact_t *old) {
+static void warm_from_cache(solver_contact_t *contact, const cached_contact_t *old) {
     for (int i = 0; i < contact->point_count; i++) {
         for (int j = 0; j < old->point_count; j++) {
-            if (contact->points[i].id != old->points[j].id) continue;
-            contact->points[i].normal_impulse = old->points[j].normal_impulse;
-            contact->points[i].tangent_impulse = old->points[j].tangent_impulse;
+            if (contact->points[i].id != old->ids[j]) continue;
+            contact->points[i].normal_impulse = old->normal_impulse[j];
+            contact->points[i].tangent_impulse = old->tangent_impulse[j];
         }
     }
 }
@@ -136,8 +156,10 @@ static void add_contact(world_t *world, body_t *a, body_t *b, const manifold_t *
     size_t n = world->contact_count;
     memory_reserve((void **)&world->contacts, &world->contact_capacity, n + 1,
                    sizeof(solver_contact_t));
-    memory_reserve((void **)&world->keys, &world->key_capacity, n + 1, sizeof(uint64_t));
+    memory_reserve((void **)&world->sources, &world->source_capacity, n + 1,
+                   sizeof(contact_source_t));
     solver_contact_t *contact = &world->contacts[n];
+    contact_source_t *source = &world->sources[n];
     memset(contact, 0, sizeof *contact);
     contact->a = a->solver_index;
     contact->b = b->solver_index;
@@ -151,11 +173,13 @@ static void add_contact(world_t *world, body_t *a, body_t *b, const manifold_t *
         point->r_b = vec_subtract(manifold->points[i].point, b->centroid);
         point->separation = manifold->points[i].separation;
         point->id = manifold->points[i].id;
+        source->points[i] = manifold->points[i].point;
     }
-    uint64_t key = pair_key(a, b);
-    const solver_contact_t *old = find_cached(world, key);
+    source->key = pair_key(a, b);
+    source->body_a = a;
+    source->body_b = b;
+    const cached_contact_t *old = find_cached(world, source->key);
     if (old != NULL) warm_from_cache(contact, old);
-    world->keys[n] = key;
     world->contact_count++;
 }
 
@@ -170,7 +194,7 @@ static void narrowphase(world_t *world, body_t **bodies, const broadphase_pair_t
     }
 }
 
-/* This step's contacts become next step's cache. */
+/* This step's impulses become next step's cache. */
 static void store_cache(world_t *world) {
     size_t needed = 16;
     while (needed < 2 * world->contact_count) needed *= 2;
@@ -182,65 +206,78 @@ static void store_cache(world_t *world) {
     size_t mask = world->cache_capacity - 1;
     for (size_t i = 0; i < world->cache_capacity; i++) world->cache[i].key = UINT64_MAX;
     for (size_t i = 0; i < world->contact_count; i++) {
-        size_t slot = hash_key(world->keys[i], mask);
+        const solver_contact_t *contact = &world->contacts[i];
+        size_t slot = hash_key(world->sources[i].key, mask);
         while (world->cache[slot].key != UINT64_MAX) slot = (slot + 1) & mask;
-        world->cache[slot].key = world->keys[i];
-        world->cache[slot].contact = world->contacts[i];
+        cached_contact_t *entry = &world->cache[slot];
+        entry->key = world->sources[i].key;
+        entry->point_count = contact->point_count;
+        for (int j = 0; j < contact->point_count; j++) {
+            entry->ids[j] = contact->points[j].id;
+            entry->normal_impulse[j] = contact->points[j].normal_impulse;
+            entry->tangent_impulse[j] = contact->points[j].tangent_impulse;
+        }
     }
-    world->cache_count = world->contact_count;
 }
 
 /* Hands the solver's results to the bodies: the change of velocity as an
- * impulse, the position correction beyond what that velocity moves. */
+ * impulse, and the displacement beyond what the integrator will make of the
+ * new velocity as a position correction. */
 static void write_back(world_t *world, body_t **bodies, size_t count, const world_step_t *step) {
     double w = integrator_position_weight(step->integrator);
     for (size_t i = 0; i < count; i++) {
-        const solver_body_t *row = &world->bodies[i];
+        const solver_velocity_t *velocity = &world->velocities[i];
+        const solver_state_t *state = &world->states[i];
         body_t *body = bodies[i];
         if (body->inverse_mass > 0.0) {
-            body->impulse = vec_add(body->impulse,
-                                    vec_multiply(body->mass, vec_subtract(row->v, row->v_free)));
+            vector_t change = vec_subtract(velocity->v, state->v_free);
+            body->impulse = vec_add(body->impulse, vec_multiply(body->mass, change));
         }
         if (body->inverse_inertia > 0.0) {
-            body->angular_impulse += body->inertia * (row->w - row->w_free);
+            body->angular_impulse += body->inertia * (velocity->w - state->w_free);
         }
-        vector_t drift = vec_multiply(step->dt, vec_add(vec_multiply(1.0 - w, row->v_start),
-                                                        vec_multiply(w, row->v)));
-        body->position_correction = vec_subtract(row->dx, drift);
+        vector_t drift = vec_multiply(step->dt, vec_add(vec_multiply(1.0 - w, state->v_start),
+                                                        vec_multiply(w, velocity->v)));
+        body->position_correction = vec_subtract(state->dx, drift);
         body->angle_correction =
-            row->dtheta - step->dt * ((1.0 - w) * row->w_start + w * row->w);
+            state->dtheta - step->dt * ((1.0 - w) * state->w_start + w * velocity->w);
     }
-}
-
-static void record(world_t *world, body_t **bodies, scene_t *scene, scene_stats_t *stats) {
-    for (size_t i = 0; i < world->contact_count; i++) {
-        const solver_contact_t *c = &world->contacts[i];
-        body_t *a = bodies[c->a], *b = bodies[c->b];
-        contact_t entry = {.kind = CONTACT_WORLD, .body1 = a, .body2 = b, .axis = c->normal,
-                           .point_count = (size_t)c->point_count};
-        for (int j = 0; j < c->point_count; j++) {
-            entry.points[j] = vec_add(a->centroid, c->points[j].r_a);
-            entry.separation[j] = c->points[j].separation;
-            entry.normal_impulse[j] = c->points[j].normal_impulse;
-            entry.tangent_impulse[j] = c->points[j].tangent_impulse;
-        }
-        scene_record_contact(scene, &entry);
-        stats->contact_points += (size_t)c->point_count;
-    }
-    stats->contacts += world->contact_count;
 }
 
 void world_step(world_t *world, body_t **bodies, size_t count, const world_step_t *step,
-                scene_t *scene, scene_stats_t *stats) {
+                scene_stats_t *stats) {
     load_bodies(world, bodies, count, step);
     const broadphase_pair_t *pairs;
     size_t pair_count = broadphase_find_pairs(world->broadphase, world->proxies, count, &pairs);
-    stats->broadphase_pairs += pair_count;
     narrowphase(world, bodies, pairs, pair_count);
     solver_settings_t settings = {step->dt, integrator_position_weight(step->integrator),
                                   world->velocity_iterations, world->position_iterations};
-    solver_solve(world->contacts, world->contact_count, world->bodies, count, &settings);
+    solver_solve(world->contacts, world->contact_count, world->velocities, world->states, count,
+                 &settings);
     write_back(world, bodies, count, step);
-    record(world, bodies, scene, stats);
     store_cache(world);
+
+    stats->broadphase_pairs += pair_count;
+    stats->contacts += world->contact_count;
+    for (size_t i = 0; i < world->contact_count; i++) {
+        stats->contact_points += (size_t)world->contacts[i].point_count;
+    }
+}
+
+size_t world_contact_count(const world_t *world) {
+    return world->contact_count;
+}
+
+contact_t world_get_contact(const world_t *world, size_t index) {
+    const solver_contact_t *c = &world->contacts[index];
+    const contact_source_t *source = &world->sources[index];
+    contact_t entry = {.kind = CONTACT_WORLD, .body1 = source->body_a, .body2 = source->body_b,
+                       .axis = c->normal, .point_count = (size_t)c->point_count};
+    for (int j = 0; j < c->point_count; j++) {
+        entry.points[j] = source->points[j];
+        entry.separation[j] = c->points[j].separation;
+        entry.normal_impulse[j] = c->points[j].normal_impulse;
+        entry.tangent_impulse[j] = c->points[j].tangent_impulse;
+    }
+    return entry;
 }

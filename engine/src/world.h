@@ -5,8 +5,8 @@
  * The world contact pipeline of a scene (stage 2 of scene_tick): bounding
  * boxes -> broadphase pairs -> narrowphase manifolds -> solver, then the
  * solver's impulses and position corrections are handed to the bodies'
- * accumulators for the integrator (stage 3) to apply, and the step's
- * contacts are appended to the scene's record.
+ * accumulators for the integrator (stage 3) to apply. The step's contacts
+ * stay readable until the next step.
  *
  * It keeps last step's contacts, keyed by the pair's body ids, to warm-start
  * this step's with their impulses. All arrays are reused: a warm step
@@ -31,9 +31,15 @@ typedef struct {
 } world_step_t;
 
 /* Runs the pipeline over bodies[0..count) (removed bodies take no part),
- * writes impulses and corrections into the bodies, appends each contact to
- * scene's record and fills the counters of stats. */
+ * writes impulses and corrections into the bodies and adds to the counters
+ * of stats. */
 void world_step(world_t *world, body_t **bodies, size_t count, const world_step_t *step,
-                scene_t *scene, scene_stats_t *stats);
+                scene_stats_t *stats);
+
+/* The contacts of the last world_step, for the scene's record (built only
+ * when someone reads it). Their bodies are alive until the next step: a
+ * body marked removed takes no part in contacts. */
+size_t world_contact_count(const world_t *world);
+contact_t world_get_contact(const world_t *world, size_t index);
 
 #endif // #ifndef WORLD_H
