@@ -122,7 +122,9 @@ static void get_shape_is_a_new_copy_of_the_world_vertices(void) {
     body_t *body = body_init(make_polygon(points, 4), 1.0, RED);
     list_t *shape = body_get_shape(body);
     CHECK(list_size(shape) == 4);
-    for (size_t i = 0; i < 4; i++) CHECK_VEC(shape_vertex(shape, i), points[i].x, points[i].y, 1e-15);
+    for (size_t i = 0; i < 4; i++) {
+        CHECK_VEC(shape_vertex(shape, i), points[i].x, points[i].y, 1e-15);
+    }
     /* Changing the copy changes nothing in the body. */
     ((vector_t *)list_get(shape, 0))->x = 100;
     list_t *again = body_get_shape(body);

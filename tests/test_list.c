@@ -44,7 +44,9 @@ static void add_grows_past_initial_capacity(void) {
         for (int i = 0; i < 1000; i++) list_add(list, new_int(i));
         CHECK(list_size(list) == 1000);
         bool all_there = true;
-        for (size_t i = 0; i < 1000; i++) all_there = all_there && *(int *)list_get(list, i) == (int)i;
+        for (size_t i = 0; i < 1000; i++) {
+            all_there = all_there && *(int *)list_get(list, i) == (int)i;
+        }
         CHECK(all_there);
         list_free(list);
     }
