@@ -152,6 +152,10 @@ static void destructive_collision_handler(body_t *body1, body_t *body2, vector_t
 }
 
 void create_destructive_collision(scene_t *scene, body_t *body1, body_t *body2) {
+    REQUIRE_NOT_NULL(scene);
+    REQUIRE_NOT_NULL(body1);
+    REQUIRE_NOT_NULL(body2);
+    REQUIRE(body1 != body2, "a body cannot collide with itself");
     create_collision(scene, body1, body2, destructive_collision_handler, NULL, 0.0);
 }
 
@@ -180,6 +184,10 @@ void physics_collision_handler(body_t *body1, body_t *body2, vector_t axis, void
 }
 
 void create_physics_collision(scene_t *scene, body_t *body1, body_t *body2, double elasticity) {
+    REQUIRE_NOT_NULL(scene);
+    REQUIRE_NOT_NULL(body1);
+    REQUIRE_NOT_NULL(body2);
+    REQUIRE(body1 != body2, "a body cannot collide with itself");
     REQUIRE(isfinite(elasticity) && elasticity >= 0.0,
             "elasticity must be finite and >= 0 (got %g)", elasticity);
     create_collision(scene, body1, body2, physics_collision_handler, NULL, elasticity);
