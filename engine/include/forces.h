@@ -12,9 +12,10 @@
 #include "vector.h"
 
 /* Newtonian gravity between the centroids of two bodies: each is pulled
- * toward the other with G m1 m2 / r^2 (N). G > 0 in N m^2 / kg^2. The force
+ * toward the other with G m1 m2 / r^2 (N). G >= 0 in N m^2 / kg^2. The force
  * is left out while the centroids are closer than a small distance
- * (1e-9 m) to avoid dividing by zero. */
+ * (1e-9 m) to avoid dividing by zero, and whenever a mass is INFINITY (the
+ * pull on the other body would be infinite). */
 void create_newtonian_gravity(scene_t *scene, double G, body_t *body1, body_t *body2);
 
 /* A Hooke spring of constant k (N/m, >= 0) and rest length 0 between the two
@@ -31,15 +32,19 @@ typedef void (*collision_handler_t)(body_t *body1, body_t *body2, vector_t axis,
                                     double force_const);
 
 /*
- * Registers a collision between two bodies: at every tick, if they overlap
- * (find_collision) and did not overlap at the previous tick, handler is
- * called once. It is not called again until they have separated. aux stays
- * owned by the caller (the scene never frees it).
+ * Registers a collision between two distinct bodies: at every tick, if they
+ * overlap (find_collision; touching counts) and did not overlap at the
+ * previous tick, handler (not NULL) is called once, in stage 1 of
+ * scene_tick. It is not called again until they have separated. Bodies that
+ * already overlap when the collision is created collide at the first tick.
+ * aux stays owned by the caller (the scene never frees it).
  */
 void create_collision(scene_t *scene, body_t *body1, body_t *body2,
                       collision_handler_t handler, void *aux, double force_const);
 
-/* Both bodies are removed when they collide. */
+/* Both bodies are marked removed (body_remove) when they start colliding; the
+ * scene frees them at the end of that same tick, with every force creator
+ * that depends on either. */
 void create_destructive_collision(scene_t *scene, body_t *body1, body_t *body2);
 
 /*
