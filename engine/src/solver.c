@@ -21,20 +21,23 @@ static inline vector_t point_velocity(vector_t v, double w, vector_t r) {
     return (vector_t){v.x - w * r.y, v.y + w * r.x};
 }
 
-/* Relative velocity of b's point over a's point. */
-static inline vector_t relative_velocity(const solver_velocity_t *a, const solver_velocity_t *b,
-                                         const solver_point_t *p) {
-    return vec_subtract(point_velocity(b->v, b->w, p->r_b), point_velocity(a->v, a->w, p->r_a));
+/* Relative velocity of b over a at a point, along direction d whose lever
+ * terms are r_a x d and r_b x d. */
+static inline double relative_along(const solver_velocity_t *a, const solver_velocity_t *b,
+                                    vector_t d, double rd_a, double rd_b) {
+    return d.x * (b->v.x - a->v.x) + d.y * (b->v.y - a->v.y) + b->w * rd_b - a->w * rd_a;
 }
 
-static inline void apply_impulse(solver_velocity_t *a, solver_velocity_t *b,
-                                 const solver_point_t *p, vector_t impulse) {
-    a->v.x -= a->inverse_mass * impulse.x;
-    a->v.y -= a->inverse_mass * impulse.y;
-    a->w -= a->inverse_inertia * vec_cross(p->r_a, impulse);
-    b->v.x += b->inverse_mass * impulse.x;
-    b->v.y += b->inverse_mass * impulse.y;
-    b->w += b->inverse_inertia * vec_cross(p->r_b, impulse);
+/* Applies impulse lambda along direction d at a point with lever terms
+ * rd_a, rd_b: -lambda d on a, +lambda d on b. */
+static inline void apply_along(solver_velocity_t *a, solver_velocity_t *b, vector_t d,
+                               double rd_a, double rd_b, double lambda) {
+    a->v.x -= a->inverse_mass * lambda * d.x;
+    a->v.y -= a->inverse_mass * lambda * d.y;
+    a->w -= a->inverse_inertia * lambda * rd_a;
+    b->v.x += b->inverse_mass * lambda * d.x;
+    b->v.y += b->inverse_mass * lambda * d.y;
+    b->w += b->inverse_inertia * lambda * rd_b;
 }
 
 /* The earliest time in [0, dt] at which s + v t + a t^2 / 2 reaches 0, or a
@@ -67,15 +70,15 @@ static double time_of_impact(double s, double v, double a, double dt) {
  * velocity and the end separation are set to their exact values. That keeps
  * bounce heights exact to rounding at any dt (tests/test_contacts.c).
  */
-static void set_target(solver_point_t *p, vector_t normal, double restitution,
-                       const solver_velocity_t *va, const solver_velocity_t *vb,
-                       const solver_state_t *sa, const solver_state_t *sb,
-                       const solver_settings_t *settings) {
+static void set_target(solver_point_t *p, vector_t r_a, vector_t r_b, vector_t normal,
+                       double restitution, const solver_velocity_t *va,
+                       const solver_velocity_t *vb, const solver_state_t *sa,
+                       const solver_state_t *sb, const solver_settings_t *settings) {
     double dt = settings->dt, w = settings->position_weight;
-    vector_t start = vec_subtract(point_velocity(sb->v_start, sb->w_start, p->r_b),
-                                  point_velocity(sa->v_start, sa->w_start, p->r_a));
+    vector_t start = vec_subtract(point_velocity(sb->v_start, sb->w_start, r_b),
+                                  point_velocity(sa->v_start, sa->w_start, r_a));
     double vn_start = vec_dot(normal, start);
-    double vn_free = vec_dot(normal, relative_velocity(va, vb, p));
+    double vn_free = relative_along(va, vb, normal, p->rn_a, p->rn_b);
     p->impact = false;
     if (p->separation <= 0.0) {
         p->target = vn_free < -SOLVER_RESTITUTION_THRESHOLD ? -restitution * vn_free : 0.0;
@@ -104,30 +107,32 @@ static void set_target(solver_point_t *p, vector_t normal, double restitution,
     p->target = min_of((-p->separation / dt - (1.0 - w) * vn_start) / w, 0.0);
 }
 
-static void prepare(solver_contact_t *c, const solver_velocity_t *velocities,
-                    const solver_state_t *states, const solver_settings_t *s) {
+static void prepare(solver_contact_t *c, const solver_anchor_t *anchor,
+                    const solver_velocity_t *velocities, const solver_state_t *states,
+                    const solver_settings_t *s) {
     const solver_velocity_t *a = &velocities[c->a], *b = &velocities[c->b];
     vector_t tangent = tangent_of(c->normal);
     double ma = a->inverse_mass, mb = b->inverse_mass;
     double ia = a->inverse_inertia, ib = b->inverse_inertia;
     for (int i = 0; i < c->point_count; i++) {
         solver_point_t *p = &c->points[i];
-        double rna = vec_cross(p->r_a, c->normal), rnb = vec_cross(p->r_b, c->normal);
-        double k_normal = ma + mb + ia * rna * rna + ib * rnb * rnb;
+        p->rn_a = vec_cross(anchor->r_a[i], c->normal);
+        p->rn_b = vec_cross(anchor->r_b[i], c->normal);
+        p->rt_a = vec_cross(anchor->r_a[i], tangent);
+        p->rt_b = vec_cross(anchor->r_b[i], tangent);
+        double k_normal = ma + mb + ia * p->rn_a * p->rn_a + ib * p->rn_b * p->rn_b;
         p->normal_mass = k_normal > 0.0 ? 1.0 / k_normal : 0.0;
-        double rta = vec_cross(p->r_a, tangent), rtb = vec_cross(p->r_b, tangent);
-        double k_tangent = ma + mb + ia * rta * rta + ib * rtb * rtb;
+        double k_tangent = ma + mb + ia * p->rt_a * p->rt_a + ib * p->rt_b * p->rt_b;
         p->tangent_mass = k_tangent > 0.0 ? 1.0 / k_tangent : 0.0;
-        set_target(p, c->normal, c->restitution, a, b, &states[c->a], &states[c->b], s);
+        set_target(p, anchor->r_a[i], anchor->r_b[i], c->normal, c->restitution, a, b,
+                   &states[c->a], &states[c->b], s);
     }
     c->block = false;
     if (c->point_count == 2) {
-        solver_point_t *p1 = &c->points[0], *p2 = &c->points[1];
-        double rn1a = vec_cross(p1->r_a, c->normal), rn1b = vec_cross(p1->r_b, c->normal);
-        double rn2a = vec_cross(p2->r_a, c->normal), rn2b = vec_cross(p2->r_b, c->normal);
-        c->k11 = ma + mb + ia * rn1a * rn1a + ib * rn1b * rn1b;
-        c->k22 = ma + mb + ia * rn2a * rn2a + ib * rn2b * rn2b;
-        c->k12 = ma + mb + ia * rn1a * rn2a + ib * rn1b * rn2b;
+        const solver_point_t *p1 = &c->points[0], *p2 = &c->points[1];
+        c->k11 = ma + mb + ia * p1->rn_a * p1->rn_a + ib * p1->rn_b * p1->rn_b;
+        c->k22 = ma + mb + ia * p2->rn_a * p2->rn_a + ib * p2->rn_b * p2->rn_b;
+        c->k12 = ma + mb + ia * p1->rn_a * p2->rn_a + ib * p1->rn_b * p2->rn_b;
         double det = c->k11 * c->k22 - c->k12 * c->k12;
         if (c->k11 * c->k11 < MAX_CONDITION_NUMBER * det) {
             c->block = true;
@@ -144,9 +149,8 @@ static void warm_start(const solver_contact_t *c, solver_velocity_t *velocities)
     vector_t tangent = tangent_of(c->normal);
     for (int i = 0; i < c->point_count; i++) {
         const solver_point_t *p = &c->points[i];
-        vector_t impulse = vec_add(vec_multiply(p->normal_impulse, c->normal),
-                                   vec_multiply(p->tangent_impulse, tangent));
-        apply_impulse(a, b, p, impulse);
+        apply_along(a, b, c->normal, p->rn_a, p->rn_b, p->normal_impulse);
+        apply_along(a, b, tangent, p->rt_a, p->rt_b, p->tangent_impulse);
     }
 }
 
@@ -155,30 +159,37 @@ static inline void solve_friction(solver_contact_t *c, solver_velocity_t *a,
     vector_t tangent = tangent_of(c->normal);
     for (int i = 0; i < c->point_count; i++) {
         solver_point_t *p = &c->points[i];
-        double vt = vec_dot(tangent, relative_velocity(a, b, p));
+        double vt = relative_along(a, b, tangent, p->rt_a, p->rt_b);
         double limit = c->friction * p->normal_impulse;
         double total = max_of(-limit, min_of(p->tangent_impulse - p->tangent_mass * vt, limit));
         double delta = total - p->tangent_impulse;
         p->tangent_impulse = total;
-        apply_impulse(a, b, p, vec_multiply(delta, tangent));
+        apply_along(a, b, tangent, p->rt_a, p->rt_b, delta);
     }
 }
 
 static inline void solve_normal_point(const solver_contact_t *c, solver_velocity_t *a,
                                       solver_velocity_t *b, solver_point_t *p) {
-    double vn = vec_dot(c->normal, relative_velocity(a, b, p));
+    double vn = relative_along(a, b, c->normal, p->rn_a, p->rn_b);
     double total = max_of(p->normal_impulse - p->normal_mass * (vn - p->target), 0.0);
     double delta = total - p->normal_impulse;
     p->normal_impulse = total;
-    apply_impulse(a, b, p, vec_multiply(delta, c->normal));
+    apply_along(a, b, c->normal, p->rn_a, p->rn_b, delta);
 }
 
 /* Applies new accumulated normal impulses x1, x2 to both points. */
 static inline void apply_block(solver_contact_t *c, solver_velocity_t *a, solver_velocity_t *b,
                                double x1, double x2) {
     solver_point_t *p1 = &c->points[0], *p2 = &c->points[1];
-    apply_impulse(a, b, p1, vec_multiply(x1 - p1->normal_impulse, c->normal));
-    apply_impulse(a, b, p2, vec_multiply(x2 - p2->normal_impulse, c->normal));
+    double d1 = x1 - p1->normal_impulse, d2 = x2 - p2->normal_impulse;
+    vector_t n = c->normal;
+    double total = d1 + d2;
+    a->v.x -= a->inverse_mass * total * n.x;
+    a->v.y -= a->inverse_mass * total * n.y;
+    a->w -= a->inverse_inertia * (d1 * p1->rn_a + d2 * p2->rn_a);
+    b->v.x += b->inverse_mass * total * n.x;
+    b->v.y += b->inverse_mass * total * n.y;
+    b->w += b->inverse_inertia * (d1 * p1->rn_b + d2 * p2->rn_b);
     p1->normal_impulse = x1;
     p2->normal_impulse = x2;
 }
@@ -192,8 +203,8 @@ static inline void solve_normal_block(solver_contact_t *c, solver_velocity_t *a,
                                       solver_velocity_t *b) {
     solver_point_t *p1 = &c->points[0], *p2 = &c->points[1];
     double a1 = p1->normal_impulse, a2 = p2->normal_impulse;
-    double b1 = vec_dot(c->normal, relative_velocity(a, b, p1)) - p1->target;
-    double b2 = vec_dot(c->normal, relative_velocity(a, b, p2)) - p2->target;
+    double b1 = relative_along(a, b, c->normal, p1->rn_a, p1->rn_b) - p1->target;
+    double b2 = relative_along(a, b, c->normal, p2->rn_a, p2->rn_b) - p2->target;
     b1 -= c->k11 * a1 + c->k12 * a2;
     b2 -= c->k12 * a1 + c->k22 * a2;
 
@@ -215,14 +226,19 @@ static inline void solve_normal_block(solver_contact_t *c, solver_velocity_t *a,
     if (b1 >= 0.0 && b2 >= 0.0) apply_block(c, a, b, 0.0, 0.0);
 }
 
+/* Works on copies of the two rows: the compiler then keeps them in
+ * registers instead of reloading them after every store (it cannot prove
+ * the rows and the contact do not alias). */
 static void solve_velocity(solver_contact_t *c, solver_velocity_t *velocities) {
-    solver_velocity_t *a = &velocities[c->a], *b = &velocities[c->b];
-    solve_friction(c, a, b);
+    solver_velocity_t a = velocities[c->a], b = velocities[c->b];
+    solve_friction(c, &a, &b);
     if (c->block) {
-        solve_normal_block(c, a, b);
+        solve_normal_block(c, &a, &b);
     } else {
-        for (int i = 0; i < c->point_count; i++) solve_normal_point(c, a, b, &c->points[i]);
+        for (int i = 0; i < c->point_count; i++) solve_normal_point(c, &a, &b, &c->points[i]);
     }
+    velocities[c->a] = a;
+    velocities[c->b] = b;
 }
 
 /* Where the integrator will put each body with the solved velocities. */
@@ -252,9 +268,8 @@ static void solve_position(const solver_contact_t *c, const solver_velocity_t *v
     double mb = velocities[c->b].inverse_mass, ib = velocities[c->b].inverse_inertia;
     for (int i = 0; i < c->point_count; i++) {
         const solver_point_t *p = &c->points[i];
-        vector_t moved = vec_subtract(point_velocity(b->dx, b->dtheta, p->r_b),
-                                      point_velocity(a->dx, a->dtheta, p->r_a));
-        double separation = p->separation + vec_dot(c->normal, moved);
+        double separation = p->separation + vec_dot(c->normal, vec_subtract(b->dx, a->dx)) +
+                            b->dtheta * p->rn_b - a->dtheta * p->rn_a;
         double error;
         if (p->impact) {
             /* A rebound is placed exactly (both ways); a landing only pushed
@@ -266,18 +281,20 @@ static void solve_position(const solver_contact_t *c, const solver_velocity_t *v
                            min_of(POSITION_CORRECTION_RATE * (separation + SOLVER_LINEAR_SLOP), 0.0));
         }
         if (error == 0.0) continue;
-        vector_t correction = vec_multiply(-error * p->normal_mass, c->normal);
-        a->dx = vec_subtract(a->dx, vec_multiply(ma, correction));
-        a->dtheta -= ia * vec_cross(p->r_a, correction);
-        b->dx = vec_add(b->dx, vec_multiply(mb, correction));
-        b->dtheta += ib * vec_cross(p->r_b, correction);
+        double lambda = -error * p->normal_mass;
+        a->dx = vec_subtract(a->dx, vec_multiply(ma * lambda, c->normal));
+        a->dtheta -= ia * lambda * p->rn_a;
+        b->dx = vec_add(b->dx, vec_multiply(mb * lambda, c->normal));
+        b->dtheta += ib * lambda * p->rn_b;
     }
 }
 
-void solver_solve(solver_contact_t *contacts, size_t contact_count,
+void solver_solve(solver_contact_t *contacts, const solver_anchor_t *anchors, size_t contact_count,
                   solver_velocity_t *velocities, solver_state_t *states, size_t body_count,
                   const solver_settings_t *settings) {
-    for (size_t i = 0; i < contact_count; i++) prepare(&contacts[i], velocities, states, settings);
+    for (size_t i = 0; i < contact_count; i++) {
+        prepare(&contacts[i], &anchors[i], velocities, states, settings);
+    }
     for (size_t i = 0; i < contact_count; i++) warm_start(&contacts[i], velocities);
     for (int iteration = 0; iteration < settings->velocity_iterations; iteration++) {
         for (size_t i = 0; i < contact_count; i++) solve_velocity(&contacts[i], velocities);

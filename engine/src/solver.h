@@ -41,28 +41,37 @@ typedef struct {
     double dtheta;
 } solver_state_t;
 
+/* One contact point, as the iterations see it. The lever arms r (from each
+ * centroid to the point) enter only through r x n and r x t, computed once,
+ * so the loops touch nothing else. */
 typedef struct {
-    vector_t r_a, r_b;       /* from each centroid to the contact point (world) */
-    double separation;       /* at the start of the step (m) */
-    double normal_impulse;   /* accumulated (N s), >= 0 */
-    double tangent_impulse;  /* accumulated (N s), |.| <= friction * normal */
+    double rn_a, rn_b;       /* r_a x normal, r_b x normal */
+    double rt_a, rt_b;       /* r_a x tangent, r_b x tangent */
     double normal_mass, tangent_mass;
     double target;           /* lower bound on the end relative normal velocity */
+    double normal_impulse;   /* accumulated (N s), >= 0 */
+    double tangent_impulse;  /* accumulated (N s), |.| <= friction * normal */
+    double separation;       /* at the start of the step (m) */
     double position_target;  /* impact points: the exact end separation */
-    bool impact;             /* closes within this step at restitution speed */
     uint32_t id;
+    bool impact;             /* closes within this step at restitution speed */
 } solver_point_t;
+
+/* The lever arms of a contact's points (world, m), used only to prepare. */
+typedef struct {
+    vector_t r_a[2], r_b[2];
+} solver_anchor_t;
 
 typedef struct {
     uint32_t a, b;           /* body rows */
-    vector_t normal;         /* unit, from a toward b */
-    double friction, restitution;
     int point_count;
-    solver_point_t points[2];
-    /* Inverse of the 2x2 normal effective-mass matrix (block solve). */
+    bool block;
+    vector_t normal;         /* unit, from a toward b; the tangent is perp(normal) */
+    double friction, restitution;
+    /* The 2x2 normal effective-mass matrix K and its inverse (block solve). */
     double k11, k12, k22;
     double m11, m12, m22;
-    bool block;
+    solver_point_t points[2];
 } solver_contact_t;
 
 typedef struct {
@@ -83,7 +92,7 @@ extern const double SOLVER_LINEAR_SLOP;
  * iterations, advance, position iterations. On entry each body's v, w are
  * its free velocities; on return they are its new velocities, and its state's
  * dx, dtheta are the displacements of the step. */
-void solver_solve(solver_contact_t *contacts, size_t contact_count,
+void solver_solve(solver_contact_t *contacts, const solver_anchor_t *anchors, size_t contact_count,
                   solver_velocity_t *velocities, solver_state_t *states, size_t body_count,
                   const solver_settings_t *settings);
 

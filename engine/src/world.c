@@ -42,8 +42,9 @@ struct world {
 
     /* This step's contacts, with their sources in parallel. */
     solver_contact_t *contacts;
+    solver_anchor_t *anchors;
     contact_source_t *sources;
-    size_t contact_count, contact_capacity, source_capacity;
+    size_t contact_count, contact_capacity, anchor_capacity, source_capacity;
 
     /* Last step's contacts, in an open-addressing table by key. */
     cached_contact_t *cache;
@@ -67,6 +68,7 @@ void world_free(world_t *world) {
     memory_free(world->states);
     memory_free(world->margins);
     memory_free(world->contacts);
+    memory_free(world->anchors);
     memory_free(world->sources);
     memory_free(world->cache);
     memory_free(world);
@@ -158,7 +160,10 @@ static void add_contact(world_t *world, body_t *a, body_t *b, const manifold_t *
                    sizeof(solver_contact_t));
     memory_reserve((void **)&world->sources, &world->source_capacity, n + 1,
                    sizeof(contact_source_t));
+    memory_reserve((void **)&world->anchors, &world->anchor_capacity, n + 1,
+                   sizeof(solver_anchor_t));
     solver_contact_t *contact = &world->contacts[n];
+    solver_anchor_t *anchor = &world->anchors[n];
     contact_source_t *source = &world->sources[n];
     memset(contact, 0, sizeof *contact);
     contact->a = a->solver_index;
@@ -169,8 +174,8 @@ static void add_contact(world_t *world, body_t *a, body_t *b, const manifold_t *
     contact->point_count = manifold->point_count;
     for (int i = 0; i < manifold->point_count; i++) {
         solver_point_t *point = &contact->points[i];
-        point->r_a = vec_subtract(manifold->points[i].point, a->centroid);
-        point->r_b = vec_subtract(manifold->points[i].point, b->centroid);
+        anchor->r_a[i] = vec_subtract(manifold->points[i].point, a->centroid);
+        anchor->r_b[i] = vec_subtract(manifold->points[i].point, b->centroid);
         point->separation = manifold->points[i].separation;
         point->id = manifold->points[i].id;
         source->points[i] = manifold->points[i].point;
@@ -252,7 +257,7 @@ void world_step(world_t *world, body_t **bodies, size_t count, const world_step_
     narrowphase(world, bodies, pairs, pair_count);
     solver_settings_t settings = {step->dt, integrator_position_weight(step->integrator),
                                   world->velocity_iterations, world->position_iterations};
-    solver_solve(world->contacts, world->contact_count, world->velocities, world->states, count,
+    solver_solve(world->contacts, world->anchors, world->contact_count, world->velocities, world->states, count,
                  &settings);
     write_back(world, bodies, count, step);
     store_cache(world);
