@@ -531,7 +531,8 @@ BAD_CALL(destructive_null_scene, create_destructive_collision(NULL, any_body(), 
 BAD_CALL(destructive_null_body, create_destructive_collision(scene_init(), any_body(), NULL))
 BAD_CALL(physics_negative_elasticity,
          create_physics_collision(scene_init(), any_body(), any_body(), -0.1))
-BAD_CALL(physics_nan_elasticity, create_physics_collision(scene_init(), any_body(), any_body(), NAN))
+BAD_CALL(physics_nan_elasticity,
+         create_physics_collision(scene_init(), any_body(), any_body(), NAN))
 BAD_CALL(physics_null_scene, create_physics_collision(NULL, any_body(), any_body(), 1.0))
 BAD_CALL(physics_null_body, create_physics_collision(scene_init(), NULL, any_body(), 1.0))
 BAD_CALL(handler_negative_elasticity,
