@@ -52,5 +52,38 @@ static void helpers(void) {
     CHECK(vec_is_finite((vector_t){1e300, -1e300}));
 }
 
+static void rotate_cs_matches_rotate_and_negative_turns_clockwise(void) {
+    vector_t v = {1.5, -0.5};
+    for (int i = -8; i <= 8; i++) {
+        double angle = 0.4 * i;
+        vector_t a = vec_rotate(v, angle), b = vec_rotate_cs(v, cos(angle), sin(angle));
+        CHECK_NEAR(a.x, b.x, 1e-15);
+        CHECK_NEAR(a.y, b.y, 1e-15);
+    }
+    vector_t r = vec_rotate((vector_t){0.0, 1.0}, -M_PI / 2);
+    CHECK_NEAR(r.x, 1.0, 1e-15);
+    CHECK_NEAR(r.y, 0.0, 1e-15);
+    /* The cross product of the rotated vector with the original is
+     * |v|^2 sin(angle): positive for a counter-clockwise turn. */
+    CHECK_NEAR(vec_cross(v, vec_rotate(v, 0.3)), vec_get_length_squared(v) * sin(0.3), 1e-15);
+}
+
+static void identities(void) {
+    vector_t a = {0.25, -7.0}, b = {2.5, 1.25}; /* exact in binary */
+    CHECK(vec_cross(a, a) == 0.0);
+    CHECK(vec_dot(a, vec_perpendicular(a)) == 0.0);
+    CHECK(vec_cross(a, b) == vec_dot(vec_perpendicular(a), b));
+    vector_t sum = vec_add(a, vec_negate(a));
+    CHECK(sum.x == 0.0 && sum.y == 0.0);
+    vector_t back = vec_subtract(vec_add(a, b), b);
+    CHECK(back.x == a.x && back.y == a.y);
+    vector_t zero = vec_multiply(0.0, a);
+    CHECK(zero.x == 0.0 && zero.y == 0.0);
+    CHECK(vec_get_length(VEC_ZERO) == 0.0);
+    CHECK(vec_get_length((vector_t){-3.0, 0.0}) == 3.0);
+}
+
 TEST_SUITE(vector, TEST_CASE(zero_is_zero), TEST_CASE(arithmetic), TEST_CASE(products),
-           TEST_CASE(rotation_is_counterclockwise), TEST_CASE(helpers));
+           TEST_CASE(rotation_is_counterclockwise), TEST_CASE(helpers),
+           TEST_CASE(rotate_cs_matches_rotate_and_negative_turns_clockwise),
+           TEST_CASE(identities));
