@@ -174,7 +174,9 @@ void physics_collision_handler(body_t *body1, body_t *body2, vector_t axis, void
     } else if (isinf(m2)) {
         reduced_mass = m1;
     } else {
-        reduced_mass = m1 * m2 / (m1 + m2);
+        /* Not m1 m2 / (m1 + m2): that product overflows long before the
+         * reduced mass does. */
+        reduced_mass = m1 * (m2 / (m1 + m2));
     }
     double u1 = vec_dot(body1->velocity, axis);
     double u2 = vec_dot(body2->velocity, axis);
