@@ -358,6 +358,21 @@ static void physics_handler_with_infinite_masses(void) {
     body_free(other);
 }
 
+static void physics_handler_with_huge_finite_masses(void) {
+    /* m_a m_b overflows a double for masses of 1e200, but the reduced mass
+     * (5e199) does not: the equal-mass elastic swap still happens. */
+    body_t *a = square(VEC_ZERO, 0.5, 1e200);
+    body_t *b = square((vector_t){0.9, 0}, 0.5, 1e200);
+    body_set_velocity(a, (vector_t){1, 0});
+    physics_collision_handler(a, b, (vector_t){1, 0}, NULL, 1.0);
+    body_tick(a, 0.01);
+    body_tick(b, 0.01);
+    CHECK_VEC(body_get_velocity(a), 0, 0, 1e-15);
+    CHECK_VEC(body_get_velocity(b), 1, 0, 1e-15);
+    body_free(a);
+    body_free(b);
+}
+
 /* Two squares of half side 0.5 on the x axis, a at 0 moving at va, b at
  * 1.5 moving at vb, with a physics collision of elasticity e; ticks (dt
  * 0.1) until the collision has happened and 5 more. */
@@ -586,6 +601,7 @@ TEST_SUITE(forces, TEST_CASE(spring_is_hooke_with_rest_length_zero),
            TEST_CASE(destructive_collision_removes_both_at_the_contact_time),
            TEST_CASE(physics_handler_applies_the_formula_along_any_axis),
            TEST_CASE(physics_handler_with_infinite_masses),
+           TEST_CASE(physics_handler_with_huge_finite_masses),
            TEST_CASE(equal_masses_elastic_swap_velocities),
            TEST_CASE(zero_elasticity_gives_the_common_velocity),
            TEST_CASE(super_elastic_gains_energy_by_the_formula),
