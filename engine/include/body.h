@@ -20,7 +20,7 @@
  * function and the problem: a NULL body or shape, a shape that polygon_check
  * refuses (fewer than 3 vertices, non-convex, zero area, NaN), a mass that is
  * NaN, zero or negative, a non-finite position, velocity, angle, force or
- * impulse, a dt that is not finite and > 0. A clockwise shape is accepted and
+ * impulse, a non-finite query point, a dt that is not finite and > 0. A clockwise shape is accepted and
  * reversed to counter-clockwise (documented normalisation).
  */
 
@@ -127,8 +127,8 @@ void body_add_force_at(body_t *body, vector_t force, vector_t point);
  * (point - centroid) x impulse, applied at the next tick. */
 void body_add_impulse_at(body_t *body, vector_t impulse, vector_t point);
 
-/* The velocity (m/s) of the material point of the body now at world point p:
- * v + omega x (p - centroid). */
+/* The velocity (m/s) of the material point of the body now at world point p
+ * (finite): v + omega x (p - centroid). */
 vector_t body_get_point_velocity(body_t *body, vector_t point);
 
 /* Additions: contact material and filtering (used by world contacts). */
@@ -153,7 +153,8 @@ void body_set_collision_filter(body_t *body, uint32_t category, uint32_t mask, u
 /* The world axis-aligned bounding box of the current polygon. */
 aabb_t body_get_bounds(body_t *body);
 
-/* Whether world point p lies inside the body's polygon or on its boundary. */
+/* Whether world point p (finite) lies inside the body's polygon or on its
+ * boundary. */
 bool body_contains_point(body_t *body, vector_t point);
 
 /* Kinetic energy (J): translational plus rotational; 0 for infinite mass. */

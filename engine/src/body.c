@@ -218,6 +218,7 @@ void body_add_impulse_at(body_t *body, vector_t impulse, vector_t point) {
 
 vector_t body_get_point_velocity(body_t *body, vector_t point) {
     REQUIRE_NOT_NULL(body);
+    REQUIRE_FINITE_VECTOR(point);
     return vec_add(body->velocity,
                    vec_cross_scalar(body->angular_velocity, vec_subtract(point, body->centroid)));
 }
@@ -302,6 +303,8 @@ void body_set_collision_filter(body_t *body, uint32_t category, uint32_t mask, u
 
 bool body_contains_point(body_t *body, vector_t point) {
     REQUIRE_NOT_NULL(body);
+    /* A NaN point would compare false against every edge and so be "inside". */
+    REQUIRE_FINITE_VECTOR(point);
     body_update_world(body);
     for (size_t i = 0; i < body->count; i++) {
         if (vec_dot(body->world_normals[i], vec_subtract(point, body->world_vertices[i])) > 0.0) {
