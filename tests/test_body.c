@@ -539,6 +539,9 @@ BAD_CALL(add_impulse_at_nan_point,
          body_add_impulse_at(ok_body(), (vector_t){1, 0}, (vector_t){0, NAN}))
 BAD_CALL(add_impulse_at_nan_impulse,
          body_add_impulse_at(ok_body(), (vector_t){0, INFINITY}, VEC_ZERO))
+BAD_CALL(contains_nan_point, body_contains_point(ok_body(), (vector_t){NAN, NAN}))
+BAD_CALL(point_velocity_infinite_point,
+         body_get_point_velocity(ok_body(), (vector_t){INFINITY, 0}))
 BAD_CALL(set_inertia_zero, body_set_inertia(ok_body(), 0.0))
 BAD_CALL(set_inertia_negative, body_set_inertia(ok_body(), -1.0))
 BAD_CALL(set_inertia_nan, body_set_inertia(ok_body(), NAN))
@@ -585,6 +588,10 @@ static void bad_input_aborts_with_message(void) {
                "not finite");
     CHECK_DIES(add_impulse_at_nan_impulse, NULL, "engine error in body_add_impulse_at:",
                "impulse", "not finite");
+    CHECK_DIES(contains_nan_point, NULL, "engine error in body_contains_point:", "point",
+               "not finite");
+    CHECK_DIES(point_velocity_infinite_point, NULL, "engine error in body_get_point_velocity:",
+               "point", "not finite");
     CHECK_DIES(set_inertia_zero, NULL, "engine error in body_set_inertia:", "inertia");
     CHECK_DIES(set_inertia_negative, NULL, "engine error in body_set_inertia:", "inertia");
     CHECK_DIES(set_inertia_nan, NULL, "engine error in body_set_inertia:", "inertia");
