@@ -107,7 +107,9 @@ void scene_set_contacts_enabled(scene_t *scene, bool enabled);
 bool scene_get_contacts_enabled(scene_t *scene);
 
 /* Contact solver iterations per step: velocity (default 8) and position
- * (default 3); each >= 1. More iterations: stiffer stacks, slower steps. */
+ * (default 4); each in [1, 1000]. More iterations: stiffer stacks, slower
+ * steps (a 40-row pyramid sinks 0.12 m in 10 s with 3 position iterations,
+ * 0.09 m with 4). */
 void scene_set_solver_iterations(scene_t *scene, size_t velocity_iterations,
                                  size_t position_iterations);
 
@@ -122,6 +124,7 @@ const contact_t *scene_get_contact(scene_t *scene, size_t index);
 
 /* Counters of the last scene_tick, for tests and the sandbox's HUD. */
 typedef struct {
+    size_t broadphase_tests;   /* bounding-box comparisons the broadphase made */
     size_t broadphase_pairs;   /* pairs whose bounding boxes overlapped */
     size_t contacts;           /* manifolds with at least one point */
     size_t contact_points;     /* points over all manifolds */

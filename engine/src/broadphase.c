@@ -18,6 +18,7 @@ struct broadphase {
     size_t large_capacity;
     broadphase_pair_t *pairs;
     size_t pair_count, pair_capacity;
+    size_t tests;
 };
 
 broadphase_t *broadphase_init(void) {
@@ -137,6 +138,7 @@ static void pairs_in_buckets(broadphase_t *broadphase, const broadphase_proxy_t 
         for (uint32_t p = begin; p + 1 < end; p++) {
             const broadphase_proxy_t *a = &proxies[sorted[p].proxy];
             for (uint32_t q = p + 1; q < end; q++) {
+                broadphase->tests++;
                 if (sorted[q].ix != sorted[p].ix || sorted[q].iy != sorted[p].iy) continue;
                 const broadphase_proxy_t *c = &proxies[sorted[q].proxy];
                 if (!aabb_overlaps(a->box, c->box) || !broadphase_filters_allow(a, c)) continue;
@@ -159,6 +161,7 @@ static void pairs_with_large(broadphase_t *broadphase, const broadphase_proxy_t 
             bool other_large_seen = false;
             for (size_t m = 0; m < l; m++) other_large_seen |= broadphase->large[m] == i;
             if (other_large_seen) continue;
+            broadphase->tests++;
             if (!aabb_overlaps(proxies[big].box, proxies[i].box)) continue;
             if (!broadphase_filters_allow(&proxies[big], &proxies[i])) continue;
             add_pair(broadphase, big, (uint32_t)i);
@@ -167,8 +170,9 @@ static void pairs_with_large(broadphase_t *broadphase, const broadphase_proxy_t 
 }
 
 size_t broadphase_find_pairs(broadphase_t *broadphase, const broadphase_proxy_t *proxies,
-                             size_t count, const broadphase_pair_t **pairs) {
+                             size_t count, const broadphase_pair_t **pairs, size_t *tests) {
     broadphase->pair_count = 0;
+    broadphase->tests = 0;
     double inverse_size = 1.0 / choose_cell_size(proxies, count);
     size_t large_count;
     size_t n = fill_entries(broadphase, proxies, count, inverse_size, &large_count);
@@ -176,5 +180,6 @@ size_t broadphase_find_pairs(broadphase_t *broadphase, const broadphase_proxy_t 
     pairs_in_buckets(broadphase, proxies, buckets, inverse_size);
     if (large_count > 0) pairs_with_large(broadphase, proxies, count, large_count);
     *pairs = broadphase->pairs;
+    *tests += broadphase->tests + n;
     return broadphase->pair_count;
 }

@@ -42,7 +42,7 @@ scene_t *scene_init(void) {
     scene_t *scene = memory_calloc(1, sizeof(scene_t));
     scene->integrator = INTEGRATOR_SEED;
     scene->velocity_iterations = 8;
-    scene->position_iterations = 3;
+    scene->position_iterations = 4;
     return scene;
 }
 
@@ -136,9 +136,7 @@ integrator_t scene_get_integrator(scene_t *scene) {
 void scene_set_contacts_enabled(scene_t *scene, bool enabled) {
     REQUIRE_NOT_NULL(scene);
     if (enabled && scene->world == NULL) {
-        scene->world = world_init();
-        world_set_iterations(scene->world, scene->velocity_iterations,
-                             scene->position_iterations);
+        scene->world = world_init(scene->velocity_iterations, scene->position_iterations);
     } else if (!enabled && scene->world != NULL) {
         world_free(scene->world);
         scene->world = NULL;

@@ -64,11 +64,14 @@ static double time_of_impact(double s, double v, double a, double dt) {
  * the end of the step; with the integrator's position weight w that bounds
  * the end velocity by (-s / dt - (1 - w) vn_start) / w, never above 0 (a
  * slow approach is not turned into a rebound; the position pass removes the
- * little overlap left). When the gap closes within the step at restitution
- * speed, the exact answer for constant accelerations is known: the point
- * hits at time tau with speed vi and leaves at -e vi, so both the end
- * velocity and the end separation are set to their exact values. That keeps
- * bounce heights exact to rounding at any dt (tests/test_contacts.c).
+ * little overlap left).
+ *
+ * When the gap closes within the step at restitution speed, the exact answer
+ * for constant accelerations is known: the point hits at time tau with
+ * speed vi and leaves at -e vi, and ends the step at -e vi + a (dt - tau).
+ * That is the target; apply_impact_times then moves each body as if the
+ * impulse had acted at tau. Bounce heights come out exact to rounding at any
+ * dt (tests/test_contacts.c).
  */
 static void set_target(solver_point_t *p, vector_t r_a, vector_t r_b, vector_t normal,
                        double restitution, const solver_velocity_t *va,
@@ -79,7 +82,7 @@ static void set_target(solver_point_t *p, vector_t r_a, vector_t r_b, vector_t n
                                   point_velocity(sa->v_start, sa->w_start, r_a));
     double vn_start = vec_dot(normal, start);
     double vn_free = relative_along(va, vb, normal, p->rn_a, p->rn_b);
-    p->impact = false;
+    p->impact_time = -1.0;
     if (p->separation <= 0.0) {
         p->target = vn_free < -SOLVER_RESTITUTION_THRESHOLD ? -restitution * vn_free : 0.0;
         return;
@@ -92,16 +95,8 @@ static void set_target(solver_point_t *p, vector_t r_a, vector_t r_b, vector_t n
     double tau = time_of_impact(p->separation, vn_start, an, dt);
     double vi = tau >= 0.0 ? vn_start + an * tau : 0.0;
     if (tau >= 0.0 && vi < -SOLVER_RESTITUTION_THRESHOLD) {
-        double rest = dt - tau, leave = -restitution * vi;
-        double end_separation = leave * rest + 0.5 * an * rest * rest;
-        double end_velocity = leave + an * rest;
-        if (end_separation < 0.0) { /* would hit again within the step: rests */
-            end_separation = 0.0;
-            end_velocity = max_of(end_velocity, 0.0);
-        }
-        p->impact = true;
-        p->target = end_velocity;
-        p->position_target = end_separation;
+        p->impact_time = tau;
+        p->target = max_of(-restitution * vi + an * (dt - tau), 0.0);
         return;
     }
     p->target = min_of((-p->separation / dt - (1.0 - w) * vn_start) / w, 0.0);
@@ -255,11 +250,32 @@ static void advance(const solver_velocity_t *velocities, solver_state_t *states,
 }
 
 /*
+ * The integrator moves a body by w dt of any velocity change, as if the
+ * change happened at (1 - w) dt. An impact's impulse happened at its time
+ * tau instead, so each body is moved by (dt - tau - w dt) times the velocity
+ * change that impulse made. This conserves linear and angular momentum (it
+ * is the same impulse, applied at another time).
+ */
+static void apply_impact_times(const solver_contact_t *c, const solver_velocity_t *velocities,
+                               solver_state_t *states, const solver_settings_t *s) {
+    for (int i = 0; i < c->point_count; i++) {
+        const solver_point_t *p = &c->points[i];
+        if (p->impact_time < 0.0) continue;
+        double shift = p->normal_impulse * (s->dt - p->impact_time - s->position_weight * s->dt);
+        solver_state_t *a = &states[c->a], *b = &states[c->b];
+        a->dx = vec_subtract(a->dx, vec_multiply(velocities[c->a].inverse_mass * shift, c->normal));
+        a->dtheta -= velocities[c->a].inverse_inertia * shift * p->rn_a;
+        b->dx = vec_add(b->dx, vec_multiply(velocities[c->b].inverse_mass * shift, c->normal));
+        b->dtheta += velocities[c->b].inverse_inertia * shift * p->rn_b;
+    }
+}
+
+/*
  * One non-linear Gauss-Seidel pass over positions. The separation is
  * re-estimated from the displacements so far, to first order in the
  * rotation (a step turns a body by a small angle), and pushed back toward
- * -slop by a fraction of the overlap; impact points go to their exact end
- * separation. Only positions move: no energy is added.
+ * -slop by a fraction of the overlap. Only positions move: no energy is
+ * added.
  */
 static void solve_position(const solver_contact_t *c, const solver_velocity_t *velocities,
                            solver_state_t *states) {
@@ -270,16 +286,9 @@ static void solve_position(const solver_contact_t *c, const solver_velocity_t *v
         const solver_point_t *p = &c->points[i];
         double separation = p->separation + vec_dot(c->normal, vec_subtract(b->dx, a->dx)) +
                             b->dtheta * p->rn_b - a->dtheta * p->rn_a;
-        double error;
-        if (p->impact) {
-            /* A rebound is placed exactly (both ways); a landing only pushed
-             * out, so that a neighbour's push is not undone. */
-            error = separation - p->position_target;
-            if (p->position_target == 0.0) error = min_of(error, 0.0);
-        } else {
-            error = max_of(-MAX_POSITION_CORRECTION,
-                           min_of(POSITION_CORRECTION_RATE * (separation + SOLVER_LINEAR_SLOP), 0.0));
-        }
+        double error = max_of(-MAX_POSITION_CORRECTION,
+                              min_of(POSITION_CORRECTION_RATE * (separation + SOLVER_LINEAR_SLOP),
+                                     0.0));
         if (error == 0.0) continue;
         double lambda = -error * p->normal_mass;
         a->dx = vec_subtract(a->dx, vec_multiply(ma * lambda, c->normal));
@@ -300,6 +309,9 @@ void solver_solve(solver_contact_t *contacts, const solver_anchor_t *anchors, si
         for (size_t i = 0; i < contact_count; i++) solve_velocity(&contacts[i], velocities);
     }
     advance(velocities, states, body_count, settings);
+    for (size_t i = 0; i < contact_count; i++) {
+        apply_impact_times(&contacts[i], velocities, states, settings);
+    }
     for (int iteration = 0; iteration < settings->position_iterations; iteration++) {
         for (size_t i = 0; i < contact_count; i++) solve_position(&contacts[i], velocities, states);
     }

@@ -52,9 +52,8 @@ typedef struct {
     double normal_impulse;   /* accumulated (N s), >= 0 */
     double tangent_impulse;  /* accumulated (N s), |.| <= friction * normal */
     double separation;       /* at the start of the step (m) */
-    double position_target;  /* impact points: the exact end separation */
+    double impact_time;      /* when the gap closes within the step (s), or < 0 */
     uint32_t id;
-    bool impact;             /* closes within this step at restitution speed */
 } solver_point_t;
 
 /* The lever arms of a contact's points (world, m), used only to prepare. */

@@ -53,11 +53,10 @@ struct world {
     int velocity_iterations, position_iterations;
 };
 
-world_t *world_init(void) {
+world_t *world_init(size_t velocity_iterations, size_t position_iterations) {
     world_t *world = memory_calloc(1, sizeof(world_t));
     world->broadphase = broadphase_init();
-    world->velocity_iterations = 8;
-    world->position_iterations = 3;
+    world_set_iterations(world, velocity_iterations, position_iterations);
     return world;
 }
 
@@ -253,7 +252,8 @@ void world_step(world_t *world, body_t **bodies, size_t count, const world_step_
                 scene_stats_t *stats) {
     load_bodies(world, bodies, count, step);
     const broadphase_pair_t *pairs;
-    size_t pair_count = broadphase_find_pairs(world->broadphase, world->proxies, count, &pairs);
+    size_t pair_count = broadphase_find_pairs(world->broadphase, world->proxies, count, &pairs,
+                                              &stats->broadphase_tests);
     narrowphase(world, bodies, pairs, pair_count);
     solver_settings_t settings = {step->dt, integrator_position_weight(step->integrator),
                                   world->velocity_iterations, world->position_iterations};

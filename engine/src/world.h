@@ -19,7 +19,7 @@
 
 typedef struct world world_t;
 
-world_t *world_init(void);
+world_t *world_init(size_t velocity_iterations, size_t position_iterations);
 void world_free(world_t *world);
 
 void world_set_iterations(world_t *world, size_t velocity_iterations, size_t position_iterations);

@@ -1,0 +1,407 @@
+/* World contacts (issue 3): resting, stacking, friction, restitution,
+ * angular momentum, filtering, the step record, allocation and scaling.
+ * Tolerances are the issue's targets unless a comment says otherwise. */
+#include <math.h>
+#include <stdlib.h>
+#include "engine.h"
+#include "test.h"
+
+static const double DT = 1.0 / 60.0;
+static const vector_t GRAVITY = {0.0, -10.0};
+
+static const rgb_color_t GREY = {0.5, 0.5, 0.5};
+
+static scene_t *contact_scene(void) {
+    scene_t *scene = scene_init();
+    scene_set_gravity(scene, GRAVITY);
+    scene_set_contacts_enabled(scene, true);
+    return scene;
+}
+
+/* A box of density 1 (mass = area) or the given mass, added to the scene. */
+static body_t *add_box(scene_t *scene, double x, double y, double half_width, double half_height,
+                       double mass) {
+    body_t *body = body_init(polygon_make_box((vector_t){x, y}, half_width, half_height), mass,
+                             GREY);
+    scene_add_body(scene, body);
+    return body;
+}
+
+static body_t *add_ground(scene_t *scene, double half_width) {
+    return add_box(scene, 0.0, -0.5, half_width, 0.5, INFINITY);
+}
+
+static void run(scene_t *scene, int steps, double dt) {
+    for (int i = 0; i < steps; i++) scene_tick(scene, dt);
+}
+
+/* The deepest overlap among this step's contacts (m), 0 when none overlap. */
+static double max_penetration(scene_t *scene) {
+    double deepest = 0.0;
+    for (size_t i = 0; i < scene_contact_count(scene); i++) {
+        const contact_t *contact = scene_get_contact(scene, i);
+        for (size_t j = 0; j < contact->point_count; j++) {
+            deepest = fmax(deepest, -contact->separation[j]);
+        }
+    }
+    return deepest;
+}
+
+static void box_comes_to_rest_on_floor(void) {
+    scene_t *scene = contact_scene();
+    add_ground(scene, 50.0);
+    body_t *box = add_box(scene, 0.0, 0.5 + 0.3, 0.5, 0.5, 1.0);
+    run(scene, 180, DT);
+    CHECK(max_penetration(scene) < 0.01); /* 1% of the 1 m box */
+    CHECK(vec_get_length(body_get_velocity(box)) < 1e-3);
+    CHECK(fabs(body_get_angular_velocity(box)) < 1e-3);
+    CHECK_NEAR(body_get_centroid(box).y, 0.5, 0.01);
+    scene_free(scene);
+}
+
+static void column_of_ten_boxes_stands(void) {
+    scene_t *scene = contact_scene();
+    add_ground(scene, 50.0);
+    body_t *boxes[10];
+    for (int j = 0; j < 10; j++) boxes[j] = add_box(scene, 0.0, 0.5 + j, 0.5, 0.5, 1.0);
+    run(scene, 600, DT);
+    for (int j = 0; j < 10; j++) {
+        CHECK_NEAR(body_get_centroid(boxes[j]).x, 0.0, 0.1);
+        CHECK_NEAR(body_get_centroid(boxes[j]).y, 0.5 + j, 0.1);
+        CHECK_NEAR(body_get_rotation(boxes[j]), 0.0, 0.02);
+    }
+    CHECK(max_penetration(scene) < 0.01);
+    scene_free(scene);
+}
+
+/* The pyramid of ../shared/bench/SCENES.md with base B. */
+static body_t *build_pyramid(scene_t *scene, int base) {
+    add_ground(scene, 100.0);
+    body_t *top = NULL;
+    for (int j = 0; j < base; j++) {
+        for (int k = 0; k < base - j; k++) {
+            top = add_box(scene, (k - (base - j - 1) / 2.0) * 1.0, 0.5 + j * 1.0, 0.5, 0.5, 1.0);
+        }
+    }
+    return top;
+}
+
+static void pyramid_of_forty_stands_ten_seconds(void) {
+    scene_t *scene = contact_scene();
+    body_t *top = build_pyramid(scene, 40);
+    double start = body_get_centroid(top).y;
+    run(scene, 600, DT);
+    CHECK_NEAR(body_get_centroid(top).y, start, 0.1);
+    CHECK_NEAR(body_get_centroid(top).x, 0.0, 0.1);
+    CHECK(max_penetration(scene) < 0.01);
+    scene_free(scene);
+}
+
+/* Sliding at v with friction mu stops after v^2 / (2 mu g). */
+static void friction_stopping_distance(void) {
+    double speeds[] = {2.0, 5.0, 10.0};
+    for (size_t i = 0; i < sizeof speeds / sizeof speeds[0]; i++) {
+        scene_t *scene = contact_scene();
+        add_ground(scene, 100.0);
+        body_t *box = add_box(scene, 0.0, 0.5, 0.5, 0.5, 1.0);
+        body_set_velocity(box, (vector_t){speeds[i], 0.0});
+        run(scene, 300, DT);
+        double expected = speeds[i] * speeds[i] / (2.0 * 0.6 * 10.0);
+        CHECK_RELATIVE(body_get_centroid(box).x, expected, 0.02);
+        CHECK(vec_get_length(body_get_velocity(box)) < 1e-6);
+        CHECK_NEAR(body_get_rotation(box), 0.0, 1e-6); /* slides flat, does not tip */
+        scene_free(scene);
+    }
+}
+
+static double total_angular_momentum(scene_t *scene) {
+    double total = 0.0;
+    for (size_t i = 0; i < scene_bodies(scene); i++) {
+        body_t *body = scene_get_body(scene, i);
+        double m = body_get_mass(body);
+        total += m * vec_cross(body_get_centroid(body), body_get_velocity(body)) +
+                 body_get_inertia(body) * body_get_angular_velocity(body);
+    }
+    return total;
+}
+
+/*
+ * A box struck off-centre spins, and total angular momentum about the origin
+ * is conserved to 1e-9 relative. Run with symplectic Euler: the seed scheme
+ * advances positions by the mean of old and new velocities, which changes
+ * sum m x cross v by dt/2 sum m v_old cross v_new at any velocity change (for
+ * springs and gravity too), so it conserves angular momentum only to O(dt).
+ * Elasticity 0.5 so the bodies part after the hit: two bodies left pressed
+ * together while one turns overlap a little each step, and the position
+ * correction that separates them moves positions without a matching
+ * velocity, which no solver of this kind conserves exactly.
+ */
+static void off_centre_hit_spins_and_conserves_angular_momentum(void) {
+    scene_t *scene = scene_init();
+    scene_set_contacts_enabled(scene, true);
+    scene_set_integrator(scene, INTEGRATOR_SYMPLECTIC_EULER);
+    body_t *target = add_box(scene, 0.0, 0.0, 0.5, 0.5, 1.0);
+    body_t *bullet = add_box(scene, -3.0, 0.35, 0.1, 0.1, 0.5);
+    body_set_friction(target, 0.0);
+    body_set_friction(bullet, 0.0);
+    body_set_elasticity(target, 0.5);
+    body_set_velocity(bullet, (vector_t){6.0, 0.0});
+    double before = total_angular_momentum(scene);
+    run(scene, 120, DT);
+    CHECK(fabs(body_get_angular_velocity(target)) > 0.1);
+    CHECK(body_get_velocity(target).x > 0.1);
+    CHECK_RELATIVE(total_angular_momentum(scene), before, 1e-9);
+    double momentum = body_get_velocity(target).x * 1.0 + body_get_velocity(bullet).x * 0.5;
+    CHECK_RELATIVE(momentum, 3.0, 1e-9);
+    scene_free(scene);
+}
+
+/* Bottom-face height at each apex, from the ballistic parabola through the
+ * state of the last step that still rises: h = y + vy^2 / (2 g). */
+static void bounce_apexes(double dt, double heights[5]) {
+    scene_t *scene = contact_scene();
+    body_t *floor = add_ground(scene, 50.0);
+    body_t *box = add_box(scene, 0.0, 10.5, 0.5, 0.5, 1.0);
+    body_set_elasticity(box, 0.8);
+    body_set_friction(box, 0.0);
+    body_set_friction(floor, 0.0);
+    double previous_vy = 0.0, previous_y = 0.0;
+    int found = 0;
+    for (long step = 0; step < (long)(60.0 / dt) && found < 5; step++) {
+        scene_tick(scene, dt);
+        double vy = body_get_velocity(box).y, y = body_get_centroid(box).y - 0.5;
+        if (previous_vy > 0.0 && vy <= 0.0) {
+            heights[found++] = previous_y + previous_vy * previous_vy / 20.0;
+        }
+        previous_vy = vy;
+        previous_y = y;
+    }
+    CHECK(found == 5);
+    CHECK(fabs(body_get_rotation(box)) < 1e-3); /* left the floor flat every time */
+    scene_free(scene);
+}
+
+static void bounce_apex_heights_at_60_hz(void) {
+    double heights[5] = {0};
+    bounce_apexes(1.0 / 60.0, heights);
+    for (int n = 1; n <= 5; n++) CHECK_RELATIVE(heights[n - 1], 10.0 * pow(0.8, 2 * n), 0.005);
+}
+
+static void bounce_apex_heights_at_600_hz(void) {
+    double heights[5] = {0};
+    bounce_apexes(1.0 / 600.0, heights);
+    for (int n = 1; n <= 5; n++) CHECK_RELATIVE(heights[n - 1], 10.0 * pow(0.8, 2 * n), 0.001);
+}
+
+static void elasticity_combines_by_max_and_zero_sticks(void) {
+    double results[2];
+    double elasticities[2] = {0.0, 0.5};
+    for (int i = 0; i < 2; i++) {
+        scene_t *scene = contact_scene();
+        body_t *floor = add_ground(scene, 50.0);
+        body_set_elasticity(floor, elasticities[i]);
+        body_t *box = add_box(scene, 0.0, 5.5, 0.5, 0.5, 1.0);
+        double highest_after_bounce = 0.0;
+        bool landed = false;
+        for (int step = 0; step < 240; step++) {
+            scene_tick(scene, DT);
+            double y = body_get_centroid(box).y - 0.5;
+            if (y < 0.01) landed = true;
+            if (landed) highest_after_bounce = fmax(highest_after_bounce, y);
+        }
+        results[i] = highest_after_bounce;
+        scene_free(scene);
+    }
+    CHECK(results[0] < 0.01);                       /* e = 0: stays down */
+    CHECK_RELATIVE(results[1], 5.0 * 0.25, 0.01);   /* max(0.5, 0) = 0.5: h e^2 */
+}
+
+static void record_names_bodies_axis_and_impulses(void) {
+    scene_t *scene = contact_scene();
+    body_t *floor = add_ground(scene, 50.0);
+    body_t *box = add_box(scene, 0.0, 0.5, 0.5, 0.5, 2.0);
+    run(scene, 60, DT);
+    CHECK(scene_contact_count(scene) == 1);
+    const contact_t *contact = scene_get_contact(scene, 0);
+    CHECK(contact->kind == CONTACT_WORLD);
+    CHECK(contact->body1 == floor && contact->body2 == box);
+    CHECK_NEAR(contact->axis.x, 0.0, 1e-12);
+    CHECK_NEAR(contact->axis.y, 1.0, 1e-12); /* from body1 (floor) toward body2 */
+    CHECK(contact->point_count == 2);
+    double normal = 0.0;
+    for (size_t j = 0; j < contact->point_count; j++) {
+        CHECK_NEAR(contact->points[j].y, 0.0, 0.01);
+        CHECK(contact->normal_impulse[j] >= 0.0);
+        CHECK_NEAR(contact->tangent_impulse[j], 0.0, 1e-9);
+        normal += contact->normal_impulse[j];
+    }
+    CHECK_RELATIVE(normal, 2.0 * 10.0 * DT, 1e-6); /* holds the weight: m g dt */
+    scene_stats_t stats = scene_get_stats(scene);
+    CHECK(stats.contacts == 1 && stats.contact_points == 2 && stats.broadphase_pairs == 1);
+    scene_free(scene);
+}
+
+static void filters_exclude_pairs_and_groups(void) {
+    scene_t *scene = contact_scene();
+    body_t *floor = add_ground(scene, 50.0);
+    body_t *ghost = add_box(scene, -2.0, 0.5, 0.5, 0.5, 1.0);
+    body_set_collision_filter(ghost, 2, ~2u, 0); /* does not collide with category 2... */
+    body_set_collision_filter(floor, 2, UINT32_MAX, 0); /* ...which the floor now is */
+    body_t *a = add_box(scene, 2.0, 0.5, 0.5, 0.5, 1.0);
+    body_t *b = add_box(scene, 2.0, 1.5, 0.5, 0.5, 1.0);
+    body_set_collision_filter(a, 1, UINT32_MAX, 7);
+    body_set_collision_filter(b, 1, UINT32_MAX, 7); /* same group: pass through each other */
+    run(scene, 60, DT);
+    CHECK(body_get_centroid(ghost).y < -1.0);                 /* fell through the floor */
+    CHECK_NEAR(body_get_centroid(a).y, 0.5, 0.01);             /* rests on the floor */
+    CHECK(body_get_centroid(b).y < 1.0);                      /* sank into a */
+    CHECK_NEAR(body_get_centroid(b).y, 0.5, 0.01);             /* and rests on the floor */
+    scene_free(scene);
+}
+
+static void contacts_off_means_no_contact(void) {
+    scene_t *scene = contact_scene();
+    add_ground(scene, 50.0);
+    body_t *box = add_box(scene, 0.0, 0.5, 0.5, 0.5, 1.0);
+    scene_set_contacts_enabled(scene, false);
+    CHECK(!scene_get_contacts_enabled(scene));
+    run(scene, 60, DT);
+    CHECK(body_get_centroid(box).y < -3.0);
+    CHECK(scene_contact_count(scene) == 0);
+    scene_free(scene);
+}
+
+static void static_bodies_never_pair(void) {
+    scene_t *scene = contact_scene();
+    add_box(scene, 0.0, 0.0, 1.0, 1.0, INFINITY);
+    add_box(scene, 0.5, 0.5, 1.0, 1.0, INFINITY); /* overlapping statics */
+    run(scene, 2, DT);
+    CHECK(scene_get_stats(scene).broadphase_pairs == 0);
+    CHECK(scene_contact_count(scene) == 0);
+    scene_free(scene);
+}
+
+/* An infinite-mass body given a velocity pushes dynamic ones aside and is
+ * not slowed (a kinematic paddle). */
+static void kinematic_body_pushes(void) {
+    scene_t *scene = scene_init();
+    scene_set_contacts_enabled(scene, true);
+    body_t *paddle = add_box(scene, -2.0, 0.0, 0.5, 0.5, INFINITY);
+    body_t *box = add_box(scene, 0.0, 0.0, 0.5, 0.5, 1.0);
+    body_set_velocity(paddle, (vector_t){3.0, 0.0});
+    run(scene, 60, DT);
+    CHECK_NEAR(body_get_velocity(paddle).x, 3.0, 0.0);
+    CHECK(body_get_centroid(box).x > body_get_centroid(paddle).x + 0.99);
+    CHECK(body_get_velocity(box).x >= 3.0 - 1e-9);
+    scene_free(scene);
+}
+
+static void removing_a_body_in_contact_is_safe(void) {
+    scene_t *scene = contact_scene();
+    add_ground(scene, 50.0);
+    body_t *lower = add_box(scene, 0.0, 0.5, 0.5, 0.5, 1.0);
+    body_t *upper = add_box(scene, 0.0, 1.5, 0.5, 0.5, 1.0);
+    run(scene, 30, DT);
+    body_remove(lower);
+    scene_tick(scene, DT); /* lower takes no part in contacts and is freed */
+    CHECK(scene_bodies(scene) == 2);
+    for (size_t i = 0; i < scene_contact_count(scene); i++) {
+        const contact_t *contact = scene_get_contact(scene, i);
+        CHECK(contact->body1 != lower && contact->body2 != lower);
+    }
+    run(scene, 90, DT);
+    CHECK_NEAR(body_get_centroid(upper).y, 0.5, 0.01); /* fell onto the floor */
+    scene_free(scene);
+}
+
+/* The pile of ../shared/bench/SCENES.md, its random generator drawn in order. */
+static unsigned long pile_state;
+
+static double pile_random(void) {
+    pile_state = (1103515245UL * pile_state + 12345UL) % 2147483648UL;
+    return (double)pile_state / 2147483648.0;
+}
+
+static scene_t *build_pile(size_t count) {
+    static const size_t sides[5] = {3, 4, 5, 6, 8};
+    scene_t *scene = contact_scene();
+    add_box(scene, 40.0, -0.5, 41.0, 0.5, INFINITY);
+    add_box(scene, -0.5, 100.0, 0.5, 100.0, INFINITY);
+    add_box(scene, 80.5, 100.0, 0.5, 100.0, INFINITY);
+    pile_state = 12345;
+    for (size_t i = 0; i < count; i++) {
+        double column = (double)(i % 70), row = (double)(i / 70);
+        double u1 = pile_random(), u2 = pile_random(), u3 = pile_random();
+        vector_t center = {1.0 + 1.12 * column + 0.1 * (u1 - 0.5),
+                           1.0 + 1.12 * row + 0.1 * (u2 - 0.5)};
+        list_t *shape = polygon_make_regular(sides[i % 5], 0.5, center, 0.0);
+        body_t *body = body_init(shape, 1.0, GREY);
+        scene_add_body(scene, body);
+        body_set_rotation(body, 2.0 * M_PI * u3);
+    }
+    return scene;
+}
+
+static void pile_stays_in_container(void) {
+    scene_t *scene = build_pile(1000);
+    run(scene, 600, DT);
+    size_t outside = 0;
+    for (size_t i = 3; i < scene_bodies(scene); i++) {
+        vector_t c = body_get_centroid(scene_get_body(scene, i));
+        if (c.x < 0.0 || c.x > 80.0 || c.y < 0.0) outside++;
+    }
+    CHECK(outside == 0);
+    scene_free(scene);
+}
+
+static void warm_step_allocates_nothing(void) {
+    scene_t *scene = build_pile(300);
+    run(scene, 120, DT);
+    (void)scene_contact_count(scene); /* the record reaches its size too */
+    size_t before = engine_allocation_count();
+    for (int i = 0; i < 30; i++) {
+        scene_tick(scene, DT);
+        CHECK(scene_contact_count(scene) > 0);
+    }
+    CHECK(engine_allocation_count() == before);
+    scene_free(scene);
+}
+
+/* Broadphase work per step (box comparisons and cell insertions) from 1000
+ * to 10000 bodies grows no faster than N log N: by at most
+ * 10 log(10000) / log(1000) = 13.3. */
+static void broadphase_work_grows_no_faster_than_n_log_n(void) {
+    size_t work[2];
+    size_t sizes[2] = {1000, 10000};
+    for (int i = 0; i < 2; i++) {
+        scene_t *scene = build_pile(sizes[i]);
+        scene_tick(scene, DT);
+        work[i] = scene_get_stats(scene).broadphase_tests;
+        scene_free(scene);
+    }
+    CHECK(work[0] > 0);
+    CHECK((double)work[1] / (double)work[0] <= 10.0 * log(10000.0) / log(1000.0));
+}
+
+static void set_iterations(void *scene) {
+    scene_set_solver_iterations(scene, 0, 3);
+}
+
+static void bad_solver_settings_abort(void) {
+    scene_t *scene = scene_init();
+    CHECK_DIES(set_iterations, scene, "scene_set_solver_iterations", "velocity_iterations");
+    scene_free(scene);
+}
+
+TEST_SUITE(contacts, TEST_CASE(box_comes_to_rest_on_floor), TEST_CASE(column_of_ten_boxes_stands),
+           TEST_CASE(pyramid_of_forty_stands_ten_seconds), TEST_CASE(friction_stopping_distance),
+           TEST_CASE(off_centre_hit_spins_and_conserves_angular_momentum),
+           TEST_CASE(bounce_apex_heights_at_60_hz), TEST_CASE(bounce_apex_heights_at_600_hz),
+           TEST_CASE(elasticity_combines_by_max_and_zero_sticks),
+           TEST_CASE(record_names_bodies_axis_and_impulses),
+           TEST_CASE(filters_exclude_pairs_and_groups), TEST_CASE(contacts_off_means_no_contact),
+           TEST_CASE(static_bodies_never_pair), TEST_CASE(kinematic_body_pushes),
+           TEST_CASE(removing_a_body_in_contact_is_safe), TEST_CASE(pile_stays_in_container),
+           TEST_CASE(warm_step_allocates_nothing),
+           TEST_CASE(broadphase_work_grows_no_faster_than_n_log_n),
+           TEST_CASE(bad_solver_settings_abort));
