@@ -506,6 +506,7 @@ static void destroyed_bodies_never_linger_in_the_record(void) {
     create_destructive_collision(scene, a, b);
     scene_tick(scene, 0.1);
     CHECK(scene_bodies(scene) == 0);
+    CHECK(scene_contact_count(scene) == 0);
     for (size_t i = 0; i < scene_contact_count(scene); i++) {
         const contact_t *c = scene_get_contact(scene, i);
         CHECK(c->body1 != a && c->body1 != b && c->body2 != a && c->body2 != b);
@@ -550,6 +551,14 @@ BAD_CALL(physics_nan_elasticity,
          create_physics_collision(scene_init(), any_body(), any_body(), NAN))
 BAD_CALL(physics_null_scene, create_physics_collision(NULL, any_body(), any_body(), 1.0))
 BAD_CALL(physics_null_body, create_physics_collision(scene_init(), NULL, any_body(), 1.0))
+BAD_CALL(physics_with_itself, {
+    body_t *body = any_body();
+    create_physics_collision(scene_init(), body, body, 1.0);
+})
+BAD_CALL(destructive_with_itself, {
+    body_t *body = any_body();
+    create_destructive_collision(scene_init(), body, body);
+})
 BAD_CALL(handler_negative_elasticity,
          physics_collision_handler(any_body(), any_body(), (vector_t){1, 0}, NULL, -1.0))
 BAD_CALL(handler_null_body, physics_collision_handler(NULL, any_body(), (vector_t){1, 0}, NULL,
@@ -585,6 +594,10 @@ static void bad_input_aborts_with_message(void) {
                "scene is NULL");
     CHECK_DIES(physics_null_body, NULL, "engine error in create_physics_collision:",
                "body1 is NULL");
+    CHECK_DIES(physics_with_itself, NULL, "engine error in create_physics_collision:",
+               "itself");
+    CHECK_DIES(destructive_with_itself, NULL, "engine error in create_destructive_collision:",
+               "itself");
     CHECK_DIES(handler_negative_elasticity, NULL, "engine error in physics_collision_handler:",
                "elasticity", "got -1");
     CHECK_DIES(handler_null_body, NULL, "engine error in physics_collision_handler:",

@@ -262,7 +262,11 @@ static void force_creators_of_a_removed_body_are_dropped_and_freed(void) {
     scene_tick(scene, 0.01);
     body_remove(b);
     CHECK(aux_frees[1] == 0 && aux_frees[2] == 0); /* only marked */
+    call_log_length = 0;
     scene_tick(scene, 0.01);
+    /* Still called in the reaping tick (stage 1 runs before stage 4). */
+    CHECK(call_log_length == 4);
+    CHECK(call_log[0] == 1 && call_log[1] == 2 && call_log[2] == 3 && call_log[3] == 4);
     /* Dropped in that same tick, aux freed once; the others untouched. */
     CHECK(aux_frees[1] == 1 && aux_frees[2] == 1);
     CHECK(aux_frees[3] == 0 && aux_frees[4] == 0);
