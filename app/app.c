@@ -1,0 +1,99 @@
+#include "app.h"
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <string.h>
+
+/* Impulses below this (N s) are not kept in the trail: resting contacts
+ * carry about m g dt each step, too small to draw, and thousands of them
+ * would push the impacts out. */
+static const double TRAIL_MIN_IMPULSE = 0.05;
+
+static const char *const OVERLAY_NAMES[OVERLAY_COUNT] = {
+    "axes", "impulses", "contact points", "velocities", "centroids", "bounding boxes"};
+static const char *const OVERLAY_KEYS[OVERLAY_COUNT] = {"A", "I", "T", "V", "M", "X"};
+
+const char *app_overlay_name(overlay_t overlay) {
+    return overlay < OVERLAY_COUNT ? OVERLAY_NAMES[overlay] : "?";
+}
+
+const char *app_overlay_key(overlay_t overlay) {
+    return overlay < OVERLAY_COUNT ? OVERLAY_KEYS[overlay] : "?";
+}
+
+void app_status(app_t *app, const char *format, ...) {
+    va_list args;
+    va_start(args, format);
+    vsnprintf(app->status, sizeof(app->status), format, args);
+    va_end(args);
+    app->status_time = app->now;
+}
+
+void app_set_elasticity(app_t *app, double elasticity) {
+    if (!isfinite(elasticity)) return;
+    /* Round to the slider's 0.01 so repeated steps land on round numbers. */
+    app->elasticity = round(fmin(APP_ELASTICITY_MAX, fmax(0.0, elasticity)) * 100.0) / 100.0;
+}
+
+void app_new_shape(app_t *app) {
+    if (app->next_vertices != NULL) list_free(app->next_vertices);
+    const char *problem = NULL;
+    app->next_vertices = sandbox_make_shape(&app->sandbox, app->shape, &problem);
+    if (app->next_vertices == NULL) {
+        app_status(app, "cannot make that shape: %s", problem);
+        app->shape = (shape_choice_t){SHAPE_REGULAR, 6, 0.5};
+        app->next_vertices = sandbox_make_shape(&app->sandbox, app->shape, &problem);
+    }
+}
+
+void app_init(app_t *app, int width, int height, uint64_t seed) {
+    memset(app, 0, sizeof(*app));
+    sandbox_init(&app->sandbox, seed);
+    camera_init(&app->camera, width, height);
+    app->shape = (shape_choice_t){SHAPE_REGULAR, 6, 0.5};
+    app->elasticity = 0.5;
+    app->time_scale = 1.0;
+    app->impulse_scale = 0.25;
+    app->overlays[OVERLAY_AXES] = true;
+    app->overlays[OVERLAY_IMPULSES] = true;
+    app->mouse = (vector_t){0.5 * width, 0.5 * height};
+    app_new_shape(app);
+}
+
+void app_free(app_t *app) {
+    sandbox_free(&app->sandbox);
+    if (app->next_vertices != NULL) list_free(app->next_vertices);
+    app->next_vertices = NULL;
+}
+
+/* One step, and the impulses it applied into the trail. */
+static void step(app_t *app) {
+    sandbox_step(&app->sandbox, APP_STEP);
+    if (app->overlays[OVERLAY_IMPULSES]) {
+        impulse_trail_record(&app->trail, app->sandbox.scene, TRAIL_MIN_IMPULSE);
+    }
+}
+
+int app_advance(app_t *app, double frame_dt) {
+    int steps = 0;
+    if (!app->paused) {
+        impulse_trail_age(&app->trail, frame_dt);
+        app->accumulator += frame_dt * app->time_scale;
+        while (app->accumulator >= APP_STEP && steps < APP_MAX_STEPS_PER_FRAME) {
+            step(app);
+            app->accumulator -= APP_STEP;
+            steps++;
+        }
+        /* A stall: forget the backlog rather than run ever more steps. */
+        if (steps == APP_MAX_STEPS_PER_FRAME && app->accumulator > APP_STEP) {
+            app->accumulator = 0.0;
+        }
+    }
+    if (app->step_once) {
+        app->step_once = false;
+        impulse_trail_age(&app->trail, APP_STEP);
+        step(app);
+        steps++;
+    }
+    return steps;
+}

@@ -1,0 +1,127 @@
+#ifndef SANDBOX_APP_H
+#define SANDBOX_APP_H
+
+/*
+ * The sandbox's state, shared by its parts: main.c runs the loop, input.c
+ * turns events into changes here, render.c and ui.c draw it, script.c feeds
+ * recorded events to input.c.
+ */
+
+#include <stdbool.h>
+#include <stdint.h>
+#include "camera.h"
+#include "impulse_trail.h"
+#include "sandbox_scene.h"
+
+/* The fixed physics step (s) and the most steps one frame may run: beyond
+ * that the simulation slows down rather than spiralling after a stall. */
+#define APP_STEP (1.0 / 120.0)
+#define APP_MAX_STEPS_PER_FRAME 8
+/* The frame time in --headless mode, where no clock is read (s). */
+#define APP_HEADLESS_FRAME (1.0 / 60.0)
+
+typedef enum {
+    OVERLAY_AXES = 0,
+    OVERLAY_IMPULSES,
+    OVERLAY_POINTS,
+    OVERLAY_VELOCITIES,
+    OVERLAY_CENTROIDS,
+    OVERLAY_BOUNDS,
+    OVERLAY_COUNT
+} overlay_t;
+
+typedef enum {
+    DRAG_NONE = 0,
+    DRAG_THROW,  /* shift + left: the shape follows the cursor; release throws it */
+    DRAG_GRAB,   /* right on a body: the grab spring pulls it to the cursor */
+    DRAG_PAN,    /* middle anywhere, or right on empty space: moves the view */
+    DRAG_SLIDER, /* left on the elasticity slider */
+} drag_t;
+
+#define APP_MOTION_SAMPLES 16
+
+typedef struct {
+    double time;     /* app clock (s) */
+    vector_t world;  /* cursor (m) */
+} motion_sample_t;
+
+/* Timings for the HUD (smoothed) and for --stats (totals). */
+typedef struct {
+    double fps;
+    double frame_ms;         /* whole frame, events to present */
+    double physics_ms;       /* per step */
+    double render_ms;        /* drawing the frame */
+    int steps;               /* physics steps in the last frame */
+    /* Totals since the start (for --stats). */
+    uint64_t frames;
+    uint64_t total_steps;
+    double total_frame_s, total_physics_s, total_render_s, total_present_s;
+} app_timing_t;
+
+typedef struct {
+    sandbox_t sandbox;
+    camera_t camera;
+
+    /* What a click drops, and the elasticity of new bodies. */
+    shape_choice_t shape;
+    list_t *next_vertices; /* the next body's shape, centred at the origin (previewed) */
+    double elasticity;
+
+    bool overlays[OVERLAY_COUNT];
+    bool paused;
+    bool step_once;  /* run one step at the next frame (while paused) */
+    bool show_help;
+    bool quit;
+    double time_scale; /* simulated seconds per displayed second, 0.1 to 1 */
+    double impulse_scale; /* arrow length (m) per N s */
+
+    /* Input state. */
+    double now;          /* app clock (s): real time, or frames / 60 headless */
+    vector_t mouse;      /* cursor (pixels) */
+    bool mouse_inside;
+    uint16_t mods;       /* keyboard modifiers (SDL KMOD_*) as of the last key event */
+    drag_t drag;
+    vector_t drag_last;  /* pixels, for panning */
+    motion_sample_t samples[APP_MOTION_SAMPLES];
+    size_t sample_count; /* ring: the newest is samples[(sample_count - 1) % N] */
+
+    impulse_trail_t trail;
+    app_timing_t timing;
+    double accumulator;  /* simulated time owed to the physics (s) */
+
+    /* A short status line ("elasticity of body set to 0.80"), shown a while. */
+    char status[160];
+    double status_time;
+} app_t;
+
+/* The default scene and settings for a window of width x height pixels. */
+void app_init(app_t *app, int width, int height, uint64_t seed);
+void app_free(app_t *app);
+
+/* Advances the physics for a frame of frame_dt seconds of display time: adds
+ * frame_dt times the time scale to the accumulator and runs whole APP_STEP
+ * steps from it (none while paused, except a requested single step); ages the
+ * impulse trail. Returns the number of steps run. */
+int app_advance(app_t *app, double frame_dt);
+
+/* Shows a status line for a few seconds (printf-style). */
+void app_status(app_t *app, const char *format, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 2, 3)))
+#endif
+    ;
+
+/* The overlay's display name and its toggle key's label. */
+const char *app_overlay_name(overlay_t overlay);
+const char *app_overlay_key(overlay_t overlay);
+
+/* Clamps and sets the global elasticity (new bodies). */
+void app_set_elasticity(app_t *app, double elasticity);
+
+#define APP_ELASTICITY_MAX 1.0
+
+/* Makes the next body's vertices for the current shape and size (a new random
+ * polygon for the random shape). */
+void app_new_shape(app_t *app);
+
+#endif

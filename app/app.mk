@@ -1,0 +1,67 @@
+# The SDL2 + SDL2_gfx sandbox (app/) and its smoke tests (tests/app_smoke.c).
+# Included by the top Makefile. `make` builds ./sandbox when pkg-config finds
+# both libraries; without them `make` still builds the engine, and the smoke
+# tests build without SDL and report themselves skipped.
+
+SANDBOX_PKGS := sdl2 SDL2_gfx
+SANDBOX_APT := libsdl2-dev libsdl2-gfx-dev pkg-config
+SANDBOX_HAVE_SDL := $(shell pkg-config --exists $(SANDBOX_PKGS) 2>/dev/null && echo yes)
+
+APP_SRC := $(wildcard app/*.c)
+APP_HDR := $(wildcard app/*.h)
+APP_OBJ := $(patsubst app/%.c,build/app/%.o,$(APP_SRC))
+
+.PHONY: run sandbox-deps
+
+ifeq ($(SANDBOX_HAVE_SDL),yes)
+# SDL's headers as system headers, so that -Werror judges our code only.
+SANDBOX_CFLAGS := $(patsubst -I%,-isystem %,$(shell pkg-config --cflags $(SANDBOX_PKGS)))
+SANDBOX_LIBS := $(shell pkg-config --libs $(SANDBOX_PKGS))
+
+all: sandbox
+
+build/app/%.o: app/%.c $(APP_HDR) $(wildcard engine/include/*.h) app/app.mk
+	@mkdir -p $(dir $@)
+	$(CC) $(CSTD) $(WARN) $(OPT) -Iengine/include $(SANDBOX_CFLAGS) -c $< -o $@
+
+sandbox: $(APP_OBJ) build/libengine.a
+	$(CC) $(APP_OBJ) build/libengine.a $(SANDBOX_LIBS) -lm -o $@
+
+APP_SMOKE_DEPS := sandbox
+APP_SMOKE_DEFS := -DAPP_SMOKE_HAVE_SDL=1
+else
+sandbox:
+	@echo "sandbox: SDL2 and SDL2_gfx were not found by pkg-config ($(SANDBOX_PKGS))."
+	@echo "Install them with: sudo apt-get install -y $(SANDBOX_APT)   (or run: make run)"
+	@exit 1
+
+APP_SMOKE_DEPS :=
+APP_SMOKE_DEFS := -DAPP_SMOKE_HAVE_SDL=0
+endif
+
+# The smoke tests drive ./sandbox from outside and read its BMP screenshots,
+# so they need no SDL themselves.
+build/tests/app_smoke: tests/app_smoke.c app/palette.h app/app.mk $(APP_SMOKE_DEPS)
+	@mkdir -p $(dir $@)
+	$(CC) $(CSTD) $(WARN) -O1 -g $(SAN) $(APP_SMOKE_DEFS) -Iapp tests/app_smoke.c -o $@
+
+CHECK_PROGRAMS += build/tests/app_smoke
+
+# Installs the Debian packages when they are missing (as root; otherwise it
+# prints the command), then builds and starts the sandbox.
+sandbox-deps:
+	@if ! pkg-config --exists $(SANDBOX_PKGS) 2>/dev/null; then \
+	    if [ "$$(id -u)" = 0 ]; then \
+	        echo "Installing $(SANDBOX_APT)"; \
+	        apt-get update && apt-get install -y $(SANDBOX_APT) || exit 1; \
+	    else \
+	        echo "The sandbox needs SDL2 and SDL2_gfx. Install them with:"; \
+	        echo "    sudo apt-get install -y $(SANDBOX_APT)"; \
+	        echo "then run 'make run' again."; \
+	        exit 1; \
+	    fi; \
+	fi
+
+run: sandbox-deps
+	@$(MAKE) --no-print-directory sandbox
+	./sandbox

@@ -1,0 +1,55 @@
+#include "draw.h"
+#include <SDL2_gfxPrimitives.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+
+Sint16 draw_coord(double pixel) {
+    if (!(pixel > -30000.0)) return -30000;
+    if (pixel > 30000.0) return 30000;
+    return (Sint16)lround(pixel);
+}
+
+void draw_arrow(SDL_Renderer *renderer, vector_t tail, vector_t head, palette_rgb_t color,
+                Uint8 alpha, int width) {
+    vector_t d = vec_subtract(head, tail);
+    double length = vec_get_length(d);
+    if (!(length >= 1.0) || alpha == 0) return;
+    vector_t u = vec_multiply(1.0 / length, d);
+    vector_t n = vec_perpendicular(u);
+    double head_length = fmin(0.5 * length, 6.0 + 2.0 * width);
+    double head_half = 0.55 * head_length;
+    vector_t base = vec_subtract(head, vec_multiply(head_length, u));
+    if (length - head_length >= 1.0) {
+        if (width <= 1) {
+            lineRGBA(renderer, draw_coord(tail.x), draw_coord(tail.y), draw_coord(base.x),
+                     draw_coord(base.y), color.r, color.g, color.b, alpha);
+        } else {
+            thickLineRGBA(renderer, draw_coord(tail.x), draw_coord(tail.y), draw_coord(base.x),
+                          draw_coord(base.y), (Uint8)width, color.r, color.g, color.b, alpha);
+        }
+    }
+    vector_t left = vec_add(base, vec_multiply(head_half, n));
+    vector_t right = vec_subtract(base, vec_multiply(head_half, n));
+    filledTrigonRGBA(renderer, draw_coord(head.x), draw_coord(head.y), draw_coord(left.x),
+                     draw_coord(left.y), draw_coord(right.x), draw_coord(right.y), color.r,
+                     color.g, color.b, alpha);
+}
+
+void draw_text(SDL_Renderer *renderer, int x, int y, palette_rgb_t color, const char *format,
+               ...) {
+    char text[256];
+    va_list args;
+    va_start(args, format);
+    vsnprintf(text, sizeof(text), format, args);
+    va_end(args);
+    stringRGBA(renderer, draw_coord(x), draw_coord(y), text, color.r, color.g, color.b, 255);
+}
+
+void draw_panel(SDL_Renderer *renderer, int x, int y, int w, int h, palette_rgb_t color,
+                Uint8 alpha) {
+    boxRGBA(renderer, draw_coord(x), draw_coord(y), draw_coord(x + w - 1), draw_coord(y + h - 1),
+            color.r, color.g, color.b, alpha);
+    rectangleRGBA(renderer, draw_coord(x), draw_coord(y), draw_coord(x + w - 1),
+                  draw_coord(y + h - 1), 52, 56, 68, 255);
+}

@@ -1,0 +1,34 @@
+#ifndef SANDBOX_DRAW_H
+#define SANDBOX_DRAW_H
+
+/* Small drawing helpers over SDL2_gfx shared by render.c and ui.c. */
+
+#include <SDL.h>
+#include <stdbool.h>
+#include "palette.h"
+#include "vector.h"
+
+/* Pixel coordinates clamped to what SDL2_gfx's Sint16 can hold. */
+Sint16 draw_coord(double pixel);
+
+/* An arrow from tail to head (pixels) with a shaft `width` pixels wide and a
+ * head scaled to the arrow (at most half its length). */
+void draw_arrow(SDL_Renderer *renderer, vector_t tail, vector_t head, palette_rgb_t color,
+                Uint8 alpha, int width);
+
+/* printf-style text in SDL2_gfx's built-in 8x8 font, top-left at (x, y). */
+void draw_text(SDL_Renderer *renderer, int x, int y, palette_rgb_t color, const char *format,
+               ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 5, 6)))
+#endif
+    ;
+
+/* A filled rectangle, translucent when alpha < 255. */
+void draw_panel(SDL_Renderer *renderer, int x, int y, int w, int h, palette_rgb_t color,
+                Uint8 alpha);
+
+#define DRAW_CHAR_W 8
+#define DRAW_LINE_H 12
+
+#endif

@@ -1,0 +1,429 @@
+#include "input.h"
+#include <math.h>
+#include "ui.h"
+
+/* Throws: the cursor's velocity over the last THROW_WINDOW seconds, at most
+ * THROW_MAX_SPEED. */
+static const double THROW_WINDOW = 0.1;
+static const double THROW_MAX_SPEED = 40.0;
+static const double ELASTICITY_STEP = 0.05;
+static const double SIZE_FACTOR = 1.1;
+static const double ZOOM_FACTOR = 1.15;
+static const double PAN_PIXELS = 60.0;
+
+const input_control_t INPUT_CONTROLS[] = {
+    {"Left click", "drop the shape at the cursor"},
+    {"Shift + left drag", "throw it with the drag's velocity"},
+    {"Right drag on a body", "pull it with a spring to the cursor"},
+    {"Right/middle drag", "pan the view"},
+    {"Ctrl + left click, D, Del", "delete the body under the cursor"},
+    {"3 4 5 6 7 8", "regular polygon with 3 to 8 sides"},
+    {"B / P / Tab", "box / random convex polygon / next shape"},
+    {"Mouse wheel", "shape size (over the slider: elasticity)"},
+    {"Up / Down, slider", "elasticity of new bodies -/+ 0.05"},
+    {"E / Shift + E", "give the body under the cursor / all bodies that elasticity"},
+    {"A", "overlay: collision axes"},
+    {"I", "overlay: impulses (fade over 0.5 s)"},
+    {"T", "overlay: contact points"},
+    {"V", "overlay: velocity vectors"},
+    {"M", "overlay: centroids"},
+    {"X", "overlay: bounding boxes"},
+    {"O", "all overlays on / off"},
+    {"Space", "pause / resume"},
+    {"S", "single step (pauses)"},
+    {"[ / ]", "slow motion: time x0.1 to x1"},
+    {"G", "gravity on / off"},
+    {"C / R", "clear bodies / reset the scene"},
+    {"Ctrl + wheel, + / -", "zoom"},
+    {"Ctrl + arrows, 0", "pan / reset the view"},
+    {"H, F1", "this help"},
+    {"Esc, Q", "quit"},
+};
+const size_t INPUT_CONTROL_COUNT = sizeof(INPUT_CONTROLS) / sizeof(INPUT_CONTROLS[0]);
+
+vector_t input_cursor_world(const app_t *app) {
+    return camera_to_world(&app->camera, app->mouse);
+}
+
+body_t *input_hovered_body(app_t *app) {
+    if (!app->mouse_inside) return NULL;
+    if (app->drag == DRAG_GRAB) return app->sandbox.grab.body;
+    return sandbox_body_at(&app->sandbox, input_cursor_world(app));
+}
+
+static void add_sample(app_t *app) {
+    app->samples[app->sample_count % APP_MOTION_SAMPLES] =
+        (motion_sample_t){app->now, input_cursor_world(app)};
+    app->sample_count++;
+}
+
+/* The cursor's recent velocity (m/s) from the motion samples. */
+static vector_t throw_velocity(const app_t *app) {
+    if (app->sample_count < 2) return VEC_ZERO;
+    const motion_sample_t *newest = &app->samples[(app->sample_count - 1) % APP_MOTION_SAMPLES];
+    if (app->now - newest->time > THROW_WINDOW) return VEC_ZERO; /* held still */
+    const motion_sample_t *oldest = newest;
+    size_t available = app->sample_count < APP_MOTION_SAMPLES ? app->sample_count
+                                                              : APP_MOTION_SAMPLES;
+    for (size_t back = 1; back < available; back++) {
+        const motion_sample_t *s = &app->samples[(app->sample_count - 1 - back) % APP_MOTION_SAMPLES];
+        if (newest->time - s->time > THROW_WINDOW) break;
+        oldest = s;
+    }
+    double dt = newest->time - oldest->time;
+    if (dt <= 1e-6) return VEC_ZERO;
+    vector_t v = vec_multiply(1.0 / dt, vec_subtract(newest->world, oldest->world));
+    double speed = vec_get_length(v);
+    if (speed > THROW_MAX_SPEED) v = vec_multiply(THROW_MAX_SPEED / speed, v);
+    return v;
+}
+
+static void drop_at(app_t *app, vector_t at, vector_t velocity) {
+    const char *problem = NULL;
+    body_t *body = sandbox_drop(&app->sandbox, sandbox_copy_vertices(app->next_vertices), at,
+                                velocity, app->elasticity, &problem);
+    if (body == NULL) {
+        app_status(app, "cannot drop: %s", problem);
+        return;
+    }
+    if (app->shape.kind == SHAPE_RANDOM) app_new_shape(app);
+}
+
+static void set_shape(app_t *app, shape_kind_t kind, int sides) {
+    app->shape.kind = kind;
+    if (kind == SHAPE_REGULAR) app->shape.sides = sides;
+    app_new_shape(app);
+    app_status(app, "shape: %s", sandbox_shape_name(app->shape));
+}
+
+static void next_shape(app_t *app) {
+    if (app->shape.kind == SHAPE_REGULAR && app->shape.sides < 8) {
+        set_shape(app, SHAPE_REGULAR, app->shape.sides + 1);
+    } else if (app->shape.kind == SHAPE_REGULAR) {
+        set_shape(app, SHAPE_BOX, 0);
+    } else if (app->shape.kind == SHAPE_BOX) {
+        set_shape(app, SHAPE_RANDOM, 0);
+    } else {
+        set_shape(app, SHAPE_REGULAR, 3);
+    }
+}
+
+static void change_size(app_t *app, double factor) {
+    double size = fmin(SHAPE_MAX_SIZE, fmax(SHAPE_MIN_SIZE, app->shape.size * factor));
+    if (size == app->shape.size) return;
+    app->shape.size = size;
+    app_new_shape(app);
+}
+
+static void toggle_overlay(app_t *app, overlay_t overlay) {
+    app->overlays[overlay] = !app->overlays[overlay];
+    app_status(app, "%s %s", app_overlay_name(overlay), app->overlays[overlay] ? "on" : "off");
+}
+
+static void set_body_elasticity(app_t *app, bool all) {
+    if (all) {
+        size_t changed = 0;
+        for (size_t i = 0; i < scene_bodies(app->sandbox.scene); i++) {
+            body_t *body = scene_get_body(app->sandbox.scene, i);
+            if (sandbox_is_static(body) || body_is_removed(body)) continue;
+            body_set_elasticity(body, app->elasticity);
+            changed++;
+        }
+        app_status(app, "elasticity of all %zu bodies set to %.2f", changed, app->elasticity);
+        return;
+    }
+    body_t *body = input_hovered_body(app);
+    if (body == NULL) {
+        app_status(app, "E: no body under the cursor");
+        return;
+    }
+    body_set_elasticity(body, app->elasticity);
+    app_status(app, "elasticity of this body set to %.2f", app->elasticity);
+}
+
+static void delete_hovered(app_t *app) {
+    body_t *body = input_hovered_body(app);
+    if (body == NULL) return;
+    if (app->drag == DRAG_GRAB) app->drag = DRAG_NONE;
+    sandbox_delete(&app->sandbox, body);
+}
+
+static void change_time_scale(app_t *app, double delta) {
+    double scale = round((app->time_scale + delta) * 10.0) / 10.0;
+    app->time_scale = fmin(1.0, fmax(0.1, scale));
+    app_status(app, "time x%.1f", app->time_scale);
+}
+
+static void on_key(app_t *app, const SDL_KeyboardEvent *key) {
+    SDL_Keycode sym = key->keysym.sym;
+    bool ctrl = (app->mods & KMOD_CTRL) != 0;
+    bool shift = (app->mods & KMOD_SHIFT) != 0;
+    bool repeat = key->repeat != 0;
+
+    /* Keys that may repeat while held. */
+    switch (sym) {
+    case SDLK_UP:
+        if (ctrl) camera_pan_pixels(&app->camera, 0, PAN_PIXELS);
+        else app_set_elasticity(app, app->elasticity + ELASTICITY_STEP);
+        return;
+    case SDLK_DOWN:
+        if (ctrl) camera_pan_pixels(&app->camera, 0, -PAN_PIXELS);
+        else app_set_elasticity(app, app->elasticity - ELASTICITY_STEP);
+        return;
+    case SDLK_LEFT:
+        camera_pan_pixels(&app->camera, PAN_PIXELS, 0);
+        return;
+    case SDLK_RIGHT:
+        camera_pan_pixels(&app->camera, -PAN_PIXELS, 0);
+        return;
+    case SDLK_PLUS:
+    case SDLK_EQUALS:
+    case SDLK_KP_PLUS:
+        camera_zoom_at(&app->camera, ZOOM_FACTOR,
+                       (vector_t){0.5 * app->camera.width, 0.5 * app->camera.height});
+        return;
+    case SDLK_MINUS:
+    case SDLK_KP_MINUS:
+        camera_zoom_at(&app->camera, 1.0 / ZOOM_FACTOR,
+                       (vector_t){0.5 * app->camera.width, 0.5 * app->camera.height});
+        return;
+    case SDLK_s:
+        app->paused = true;
+        app->step_once = true;
+        return;
+    default:
+        break;
+    }
+    if (repeat) return;
+
+    switch (sym) {
+    case SDLK_3: case SDLK_4: case SDLK_5: case SDLK_6: case SDLK_7: case SDLK_8:
+        set_shape(app, SHAPE_REGULAR, 3 + (int)(sym - SDLK_3));
+        break;
+    case SDLK_b:
+        set_shape(app, SHAPE_BOX, 0);
+        break;
+    case SDLK_p:
+        set_shape(app, SHAPE_RANDOM, 0);
+        break;
+    case SDLK_TAB:
+        next_shape(app);
+        break;
+    case SDLK_e:
+        set_body_elasticity(app, shift);
+        break;
+    case SDLK_a:
+        toggle_overlay(app, OVERLAY_AXES);
+        break;
+    case SDLK_i:
+        toggle_overlay(app, OVERLAY_IMPULSES);
+        break;
+    case SDLK_t:
+        toggle_overlay(app, OVERLAY_POINTS);
+        break;
+    case SDLK_v:
+        toggle_overlay(app, OVERLAY_VELOCITIES);
+        break;
+    case SDLK_m:
+        toggle_overlay(app, OVERLAY_CENTROIDS);
+        break;
+    case SDLK_x:
+        toggle_overlay(app, OVERLAY_BOUNDS);
+        break;
+    case SDLK_o: {
+        bool any = false;
+        for (int i = 0; i < OVERLAY_COUNT; i++) any = any || app->overlays[i];
+        for (int i = 0; i < OVERLAY_COUNT; i++) app->overlays[i] = !any;
+        app_status(app, "all overlays %s", any ? "off" : "on");
+        break;
+    }
+    case SDLK_SPACE:
+        app->paused = !app->paused;
+        app_status(app, app->paused ? "paused" : "running");
+        break;
+    case SDLK_LEFTBRACKET:
+        change_time_scale(app, -0.1);
+        break;
+    case SDLK_RIGHTBRACKET:
+        change_time_scale(app, +0.1);
+        break;
+    case SDLK_g:
+        sandbox_set_gravity(&app->sandbox, !app->sandbox.gravity_on);
+        app_status(app, "gravity %s", app->sandbox.gravity_on ? "on" : "off");
+        break;
+    case SDLK_c:
+        sandbox_clear(&app->sandbox);
+        if (app->drag == DRAG_GRAB) app->drag = DRAG_NONE;
+        app_status(app, "cleared");
+        break;
+    case SDLK_r:
+        sandbox_reset(&app->sandbox);
+        impulse_trail_clear(&app->trail);
+        if (app->drag == DRAG_GRAB) app->drag = DRAG_NONE;
+        app_status(app, "reset");
+        break;
+    case SDLK_d:
+    case SDLK_DELETE:
+    case SDLK_BACKSPACE:
+        delete_hovered(app);
+        break;
+    case SDLK_0:
+    case SDLK_HOME:
+        camera_reset(&app->camera);
+        break;
+    case SDLK_h:
+    case SDLK_F1:
+        app->show_help = !app->show_help;
+        break;
+    case SDLK_ESCAPE:
+        if (app->show_help) app->show_help = false;
+        else app->quit = true;
+        break;
+    case SDLK_q:
+        app->quit = true;
+        break;
+    default:
+        break;
+    }
+}
+
+static void on_button_down(app_t *app, const SDL_MouseButtonEvent *button) {
+    app->mouse = (vector_t){button->x, button->y};
+    app->mouse_inside = true;
+    if (app->drag != DRAG_NONE) return;
+    vector_t world = input_cursor_world(app);
+    if (button->button == SDL_BUTTON_LEFT) {
+        if (ui_slider_hit(app, app->mouse)) {
+            app->drag = DRAG_SLIDER;
+            app_set_elasticity(app, ui_slider_value_at(app, app->mouse));
+        } else if (app->mods & KMOD_CTRL) {
+            delete_hovered(app);
+        } else if (app->mods & KMOD_SHIFT) {
+            app->drag = DRAG_THROW;
+            add_sample(app);
+        } else {
+            drop_at(app, world, VEC_ZERO);
+        }
+    } else if (button->button == SDL_BUTTON_RIGHT) {
+        body_t *body = sandbox_body_at(&app->sandbox, world);
+        if (body != NULL) {
+            sandbox_grab(&app->sandbox, body, world);
+            app->drag = DRAG_GRAB;
+        } else {
+            app->drag = DRAG_PAN;
+            app->drag_last = app->mouse;
+        }
+    } else if (button->button == SDL_BUTTON_MIDDLE) {
+        app->drag = DRAG_PAN;
+        app->drag_last = app->mouse;
+    }
+}
+
+static void on_button_up(app_t *app, const SDL_MouseButtonEvent *button) {
+    app->mouse = (vector_t){button->x, button->y};
+    switch (app->drag) {
+    case DRAG_THROW:
+        if (button->button == SDL_BUTTON_LEFT) {
+            add_sample(app);
+            drop_at(app, input_cursor_world(app), throw_velocity(app));
+            app->drag = DRAG_NONE;
+        }
+        break;
+    case DRAG_SLIDER:
+        if (button->button == SDL_BUTTON_LEFT) app->drag = DRAG_NONE;
+        break;
+    case DRAG_GRAB:
+        if (button->button == SDL_BUTTON_RIGHT) {
+            sandbox_release(&app->sandbox);
+            app->drag = DRAG_NONE;
+        }
+        break;
+    case DRAG_PAN:
+        if (button->button == SDL_BUTTON_RIGHT || button->button == SDL_BUTTON_MIDDLE) {
+            app->drag = DRAG_NONE;
+        }
+        break;
+    case DRAG_NONE:
+        break;
+    }
+}
+
+static void on_motion(app_t *app, const SDL_MouseMotionEvent *motion) {
+    app->mouse = (vector_t){motion->x, motion->y};
+    app->mouse_inside = true;
+    switch (app->drag) {
+    case DRAG_THROW:
+        add_sample(app);
+        break;
+    case DRAG_SLIDER:
+        app_set_elasticity(app, ui_slider_value_at(app, app->mouse));
+        break;
+    case DRAG_GRAB:
+        if (app->sandbox.grab.body == NULL) {
+            app->drag = DRAG_NONE; /* the body was deleted or fell out */
+        } else {
+            sandbox_grab_move(&app->sandbox, input_cursor_world(app));
+        }
+        break;
+    case DRAG_PAN:
+        camera_pan_pixels(&app->camera, app->mouse.x - app->drag_last.x,
+                          app->mouse.y - app->drag_last.y);
+        app->drag_last = app->mouse;
+        break;
+    case DRAG_NONE:
+        break;
+    }
+}
+
+static void on_wheel(app_t *app, const SDL_MouseWheelEvent *wheel) {
+    int notches = wheel->y;
+    if (wheel->direction == SDL_MOUSEWHEEL_FLIPPED) notches = -notches;
+    if (notches == 0) return;
+    if (ui_slider_hit(app, app->mouse)) {
+        app_set_elasticity(app, app->elasticity + ELASTICITY_STEP * notches);
+    } else if (app->mods & KMOD_CTRL) {
+        camera_zoom_at(&app->camera, pow(ZOOM_FACTOR, notches), app->mouse);
+    } else {
+        change_size(app, pow(SIZE_FACTOR, notches));
+    }
+}
+
+void input_handle_event(app_t *app, const SDL_Event *event) {
+    switch (event->type) {
+    case SDL_QUIT:
+        app->quit = true;
+        break;
+    case SDL_KEYDOWN:
+        app->mods = event->key.keysym.mod;
+        on_key(app, &event->key);
+        break;
+    case SDL_KEYUP:
+        app->mods = event->key.keysym.mod;
+        break;
+    case SDL_MOUSEBUTTONDOWN:
+        on_button_down(app, &event->button);
+        break;
+    case SDL_MOUSEBUTTONUP:
+        on_button_up(app, &event->button);
+        break;
+    case SDL_MOUSEMOTION:
+        on_motion(app, &event->motion);
+        break;
+    case SDL_MOUSEWHEEL:
+        on_wheel(app, &event->wheel);
+        break;
+    case SDL_WINDOWEVENT:
+        if (event->window.event == SDL_WINDOWEVENT_SIZE_CHANGED) {
+            camera_resize(&app->camera, event->window.data1, event->window.data2);
+        } else if (event->window.event == SDL_WINDOWEVENT_LEAVE) {
+            app->mouse_inside = false;
+        } else if (event->window.event == SDL_WINDOWEVENT_ENTER) {
+            app->mouse_inside = true;
+        } else if (event->window.event == SDL_WINDOWEVENT_FOCUS_LOST) {
+            app->mods = 0;
+        }
+        break;
+    default:
+        break;
+    }
+}

@@ -1,0 +1,411 @@
+/*
+ * The SDL2 sandbox: drop polygons, set their elasticity, and watch the
+ * collision axes and impulses the engine computes. This file holds the
+ * command line and the frame loop; see docs/sandbox.md.
+ */
+#define SDL_MAIN_HANDLED
+#include <SDL.h>
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "app.h"
+#include "input.h"
+#include "render.h"
+#include "script.h"
+#include "ui.h"
+
+typedef struct {
+    bool headless;
+    long frames;           /* 0: no limit (headless: until the script ends, or 1) */
+    const char *screenshot;
+    const char *script;
+    int width, height;
+    bool software;
+    bool vsync;
+    long spawn;
+    double spawn_size;
+    uint64_t seed;
+    bool stats;
+    double elasticity;
+    bool overlays_given;
+    bool overlays[OVERLAY_COUNT];
+} options_t;
+
+static void usage(FILE *out) {
+    fprintf(out,
+            "Usage: ./sandbox [OPTIONS]\n"
+            "A 2D rigid-body sandbox: click to drop polygons, change the elasticity,\n"
+            "and watch collision axes and impulses live. Press H or F1 in the app for\n"
+            "every key.\n"
+            "\n"
+            "Options:\n"
+            "  --headless          render offscreen (SDL's dummy video driver and a\n"
+            "                      software renderer); no window, no clock: every frame\n"
+            "                      is 1/60 s of display time\n"
+            "  --frames N          stop after N frames (headless default: when the\n"
+            "                      script ends, or 1 frame without a script)\n"
+            "  --screenshot FILE   save the last frame as a BMP file\n"
+            "  --script FILE       replay timed input from FILE (format below)\n"
+            "  --size WxH          window size in pixels (default 1280x720)\n"
+            "  --software          use SDL's software renderer for the window\n"
+            "  --no-vsync          do not wait for the display's refresh\n"
+            "  --spawn N           start with N bodies in a grid (benchmarks)\n"
+            "  --spawn-size M      their size in metres (default 0.2)\n"
+            "  --elasticity E      elasticity of new bodies, 0 to 1 (default 0.5)\n"
+            "  --overlays LIST     overlays on at start: comma-separated from axes,\n"
+            "                      impulses, points, velocities, centroids, bounds,\n"
+            "                      or all or none (default axes,impulses)\n"
+            "  --seed N            seed of the random polygons (default 1)\n"
+            "  --stats             print frame, physics and render times at exit\n"
+            "  -h, --help          this help\n"
+            "\n"
+            "Exit status: 0 on success, 1 when SDL fails or a screenshot cannot be\n"
+            "saved, 2 for a bad option or script.\n"
+            "\n"
+            "Example (what make check's smoke tests do):\n"
+            "  printf 'click 0 6\\nwait 1s\\n' > drop.txt\n"
+            "  ./sandbox --headless --script drop.txt --screenshot out.bmp\n"
+            "\n%s",
+            SCRIPT_HELP);
+}
+
+static int bad_usage(const char *format, const char *a, const char *b) {
+    fprintf(stderr, "sandbox: ");
+    fprintf(stderr, format, a, b);
+    fprintf(stderr, "\nTry './sandbox --help'.\n");
+    return 2;
+}
+
+static bool parse_long(const char *text, long min, long max, long *out) {
+    char *end;
+    errno = 0;
+    long value = strtol(text, &end, 10);
+    if (end == text || *end != '\0' || errno == ERANGE || value < min || value > max) return false;
+    *out = value;
+    return true;
+}
+
+static bool parse_double(const char *text, double min, double max, double *out) {
+    char *end;
+    errno = 0;
+    double value = strtod(text, &end);
+    if (end == text || *end != '\0' || errno == ERANGE || !isfinite(value) || value < min ||
+        value > max) {
+        return false;
+    }
+    *out = value;
+    return true;
+}
+
+static bool parse_overlays(const char *text, bool overlays[OVERLAY_COUNT]) {
+    static const char *const names[OVERLAY_COUNT] = {"axes",       "impulses",  "points",
+                                                     "velocities", "centroids", "bounds"};
+    for (int i = 0; i < OVERLAY_COUNT; i++) overlays[i] = false;
+    if (strcmp(text, "none") == 0) return true;
+    if (strcmp(text, "all") == 0) {
+        for (int i = 0; i < OVERLAY_COUNT; i++) overlays[i] = true;
+        return true;
+    }
+    const char *p = text;
+    while (*p != '\0') {
+        size_t length = strcspn(p, ",");
+        bool found = false;
+        for (int i = 0; i < OVERLAY_COUNT; i++) {
+            if (strlen(names[i]) == length && strncmp(p, names[i], length) == 0) {
+                overlays[i] = true;
+                found = true;
+            }
+        }
+        if (!found) return false;
+        p += length;
+        if (*p == ',') p++;
+    }
+    return true;
+}
+
+/* Returns -1 to go on, else the exit status. */
+static int parse_options(int argc, char **argv, options_t *o) {
+    *o = (options_t){.width = 1280, .height = 720, .vsync = true, .seed = 1,
+                     .elasticity = 0.5, .spawn_size = 0.2};
+    for (int i = 1; i < argc; i++) {
+        const char *arg = argv[i];
+        bool takes_value = strcmp(arg, "--frames") == 0 || strcmp(arg, "--screenshot") == 0 ||
+                           strcmp(arg, "--script") == 0 || strcmp(arg, "--size") == 0 ||
+                           strcmp(arg, "--spawn") == 0 || strcmp(arg, "--spawn-size") == 0 ||
+                           strcmp(arg, "--seed") == 0 || strcmp(arg, "--elasticity") == 0 ||
+                           strcmp(arg, "--overlays") == 0;
+        const char *value = NULL;
+        if (takes_value) {
+            if (i + 1 >= argc || argv[i + 1][0] == '\0') {
+                return bad_usage("option %s needs a value%s", arg, "");
+            }
+            value = argv[++i];
+        }
+        long number;
+        if (strcmp(arg, "-h") == 0 || strcmp(arg, "--help") == 0) {
+            usage(stdout);
+            return 0;
+        } else if (strcmp(arg, "--headless") == 0) {
+            o->headless = true;
+        } else if (strcmp(arg, "--software") == 0) {
+            o->software = true;
+        } else if (strcmp(arg, "--no-vsync") == 0) {
+            o->vsync = false;
+        } else if (strcmp(arg, "--stats") == 0) {
+            o->stats = true;
+        } else if (strcmp(arg, "--frames") == 0) {
+            if (!parse_long(value, 1, 100000000, &o->frames)) {
+                return bad_usage("--frames: '%s' is not a whole number from 1 to 100000000%s",
+                                 value, "");
+            }
+        } else if (strcmp(arg, "--screenshot") == 0) {
+            o->screenshot = value;
+        } else if (strcmp(arg, "--script") == 0) {
+            o->script = value;
+        } else if (strcmp(arg, "--size") == 0) {
+            int w, h;
+            char extra;
+            if (sscanf(value, "%dx%d%c", &w, &h, &extra) != 2 || w < 320 || h < 240 ||
+                w > 8192 || h > 8192) {
+                return bad_usage("--size: '%s' is not WIDTHxHEIGHT between 320x240 and "
+                                 "8192x8192%s", value, "");
+            }
+            o->width = w;
+            o->height = h;
+        } else if (strcmp(arg, "--spawn") == 0) {
+            if (!parse_long(value, 0, 20000, &o->spawn)) {
+                return bad_usage("--spawn: '%s' is not a whole number from 0 to 20000%s", value,
+                                 "");
+            }
+        } else if (strcmp(arg, "--spawn-size") == 0) {
+            if (!parse_double(value, SHAPE_MIN_SIZE, SHAPE_MAX_SIZE, &o->spawn_size)) {
+                return bad_usage("--spawn-size: '%s' is not a size from 0.1 to 3 metres%s",
+                                 value, "");
+            }
+        } else if (strcmp(arg, "--seed") == 0) {
+            if (!parse_long(value, 0, 2147483647L, &number)) {
+                return bad_usage("--seed: '%s' is not a whole number from 0 to 2147483647%s",
+                                 value, "");
+            }
+            o->seed = (uint64_t)number;
+        } else if (strcmp(arg, "--elasticity") == 0) {
+            if (!parse_double(value, 0.0, APP_ELASTICITY_MAX, &o->elasticity)) {
+                return bad_usage("--elasticity: '%s' is not a number from 0 to 1%s", value, "");
+            }
+        } else if (strcmp(arg, "--overlays") == 0) {
+            if (!parse_overlays(value, o->overlays)) {
+                return bad_usage("--overlays: '%s' is not a list of axes, impulses, points, "
+                                 "velocities, centroids, bounds (or all, none)%s", value, "");
+            }
+            o->overlays_given = true;
+        } else {
+            return bad_usage("unknown option '%s'%s", arg, "");
+        }
+    }
+    return -1;
+}
+
+/* Reads the frame just drawn (before it is presented) into a BMP file. */
+static bool save_screenshot(SDL_Renderer *renderer, const char *path) {
+    int w, h;
+    if (SDL_GetRendererOutputSize(renderer, &w, &h) != 0) {
+        fprintf(stderr, "sandbox: cannot read the frame's size: %s\n", SDL_GetError());
+        return false;
+    }
+    SDL_Surface *shot = SDL_CreateRGBSurfaceWithFormat(0, w, h, 24, SDL_PIXELFORMAT_BGR24);
+    if (shot == NULL) {
+        fprintf(stderr, "sandbox: cannot make the screenshot surface: %s\n", SDL_GetError());
+        return false;
+    }
+    bool ok = SDL_RenderReadPixels(renderer, NULL, shot->format->format, shot->pixels,
+                                   shot->pitch) == 0;
+    if (!ok) {
+        fprintf(stderr, "sandbox: cannot read the frame's pixels: %s\n", SDL_GetError());
+    } else if (SDL_SaveBMP(shot, path) != 0) {
+        fprintf(stderr, "sandbox: cannot save the screenshot '%s': %s\n", path, SDL_GetError());
+        ok = false;
+    }
+    SDL_FreeSurface(shot);
+    return ok;
+}
+
+static double seconds_since(Uint64 start) {
+    return (double)(SDL_GetPerformanceCounter() - start) / (double)SDL_GetPerformanceFrequency();
+}
+
+/* Exponential smoothing for the HUD's numbers. */
+static double smooth(double old, double value) {
+    return old == 0.0 ? value : 0.9 * old + 0.1 * value;
+}
+
+static void print_stats(const app_t *app) {
+    const app_timing_t *t = &app->timing;
+    double frames = t->frames > 0 ? (double)t->frames : 1.0;
+    double steps = t->total_steps > 0 ? (double)t->total_steps : 1.0;
+    printf("frames %llu  bodies %zu  steps %llu\n", (unsigned long long)t->frames,
+           sandbox_totals((sandbox_t *)&app->sandbox).bodies, (unsigned long long)t->total_steps);
+    printf("frame   %8.3f ms  (%.1f frames per second)\n", 1000.0 * t->total_frame_s / frames,
+           t->total_frame_s > 0 ? frames / t->total_frame_s : 0.0);
+    printf("physics %8.3f ms per frame  (%.3f ms per step)\n",
+           1000.0 * t->total_physics_s / frames, 1000.0 * t->total_physics_s / steps);
+    printf("render  %8.3f ms per frame\n", 1000.0 * t->total_render_s / frames);
+    printf("present %8.3f ms per frame\n", 1000.0 * t->total_present_s / frames);
+}
+
+typedef struct {
+    SDL_Window *window;
+    SDL_Renderer *renderer;
+    SDL_Surface *surface; /* headless target */
+} video_t;
+
+static bool open_video(const options_t *o, video_t *v) {
+    *v = (video_t){0};
+
+    if (o->headless) {
+        v->surface = SDL_CreateRGBSurfaceWithFormat(0, o->width, o->height, 32,
+                                                    SDL_PIXELFORMAT_ARGB8888);
+        if (v->surface == NULL) {
+            fprintf(stderr, "sandbox: cannot make the offscreen surface: %s\n", SDL_GetError());
+            return false;
+        }
+        v->renderer = SDL_CreateSoftwareRenderer(v->surface);
+    } else {
+        v->window = SDL_CreateWindow("sandbox - 2D rigid bodies (H: help)", SDL_WINDOWPOS_CENTERED,
+                                     SDL_WINDOWPOS_CENTERED, o->width, o->height,
+                                     SDL_WINDOW_RESIZABLE);
+        if (v->window == NULL) {
+            fprintf(stderr, "sandbox: cannot open a window: %s\n", SDL_GetError());
+            return false;
+        }
+        Uint32 flags = o->software ? SDL_RENDERER_SOFTWARE : 0;
+        if (o->vsync) flags |= SDL_RENDERER_PRESENTVSYNC;
+        v->renderer = SDL_CreateRenderer(v->window, -1, flags);
+        if (v->renderer == NULL && !o->software) {
+            v->renderer = SDL_CreateRenderer(v->window, -1, SDL_RENDERER_SOFTWARE);
+        }
+    }
+    if (v->renderer == NULL) {
+        fprintf(stderr, "sandbox: cannot make a renderer: %s\n", SDL_GetError());
+        return false;
+    }
+    return true;
+}
+
+static void close_video(video_t *v) {
+    if (v->renderer) SDL_DestroyRenderer(v->renderer);
+    if (v->surface) SDL_FreeSurface(v->surface);
+    if (v->window) SDL_DestroyWindow(v->window);
+}
+
+int main(int argc, char **argv) {
+    options_t o;
+    int status = parse_options(argc, argv, &o);
+    if (status >= 0) return status;
+
+    script_t *script = NULL;
+    if (o.script != NULL) {
+        char error[512];
+        script = script_load(o.script, error, sizeof(error));
+        if (script == NULL) {
+            fprintf(stderr, "sandbox: %s\n", error);
+            return 2;
+        }
+    }
+
+    if (o.headless) SDL_setenv("SDL_VIDEODRIVER", "dummy", 1);
+    SDL_SetMainReady();
+    if (SDL_Init(SDL_INIT_VIDEO | SDL_INIT_EVENTS) != 0) {
+        fprintf(stderr, "sandbox: cannot start SDL: %s%s\n", SDL_GetError(),
+                o.headless ? "" : " (no display? try --headless)");
+        script_free(script);
+        return 1;
+    }
+    video_t video;
+    if (!open_video(&o, &video)) {
+        close_video(&video);
+        SDL_Quit();
+        script_free(script);
+        return 1;
+    }
+    SDL_Renderer *renderer = video.renderer;
+    int width = o.width, height = o.height;
+    SDL_GetRendererOutputSize(renderer, &width, &height);
+
+    static app_t app; /* large (the impulse trail): not on the stack */
+    app_init(&app, width, height, o.seed);
+    app_set_elasticity(&app, o.elasticity);
+    if (o.overlays_given) memcpy(app.overlays, o.overlays, sizeof(app.overlays));
+    if (o.spawn > 0) sandbox_spawn(&app.sandbox, (size_t)o.spawn, o.spawn_size, app.elasticity);
+
+    long frame_limit = o.frames;
+    if (o.headless && frame_limit == 0 && script == NULL) frame_limit = 1;
+
+    Uint64 previous = SDL_GetPerformanceCounter();
+    Uint64 fps_start = previous;
+    int fps_frames = 0;
+    status = 0;
+    while (!app.quit) {
+        Uint64 frame_start = SDL_GetPerformanceCounter();
+        double frame_dt = o.headless ? APP_HEADLESS_FRAME
+                                     : (double)(frame_start - previous) /
+                                           (double)SDL_GetPerformanceFrequency();
+        previous = frame_start;
+        if (frame_dt > 0.25) frame_dt = 0.25; /* a stall (a dragged window, a debugger) */
+        if (app.timing.frames == 0 && !o.headless) frame_dt = 1.0 / 60.0;
+        app.now += frame_dt;
+
+        SDL_Event event;
+        while (SDL_PollEvent(&event)) input_handle_event(&app, &event);
+        const char *shot = NULL;
+        if (script != NULL) script_frame(script, &app, &shot);
+
+        Uint64 physics_start = SDL_GetPerformanceCounter();
+        int steps = app_advance(&app, frame_dt);
+        double physics_s = seconds_since(physics_start);
+
+        Uint64 render_start = SDL_GetPerformanceCounter();
+        body_t *hovered = input_hovered_body(&app);
+        render_world(renderer, &app, hovered);
+        ui_draw(renderer, &app, hovered);
+        SDL_RenderFlush(renderer);
+        double render_s = seconds_since(render_start);
+
+        app.timing.frames++;
+        bool last = app.quit || (frame_limit > 0 && (long)app.timing.frames >= frame_limit) ||
+                    (o.headless && frame_limit == 0 && script != NULL && script_done(script));
+        if (shot != NULL && !save_screenshot(renderer, shot)) status = 1;
+        if (last && o.screenshot != NULL && !save_screenshot(renderer, o.screenshot)) status = 1;
+
+        Uint64 present_start = SDL_GetPerformanceCounter();
+        SDL_RenderPresent(renderer);
+        double present_s = seconds_since(present_start);
+
+        app_timing_t *t = &app.timing;
+        double frame_s = seconds_since(frame_start);
+        t->steps = steps;
+        if (steps > 0) t->physics_ms = smooth(t->physics_ms, 1000.0 * physics_s / steps);
+        t->render_ms = smooth(t->render_ms, 1000.0 * render_s);
+        t->frame_ms = smooth(t->frame_ms, 1000.0 * frame_s);
+        t->total_steps += (uint64_t)steps;
+        t->total_frame_s += frame_s;
+        t->total_physics_s += physics_s;
+        t->total_render_s += render_s;
+        t->total_present_s += present_s;
+        fps_frames++;
+        double fps_window = seconds_since(fps_start);
+        if (fps_window >= 0.5) {
+            t->fps = fps_frames / fps_window;
+            fps_frames = 0;
+            fps_start = SDL_GetPerformanceCounter();
+        }
+        if (last || status != 0) break;
+    }
+    if (o.stats) print_stats(&app);
+    app_free(&app);
+    script_free(script);
+    close_video(&video);
+    SDL_Quit();
+    return status;
+}

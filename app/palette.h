@@ -1,0 +1,44 @@
+#ifndef SANDBOX_PALETTE_H
+#define SANDBOX_PALETTE_H
+
+/*
+ * Every colour the sandbox draws, as 8-bit RGB. Shared with the smoke tests
+ * (tests/app_smoke.c), which look for these colours in screenshots, so the
+ * body colours and the overlay colours are kept far apart: no body colour is
+ * near yellow (axes) or magenta (impulses).
+ */
+
+typedef struct {
+    unsigned char r, g, b;
+} palette_rgb_t;
+
+#define PALETTE_BODY_COUNT 6
+static const palette_rgb_t PALETTE_BODIES[PALETTE_BODY_COUNT] = {
+    {66, 135, 245},  /* blue */
+    {242, 140, 40},  /* orange */
+    {38, 190, 160},  /* teal */
+    {150, 110, 230}, /* violet */
+    {225, 75, 75},   /* red */
+    {120, 200, 70},  /* green */
+};
+
+static const palette_rgb_t PALETTE_BACKGROUND = {22, 24, 30};
+static const palette_rgb_t PALETTE_GRID = {32, 35, 43};
+static const palette_rgb_t PALETTE_STATIC = {92, 98, 112};
+
+/* Overlays. */
+static const palette_rgb_t PALETTE_AXIS = {255, 235, 0};      /* yellow */
+static const palette_rgb_t PALETTE_IMPULSE = {255, 0, 220};   /* magenta */
+static const palette_rgb_t PALETTE_POINT = {0, 240, 255};     /* cyan */
+static const palette_rgb_t PALETTE_VELOCITY = {160, 255, 160};/* pale green */
+static const palette_rgb_t PALETTE_CENTROID = {255, 255, 255};/* white */
+static const palette_rgb_t PALETTE_BOUNDS = {130, 130, 150};  /* grey-blue */
+
+/* The user interface. */
+static const palette_rgb_t PALETTE_TEXT = {230, 232, 238};
+static const palette_rgb_t PALETTE_TEXT_DIM = {140, 146, 160};
+static const palette_rgb_t PALETTE_PANEL = {10, 11, 14};
+static const palette_rgb_t PALETTE_ACCENT = {255, 200, 60};
+static const palette_rgb_t PALETTE_GRAB = {255, 255, 255};
+
+#endif

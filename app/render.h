@@ -1,0 +1,19 @@
+#ifndef SANDBOX_RENDER_H
+#define SANDBOX_RENDER_H
+
+/*
+ * Draws the world: the background grid, the bodies, the grab spring, the
+ * shape about to be dropped, and the overlays. The overlays come from the
+ * engine's per-step contact record (scene_get_contact) and the trail of
+ * recent impulses; nothing is recomputed here.
+ */
+
+#include <SDL.h>
+#include "app.h"
+
+void render_world(SDL_Renderer *renderer, app_t *app, body_t *hovered);
+
+/* The length (m) of a velocity arrow per m/s. */
+#define RENDER_VELOCITY_SCALE 0.1
+
+#endif
