@@ -42,12 +42,14 @@ build/tests/engine_tests: $(TEST_SAN_OBJ) build/libengine-san.a
 	$(CC) $(SAN) $^ -lm -o $@
 
 # Programs `make check` runs; app/app.mk adds the sandbox's smoke tests.
-CHECK_PROGRAMS := build/tests/engine_tests
+# check_examples.sh builds tests/examples/ (and the README's example) against
+# the release library with the public headers only.
+CHECK_PROGRAMS := build/tests/engine_tests tests/check_examples.sh
 
 -include app/app.mk
 -include tests/bench/bench.mk
 
-check: $(CHECK_PROGRAMS)
+check: $(CHECK_PROGRAMS) build/libengine.a
 	@tests/run_all.sh $(CHECK_PROGRAMS)
 
 clean:

@@ -1,0 +1,36 @@
+#!/bin/sh
+# Builds each program in tests/examples/ against the release library with
+# nothing but the public headers (cc -std=c11 -Iengine/include ...
+# build/libengine.a -lm), runs it, and checks that README.md shows every line
+# of each example it quotes (falling_hexagon.c), so the README cannot drift
+# from code that compiles. Ends with "N passed, N failed".
+passed=0
+failed=0
+CC=${CC:-cc}
+mkdir -p build/examples
+for source in tests/examples/*.c; do
+    name=$(basename "$source" .c)
+    if $CC -std=c11 -Wall -Wextra -Werror -Iengine/include "$source" build/libengine.a -lm \
+        -o "build/examples/$name" && output=$("build/examples/$name"); then
+        echo "$output" | sed 's/^/    /'
+        echo "PASS examples.$name"
+        passed=$((passed + 1))
+    else
+        echo "FAIL examples.$name (did not build or exited non-zero)"
+        failed=$((failed + 1))
+    fi
+done
+# The README quotes falling_hexagon.c: every line of it must be there.
+missing=$(grep -v '^$' tests/examples/falling_hexagon.c | while IFS= read -r line; do
+    grep -qxF -- "$line" README.md || echo "$line"
+done)
+if [ -z "$missing" ]; then
+    echo "PASS examples.readme_quotes_falling_hexagon"
+    passed=$((passed + 1))
+else
+    echo "FAIL examples.readme_quotes_falling_hexagon: README.md lacks:"
+    echo "$missing" | sed 's/^/    /'
+    failed=$((failed + 1))
+fi
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]
