@@ -527,6 +527,31 @@ BAD_CALL(contact_count_null, scene_contact_count(NULL))
 BAD_CALL(get_contact_past_end, scene_get_contact(scene_init(), 0))
 BAD_CALL(get_stats_null, scene_get_stats(NULL))
 
+static list_t *list_with_null_body(void) {
+    list_t *bodies = list_init(2, NULL);
+    list_add(bodies, NULL);
+    return bodies;
+}
+
+BAD_CALL(add_bodies_force_creator_null_body,
+         scene_add_bodies_force_creator(scene_init(), spy_force, NULL, list_with_null_body(), NULL))
+
+static void add_same_body(scene_t *scene) {
+    body_t *body = tagged_box(0, VEC_ZERO, 1.0);
+    scene_add_body(scene, body);
+    scene_add_body(scene, body);
+}
+
+BAD_CALL(add_body_twice, add_same_body(scene_init()))
+
+static void add_to_two_scenes(void) {
+    body_t *body = tagged_box(0, VEC_ZERO, 1.0);
+    scene_add_body(scene_init(), body);
+    scene_add_body(scene_init(), body);
+}
+
+BAD_CALL(add_body_to_two_scenes, add_to_two_scenes())
+
 static void bad_input_aborts_with_message(void) {
     CHECK_DIES(free_null, NULL, "engine error in scene_free:", "NULL");
     CHECK_DIES(bodies_null, NULL, "engine error in scene_bodies:", "NULL");
@@ -537,9 +562,16 @@ static void bad_input_aborts_with_message(void) {
     CHECK_DIES(add_body_null_scene, NULL, "engine error in scene_add_body:", "scene is NULL");
     CHECK_DIES(add_null_body, NULL, "engine error in scene_add_body:", "body is NULL");
     /* Today the message names scene_get_body, which scene_remove_body calls. */
-    CHECK_DIES(remove_body_past_end, NULL, "engine error in scene_", "index 5", "out of range");
-    CHECK_DIES(add_force_creator_null_scene, NULL, "engine error in scene_add", "scene is NULL");
-    CHECK_DIES(add_null_force_creator, NULL, "engine error in scene_add", "forcer is NULL");
+    CHECK_DIES(remove_body_past_end, NULL, "engine error in scene_remove_body:", "index 5",
+               "out of range");
+    CHECK_DIES(add_force_creator_null_scene, NULL, "engine error in scene_add_force_creator:",
+               "scene is NULL");
+    CHECK_DIES(add_null_force_creator, NULL, "engine error in scene_add_force_creator:",
+               "forcer is NULL");
+    CHECK_DIES(add_bodies_force_creator_null_body, NULL,
+               "engine error in scene_add_bodies_force_creator:", "bodies[0] is NULL");
+    CHECK_DIES(add_body_twice, NULL, "engine error in scene_add_body:", "already belongs");
+    CHECK_DIES(add_body_to_two_scenes, NULL, "engine error in scene_add_body:", "already belongs");
     CHECK_DIES(add_bodies_force_creator_null_scene, NULL,
                "engine error in scene_add_bodies_force_creator:", "scene is NULL");
     CHECK_DIES(add_null_bodies_force_creator, NULL,

@@ -19,7 +19,10 @@
  * scene_get_body, until the end of the next scene_tick, which frees it (and
  * its info), keeps the order of the other bodies, and in the same tick drops
  * every force creator whose bodies list holds a removed body, freeing its aux
- * with its freer. A dropped force creator is never called again.
+ * with its freer. A dropped force creator is never called again. A body
+ * marked during a tick (by a collision handler or a force creator) is freed
+ * at the end of that same tick; force creators that depend on it still run
+ * in that tick (stage 1 comes before stage 4), world contacts leave it out.
  *
  * Ownership: the scene owns its bodies (scene_add_body hands one over) and the
  * aux of each force creator that was given a freer.
@@ -51,7 +54,8 @@ size_t scene_bodies(scene_t *scene);
 /* The body at index (0 <= index < scene_bodies), in the order added. */
 body_t *scene_get_body(scene_t *scene, size_t index);
 
-/* Adds a body; the scene now owns it. A body belongs to one scene only. */
+/* Adds a body; the scene now owns it. A body belongs to one scene, once:
+ * adding it again, here or to another scene, is refused. */
 void scene_add_body(scene_t *scene, body_t *body);
 
 /* Deprecated: use body_remove. Marks the body at index for removal. */
@@ -116,8 +120,9 @@ void scene_set_solver_iterations(scene_t *scene, size_t velocity_iterations,
 /*
  * The step's record: every contact touching or about to touch at the last
  * scene_tick (world contacts with their impulses) and every seed collision
- * whose handler ran in it. Read-only; valid until the next scene_tick or
- * until the scene is freed.
+ * whose handler ran in it, except those naming a body freed at the end of
+ * that tick (so a destructive collision leaves no entry). Read-only; valid
+ * until the next scene_tick or until the scene is freed.
  */
 size_t scene_contact_count(scene_t *scene);
 const contact_t *scene_get_contact(scene_t *scene, size_t index);

@@ -50,6 +50,8 @@ struct body {
     free_func_t info_freer;
     bool removed;
 
+    /* Whether a scene owns the body (a body belongs to one scene, once). */
+    bool in_scene;
     /* Set by the scene: a number no other body of the scene has had, so
      * contact caches can match pairs across steps even as indices shift. */
     uint32_t id;

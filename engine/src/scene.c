@@ -85,6 +85,8 @@ body_t *scene_get_body(scene_t *scene, size_t index) {
 void scene_add_body(scene_t *scene, body_t *body) {
     REQUIRE_NOT_NULL(scene);
     REQUIRE_NOT_NULL(body);
+    REQUIRE(!body->in_scene, "body already belongs to a scene (added twice?)");
+    body->in_scene = true;
     memory_reserve((void **)&scene->bodies, &scene->body_capacity, scene->body_count + 1,
                    sizeof(body_t *));
     body->id = scene->next_body_id++;
@@ -92,21 +94,36 @@ void scene_add_body(scene_t *scene, body_t *body) {
 }
 
 void scene_remove_body(scene_t *scene, size_t index) {
-    body_remove(scene_get_body(scene, index));
+    REQUIRE_NOT_NULL(scene);
+    REQUIRE(index < scene->body_count, "index %zu out of range (%zu bodies)", index,
+            scene->body_count);
+    body_remove(scene->bodies[index]);
+}
+
+static void add_force_entry(scene_t *scene, force_creator_t forcer, void *aux, list_t *bodies,
+                            free_func_t freer) {
+    memory_reserve((void **)&scene->forces, &scene->force_capacity, scene->force_count + 1,
+                   sizeof(force_entry_t));
+    scene->forces[scene->force_count++] = (force_entry_t){forcer, aux, freer, bodies};
 }
 
 void scene_add_force_creator(scene_t *scene, force_creator_t forcer, void *aux,
                              free_func_t freer) {
-    scene_add_bodies_force_creator(scene, forcer, aux, NULL, freer);
+    REQUIRE_NOT_NULL(scene);
+    REQUIRE_NOT_NULL(forcer);
+    add_force_entry(scene, forcer, aux, NULL, freer);
 }
 
 void scene_add_bodies_force_creator(scene_t *scene, force_creator_t forcer, void *aux,
                                     list_t *bodies, free_func_t freer) {
     REQUIRE_NOT_NULL(scene);
     REQUIRE_NOT_NULL(forcer);
-    memory_reserve((void **)&scene->forces, &scene->force_capacity, scene->force_count + 1,
-                   sizeof(force_entry_t));
-    scene->forces[scene->force_count++] = (force_entry_t){forcer, aux, freer, bodies};
+    if (bodies != NULL) {
+        for (size_t i = 0; i < list_size(bodies); i++) {
+            REQUIRE(list_get(bodies, i) != NULL, "bodies[%zu] is NULL", i);
+        }
+    }
+    add_force_entry(scene, forcer, aux, bodies, freer);
 }
 
 void scene_set_gravity(scene_t *scene, vector_t gravity) {
