@@ -14,10 +14,13 @@
  * record is made by the narrowphase of that tick, i.e. before its solve and
  * integration (the positions one step earlier than the other engines' ones).
  *
- * Two variants: "ours" (world contacts, every scene) and "ours-seed" (cradle
+ * Variants: "ours" (world contacts, every scene), "ours-seed" (cradle
  * only, as the scene asks for seed-style elastic collisions): contacts off
  * and create_physics_collision(scene, a, b, e) for every pair of bodies,
- * with e the larger of the two elasticities (1 in cradle).
+ * with e the larger of the two elasticities (1 in cradle); and
+ * "ours-symplectic" (orbit only): INTEGRATOR_SYMPLECTIC_EULER instead of the
+ * default seed integrator, whose velocity update uses only the force at the
+ * start of the step and is not symplectic.
  */
 
 #include "engine.h"
@@ -33,6 +36,7 @@ typedef struct {
     double *angle0; /* rotation built into the polygon (regular polygons) */
     int count, capacity;
     int seed; /* ours-seed: pairwise seed collisions instead of world contacts */
+    int symplectic; /* ours-symplectic: INTEGRATOR_SYMPLECTIC_EULER */
 } ours_world_t;
 
 static const rgb_color_t grey = {0.5, 0.5, 0.5};
@@ -42,7 +46,9 @@ static void ours_describe(FILE *out) {
             "# ours: this engine (build/libengine.a, %s); world contacts on, default solver "
             "iterations 8 velocity / 3 position, seed integrator, friction mixed by geometric "
             "mean, elasticity by max; penetration from the step record (before the last "
-            "solve); ours-seed (cradle): contacts off, create_physics_collision for every pair\n",
+            "solve); ours-seed (cradle): contacts off, create_physics_collision for every pair; "
+            "ours-symplectic (orbit): "
+            "INTEGRATOR_SYMPLECTIC_EULER\n",
             BENCH_ENGINE_VERSION);
 }
 
@@ -50,12 +56,15 @@ static void ours_describe_none(FILE *out) {
     (void)out;
 }
 
-static void *ours_world_new_common(double gy, int contacts, int capacity, int seed) {
+static void *ours_world_new_common(double gy, int contacts, int capacity, int seed,
+                                   int symplectic) {
     ours_world_t *w = (ours_world_t *)calloc(1, sizeof(ours_world_t));
     w->scene = scene_init();
     scene_set_gravity(w->scene, (vector_t){0.0, gy});
     if (contacts && !seed) scene_set_contacts_enabled(w->scene, true);
     w->seed = seed;
+    w->symplectic = symplectic;
+    if (symplectic) scene_set_integrator(w->scene, INTEGRATOR_SYMPLECTIC_EULER);
     w->capacity = capacity > 0 ? capacity : 4;
     w->bodies = (body_t **)malloc(sizeof(body_t *) * (size_t)w->capacity);
     w->angle0 = (double *)malloc(sizeof(double) * (size_t)w->capacity);
@@ -63,11 +72,15 @@ static void *ours_world_new_common(double gy, int contacts, int capacity, int se
 }
 
 static void *ours_world_new(double gy, int contacts, int capacity) {
-    return ours_world_new_common(gy, contacts, capacity, 0);
+    return ours_world_new_common(gy, contacts, capacity, 0, 0);
 }
 
 static void *ours_world_new_seed(double gy, int contacts, int capacity) {
-    return ours_world_new_common(gy, contacts, capacity, 1);
+    return ours_world_new_common(gy, contacts, capacity, 1, 0);
+}
+
+static void *ours_world_new_symplectic(double gy, int contacts, int capacity) {
+    return ours_world_new_common(gy, contacts, capacity, 0, 1);
 }
 
 static void ours_world_free(void *world) {
@@ -195,7 +208,15 @@ static const bench_ops_t ours_seed_ops = {
     ours_pair_penetration,
 };
 
+static const bench_ops_t ours_symplectic_ops = {
+    "ours-symplectic",         "orbit",        0, 0, ours_describe_none,
+    ours_world_new_symplectic, ours_world_free, ours_add_static_box,
+    ours_add_body,             ours_set_velocity, ours_add_gravity_pair,
+    ours_step,                 ours_get_state,  ours_max_penetration,
+    ours_pair_penetration,
+};
+
 int main(int argc, char **argv) {
-    const bench_ops_t *ops[2] = {&ours_ops, &ours_seed_ops};
-    return bench_main(argc, argv, ops, 2);
+    const bench_ops_t *ops[3] = {&ours_ops, &ours_seed_ops, &ours_symplectic_ops};
+    return bench_main(argc, argv, ops, 3);
 }
