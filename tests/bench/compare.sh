@@ -39,7 +39,7 @@ for program in $programs; do
 done
 
 echo
-echo "== ms per step (median over runs of each run's mean) and ours / other"
+echo "== ms per step (median over runs of each run's mean); /X = ours / X (above 1: ours slower)"
 awk '
 function field(name,    i, n, kv) {
     for (i = 1; i <= NF; i++) {
@@ -63,9 +63,13 @@ function field(name,    i, n, kv) {
     if (settled != "") { ms[engine, key, "settled"] = settled; has_settled[key] = 1 }
 }
 END {
-    printf "%-8s %-6s %-7s %-8s %-10s %10s", "scene", "size", "dt", "metric", "engine", "ms"
-    for (j = 1; j <= nothers; j++) printf " %14s", others[j]
-    for (j = 1; j <= nothers; j++) printf " %19s", "ours/" others[j]
+    for (j = 1; j <= nothers; j++) {
+        w = length(others[j]); wm[j] = w > 10 ? w : 10
+        w = length(others[j]) + 1; wr[j] = w > 8 ? w : 8
+    }
+    printf "%-8s %-6s %-7s %-8s %-15s %10s", "scene", "size", "dt", "metric", "engine", "ms"
+    for (j = 1; j <= nothers; j++) printf " %" wm[j] "s", others[j]
+    for (j = 1; j <= nothers; j++) printf " %" wr[j] "s", "/" others[j]
     printf "\n"
     for (k = 1; k <= nkeys; k++) {
         key = keys[k]; split(key, part, SUBSEP)
@@ -75,17 +79,17 @@ END {
             for (i = 1; i <= nours; i++) {
                 e = ours[i]
                 if (!((e, key, metric) in ms)) continue
-                printf "%-8s %-6s %-7s %-8s %-10s %10s", part[1], part[2], part[3], metric, e, ms[e, key, metric]
+                printf "%-8s %-6s %-7s %-8s %-15s %10s", part[1], part[2], part[3], metric, e, ms[e, key, metric]
                 for (j = 1; j <= nothers; j++) {
                     o = others[j]
-                    printf " %14s", ((o, key, metric) in ms) ? ms[o, key, metric] : "-"
+                    printf " %" wm[j] "s", ((o, key, metric) in ms) ? ms[o, key, metric] : "-"
                 }
                 for (j = 1; j <= nothers; j++) {
                     o = others[j]
                     if (((o, key, metric) in ms) && ms[o, key, metric] + 0 > 0)
-                        printf " %19.3g", ms[e, key, metric] / ms[o, key, metric]
+                        printf " %" wr[j] ".3g", ms[e, key, metric] / ms[o, key, metric]
                     else
-                        printf " %19s", "-"
+                        printf " %" wr[j] "s", "-"
                 }
                 printf "\n"
             }
