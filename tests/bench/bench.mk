@@ -16,7 +16,8 @@ BENCH_HDR := tests/bench/bench_common.h tests/bench/bench_scenes.h
 BENCH_CFLAGS := $(CSTD) $(WARN) -O2
 BENCH_CXXFLAGS := -std=c++17 -Wall -Wextra -Werror -Wshadow -O2
 # Recursive (=): evaluated only when a bench rule runs.
-BENCH_ENGINE_VERSION = $(shell git describe --always --dirty 2>/dev/null || echo unknown)
+# The last commit that touched engine/, and -dirty when engine/ has changes since.
+BENCH_ENGINE_VERSION = $(shell { git log -1 --format=%h -- engine 2>/dev/null || echo unknown; } | tr -d '\n'; git diff --quiet HEAD -- engine 2>/dev/null || echo -dirty)
 BENCH_BOX2D_PACKAGE = $(shell dpkg-query -W -f='$${Version}' libbox2d-dev 2>/dev/null || echo unknown)
 BENCH_HAVE_CHIPMUNK = $(shell printf '\043include <chipmunk/chipmunk.h>\n' | $(CC) -E -x c - >/dev/null 2>&1 && echo yes)
 BENCH_HAVE_BOX2D = $(shell printf '\043include <box2d/box2d.h>\n' | $(CXX) -E -x c++ - >/dev/null 2>&1 && echo yes)

@@ -3,7 +3,8 @@
  * public API only: cc -O2 -Iengine/include bench_engine.c build/libengine.a -lm.
  *
  * Settings: world contacts on (scene_set_contacts_enabled), the default
- * solver iterations (8 velocity, 3 position) and integrator (seed), gravity
+ * solver iterations (scene_set_solver_iterations is not called: 8 velocity,
+ * 4 position at engine commit 3fd8180) and integrator (seed), gravity
  * by scene_set_gravity. Bodies: polygon_make_box / polygon_make_regular with
  * the scene's mass (density 1: mass = area), static bodies mass INFINITY;
  * body_set_friction and body_set_elasticity with the scene's values (the
@@ -43,8 +44,8 @@ static const rgb_color_t grey = {0.5, 0.5, 0.5};
 
 static void ours_describe(FILE *out) {
     fprintf(out,
-            "# ours: this engine (build/libengine.a, %s); world contacts on, default solver "
-            "iterations 8 velocity / 3 position, seed integrator, friction mixed by geometric "
+            "# ours: this engine (build/libengine.a, %s); world contacts on, the default solver "
+            "iterations (scene.h), seed integrator, friction mixed by geometric "
             "mean, elasticity by max; penetration from the step record (before the last "
             "solve); ours-seed (cradle): contacts off, create_physics_collision for every pair; "
             "ours-symplectic (orbit): "
