@@ -16,7 +16,7 @@
 /* The fixed physics step (s) and the most steps one frame may run: beyond
  * that the simulation slows down rather than spiralling after a stall. */
 #define APP_STEP (1.0 / 120.0)
-#define APP_MAX_STEPS_PER_FRAME 8
+#define APP_MAX_STEPS_PER_FRAME 4
 /* The frame time in --headless mode, where no clock is read (s). */
 #define APP_HEADLESS_FRAME (1.0 / 60.0)
 

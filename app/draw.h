@@ -16,6 +16,10 @@ Sint16 draw_coord(double pixel);
 void draw_arrow(SDL_Renderer *renderer, vector_t tail, vector_t head, palette_rgb_t color,
                 Uint8 alpha, int width);
 
+/* Text goes straight into canvas (a 32-bit surface that renderer draws
+ * into) when it is not NULL, else through the renderer. */
+void draw_set_canvas(SDL_Renderer *renderer, SDL_Surface *canvas);
+
 /* printf-style text in SDL2_gfx's built-in 8x8 font, top-left at (x, y). */
 void draw_text(SDL_Renderer *renderer, int x, int y, palette_rgb_t color, const char *format,
                ...)

@@ -20,7 +20,7 @@ const input_control_t INPUT_CONTROLS[] = {
     {"3 4 5 6 7 8", "regular polygon with 3 to 8 sides"},
     {"B / P / Tab", "box / random convex polygon / next shape"},
     {"Mouse wheel", "shape size (over the slider: elasticity)"},
-    {"Up / Down, slider", "elasticity of new bodies -/+ 0.05"},
+    {"Up / Down, slider", "elasticity of new bodies +/- 0.05"},
     {"E / Shift + E", "give the body under the cursor / all bodies that elasticity"},
     {"A", "overlay: collision axes"},
     {"I", "overlay: impulses (fade over 0.5 s)"},
@@ -35,7 +35,8 @@ const input_control_t INPUT_CONTROLS[] = {
     {"G", "gravity on / off"},
     {"C / R", "clear bodies / reset the scene"},
     {"Ctrl + wheel, + / -", "zoom"},
-    {"Ctrl + arrows, 0", "pan / reset the view"},
+    {"Left/Right, Ctrl + Up/Down", "pan the view"},
+    {"0, Home", "reset the view"},
     {"H, F1", "this help"},
     {"Esc, Q", "quit"},
 };
@@ -413,9 +414,8 @@ void input_handle_event(app_t *app, const SDL_Event *event) {
         on_wheel(app, &event->wheel);
         break;
     case SDL_WINDOWEVENT:
-        if (event->window.event == SDL_WINDOWEVENT_SIZE_CHANGED) {
-            camera_resize(&app->camera, event->window.data1, event->window.data2);
-        } else if (event->window.event == SDL_WINDOWEVENT_LEAVE) {
+        /* A new size reaches the camera through main.c (video_sync_size). */
+        if (event->window.event == SDL_WINDOWEVENT_LEAVE) {
             app->mouse_inside = false;
         } else if (event->window.event == SDL_WINDOWEVENT_ENTER) {
             app->mouse_inside = true;

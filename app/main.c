@@ -11,10 +11,12 @@
 #include <stdlib.h>
 #include <string.h>
 #include "app.h"
+#include "draw.h"
 #include "input.h"
 #include "render.h"
 #include "script.h"
 #include "ui.h"
+#include "video.h"
 
 typedef struct {
     bool headless;
@@ -22,7 +24,7 @@ typedef struct {
     const char *screenshot;
     const char *script;
     int width, height;
-    bool software;
+    bool gpu;
     bool vsync;
     long spawn;
     double spawn_size;
@@ -49,8 +51,10 @@ static void usage(FILE *out) {
             "  --screenshot FILE   save the last frame as a BMP file\n"
             "  --script FILE       replay timed input from FILE (format below)\n"
             "  --size WxH          window size in pixels (default 1280x720)\n"
-            "  --software          use SDL's software renderer for the window\n"
-            "  --no-vsync          do not wait for the display's refresh\n"
+            "  --software          draw with SDL's software renderer (the default)\n"
+            "  --gpu               draw with SDL's accelerated renderer instead\n"
+            "  --no-vsync          do not hold the frame rate to the display's\n"
+            "                      refresh rate (for measurements)\n"
             "  --spawn N           start with N bodies in a grid (benchmarks)\n"
             "  --spawn-size M      their size in metres (default 0.2)\n"
             "  --elasticity E      elasticity of new bodies, 0 to 1 (default 0.5)\n"
@@ -150,7 +154,9 @@ static int parse_options(int argc, char **argv, options_t *o) {
         } else if (strcmp(arg, "--headless") == 0) {
             o->headless = true;
         } else if (strcmp(arg, "--software") == 0) {
-            o->software = true;
+            o->gpu = false;
+        } else if (strcmp(arg, "--gpu") == 0) {
+            o->gpu = true;
         } else if (strcmp(arg, "--no-vsync") == 0) {
             o->vsync = false;
         } else if (strcmp(arg, "--stats") == 0) {
@@ -207,30 +213,6 @@ static int parse_options(int argc, char **argv, options_t *o) {
     return -1;
 }
 
-/* Reads the frame just drawn (before it is presented) into a BMP file. */
-static bool save_screenshot(SDL_Renderer *renderer, const char *path) {
-    int w, h;
-    if (SDL_GetRendererOutputSize(renderer, &w, &h) != 0) {
-        fprintf(stderr, "sandbox: cannot read the frame's size: %s\n", SDL_GetError());
-        return false;
-    }
-    SDL_Surface *shot = SDL_CreateRGBSurfaceWithFormat(0, w, h, 24, SDL_PIXELFORMAT_BGR24);
-    if (shot == NULL) {
-        fprintf(stderr, "sandbox: cannot make the screenshot surface: %s\n", SDL_GetError());
-        return false;
-    }
-    bool ok = SDL_RenderReadPixels(renderer, NULL, shot->format->format, shot->pixels,
-                                   shot->pitch) == 0;
-    if (!ok) {
-        fprintf(stderr, "sandbox: cannot read the frame's pixels: %s\n", SDL_GetError());
-    } else if (SDL_SaveBMP(shot, path) != 0) {
-        fprintf(stderr, "sandbox: cannot save the screenshot '%s': %s\n", path, SDL_GetError());
-        ok = false;
-    }
-    SDL_FreeSurface(shot);
-    return ok;
-}
-
 static double seconds_since(Uint64 start) {
     return (double)(SDL_GetPerformanceCounter() - start) / (double)SDL_GetPerformanceFrequency();
 }
@@ -252,51 +234,6 @@ static void print_stats(const app_t *app) {
            1000.0 * t->total_physics_s / frames, 1000.0 * t->total_physics_s / steps);
     printf("render  %8.3f ms per frame\n", 1000.0 * t->total_render_s / frames);
     printf("present %8.3f ms per frame\n", 1000.0 * t->total_present_s / frames);
-}
-
-typedef struct {
-    SDL_Window *window;
-    SDL_Renderer *renderer;
-    SDL_Surface *surface; /* headless target */
-} video_t;
-
-static bool open_video(const options_t *o, video_t *v) {
-    *v = (video_t){0};
-
-    if (o->headless) {
-        v->surface = SDL_CreateRGBSurfaceWithFormat(0, o->width, o->height, 32,
-                                                    SDL_PIXELFORMAT_ARGB8888);
-        if (v->surface == NULL) {
-            fprintf(stderr, "sandbox: cannot make the offscreen surface: %s\n", SDL_GetError());
-            return false;
-        }
-        v->renderer = SDL_CreateSoftwareRenderer(v->surface);
-    } else {
-        v->window = SDL_CreateWindow("sandbox - 2D rigid bodies (H: help)", SDL_WINDOWPOS_CENTERED,
-                                     SDL_WINDOWPOS_CENTERED, o->width, o->height,
-                                     SDL_WINDOW_RESIZABLE);
-        if (v->window == NULL) {
-            fprintf(stderr, "sandbox: cannot open a window: %s\n", SDL_GetError());
-            return false;
-        }
-        Uint32 flags = o->software ? SDL_RENDERER_SOFTWARE : 0;
-        if (o->vsync) flags |= SDL_RENDERER_PRESENTVSYNC;
-        v->renderer = SDL_CreateRenderer(v->window, -1, flags);
-        if (v->renderer == NULL && !o->software) {
-            v->renderer = SDL_CreateRenderer(v->window, -1, SDL_RENDERER_SOFTWARE);
-        }
-    }
-    if (v->renderer == NULL) {
-        fprintf(stderr, "sandbox: cannot make a renderer: %s\n", SDL_GetError());
-        return false;
-    }
-    return true;
-}
-
-static void close_video(video_t *v) {
-    if (v->renderer) SDL_DestroyRenderer(v->renderer);
-    if (v->surface) SDL_FreeSurface(v->surface);
-    if (v->window) SDL_DestroyWindow(v->window);
 }
 
 int main(int argc, char **argv) {
@@ -323,15 +260,13 @@ int main(int argc, char **argv) {
         return 1;
     }
     video_t video;
-    if (!open_video(&o, &video)) {
-        close_video(&video);
+    if (!video_open(&video, o.headless, o.gpu, o.vsync, o.width, o.height)) {
+        video_close(&video);
         SDL_Quit();
         script_free(script);
         return 1;
     }
-    SDL_Renderer *renderer = video.renderer;
-    int width = o.width, height = o.height;
-    SDL_GetRendererOutputSize(renderer, &width, &height);
+    int width = video.width, height = video.height;
 
     static app_t app; /* large (the impulse trail): not on the stack */
     app_init(&app, width, height, o.seed);
@@ -358,6 +293,8 @@ int main(int argc, char **argv) {
 
         SDL_Event event;
         while (SDL_PollEvent(&event)) input_handle_event(&app, &event);
+        if (video_sync_size(&video)) camera_resize(&app.camera, video.width, video.height);
+        SDL_Renderer *renderer = video.renderer;
         const char *shot = NULL;
         if (script != NULL) script_frame(script, &app, &shot);
 
@@ -367,7 +304,8 @@ int main(int argc, char **argv) {
 
         Uint64 render_start = SDL_GetPerformanceCounter();
         body_t *hovered = input_hovered_body(&app);
-        render_world(renderer, &app, hovered);
+        draw_set_canvas(renderer, video.canvas);
+        render_world(renderer, video.canvas, &app, hovered);
         ui_draw(renderer, &app, hovered);
         SDL_RenderFlush(renderer);
         double render_s = seconds_since(render_start);
@@ -375,11 +313,11 @@ int main(int argc, char **argv) {
         app.timing.frames++;
         bool last = app.quit || (frame_limit > 0 && (long)app.timing.frames >= frame_limit) ||
                     (o.headless && frame_limit == 0 && script != NULL && script_done(script));
-        if (shot != NULL && !save_screenshot(renderer, shot)) status = 1;
-        if (last && o.screenshot != NULL && !save_screenshot(renderer, o.screenshot)) status = 1;
+        if (shot != NULL && !video_screenshot(&video, shot)) status = 1;
+        if (last && o.screenshot != NULL && !video_screenshot(&video, o.screenshot)) status = 1;
 
         Uint64 present_start = SDL_GetPerformanceCounter();
-        SDL_RenderPresent(renderer);
+        video_present(&video);
         double present_s = seconds_since(present_start);
 
         app_timing_t *t = &app.timing;
@@ -401,11 +339,17 @@ int main(int argc, char **argv) {
             fps_start = SDL_GetPerformanceCounter();
         }
         if (last || status != 0) break;
+        /* Without a display that paces us, keep to its refresh rate rather
+         * than spin (a window drawn in software has none). */
+        if (!o.headless && o.vsync && !video.vsync) {
+            double rest = 1.0 / video.refresh_hz - seconds_since(frame_start);
+            if (rest > 0.001) SDL_Delay((Uint32)(rest * 1000.0));
+        }
     }
     if (o.stats) print_stats(&app);
     app_free(&app);
     script_free(script);
-    close_video(&video);
+    video_close(&video);
     SDL_Quit();
     return status;
 }

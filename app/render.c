@@ -2,8 +2,8 @@
 #include <SDL2_gfxPrimitives.h>
 #include <math.h>
 #include <stdlib.h>
-#include <stdlib.h>
 #include "draw.h"
+#include "raster.h"
 #include "ui.h"
 
 #define MAX_VERTICES 64
@@ -37,99 +37,13 @@ static void draw_grid(SDL_Renderer *renderer, const camera_t *camera) {
     }
 }
 
-/*
- * Bodies are filled by our own scan conversion into horizontal spans, batched
- * by colour into one SDL_RenderFillRects call each, and outlined with one
- * SDL_RenderDrawLines call per body. With 2000 bodies in SDL's software
- * renderer this is about three times faster than SDL2_gfx's filledPolygonRGBA
- * (one draw call per scanline, each re-setting colour and blend mode) or
- * SDL_RenderGeometry (per-triangle setup); docs/sandbox.md has the numbers.
- * A pixel is filled when its centre is inside the polygon.
- */
-#define BUCKETS 16
-
-typedef struct {
-    palette_rgb_t color;
-    SDL_Rect *spans;
-    size_t count, capacity;
-} span_bucket_t;
-
-typedef struct {
-    span_bucket_t buckets[BUCKETS];
-    size_t used;
-} span_batch_t;
-
-static span_batch_t batch;
-
-static void flush_spans(SDL_Renderer *renderer) {
-    SDL_SetRenderDrawBlendMode(renderer, SDL_BLENDMODE_NONE);
-    for (size_t i = 0; i < batch.used; i++) {
-        span_bucket_t *b = &batch.buckets[i];
-        if (b->count == 0) continue;
-        SDL_SetRenderDrawColor(renderer, b->color.r, b->color.g, b->color.b, 255);
-        SDL_RenderFillRects(renderer, b->spans, (int)b->count);
-        b->count = 0;
-    }
-    batch.used = 0;
-}
-
-static span_bucket_t *bucket_for(SDL_Renderer *renderer, palette_rgb_t color) {
-    for (size_t i = 0; i < batch.used; i++) {
-        palette_rgb_t c = batch.buckets[i].color;
-        if (c.r == color.r && c.g == color.g && c.b == color.b) return &batch.buckets[i];
-    }
-    if (batch.used == BUCKETS) flush_spans(renderer);
-    span_bucket_t *b = &batch.buckets[batch.used++];
-    b->color = color;
-    b->count = 0;
-    return b;
-}
-
-static void add_span(span_bucket_t *b, int x0, int x1, int y) {
-    if (b->count == b->capacity) {
-        size_t capacity = b->capacity ? 2 * b->capacity : 4096;
-        SDL_Rect *grown = realloc(b->spans, capacity * sizeof(SDL_Rect));
-        if (grown == NULL) return;
-        b->spans = grown;
-        b->capacity = capacity;
-    }
-    b->spans[b->count++] = (SDL_Rect){x0, y, x1 - x0 + 1, 1};
-}
-
-/* Scan-converts a convex polygon (pixels, either winding) clipped to the
- * window into spans of the bucket. */
-static void fill_convex(span_bucket_t *b, const vector_t *p, int n, int width, int height) {
-    double min_y = p[0].y, max_y = p[0].y;
-    for (int i = 1; i < n; i++) {
-        min_y = fmin(min_y, p[i].y);
-        max_y = fmax(max_y, p[i].y);
-    }
-    int y0 = (int)ceil(min_y - 0.5), y1 = (int)floor(max_y - 0.5);
-    if (y0 < 0) y0 = 0;
-    if (y1 > height - 1) y1 = height - 1;
-    for (int y = y0; y <= y1; y++) {
-        double yc = y + 0.5, left = INFINITY, right = -INFINITY;
-        for (int i = 0; i < n; i++) {
-            vector_t a = p[i], c = p[(i + 1) % n];
-            if ((a.y <= yc && c.y > yc) || (c.y <= yc && a.y > yc)) {
-                double x = a.x + (yc - a.y) * (c.x - a.x) / (c.y - a.y);
-                left = fmin(left, x);
-                right = fmax(right, x);
-            }
-        }
-        if (!(left <= right)) continue;
-        int x0 = (int)ceil(left - 0.5), x1 = (int)floor(right - 0.5);
-        if (x0 < 0) x0 = 0;
-        if (x1 > width - 1) x1 = width - 1;
-        if (x0 <= x1) add_span(b, x0, x1, y);
-    }
-}
-
-static void draw_bodies(SDL_Renderer *renderer, app_t *app, body_t *hovered) {
+static void draw_bodies(SDL_Renderer *renderer, SDL_Surface *canvas, app_t *app,
+                        body_t *hovered) {
     scene_t *scene = app->sandbox.scene;
     const camera_t *camera = &app->camera;
     vector_t pixels[MAX_VERTICES];
-    /* Fills first, all batched; the outlines go on top. */
+    raster_begin(renderer, canvas);
+    /* Fills first; the outlines go on top. */
     for (int pass = 0; pass < 2; pass++) {
         for (size_t i = 0; i < scene_bodies(scene); i++) {
             body_t *body = scene_get_body(scene, i);
@@ -149,21 +63,14 @@ static void draw_bodies(SDL_Renderer *renderer, app_t *app, body_t *hovered) {
             }
             palette_rgb_t fill = rgb_of(body_get_color(body));
             if (pass == 0) {
-                fill_convex(bucket_for(renderer, fill), pixels, n, camera->width,
-                            camera->height);
-                continue;
+                raster_fill(pixels, n, fill);
+            } else {
+                raster_outline(pixels, n, body == hovered ? PALETTE_GRAB : lighter(fill, 0.45));
             }
-            SDL_Point outline[MAX_VERTICES + 1];
-            for (int k = 0; k < n; k++) {
-                outline[k] = (SDL_Point){draw_coord(pixels[k].x), draw_coord(pixels[k].y)};
-            }
-            outline[n] = outline[0];
-            palette_rgb_t edge = body == hovered ? PALETTE_GRAB : lighter(fill, 0.45);
-            SDL_SetRenderDrawColor(renderer, edge.r, edge.g, edge.b, 255);
-            SDL_RenderDrawLines(renderer, outline, n + 1);
         }
-        if (pass == 0) flush_spans(renderer);
+        if (pass == 0) raster_end();
     }
+    raster_end();
 }
 
 /* The shape the next click drops, at the cursor, as a translucent outline. */
@@ -250,12 +157,21 @@ static vector_t contact_anchor(const contact_t *contact) {
                                      body_get_centroid(contact->body2)));
 }
 
+/* Half the smaller side of the body's bounding box (pixels). */
+static double body_extent(const camera_t *camera, body_t *body) {
+    aabb_t box = body_get_bounds(body);
+    return 0.5 * camera_length_to_pixels(camera, fmin(box.max.x - box.min.x, box.max.y - box.min.y));
+}
+
 static void draw_axes(SDL_Renderer *renderer, app_t *app) {
     scene_t *scene = app->sandbox.scene;
-    double length = fmin(40.0, fmax(18.0, camera_length_to_pixels(&app->camera, 0.6)));
     for (size_t i = 0; i < scene_contact_count(scene); i++) {
         const contact_t *contact = scene_get_contact(scene, i);
         if (!vec_is_finite(contact->axis)) continue;
+        /* As long as the smaller body allows, so that neighbours' arrows stay apart. */
+        double extent = fmin(body_extent(&app->camera, contact->body1),
+                             body_extent(&app->camera, contact->body2));
+        double length = fmin(48.0, fmax(16.0, 1.3 * extent));
         vector_t tail = camera_to_pixel(&app->camera, contact_anchor(contact));
         /* World y is up, pixel y is down. */
         vector_t dir = {contact->axis.x, -contact->axis.y};
@@ -291,13 +207,13 @@ static void draw_impulses(SDL_Renderer *renderer, app_t *app) {
     }
 }
 
-void render_world(SDL_Renderer *renderer, app_t *app, body_t *hovered) {
+void render_world(SDL_Renderer *renderer, SDL_Surface *canvas, app_t *app, body_t *hovered) {
     SDL_SetRenderDrawBlendMode(renderer, SDL_BLENDMODE_NONE);
     SDL_SetRenderDrawColor(renderer, PALETTE_BACKGROUND.r, PALETTE_BACKGROUND.g,
                            PALETTE_BACKGROUND.b, 255);
     SDL_RenderClear(renderer);
     draw_grid(renderer, &app->camera);
-    draw_bodies(renderer, app, hovered);
+    draw_bodies(renderer, canvas, app, hovered);
     if (app->overlays[OVERLAY_BOUNDS]) draw_bounds(renderer, app);
     if (app->overlays[OVERLAY_VELOCITIES]) draw_velocities(renderer, app);
     if (app->overlays[OVERLAY_CENTROIDS]) draw_centroids(renderer, app);

@@ -11,7 +11,9 @@
 #include <SDL.h>
 #include "app.h"
 
-void render_world(SDL_Renderer *renderer, app_t *app, body_t *hovered);
+/* canvas: the surface renderer draws into when it is a software renderer
+ * (the bodies are then written straight into it), else NULL. */
+void render_world(SDL_Renderer *renderer, SDL_Surface *canvas, app_t *app, body_t *hovered);
 
 /* The length (m) of a velocity arrow per m/s. */
 #define RENDER_VELOCITY_SCALE 0.1

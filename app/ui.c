@@ -175,8 +175,9 @@ static void draw_legend(SDL_Renderer *renderer, app_t *app) {
 static void draw_status(SDL_Renderer *renderer, app_t *app) {
     if (app->status[0] == '\0' || app->now - app->status_time > 2.5) return;
     int w = (int)strlen(app->status) * DRAW_CHAR_W + 2 * PAD;
+    /* Top centre, between the HUD and the shape panel, clear of the floor. */
     int x = (app->camera.width - w) / 2;
-    int y = app->camera.height - MARGIN - 2 * DRAW_LINE_H - 3 * PAD - DRAW_LINE_H;
+    int y = MARGIN;
     draw_panel(renderer, x, y, w, DRAW_LINE_H + PAD, PALETTE_PANEL, 220);
     draw_text(renderer, x + PAD, y + PAD / 2 + 1, PALETTE_ACCENT, "%s", app->status);
 }

@@ -1,0 +1,38 @@
+#ifndef SANDBOX_VIDEO_H
+#define SANDBOX_VIDEO_H
+
+/*
+ * Where frames go. By default every frame is drawn by SDL's software
+ * renderer into a canvas surface of our own, which is copied to the window
+ * (or, --headless, to nothing: SDL's dummy video driver, no window at all).
+ * With --gpu the window gets SDL's accelerated renderer instead and there is
+ * no canvas.
+ */
+
+#include <SDL.h>
+#include <stdbool.h>
+
+typedef struct {
+    SDL_Window *window;     /* NULL when headless */
+    SDL_Renderer *renderer;
+    SDL_Surface *canvas;    /* the software renderer's target (32 bits a pixel); NULL with --gpu */
+    bool vsync;             /* presenting waits for the display */
+    double refresh_hz;      /* the display's refresh rate (60 when unknown) */
+    int width, height;      /* output size in pixels */
+} video_t;
+
+/* Opens the output; false (with a message on stderr) when it cannot. */
+bool video_open(video_t *video, bool headless, bool gpu, bool vsync, int width, int height);
+
+/* Follows the window's size; true when the output size changed. */
+bool video_sync_size(video_t *video);
+
+/* Saves the frame drawn so far (call before video_present) as a BMP. */
+bool video_screenshot(video_t *video, const char *path);
+
+/* Shows the frame. */
+void video_present(video_t *video);
+
+void video_close(video_t *video);
+
+#endif
