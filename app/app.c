@@ -53,7 +53,7 @@ void app_init(app_t *app, int width, int height, uint64_t seed) {
     app->shape = (shape_choice_t){SHAPE_REGULAR, 6, 0.5};
     app->elasticity = 0.5;
     app->time_scale = 1.0;
-    app->impulse_scale = 0.25;
+    app->impulse_scale = 0.1;
     app->overlays[OVERLAY_AXES] = true;
     app->overlays[OVERLAY_IMPULSES] = true;
     app->mouse = (vector_t){0.5 * width, 0.5 * height};
@@ -64,6 +64,26 @@ void app_free(app_t *app) {
     sandbox_free(&app->sandbox);
     if (app->next_vertices != NULL) list_free(app->next_vertices);
     app->next_vertices = NULL;
+}
+
+bool app_contact_touching(const contact_t *contact) {
+    size_t n = contact->point_count > 2 ? 2 : contact->point_count;
+    for (size_t k = 0; k < n; k++) {
+        if (contact->separation[k] <= APP_TOUCH_SLOP || contact->normal_impulse[k] > 0.0) {
+            return true;
+        }
+    }
+    /* A seed collision's handler ran: it is a collision whatever its points. */
+    return contact->kind == CONTACT_SEED;
+}
+
+size_t app_collision_count(app_t *app) {
+    size_t count = 0;
+    scene_t *scene = app->sandbox.scene;
+    for (size_t i = 0; i < scene_contact_count(scene); i++) {
+        count += app_contact_touching(scene_get_contact(scene, i));
+    }
+    return count;
 }
 
 /* One step, and the impulses it applied into the trail. */

@@ -73,7 +73,7 @@ typedef struct {
     bool show_help;
     bool quit;
     double time_scale; /* simulated seconds per displayed second, 0.1 to 1 */
-    double impulse_scale; /* arrow length (m) per N s */
+    double impulse_scale; /* impulse arrow length (m) per N s, 0.1 to start */
 
     /* Input state. */
     double now;          /* app clock (s): real time, or frames / 60 headless */
@@ -119,6 +119,16 @@ const char *app_overlay_key(overlay_t overlay);
 void app_set_elasticity(app_t *app, double elasticity);
 
 #define APP_ELASTICITY_MAX 1.0
+
+/* Whether a contact of the step's record is a collision: its bodies touch or
+ * overlap at a point (separation up to APP_TOUCH_SLOP) or it applied an
+ * impulse. The record also holds speculative contacts, a little apart and
+ * about to touch, which the solver watches but which are not collisions. */
+#define APP_TOUCH_SLOP 0.005
+bool app_contact_touching(const contact_t *contact);
+
+/* The collisions (touching contacts) of the last step. */
+size_t app_collision_count(app_t *app);
 
 /* Makes the next body's vertices for the current shape and size (a new random
  * polygon for the random shape). */

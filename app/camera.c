@@ -19,11 +19,13 @@ void camera_reset(camera_t *camera) {
     camera->scale = fmin(sx, sy);
     if (!(camera->scale > 0.0)) camera->scale = 1.0;
     camera->center = (vector_t){0.5 * (VIEW_MIN_X + VIEW_MAX_X), 0.5 * (VIEW_MIN_Y + VIEW_MAX_Y)};
+    camera->moved = false;
 }
 
 void camera_resize(camera_t *camera, int width, int height) {
     camera->width = width;
     camera->height = height;
+    if (!camera->moved) camera_reset(camera);
 }
 
 vector_t camera_to_pixel(const camera_t *camera, vector_t world) {
@@ -47,6 +49,7 @@ double camera_length_to_world(const camera_t *camera, double pixels) {
 void camera_pan_pixels(camera_t *camera, double dx, double dy) {
     camera->center.x -= dx / camera->scale;
     camera->center.y += dy / camera->scale;
+    camera->moved = true;
 }
 
 void camera_zoom_at(camera_t *camera, double factor, vector_t pixel) {
@@ -55,4 +58,5 @@ void camera_zoom_at(camera_t *camera, double factor, vector_t pixel) {
     /* Put anchor back under pixel. */
     vector_t moved = camera_to_pixel(camera, anchor);
     camera_pan_pixels(camera, pixel.x - moved.x, pixel.y - moved.y);
+    camera->moved = true;
 }

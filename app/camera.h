@@ -6,6 +6,7 @@
  * per metre; `center` is the world point at the middle of the window.
  */
 
+#include <stdbool.h>
 #include "vector.h"
 
 typedef struct {
@@ -13,6 +14,7 @@ typedef struct {
     double scale;
     int width;
     int height;
+    bool moved; /* panned or zoomed since the last reset */
 } camera_t;
 
 /* The default view for a window of width x height pixels: the floor, the
@@ -22,7 +24,8 @@ void camera_init(camera_t *camera, int width, int height);
 /* Back to the default view, keeping the window size. */
 void camera_reset(camera_t *camera);
 
-/* The window changed size: the centre and scale stay, the view grows. */
+/* The window changed size: the default view is fitted again; a view the
+ * user moved keeps its centre and scale (the window shows more or less). */
 void camera_resize(camera_t *camera, int width, int height);
 
 vector_t camera_to_pixel(const camera_t *camera, vector_t world);

@@ -24,6 +24,7 @@ const input_control_t INPUT_CONTROLS[] = {
     {"E / Shift + E", "give the body under the cursor / all bodies that elasticity"},
     {"A", "overlay: collision axes"},
     {"I", "overlay: impulses (fade over 0.5 s)"},
+    {", / .", "impulse arrows shorter / longer"},
     {"T", "overlay: contact points"},
     {"V", "overlay: velocity vectors"},
     {"M", "overlay: centroids"},
@@ -230,6 +231,12 @@ static void on_key(app_t *app, const SDL_KeyboardEvent *key) {
         break;
     case SDLK_x:
         toggle_overlay(app, OVERLAY_BOUNDS);
+        break;
+    case SDLK_COMMA:
+    case SDLK_PERIOD:
+        app->impulse_scale *= sym == SDLK_COMMA ? 1.0 / 1.5 : 1.5;
+        app->impulse_scale = fmin(10.0, fmax(0.001, app->impulse_scale));
+        app_status(app, "impulse arrows: %.3g m per N s", app->impulse_scale);
         break;
     case SDLK_o: {
         bool any = false;

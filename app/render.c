@@ -7,6 +7,7 @@
 #include "ui.h"
 
 #define MAX_VERTICES 64
+#define IMPULSE_MAX_PIXELS 200.0
 
 static palette_rgb_t rgb_of(rgb_color_t c) {
     return (palette_rgb_t){(unsigned char)lround(fmin(1.0, fmax(0.0, c.r)) * 255.0),
@@ -167,7 +168,7 @@ static void draw_axes(SDL_Renderer *renderer, app_t *app) {
     scene_t *scene = app->sandbox.scene;
     for (size_t i = 0; i < scene_contact_count(scene); i++) {
         const contact_t *contact = scene_get_contact(scene, i);
-        if (!vec_is_finite(contact->axis)) continue;
+        if (!vec_is_finite(contact->axis) || !app_contact_touching(contact)) continue;
         /* As long as the smaller body allows, so that neighbours' arrows stay apart. */
         double extent = fmin(body_extent(&app->camera, contact->body1),
                              body_extent(&app->camera, contact->body2));
@@ -187,9 +188,16 @@ static void draw_points(SDL_Renderer *renderer, app_t *app) {
         for (size_t k = 0; k < n; k++) {
             vector_t p = camera_to_pixel(&app->camera, contact->points[k]);
             Sint16 x = draw_coord(p.x), y = draw_coord(p.y);
-            boxRGBA(renderer, x - 3, y - 3, x + 3, y + 3, PALETTE_POINT.r, PALETTE_POINT.g,
-                    PALETTE_POINT.b, 255);
-            rectangleRGBA(renderer, x - 3, y - 3, x + 3, y + 3, 0, 0, 0, 255);
+            /* Filled where the bodies touch; hollow for a speculative point
+             * (apart, about to touch). */
+            if (contact->separation[k] <= APP_TOUCH_SLOP) {
+                boxRGBA(renderer, x - 3, y - 3, x + 3, y + 3, PALETTE_POINT.r, PALETTE_POINT.g,
+                        PALETTE_POINT.b, 255);
+                rectangleRGBA(renderer, x - 3, y - 3, x + 3, y + 3, 0, 0, 0, 255);
+            } else {
+                rectangleRGBA(renderer, x - 3, y - 3, x + 3, y + 3, PALETTE_POINT.r,
+                              PALETTE_POINT.g, PALETTE_POINT.b, 255);
+            }
         }
     }
 }
@@ -202,7 +210,13 @@ static void draw_impulses(SDL_Renderer *renderer, app_t *app) {
         vector_t tail = camera_to_pixel(&app->camera, mark->point);
         vector_t head = camera_to_pixel(
             &app->camera, vec_add(mark->point, vec_multiply(app->impulse_scale, mark->impulse)));
-        if (vec_get_length(vec_subtract(head, tail)) < 3.0) continue;
+        vector_t arrow = vec_subtract(head, tail);
+        double length = vec_get_length(arrow);
+        if (length < 3.0) continue;
+        /* Linear in the impulse up to a cap, so a heavy impact stays on screen. */
+        if (length > IMPULSE_MAX_PIXELS) {
+            head = vec_add(tail, vec_multiply(IMPULSE_MAX_PIXELS / length, arrow));
+        }
         draw_arrow(renderer, tail, head, PALETTE_IMPULSE, (Uint8)lround(255.0 * fade), 3);
     }
 }

@@ -115,8 +115,9 @@ static void draw_hud(SDL_Renderer *renderer, app_t *app) {
     draw_text(renderer, x, y, PALETTE_TEXT, "physics %6.3f ms/step  (%d steps/frame)",
               t->physics_ms, t->steps);
     y += DRAW_LINE_H;
-    draw_text(renderer, x, y, PALETTE_TEXT, "bodies %zu   collisions this step %zu", totals.bodies,
-              scene_contact_count(scene));
+    size_t collisions = app_collision_count(app);
+    draw_text(renderer, x, y, PALETTE_TEXT, "bodies %zu   collisions this step %zu (%zu near)",
+              totals.bodies, collisions, scene_contact_count(scene) - collisions);
     y += DRAW_LINE_H;
     draw_text(renderer, x, y, PALETTE_TEXT, "energy %.1f J  (kinetic %.1f)",
               totals.kinetic + totals.potential, totals.kinetic);
