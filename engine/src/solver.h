@@ -39,6 +39,8 @@ typedef struct {
     vector_t acceleration;   /* (force / mass) + gravity: for times of impact */
     vector_t dx;             /* displacement this step: advanced, then corrected */
     double dtheta;
+    double impact_time;      /* of an impact against a static body (s), < 0 for none */
+    int pushing_contacts;    /* contacts with a normal impulse this step */
 } solver_state_t;
 
 /* One contact point, as the iterations see it. The lever arms r (from each

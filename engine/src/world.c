@@ -112,6 +112,8 @@ static void load_bodies(world_t *world, body_t **bodies, size_t count, const wor
         state->w_start = body->angular_velocity;
         integrator_free_velocity(body, dt, step->gravity, &state->v_free, &state->w_free);
         state->acceleration = integrator_acceleration(body, step->gravity);
+        state->impact_time = -1.0;
+        state->pushing_contacts = 0;
         velocity->v = state->v_free;
         velocity->w = state->w_free;
         velocity->inverse_mass = body->inverse_mass;
