@@ -32,6 +32,10 @@ void raster_begin(SDL_Renderer *renderer, SDL_Surface *canvas) {
     }
 }
 
+bool raster_direct(void) {
+    return raster.canvas != NULL;
+}
+
 static void flush_buckets(void) {
     SDL_SetRenderDrawBlendMode(raster.renderer, SDL_BLENDMODE_NONE);
     for (size_t i = 0; i < raster.used; i++) {

@@ -13,6 +13,7 @@
  */
 
 #include <SDL.h>
+#include <stdbool.h>
 #include "palette.h"
 #include "vector.h"
 
@@ -20,6 +21,9 @@
  * draws into) when it is not NULL, else through renderer. Flushes what the
  * renderer has queued so that the order of drawing is kept. */
 void raster_begin(SDL_Renderer *renderer, SDL_Surface *canvas);
+
+/* Whether drawing goes straight into a canvas (raster_begin was given one). */
+bool raster_direct(void);
 
 /* A convex polygon of n vertices (pixels, either winding), clipped to the
  * canvas or the renderer's output. */

@@ -172,7 +172,7 @@ static void draw_axes(SDL_Renderer *renderer, app_t *app) {
         /* As long as the smaller body allows, so that neighbours' arrows stay apart. */
         double extent = fmin(body_extent(&app->camera, contact->body1),
                              body_extent(&app->camera, contact->body2));
-        double length = fmin(48.0, fmax(16.0, 1.3 * extent));
+        double length = fmin(48.0, fmax(10.0, 1.3 * extent));
         vector_t tail = camera_to_pixel(&app->camera, contact_anchor(contact));
         /* World y is up, pixel y is down. */
         vector_t dir = {contact->axis.x, -contact->axis.y};
