@@ -89,6 +89,8 @@ void body_free(body_t *body) {
 void body_update_world(body_t *body) {
     if (body->world_valid) return;
     double c = cos(body->angle), s = sin(body->angle);
+    body->rotation_cos = c;
+    body->rotation_sin = s;
     aabb_t bounds = {{INFINITY, INFINITY}, {-INFINITY, -INFINITY}};
     for (size_t i = 0; i < body->count; i++) {
         vector_t p = vec_add(body->centroid, vec_rotate_cs(body->local_vertices[i], c, s));

@@ -17,6 +17,8 @@ struct body {
     vector_t *world_vertices;
     vector_t *world_normals;
     aabb_t bounds;
+    /* cos and sin of angle, valid with the world polygon. */
+    double rotation_cos, rotation_sin;
     bool world_valid;
 
     /* Pose and motion. */

@@ -34,8 +34,31 @@ typedef struct {
     manifold_point_t points[2];
 } manifold_t;
 
+/*
+ * A manifold's features in the bodies' own frames: which polygon holds the
+ * reference face, the face's normal and a point on it (reference frame),
+ * and the clipped incident points (incident frame). While two bodies keep
+ * nearly the same relative pose, the features stay right and only the
+ * separations and world points need recomputing (manifold_evaluate), which
+ * is much cheaper than the separating-axis search and clipping.
+ */
+typedef struct {
+    bool flip; /* the reference face is b's */
+    int point_count;
+    vector_t normal;     /* reference frame */
+    vector_t face_point; /* reference frame */
+    vector_t points[2];  /* incident frame */
+    uint32_t ids[2];
+} manifold_features_t;
+
 /* The manifold of two bodies' current polygons (point_count 0 when they are
- * further apart than margin). */
-manifold_t manifold_collide(body_t *a, body_t *b, double margin);
+ * further apart than margin). When it has points, *features receives them,
+ * including clipped points beyond the margin (a later evaluate may keep
+ * them). Both bodies' world polygons must be up to date. */
+manifold_t manifold_collide(body_t *a, body_t *b, double margin, manifold_features_t *features);
+
+/* The manifold the features give at the bodies' current poses. */
+manifold_t manifold_evaluate(const manifold_features_t *features, const body_t *a,
+                             const body_t *b, double margin);
 
 #endif // #ifndef MANIFOLD_H
