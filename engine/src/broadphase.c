@@ -67,12 +67,16 @@ static uint32_t hash_cell(int32_t ix, int32_t iy, uint32_t mask) {
     return (h ^ (h >> 15)) & mask;
 }
 
+/* floor(coordinate / size), by truncation: floor() is a library call on
+ * baseline x86-64, and this runs for every box corner every step. */
 static int32_t cell_index(double coordinate, double inverse_size) {
-    double cell = floor(coordinate * inverse_size);
-    /* Keep far-away bodies from overflowing the cell coordinates. */
+    double cell = coordinate * inverse_size;
+    /* Keep far-away bodies (and a NaN, which compares false) from
+     * overflowing the cell coordinates. */
     if (cell > 1e9) cell = 1e9;
-    if (cell < -1e9) cell = -1e9;
-    return (int32_t)cell;
+    if (!(cell >= -1e9)) cell = -1e9;
+    int32_t truncated = (int32_t)cell;
+    return truncated - (cell < (double)truncated);
 }
 
 /* Writes the (cell, proxy) entries; proxies covering too many cells go to
