@@ -5,7 +5,36 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#if defined(__SANITIZE_ADDRESS__)
+#define HAVE_LEAK_CHECK 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define HAVE_LEAK_CHECK 1
+#endif
+#endif
+#ifdef HAVE_LEAK_CHECK
+#include <sanitizer/lsan_interface.h>
+#endif
+
 int test_failures = 0;
+
+bool test_no_leaks(void) {
+#ifdef HAVE_LEAK_CHECK
+    return __lsan_do_recoverable_leak_check() == 0;
+#else
+    return true;
+#endif
+}
+
+list_t *test_make_polygon(const vector_t *points, size_t n) {
+    list_t *polygon = list_init(n, free);
+    for (size_t i = 0; i < n; i++) {
+        vector_t *v = malloc(sizeof *v);
+        *v = points[i];
+        list_add(polygon, v);
+    }
+    return polygon;
+}
 
 void test_fail(const char *file, int line, const char *format, ...) {
     va_list args;

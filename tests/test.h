@@ -12,6 +12,8 @@
 #include <stdbool.h>
 #include <stddef.h>
 #include <stdio.h>
+#include "list.h"
+#include "vector.h"
 
 typedef struct {
     const char *name;
@@ -61,6 +63,28 @@ void test_fail(const char *file, int line, const char *format, ...)
             test_fail(__FILE__, __LINE__, "%s = %.17g, expected %.17g within %g relative",   \
                       #actual, actual_, expected_, tolerance_);                              \
     } while (0)
+
+/* |actual - expected| <= tolerance for both components of a vector_t. */
+#define CHECK_VEC(actual, ex, ey, tolerance)                                                 \
+    do {                                                                                     \
+        vector_t v_ = (actual);                                                              \
+        CHECK_NEAR(v_.x, (ex), (tolerance));                                                 \
+        CHECK_NEAR(v_.y, (ey), (tolerance));                                                 \
+    } while (0)
+
+/* A new list (freer free) holding heap copies of the n points, in order. */
+list_t *test_make_polygon(const vector_t *points, size_t n);
+
+/* test_make_polygon of the listed points: POLYGON({0, 0}, {1, 0}, {0, 1}). */
+#define POLYGON(...)                                                                         \
+    test_make_polygon((const vector_t[]){__VA_ARGS__},                                       \
+                      sizeof((const vector_t[]){__VA_ARGS__}) / sizeof(vector_t))
+
+/* True when every block allocated so far is freed or still reachable
+ * (LeakSanitizer, when built with AddressSanitizer as make check does;
+ * always true otherwise). The runner forks each test, so a test sees only
+ * its own blocks. */
+bool test_no_leaks(void);
 
 /* Runs function(argument) in a child process and checks that it aborts with
  * a message on stderr containing every one of the given substrings. */

@@ -5,41 +5,9 @@
 #include "polygon.h"
 #include "test.h"
 
-/* LeakSanitizer, when the tests are built with AddressSanitizer (make check
- * does): true when every block allocated so far is still reachable or
- * freed. The runner forks each test, so a test sees only its own blocks. */
-#if defined(__SANITIZE_ADDRESS__)
-#define HAVE_LEAK_CHECK 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define HAVE_LEAK_CHECK 1
-#endif
-#endif
-#ifdef HAVE_LEAK_CHECK
-#include <sanitizer/lsan_interface.h>
-static bool no_leaks(void) {
-    return __lsan_do_recoverable_leak_check() == 0;
-}
-#else
-static bool no_leaks(void) {
-    return true;
-}
-#endif
 
 static const rgb_color_t RED = {1, 0, 0};
 
-static list_t *make_polygon(const vector_t *points, size_t n) {
-    list_t *polygon = list_init(n, free);
-    for (size_t i = 0; i < n; i++) {
-        vector_t *v = malloc(sizeof *v);
-        *v = points[i];
-        list_add(polygon, v);
-    }
-    return polygon;
-}
-#define POLYGON(...)                                                                         \
-    make_polygon((const vector_t[]){__VA_ARGS__},                                            \
-                 sizeof((const vector_t[]){__VA_ARGS__}) / sizeof(vector_t))
 
 /* A w x h box centred at c. */
 static body_t *box_body(vector_t c, double w, double h, double mass) {
@@ -50,12 +18,6 @@ static vector_t shape_vertex(list_t *shape, size_t i) {
     return *(vector_t *)list_get(shape, i);
 }
 
-#define CHECK_VEC(actual, ex, ey, tolerance)                                                 \
-    do {                                                                                     \
-        vector_t v_ = (actual);                                                              \
-        CHECK_NEAR(v_.x, (ex), (tolerance));                                                 \
-        CHECK_NEAR(v_.y, (ey), (tolerance));                                                 \
-    } while (0)
 
 static void init_starts_at_rest_at_the_area_centroid(void) {
     /* Area centroid (10/9, 7/9); the vertex mean would be (1, 3/4). */
@@ -81,11 +43,11 @@ static void init_takes_the_shape_and_free_releases_everything(void) {
     body_t *body = body_init(shape, 1.0, RED);
     /* The caller must not free shape: the body did or will. */
     body_free(body);
-    CHECK(no_leaks());
+    CHECK(test_no_leaks());
     body_t *other = body_init_with_info(polygon_make_regular(7, 1.0, VEC_ZERO, 0), 1.0, RED,
                                         NULL, NULL);
     body_free(other);
-    CHECK(no_leaks());
+    CHECK(test_no_leaks());
 }
 
 static int info_freed = 0;
@@ -114,12 +76,12 @@ static void info_is_returned_and_freed_with_its_freer(void) {
     CHECK(body_get_info(plain) == &mine);
     body_free(plain);
     CHECK(mine == 7 && info_freed == 1);
-    CHECK(no_leaks());
+    CHECK(test_no_leaks());
 }
 
 static void get_shape_is_a_new_copy_of_the_world_vertices(void) {
     const vector_t points[4] = {{1, 1}, {3, 1}, {3, 2}, {1, 2}};
-    body_t *body = body_init(make_polygon(points, 4), 1.0, RED);
+    body_t *body = body_init(test_make_polygon(points, 4), 1.0, RED);
     list_t *shape = body_get_shape(body);
     CHECK(list_size(shape) == 4);
     for (size_t i = 0; i < 4; i++) {
@@ -135,7 +97,7 @@ static void get_shape_is_a_new_copy_of_the_world_vertices(void) {
     list_free(shape); /* frees the vectors too */
     list_free(again);
     body_free(body);
-    CHECK(no_leaks());
+    CHECK(test_no_leaks());
 }
 
 static void clockwise_shape_is_reversed(void) {

@@ -6,25 +6,7 @@
 
 static const rgb_color_t GREEN = {0, 1, 0};
 
-#define CHECK_VEC(actual, ex, ey, tolerance)                                                 \
-    do {                                                                                     \
-        vector_t v_ = (actual);                                                              \
-        CHECK_NEAR(v_.x, (ex), (tolerance));                                                 \
-        CHECK_NEAR(v_.y, (ey), (tolerance));                                                 \
-    } while (0)
 
-static list_t *make_polygon(const vector_t *points, size_t n) {
-    list_t *polygon = list_init(n, free);
-    for (size_t i = 0; i < n; i++) {
-        vector_t *v = malloc(sizeof *v);
-        *v = points[i];
-        list_add(polygon, v);
-    }
-    return polygon;
-}
-#define POLYGON(...)                                                                         \
-    make_polygon((const vector_t[]){__VA_ARGS__},                                            \
-                 sizeof((const vector_t[]){__VA_ARGS__}) / sizeof(vector_t))
 
 static body_t *box(vector_t c, double half_width, double half_height) {
     return body_init(polygon_make_box(c, half_width, half_height), 1.0, GREEN);

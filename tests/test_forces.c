@@ -6,12 +6,6 @@
 
 static const rgb_color_t BLUE = {0, 0, 1};
 
-#define CHECK_VEC(actual, ex, ey, tolerance)                                                 \
-    do {                                                                                     \
-        vector_t v_ = (actual);                                                              \
-        CHECK_NEAR(v_.x, (ex), (tolerance));                                                 \
-        CHECK_NEAR(v_.y, (ey), (tolerance));                                                 \
-    } while (0)
 
 /* A square of side 2 h centred at c. */
 static body_t *square(vector_t c, double h, double mass) {

@@ -5,19 +5,6 @@
 #include "polygon.h"
 #include "test.h"
 
-/* A new list (freer free) holding copies of the n points. */
-static list_t *make_polygon(const vector_t *points, size_t n) {
-    list_t *polygon = list_init(n, free);
-    for (size_t i = 0; i < n; i++) {
-        vector_t *v = malloc(sizeof *v);
-        *v = points[i];
-        list_add(polygon, v);
-    }
-    return polygon;
-}
-#define POLYGON(...)                                                                         \
-    make_polygon((const vector_t[]){__VA_ARGS__},                                            \
-                 sizeof((const vector_t[]){__VA_ARGS__}) / sizeof(vector_t))
 
 static vector_t vertex(list_t *polygon, size_t i) {
     return *(vector_t *)list_get(polygon, i);
@@ -258,7 +245,7 @@ static void check_names_each_problem(void) {
         double a = 4.0 * M_PI * i / 5.0;
         star[i] = (vector_t){cos(a), sin(a)};
     }
-    CHECK(refused_with(make_polygon(star, 5), "more than once"));
+    CHECK(refused_with(test_make_polygon(star, 5), "more than once"));
 }
 
 static void make_regular(void) {

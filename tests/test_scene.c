@@ -4,33 +4,9 @@
 #include "engine.h"
 #include "test.h"
 
-#if defined(__SANITIZE_ADDRESS__)
-#define HAVE_LEAK_CHECK 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define HAVE_LEAK_CHECK 1
-#endif
-#endif
-#ifdef HAVE_LEAK_CHECK
-#include <sanitizer/lsan_interface.h>
-/* True when every block allocated so far is freed or still reachable. */
-static bool no_leaks(void) {
-    return __lsan_do_recoverable_leak_check() == 0;
-}
-#else
-static bool no_leaks(void) {
-    return true;
-}
-#endif
 
 static const rgb_color_t GREY = {0.5, 0.5, 0.5};
 
-#define CHECK_VEC(actual, ex, ey, tolerance)                                                 \
-    do {                                                                                     \
-        vector_t v_ = (actual);                                                              \
-        CHECK_NEAR(v_.x, (ex), (tolerance));                                                 \
-        CHECK_NEAR(v_.y, (ey), (tolerance));                                                 \
-    } while (0)
 
 /* Bodies carry an int tag as info; freeing one counts it by tag. */
 enum { MAX_TAGS = 16 };
@@ -103,7 +79,7 @@ static void init_is_empty_with_documented_defaults(void) {
     scene_stats_t stats = scene_get_stats(scene);
     CHECK(stats.removed_bodies == 0);
     scene_free(scene);
-    CHECK(no_leaks());
+    CHECK(test_no_leaks());
 }
 
 static void bodies_are_kept_in_the_order_added(void) {
@@ -135,7 +111,7 @@ static void free_releases_bodies_and_aux_with_their_freers(void) {
     CHECK(info_frees[1] == 1 && info_frees[2] == 1);
     CHECK(aux_frees[3] == 1 && aux_frees[4] == 1);
     CHECK(aux_frees[5] == 0 && not_owned.calls == 1);
-    CHECK(no_leaks());
+    CHECK(test_no_leaks());
 }
 
 static void tick_runs_force_creators_in_order_then_moves_bodies(void) {
@@ -222,7 +198,7 @@ static void removal_is_deferred_to_the_end_of_the_next_tick(void) {
     CHECK(scene_get_stats(scene).removed_bodies == 0);
     scene_free(scene);
     CHECK(info_frees[1] == 1 && info_frees[3] == 1 && info_frees[0] == 1);
-    CHECK(no_leaks());
+    CHECK(test_no_leaks());
 }
 
 static void deprecated_scene_remove_body_only_marks(void) {
@@ -284,7 +260,7 @@ static void force_creators_of_a_removed_body_are_dropped_and_freed(void) {
     CHECK_VEC(body_get_velocity(c), v.x, v.y, 0);
     scene_free(scene);
     CHECK(aux_frees[3] == 1 && aux_frees[4] == 1);
-    CHECK(no_leaks());
+    CHECK(test_no_leaks());
 }
 
 /* A freer that would free bodies if the scene let it: the bodies list of a
@@ -315,7 +291,7 @@ static void bodies_list_never_frees_the_bodies(void) {
     scene_free(scene);              /* frees the second list, and b once */
     CHECK(body_list_frees == 0);
     CHECK(info_frees[0] == 1 && info_frees[1] == 1);
-    CHECK(no_leaks());
+    CHECK(test_no_leaks());
 }
 
 /* Removes its body when called on the given tick. */
@@ -348,7 +324,7 @@ static void body_removed_during_a_tick_is_reaped_at_its_end(void) {
     CHECK(info_frees[0] == 1 && aux_frees[1] == 1);
     scene_tick(scene, 0.1); /* neither creator runs again */
     scene_free(scene);
-    CHECK(no_leaks());
+    CHECK(test_no_leaks());
 }
 
 static void gravity_accelerates_finite_masses_only(void) {
