@@ -91,6 +91,14 @@ bool test_no_leaks(void);
 bool test_dies_with(void (*function)(void *), void *argument, const char *const *substrings,
                     size_t count);
 
+/* Defines `static void name(void *)` making one call, for CHECK_DIES:
+ * BAD_CALL(free_null, scene_free(NULL)). */
+#define BAD_CALL(name, ...)                                                                  \
+    static void name(void *unused) {                                                         \
+        (void)unused;                                                                        \
+        __VA_ARGS__;                                                                         \
+    }
+
 #define CHECK_DIES(function, argument, ...)                                                  \
     do {                                                                                     \
         const char *const expected_[] = {__VA_ARGS__};                                       \

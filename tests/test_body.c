@@ -459,11 +459,6 @@ static void kinetic_energy(void) {
 }
 
 /* Programmer errors. Each helper makes one bad call. */
-#define BAD_CALL(name, ...)                                                                  \
-    static void name(void *unused) {                                                         \
-        (void)unused;                                                                        \
-        __VA_ARGS__;                                                                         \
-    }
 
 static body_t *ok_body(void) {
     return box_body(VEC_ZERO, 1, 1, 1.0);

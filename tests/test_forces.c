@@ -509,11 +509,6 @@ static void destroyed_bodies_never_linger_in_the_record(void) {
 }
 
 /* Programmer errors. */
-#define BAD_CALL(name, ...)                                                                  \
-    static void name(void *unused) {                                                         \
-        (void)unused;                                                                        \
-        __VA_ARGS__;                                                                         \
-    }
 
 static body_t *any_body(void) {
     return square(VEC_ZERO, 0.5, 1.0);

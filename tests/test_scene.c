@@ -461,11 +461,6 @@ static void warm_tick_allocates_nothing(void) {
 }
 
 /* Programmer errors. */
-#define BAD_CALL(name, ...)                                                                  \
-    static void name(void *unused) {                                                         \
-        (void)unused;                                                                        \
-        __VA_ARGS__;                                                                         \
-    }
 
 static scene_t *scene_of_two(void) {
     scene_t *scene = scene_init();
