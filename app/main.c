@@ -222,7 +222,7 @@ static double smooth(double old, double value) {
     return old == 0.0 ? value : 0.9 * old + 0.1 * value;
 }
 
-static void print_stats(const app_t *app) {
+static void print_stats(const app_t *app, double wall_s) {
     const app_timing_t *t = &app->timing;
     double frames = t->frames > 0 ? (double)t->frames : 1.0;
     double steps = t->total_steps > 0 ? (double)t->total_steps : 1.0;
@@ -234,6 +234,8 @@ static void print_stats(const app_t *app) {
            1000.0 * t->total_physics_s / frames, 1000.0 * t->total_physics_s / steps);
     printf("render  %8.3f ms per frame\n", 1000.0 * t->total_render_s / frames);
     printf("present %8.3f ms per frame\n", 1000.0 * t->total_present_s / frames);
+    printf("wall    %8.3f ms per frame  (%.1f frames per second shown, waits included)\n",
+           1000.0 * wall_s / frames, wall_s > 0 ? frames / wall_s : 0.0);
 }
 
 int main(int argc, char **argv) {
@@ -278,6 +280,7 @@ int main(int argc, char **argv) {
     if (o.headless && frame_limit == 0 && script == NULL) frame_limit = 1;
 
     Uint64 previous = SDL_GetPerformanceCounter();
+    Uint64 loop_start = previous;
     Uint64 fps_start = previous;
     int fps_frames = 0;
     status = 0;
@@ -346,7 +349,7 @@ int main(int argc, char **argv) {
             if (rest > 0.001) SDL_Delay((Uint32)(rest * 1000.0));
         }
     }
-    if (o.stats) print_stats(&app);
+    if (o.stats) print_stats(&app, seconds_since(loop_start));
     app_free(&app);
     script_free(script);
     video_close(&video);
