@@ -69,9 +69,10 @@ static double time_of_impact(double s, double v, double a, double dt) {
  * When the gap closes within the step at restitution speed, the exact answer
  * for constant accelerations is known: the point hits at time tau with
  * speed vi and leaves at -e vi, and ends the step at -e vi + a (dt - tau).
- * That is the target; apply_impact_times then moves each body as if the
- * impulse had acted at tau. Bounce heights come out exact to rounding at any
- * dt (tests/test_contacts.c).
+ * That is the target; for a body whose only push was such an impact on a
+ * static body, apply_impact_times then moves it as if the impulse had acted
+ * at tau. Bounce heights come out exact to rounding at any dt
+ * (tests/test_contacts.c).
  */
 static void set_target(solver_point_t *p, vector_t r_a, vector_t r_b, vector_t normal,
                        double restitution, const solver_velocity_t *va,
