@@ -94,13 +94,12 @@ static void step(app_t *app) {
     }
 }
 
-int app_advance(app_t *app, double frame_dt) {
+int app_plan_steps(app_t *app, double frame_dt) {
     int steps = 0;
     if (!app->paused) {
         impulse_trail_age(&app->trail, frame_dt);
         app->accumulator += frame_dt * app->time_scale;
         while (app->accumulator >= APP_STEP && steps < APP_MAX_STEPS_PER_FRAME) {
-            step(app);
             app->accumulator -= APP_STEP;
             steps++;
         }
@@ -112,8 +111,11 @@ int app_advance(app_t *app, double frame_dt) {
     if (app->step_once) {
         app->step_once = false;
         impulse_trail_age(&app->trail, APP_STEP);
-        step(app);
         steps++;
     }
     return steps;
+}
+
+void app_run_steps(app_t *app, int steps) {
+    for (int i = 0; i < steps; i++) step(app);
 }

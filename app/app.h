@@ -98,11 +98,16 @@ typedef struct {
 void app_init(app_t *app, int width, int height, uint64_t seed);
 void app_free(app_t *app);
 
-/* Advances the physics for a frame of frame_dt seconds of display time: adds
- * frame_dt times the time scale to the accumulator and runs whole APP_STEP
- * steps from it (none while paused, except a requested single step); ages the
- * impulse trail. Returns the number of steps run. */
-int app_advance(app_t *app, double frame_dt);
+/* The physics for a frame of frame_dt seconds of display time: adds frame_dt
+ * times the time scale to the accumulator and takes the whole APP_STEP steps
+ * it holds (none while paused, but a requested single step); ages the impulse
+ * trail. Returns how many steps to run. */
+int app_plan_steps(app_t *app, double frame_dt);
+
+/* Runs that many steps, recording their impulses into the trail. Touches
+ * only the sandbox's scene and the trail, so it may run on another thread
+ * while the main thread does anything else but those. */
+void app_run_steps(app_t *app, int steps);
 
 /* Shows a status line for a few seconds (printf-style). */
 void app_status(app_t *app, const char *format, ...)

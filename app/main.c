@@ -15,6 +15,7 @@
 #include "input.h"
 #include "render.h"
 #include "script.h"
+#include "stepper.h"
 #include "ui.h"
 #include "video.h"
 
@@ -283,6 +284,12 @@ int main(int argc, char **argv) {
     Uint64 loop_start = previous;
     Uint64 fps_start = previous;
     int fps_frames = 0;
+    bool drawn = false; /* a frame is drawn and not yet shown */
+    stepper_t *stepper = stepper_start(&app);
+    if (stepper == NULL) {
+        fprintf(stderr, "sandbox: out of memory\n");
+        return 1;
+    }
     status = 0;
     while (!app.quit) {
         Uint64 frame_start = SDL_GetPerformanceCounter();
@@ -296,14 +303,23 @@ int main(int argc, char **argv) {
 
         SDL_Event event;
         while (SDL_PollEvent(&event)) input_handle_event(&app, &event);
-        if (video_sync_size(&video)) camera_resize(&app.camera, video.width, video.height);
+        bool resized = video_sync_size(&video);
+        if (resized) camera_resize(&app.camera, video.width, video.height);
         SDL_Renderer *renderer = video.renderer;
         const char *shot = NULL;
         if (script != NULL) script_frame(script, &app, &shot);
 
-        Uint64 physics_start = SDL_GetPerformanceCounter();
-        int steps = app_advance(&app, frame_dt);
-        double physics_s = seconds_since(physics_start);
+        /* The physics of this frame runs on the stepper's thread while the
+         * previous frame goes to the display; then this frame is drawn. */
+        int steps = app_plan_steps(&app, frame_dt);
+        stepper_begin(stepper, steps);
+        double present_s = 0.0;
+        if (drawn && !resized) {
+            Uint64 present_start = SDL_GetPerformanceCounter();
+            video_present(&video);
+            present_s = seconds_since(present_start);
+        }
+        double physics_s = stepper_finish(stepper);
 
         Uint64 render_start = SDL_GetPerformanceCounter();
         body_t *hovered = input_hovered_body(&app);
@@ -312,16 +328,13 @@ int main(int argc, char **argv) {
         ui_draw(renderer, &app, hovered);
         SDL_RenderFlush(renderer);
         double render_s = seconds_since(render_start);
+        drawn = true;
 
         app.timing.frames++;
         bool last = app.quit || (frame_limit > 0 && (long)app.timing.frames >= frame_limit) ||
                     (o.headless && frame_limit == 0 && script != NULL && script_done(script));
         if (shot != NULL && !video_screenshot(&video, shot)) status = 1;
         if (last && o.screenshot != NULL && !video_screenshot(&video, o.screenshot)) status = 1;
-
-        Uint64 present_start = SDL_GetPerformanceCounter();
-        video_present(&video);
-        double present_s = seconds_since(present_start);
 
         app_timing_t *t = &app.timing;
         double frame_s = seconds_since(frame_start);
@@ -350,6 +363,7 @@ int main(int argc, char **argv) {
         }
     }
     if (o.stats) print_stats(&app, seconds_since(loop_start));
+    stepper_stop(stepper);
     app_free(&app);
     script_free(script);
     video_close(&video);

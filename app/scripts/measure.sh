@@ -2,10 +2,9 @@
 # Measures the sandbox with many bodies in software rendering (docs/sandbox.md).
 # Usage: app/scripts/measure.sh [BODIES] [FRAMES]   (from the repository root)
 # 1. headless: SDL's dummy video driver and software renderer, no display;
-# 2. in a window, drawn in software: on $DISPLAY, or on a private Xvfb when
-#    there is no display and Xvfb is installed; first unpaced (--no-vsync:
-#    the frame rate the machine can reach), then paced to the display as a
-#    person sees it.
+# 2. in a window, drawn in software, paced to the display as a person sees
+#    it: on $DISPLAY, or on a private Xvfb when there is no display and Xvfb
+#    is installed.
 # Each run spawns BODIES bodies (0.2 m) in a grid that falls into a pile, and
 # prints frame, physics, render and present times averaged over FRAMES frames.
 set -e
@@ -25,7 +24,6 @@ if [ -z "$DISPLAY" ] && command -v Xvfb >/dev/null 2>&1; then
     sleep 1
 fi
 if [ -n "$DISPLAY" ]; then
-    run --overlays none --no-vsync
     run --overlays none
     run
 else
