@@ -262,6 +262,19 @@ int main(int argc, char **argv) {
         script_free(script);
         return 1;
     }
+    const char *driver = SDL_GetCurrentVideoDriver();
+    if (!o.headless && driver != NULL &&
+        (strcmp(driver, "offscreen") == 0 || strcmp(driver, "dummy") == 0)) {
+        /* SDL found no display and fell back to drawing nowhere: a window
+         * nobody can see would wait for input forever. */
+        fprintf(stderr,
+                "sandbox: no display to open a window on (SDL's video driver is '%s'; is "
+                "DISPLAY set?). Run it on a desktop, or use --headless (see --help).\n",
+                driver);
+        SDL_Quit();
+        script_free(script);
+        return 1;
+    }
     video_t video;
     if (!video_open(&video, o.headless, o.gpu, o.vsync, o.width, o.height)) {
         video_close(&video);
