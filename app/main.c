@@ -223,12 +223,12 @@ static double smooth(double old, double value) {
     return old == 0.0 ? value : 0.9 * old + 0.1 * value;
 }
 
-static void print_stats(const app_t *app, double wall_s) {
+static void print_stats(app_t *app, double wall_s) {
     const app_timing_t *t = &app->timing;
     double frames = t->frames > 0 ? (double)t->frames : 1.0;
     double steps = t->total_steps > 0 ? (double)t->total_steps : 1.0;
     printf("frames %llu  bodies %zu  steps %llu\n", (unsigned long long)t->frames,
-           sandbox_totals((sandbox_t *)&app->sandbox).bodies, (unsigned long long)t->total_steps);
+           sandbox_totals(&app->sandbox).bodies, (unsigned long long)t->total_steps);
     printf("frame   %8.3f ms  (%.1f frames per second)\n", 1000.0 * t->total_frame_s / frames,
            t->total_frame_s > 0 ? frames / t->total_frame_s : 0.0);
     printf("physics %8.3f ms per frame  (%.3f ms per step)\n",
@@ -301,6 +301,10 @@ int main(int argc, char **argv) {
     stepper_t *stepper = stepper_start(&app);
     if (stepper == NULL) {
         fprintf(stderr, "sandbox: out of memory\n");
+        app_free(&app);
+        video_close(&video);
+        SDL_Quit();
+        script_free(script);
         return 1;
     }
     status = 0;
