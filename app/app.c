@@ -66,22 +66,11 @@ void app_free(app_t *app) {
     app->next_vertices = NULL;
 }
 
-bool app_contact_touching(const contact_t *contact) {
-    size_t n = contact->point_count > 2 ? 2 : contact->point_count;
-    for (size_t k = 0; k < n; k++) {
-        if (contact->separation[k] <= APP_TOUCH_SLOP || contact->normal_impulse[k] > 0.0) {
-            return true;
-        }
-    }
-    /* A seed collision's handler ran: it is a collision whatever its points. */
-    return contact->kind == CONTACT_SEED;
-}
-
 size_t app_collision_count(app_t *app) {
     size_t count = 0;
     scene_t *scene = app->sandbox.scene;
     for (size_t i = 0; i < scene_contact_count(scene); i++) {
-        count += app_contact_touching(scene_get_contact(scene, i));
+        count += scene_get_contact(scene, i)->touching;
     }
     return count;
 }

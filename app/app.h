@@ -125,13 +125,6 @@ void app_set_elasticity(app_t *app, double elasticity);
 
 #define APP_ELASTICITY_MAX 1.0
 
-/* Whether a contact of the step's record is a collision: its bodies touch or
- * overlap at a point (separation up to APP_TOUCH_SLOP) or it applied an
- * impulse. The record also holds speculative contacts, a little apart and
- * about to touch, which the solver watches but which are not collisions. */
-#define APP_TOUCH_SLOP 0.005
-bool app_contact_touching(const contact_t *contact);
-
 /* The collisions (touching contacts) of the last step. */
 size_t app_collision_count(app_t *app);
 

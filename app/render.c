@@ -168,7 +168,7 @@ static void draw_axes(SDL_Renderer *renderer, app_t *app) {
     scene_t *scene = app->sandbox.scene;
     for (size_t i = 0; i < scene_contact_count(scene); i++) {
         const contact_t *contact = scene_get_contact(scene, i);
-        if (!vec_is_finite(contact->axis) || !app_contact_touching(contact)) continue;
+        if (!vec_is_finite(contact->axis) || !contact->touching) continue;
         /* As long as the smaller body allows, so that neighbours' arrows stay apart. */
         double extent = fmin(body_extent(&app->camera, contact->body1),
                              body_extent(&app->camera, contact->body2));
@@ -188,9 +188,9 @@ static void draw_points(SDL_Renderer *renderer, app_t *app) {
         for (size_t k = 0; k < n; k++) {
             vector_t p = camera_to_pixel(&app->camera, contact->points[k]);
             Sint16 x = draw_coord(p.x), y = draw_coord(p.y);
-            /* Filled where the bodies touch; hollow for a speculative point
-             * (apart, about to touch). */
-            if (contact->separation[k] <= APP_TOUCH_SLOP) {
+            /* Filled where the bodies touch or push; hollow for a
+             * speculative point (apart, about to touch). */
+            if (contact->separation[k] <= 0.0 || contact->normal_impulse[k] > 0.0) {
                 boxRGBA(renderer, x - 3, y - 3, x + 3, y + 3, PALETTE_POINT.r, PALETTE_POINT.g,
                         PALETTE_POINT.b, 255);
                 rectangleRGBA(renderer, x - 3, y - 3, x + 3, y + 3, 0, 0, 0, 255);

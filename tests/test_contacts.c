@@ -224,6 +224,7 @@ static void record_names_bodies_axis_and_impulses(void) {
     CHECK(scene_contact_count(scene) == 1);
     const contact_t *contact = scene_get_contact(scene, 0);
     CHECK(contact->kind == CONTACT_WORLD);
+    CHECK(contact->touching);
     CHECK(contact->body1 == floor && contact->body2 == box);
     CHECK_NEAR(contact->axis.x, 0.0, 1e-12);
     CHECK_NEAR(contact->axis.y, 1.0, 1e-12); /* from body1 (floor) toward body2 */
@@ -238,6 +239,24 @@ static void record_names_bodies_axis_and_impulses(void) {
     CHECK_RELATIVE(normal, 2.0 * 10.0 * DT, 1e-6); /* holds the weight: m g dt */
     scene_stats_t stats = scene_get_stats(scene);
     CHECK(stats.contacts == 1 && stats.contact_points == 2 && stats.broadphase_pairs == 1);
+    scene_free(scene);
+}
+
+/* A body about to land is in the record a step early, apart and pushed by
+ * nothing: a speculative contact, not touching. */
+static void speculative_contact_is_recorded_apart(void) {
+    scene_t *scene = contact_scene();
+    add_ground(scene, 50.0);
+    body_t *box = add_box(scene, 0.0, 0.5 + 0.004, 0.5, 0.5, 1.0);
+    body_set_velocity(box, (vector_t){0.0, 0.1});
+    scene_tick(scene, DT);
+    CHECK(scene_contact_count(scene) == 1);
+    const contact_t *contact = scene_get_contact(scene, 0);
+    CHECK(!contact->touching);
+    for (size_t j = 0; j < contact->point_count; j++) {
+        CHECK(contact->separation[j] > 0.0);
+        CHECK(contact->normal_impulse[j] == 0.0);
+    }
     scene_free(scene);
 }
 
@@ -446,6 +465,7 @@ TEST_SUITE(contacts, TEST_CASE(box_comes_to_rest_on_floor), TEST_CASE(column_of_
            TEST_CASE(bounce_apex_heights_at_60_hz), TEST_CASE(bounce_apex_heights_at_600_hz),
            TEST_CASE(elasticity_combines_by_max_and_zero_sticks),
            TEST_CASE(record_names_bodies_axis_and_impulses),
+           TEST_CASE(speculative_contact_is_recorded_apart),
            TEST_CASE(filters_exclude_pairs_and_groups), TEST_CASE(contacts_off_means_no_contact),
            TEST_CASE(static_bodies_never_pair), TEST_CASE(kinematic_body_pushes),
            TEST_CASE(removing_a_body_in_contact_is_safe), TEST_CASE(pile_stays_in_container),

@@ -476,6 +476,7 @@ static void seed_collisions_are_in_the_record(void) {
         recorded_ticks++;
         const contact_t *c = scene_get_contact(p.scene, 0);
         CHECK(c->kind == CONTACT_SEED);
+        CHECK(c->touching);
         CHECK(c->body1 == p.a && c->body2 == p.b);
         CHECK_VEC(c->axis, 1, 0, 1e-15);
         CHECK(c->point_count == 1 || c->point_count == 2);

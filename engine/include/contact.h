@@ -5,6 +5,12 @@
  * One entry of a scene's per-step record: two bodies in contact, the
  * collision axis and what the engine did about it. The sandbox draws these;
  * tests read them. Entries are owned by the scene (see scene_get_contact).
+ *
+ * World contacts include speculative ones: pairs a few millimetres (or, for
+ * fast bodies, one step's travel) apart that the solver watched so that they
+ * stop at the surface instead of overlapping. Their separations are positive
+ * and, unless they closed during the step, their impulses zero; `touching`
+ * tells the two kinds apart.
  */
 
 #include <stdbool.h>
@@ -22,6 +28,10 @@ typedef enum {
 
 typedef struct {
     contact_kind_t kind;
+    /* True when a point overlaps (separation <= 0) or an impulse acted this
+     * step; false for a speculative contact that stayed apart. Seed
+     * collisions always touch. */
+    bool touching;
     body_t *body1;
     body_t *body2;
     /* Unit collision axis pointing from body1 toward body2. */

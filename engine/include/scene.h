@@ -131,7 +131,8 @@ const contact_t *scene_get_contact(scene_t *scene, size_t index);
 typedef struct {
     size_t broadphase_tests;   /* bounding-box comparisons the broadphase made */
     size_t broadphase_pairs;   /* pairs whose bounding boxes overlapped */
-    size_t contacts;           /* manifolds with at least one point */
+    size_t contacts;           /* manifolds with at least one point, speculative
+                                  ones included (see contact.h) */
     size_t contact_points;     /* points over all manifolds */
     size_t removed_bodies;     /* bodies reaped at the end of the tick */
 } scene_stats_t;

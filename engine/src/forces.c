@@ -106,6 +106,7 @@ static void record_seed_collision(collision_aux_t *aux, collision_info_t info,
     vector_t applied = vec_subtract(aux->body2->impulse, body2_impulse_before);
     contact_t entry = {
         .kind = CONTACT_SEED,
+        .touching = true,
         .body1 = aux->body1,
         .body2 = aux->body2,
         .axis = info.axis,

@@ -332,6 +332,7 @@ contact_t world_get_contact(const world_t *world, size_t index) {
         entry.separation[j] = c->points[j].separation;
         entry.normal_impulse[j] = c->points[j].normal_impulse;
         entry.tangent_impulse[j] = c->points[j].tangent_impulse;
+        entry.touching |= c->points[j].separation <= 0.0 || c->points[j].normal_impulse > 0.0;
     }
     return entry;
 }
