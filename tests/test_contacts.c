@@ -242,6 +242,55 @@ static void record_names_bodies_axis_and_impulses(void) {
     scene_free(scene);
 }
 
+static scene_t *build_pile(size_t count);
+
+/* cradle(5) of ../shared/bench/SCENES.md with world contacts: the collision
+ * pass carries the impact down the row of touching boxes, so the last one
+ * leaves at 2 m/s and the others stop, as with the seed's pair collisions. */
+static void newtons_cradle_passes_momentum_along(void) {
+    scene_t *scene = scene_init();
+    scene_set_contacts_enabled(scene, true);
+    body_t *row[5];
+    for (int i = 0; i < 5; i++) row[i] = add_box(scene, i * 1.0, 0.0, 0.5, 0.5, 1.0);
+    body_t *striker = add_box(scene, -3.0, 0.0, 0.5, 0.5, 1.0);
+    for (size_t i = 0; i < scene_bodies(scene); i++) {
+        body_set_elasticity(scene_get_body(scene, i), 1.0);
+        body_set_friction(scene_get_body(scene, i), 0.0);
+    }
+    body_set_velocity(striker, (vector_t){2.0, 0.0});
+    run(scene, 120, DT);
+    CHECK_NEAR(body_get_velocity(row[4]).x, 2.0, 1e-12);
+    CHECK_NEAR(body_get_velocity(striker).x, 0.0, 1e-12);
+    double energy = body_get_kinetic_energy(striker);
+    for (int i = 0; i < 5; i++) {
+        if (i < 4) CHECK_NEAR(body_get_velocity(row[i]).x, 0.0, 1e-12);
+        CHECK_NEAR(body_get_velocity(row[i]).y, 0.0, 1e-12);
+        energy += body_get_kinetic_energy(row[i]);
+    }
+    CHECK_RELATIVE(energy, 2.0, 1e-12);
+    scene_free(scene);
+}
+
+/* Bouncy bodies (elasticity 0.5, the sandbox's default) still come to rest
+ * in a pile: the collision pass only acts above 1 m/s of approach. */
+static void bouncy_pile_comes_to_rest(void) {
+    scene_t *scene = build_pile(300);
+    for (size_t i = 3; i < scene_bodies(scene); i++) {
+        body_set_elasticity(scene_get_body(scene, i), 0.5);
+    }
+    run(scene, 900, DT);
+    double fastest = 0.0;
+    for (size_t i = 3; i < scene_bodies(scene); i++) {
+        body_t *body = scene_get_body(scene, i);
+        fastest = fmax(fastest, vec_get_length(body_get_velocity(body)));
+        vector_t c = body_get_centroid(body);
+        CHECK(c.x > 0.0 && c.x < 80.0 && c.y > 0.0);
+    }
+    CHECK(fastest < 0.05);
+    CHECK(max_penetration(scene) < 0.02);
+    scene_free(scene);
+}
+
 /* A body about to land is in the record a step early, apart and pushed by
  * nothing: a speculative contact, not touching. */
 static void speculative_contact_is_recorded_apart(void) {
@@ -466,6 +515,7 @@ TEST_SUITE(contacts, TEST_CASE(box_comes_to_rest_on_floor), TEST_CASE(column_of_
            TEST_CASE(elasticity_combines_by_max_and_zero_sticks),
            TEST_CASE(record_names_bodies_axis_and_impulses),
            TEST_CASE(speculative_contact_is_recorded_apart),
+           TEST_CASE(newtons_cradle_passes_momentum_along), TEST_CASE(bouncy_pile_comes_to_rest),
            TEST_CASE(filters_exclude_pairs_and_groups), TEST_CASE(contacts_off_means_no_contact),
            TEST_CASE(static_bodies_never_pair), TEST_CASE(kinematic_body_pushes),
            TEST_CASE(removing_a_body_in_contact_is_safe), TEST_CASE(pile_stays_in_container),

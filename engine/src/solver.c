@@ -75,17 +75,18 @@ static double time_of_impact(double s, double v, double a, double dt) {
  * (tests/test_contacts.c).
  */
 static void set_target(solver_point_t *p, vector_t r_a, vector_t r_b, vector_t normal,
-                       double restitution, const solver_velocity_t *va,
-                       const solver_velocity_t *vb, const solver_state_t *sa,
-                       const solver_state_t *sb, const solver_settings_t *settings) {
+                       double restitution, const solver_state_t *sa, const solver_state_t *sb,
+                       const solver_settings_t *settings) {
     double dt = settings->dt, w = settings->position_weight;
     vector_t start = vec_subtract(point_velocity(sb->v_start, sb->w_start, r_b),
                                   point_velocity(sa->v_start, sa->w_start, r_a));
     double vn_start = vec_dot(normal, start);
-    double vn_free = relative_along(va, vb, normal, p->rn_a, p->rn_b);
     p->impact_time = -1.0;
+    p->bounce_target = NAN;
+    p->restitution_impulse = 0.0;
+    p->touched = p->separation <= 0.0;
     if (p->separation <= 0.0) {
-        p->target = vn_free < -SOLVER_RESTITUTION_THRESHOLD ? -restitution * vn_free : 0.0;
+        p->target = 0.0; /* a fast approach bounces in the collision pass */
         return;
     }
     if (w == 0.0) {
@@ -95,12 +96,19 @@ static void set_target(solver_point_t *p, vector_t r_a, vector_t r_b, vector_t n
     double an = vec_dot(normal, vec_subtract(sb->acceleration, sa->acceleration));
     double tau = time_of_impact(p->separation, vn_start, an, dt);
     double vi = tau >= 0.0 ? vn_start + an * tau : 0.0;
+    double closing = min_of((-p->separation / dt - (1.0 - w) * vn_start) / w, 0.0);
     if (tau >= 0.0 && vi < -SOLVER_RESTITUTION_THRESHOLD) {
         p->impact_time = tau;
-        p->target = max_of(-restitution * vi + an * (dt - tau), 0.0);
+        double rebound = max_of(-restitution * vi + an * (dt - tau), 0.0);
+        if (restitution > 0.0) {
+            p->bounce_target = rebound;
+            p->target = closing;
+        } else {
+            p->target = rebound;
+        }
         return;
     }
-    p->target = min_of((-p->separation / dt - (1.0 - w) * vn_start) / w, 0.0);
+    p->target = closing;
 }
 
 static void prepare(solver_contact_t *c, const solver_anchor_t *anchor,
@@ -120,8 +128,8 @@ static void prepare(solver_contact_t *c, const solver_anchor_t *anchor,
         p->normal_mass = k_normal > 0.0 ? 1.0 / k_normal : 0.0;
         double k_tangent = ma + mb + ia * p->rt_a * p->rt_a + ib * p->rt_b * p->rt_b;
         p->tangent_mass = k_tangent > 0.0 ? 1.0 / k_tangent : 0.0;
-        set_target(p, anchor->r_a[i], anchor->r_b[i], c->normal, c->restitution, a, b,
-                   &states[c->a], &states[c->b], s);
+        set_target(p, anchor->r_a[i], anchor->r_b[i], c->normal, c->restitution, &states[c->a],
+                   &states[c->b], s);
     }
     c->block = false;
     if (c->point_count == 2) {
@@ -237,6 +245,80 @@ static void solve_velocity(solver_contact_t *c, solver_velocity_t *velocities) {
     velocities[c->b] = b;
 }
 
+/* The rebound velocity a point wants from the collision pass at relative
+ * normal velocity vn, or NAN when it wants none: an impact its exact
+ * rebound, once; a touching point e times a fast approach. */
+static double wanted_rebound(const solver_contact_t *c, const solver_point_t *p, double vn) {
+    if (!isnan(p->bounce_target)) return vn < p->bounce_target ? p->bounce_target : NAN;
+    if (p->touched && vn < -SOLVER_RESTITUTION_THRESHOLD) return -c->restitution * vn;
+    return NAN;
+}
+
+static void apply_rebound(solver_contact_t *c, solver_velocity_t *a, solver_velocity_t *b,
+                          solver_point_t *p, double lambda) {
+    p->restitution_impulse += lambda;
+    p->bounce_target = NAN; /* an impact bounces once; then it is a touching point */
+    p->touched = true;
+    apply_along(a, b, c->normal, p->rn_a, p->rn_b, lambda);
+}
+
+/* One collision-pass visit of a contact: each point approaching fast gets
+ * the impulse that makes it leave at e times its approach speed (an impact
+ * at its exact rebound velocity); two such points of one manifold at once,
+ * so a flat face bounces flat. Returns whether it applied an impulse. */
+static bool bounce_contact(solver_contact_t *c, solver_velocity_t *velocities) {
+    solver_velocity_t a = velocities[c->a], b = velocities[c->b];
+    double wanted[2] = {NAN, NAN}, vn[2] = {0.0, 0.0};
+    for (int i = 0; i < c->point_count; i++) {
+        vn[i] = relative_along(&a, &b, c->normal, c->points[i].rn_a, c->points[i].rn_b);
+        wanted[i] = wanted_rebound(c, &c->points[i], vn[i]);
+    }
+    bool applied = false;
+    if (c->block && !isnan(wanted[0]) && !isnan(wanted[1])) {
+        double d1 = wanted[0] - vn[0], d2 = wanted[1] - vn[1];
+        double x1 = c->m11 * d1 + c->m12 * d2, x2 = c->m12 * d1 + c->m22 * d2;
+        if (x1 >= 0.0 && x2 >= 0.0) {
+            apply_rebound(c, &a, &b, &c->points[0], x1);
+            apply_rebound(c, &a, &b, &c->points[1], x2);
+            applied = true;
+            wanted[0] = wanted[1] = NAN;
+        }
+    }
+    for (int i = 0; i < c->point_count; i++) {
+        if (isnan(wanted[i])) continue;
+        solver_point_t *p = &c->points[i];
+        double now = relative_along(&a, &b, c->normal, p->rn_a, p->rn_b);
+        double target = wanted_rebound(c, p, now);
+        if (isnan(target)) continue;
+        apply_rebound(c, &a, &b, p, p->normal_mass * (target - now));
+        applied = true;
+    }
+    velocities[c->a] = a;
+    velocities[c->b] = b;
+    return applied;
+}
+
+/*
+ * Restitution before the contact solve, pair by pair, as in Guendelman,
+ * Bridson and Fedkiw (2003): repeated until no contact approaches faster than
+ * the threshold, so an impact travels along a row of touching bodies the way
+ * it does in a Newton's cradle (the last one leaves, the others stop). A
+ * contact solve that takes restitution from the velocities before it runs
+ * cannot do that: the touching pairs have nothing to rebound from, and the
+ * momentum smears over the row (measured: 13% of the energy lost, 1.3 m/s
+ * off). Contacts without elasticity skip it.
+ */
+static void collision_pass(solver_contact_t *contacts, size_t count, solver_velocity_t *velocities,
+                           int passes) {
+    for (int pass = 0; pass < passes; pass++) {
+        bool applied = false;
+        for (size_t i = 0; i < count; i++) {
+            if (contacts[i].restitution > 0.0) applied |= bounce_contact(&contacts[i], velocities);
+        }
+        if (!applied) return;
+    }
+}
+
 /* Where the integrator will put each body with the solved velocities. */
 static void advance(const solver_velocity_t *velocities, solver_state_t *states, size_t count,
                     const solver_settings_t *s) {
@@ -257,7 +339,7 @@ static bool is_static(const solver_velocity_t *row) {
 
 static bool pushes(const solver_contact_t *c) {
     for (int i = 0; i < c->point_count; i++) {
-        if (c->points[i].normal_impulse > 0.0) return true;
+        if (c->points[i].normal_impulse > 0.0 || c->points[i].restitution_impulse > 0.0) return true;
     }
     return false;
 }
@@ -340,6 +422,7 @@ void solver_solve(solver_contact_t *contacts, const solver_anchor_t *anchors, si
         prepare(&contacts[i], &anchors[i], velocities, states, settings);
     }
     for (size_t i = 0; i < contact_count; i++) warm_start(&contacts[i], velocities);
+    collision_pass(contacts, contact_count, velocities, settings->velocity_iterations);
     for (int iteration = 0; iteration < settings->velocity_iterations; iteration++) {
         for (size_t i = 0; i < contact_count; i++) solve_velocity(&contacts[i], velocities);
     }

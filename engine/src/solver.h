@@ -2,10 +2,11 @@
 #define SOLVER_H
 
 /*
- * The contact solver: sequential impulses with accumulated-impulse clamping
- * (Catto), warm starting, Coulomb friction, a two-point block solve for the
- * normal impulses (so a box lands and leaves flat), restitution at the
- * time of impact, and non-linear Gauss-Seidel position correction.
+ * The contact solver: a collision pass for restitution (Guendelman et al.
+ * 2003), then sequential impulses with accumulated-impulse clamping (Catto),
+ * warm starting, Coulomb friction, a two-point block solve for the normal
+ * impulses (so a box lands and leaves flat), impacts timed within the step,
+ * and non-linear Gauss-Seidel position correction.
  *
  * It works on plain arrays (solver_body_t rows, solver_contact_t
  * constraints) that world.c fills from the bodies and writes back; it knows
@@ -55,7 +56,10 @@ typedef struct {
     double tangent_impulse;  /* accumulated (N s), |.| <= friction * normal */
     double separation;       /* at the start of the step (m) */
     double impact_time;      /* when the gap closes within the step (s), or < 0 */
+    double bounce_target;    /* an impact's rebound velocity for the collision pass, or NAN */
+    double restitution_impulse; /* applied by the collision pass (N s), >= 0 */
     uint32_t id;
+    bool touched;            /* touching, or an impact that has bounced this step */
 } solver_point_t;
 
 /* The lever arms of a contact's points (world, m), used only to prepare. */

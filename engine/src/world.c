@@ -330,9 +330,9 @@ contact_t world_get_contact(const world_t *world, size_t index) {
     for (int j = 0; j < c->point_count; j++) {
         entry.points[j] = source->points[j];
         entry.separation[j] = c->points[j].separation;
-        entry.normal_impulse[j] = c->points[j].normal_impulse;
+        entry.normal_impulse[j] = c->points[j].normal_impulse + c->points[j].restitution_impulse;
         entry.tangent_impulse[j] = c->points[j].tangent_impulse;
-        entry.touching |= c->points[j].separation <= 0.0 || c->points[j].normal_impulse > 0.0;
+        entry.touching |= c->points[j].separation <= 0.0 || entry.normal_impulse[j] > 0.0;
     }
     return entry;
 }
