@@ -67,7 +67,7 @@ END {
         w = length(others[j]); wm[j] = w > 10 ? w : 10
         w = length(others[j]) + 1; wr[j] = w > 8 ? w : 8
     }
-    printf "%-8s %-6s %-7s %-8s %-15s %10s", "scene", "size", "dt", "metric", "engine", "ms"
+    printf "%-8s %-6s %-8s %-8s %-15s %10s", "scene", "size", "dt", "metric", "engine", "ms"
     for (j = 1; j <= nothers; j++) printf " %" wm[j] "s", others[j]
     for (j = 1; j <= nothers; j++) printf " %" wr[j] "s", "/" others[j]
     printf "\n"
@@ -79,7 +79,7 @@ END {
             for (i = 1; i <= nours; i++) {
                 e = ours[i]
                 if (!((e, key, metric) in ms)) continue
-                printf "%-8s %-6s %-7s %-8s %-15s %10s", part[1], part[2], part[3], metric, e, ms[e, key, metric]
+                printf "%-8s %-6s %-8s %-8s %-15s %10s", part[1], part[2], part[3], metric, e, ms[e, key, metric]
                 for (j = 1; j <= nothers; j++) {
                     o = others[j]
                     printf " %" wm[j] "s", ((o, key, metric) in ms) ? ms[o, key, metric] : "-"
