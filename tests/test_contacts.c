@@ -477,6 +477,25 @@ static void fast_bullet_does_not_tunnel(void) {
     }
 }
 
+/* A body half a metre from a wall, drifting toward it at 1.6 m/s while it
+ * falls (no acceleration along the wall's normal), reaches the wall in a
+ * third of a second: not an impact of this step. It is neither pushed from
+ * a distance nor moved (a time of impact beyond the step once shoved such a
+ * body 1.4 m through a 1 m wall). */
+static void distant_approach_is_not_an_impact(void) {
+    scene_t *scene = contact_scene();
+    add_box(scene, -0.5, 0.0, 0.5, 100.0, INFINITY);
+    body_t *box = add_box(scene, 1.0, 50.0, 0.5, 0.5, 1.0);
+    vector_t velocity = {-1.6, -30.0};
+    body_set_velocity(box, velocity);
+    scene_tick(scene, DT);
+    CHECK_NEAR(body_get_velocity(box).x, velocity.x, 1e-12);
+    CHECK_NEAR(body_get_centroid(box).x, 1.0 + velocity.x * DT, 1e-12);
+    CHECK(scene_contact_count(scene) == 1); /* watched, as a speculative contact */
+    CHECK_NEAR(body_get_angular_velocity(box), 0.0, 1e-12);
+    scene_free(scene);
+}
+
 /* Every integrator rests a stack of two on the floor: explicit Euler cannot
  * use speculative contacts (its end velocity does not move the body this
  * step) and relies on the position pass alone. */
@@ -521,5 +540,5 @@ TEST_SUITE(contacts, TEST_CASE(box_comes_to_rest_on_floor), TEST_CASE(column_of_
            TEST_CASE(removing_a_body_in_contact_is_safe), TEST_CASE(pile_stays_in_container),
            TEST_CASE(warm_step_allocates_nothing),
            TEST_CASE(broadphase_work_grows_no_faster_than_n_log_n),
-           TEST_CASE(fast_bullet_does_not_tunnel), TEST_CASE(every_integrator_rests_a_stack),
+           TEST_CASE(fast_bullet_does_not_tunnel), TEST_CASE(distant_approach_is_not_an_impact), TEST_CASE(every_integrator_rests_a_stack),
            TEST_CASE(bad_solver_settings_abort));

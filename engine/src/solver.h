@@ -40,6 +40,8 @@ typedef struct {
     vector_t acceleration;   /* (force / mass) + gravity: for times of impact */
     vector_t dx;             /* displacement this step: advanced, then corrected */
     double dtheta;
+    vector_t dx_advanced;    /* dx before the position correction */
+    double dtheta_advanced;
     double impact_time;      /* of an impact against a static body (s), < 0 for none */
     int pushing_contacts;    /* contacts with a normal impulse this step */
 } solver_state_t;
