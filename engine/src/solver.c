@@ -457,11 +457,15 @@ static void save_advanced(solver_state_t *states, size_t count) {
 void solver_solve(solver_contact_t *contacts, const solver_anchor_t *anchors, size_t contact_count,
                   solver_velocity_t *velocities, solver_state_t *states, size_t body_count,
                   const solver_settings_t *settings) {
+    bool any_elastic = false;
     for (size_t i = 0; i < contact_count; i++) {
         prepare(&contacts[i], &anchors[i], velocities, states, settings);
+        any_elastic |= contacts[i].restitution > 0.0;
     }
     for (size_t i = 0; i < contact_count; i++) warm_start(&contacts[i], velocities);
-    collision_pass(contacts, contact_count, velocities, settings->velocity_iterations);
+    if (any_elastic) {
+        collision_pass(contacts, contact_count, velocities, settings->velocity_iterations);
+    }
     for (int iteration = 0; iteration < settings->velocity_iterations; iteration++) {
         for (size_t i = 0; i < contact_count; i++) solve_velocity(&contacts[i], velocities);
     }
