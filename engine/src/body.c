@@ -88,14 +88,13 @@ void body_free(body_t *body) {
 
 void body_update_world(body_t *body) {
     if (body->world_valid) return;
-    double c = cos(body->angle), s = sin(body->angle);
-    body->rotation_cos = c;
-    body->rotation_sin = s;
+    body->rotation_cos = cos(body->angle);
+    body->rotation_sin = sin(body->angle);
     aabb_t bounds = {{INFINITY, INFINITY}, {-INFINITY, -INFINITY}};
     for (size_t i = 0; i < body->count; i++) {
-        vector_t p = vec_add(body->centroid, vec_rotate_cs(body->local_vertices[i], c, s));
+        vector_t p = body_to_world(body, body->local_vertices[i]);
         body->world_vertices[i] = p;
-        body->world_normals[i] = vec_rotate_cs(body->local_normals[i], c, s);
+        body->world_normals[i] = body_rotate_vector(body, body->local_normals[i]);
         bounds.min.x = min_of(bounds.min.x, p.x);
         bounds.min.y = min_of(bounds.min.y, p.y);
         bounds.max.x = max_of(bounds.max.x, p.x);

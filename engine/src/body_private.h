@@ -64,9 +64,21 @@ struct body {
 /* Recomputes the world vertices, normals and bounds if the pose changed. */
 void body_update_world(body_t *body);
 
-/* Rotates body-frame vector v into the world frame. */
-static inline vector_t body_rotate(const body_t *body, vector_t v) {
-    return vec_rotate(v, body->angle);
+/* Frame changes between the body's own frame (relative to its centroid,
+ * unrotated) and the world. They use the rotation cached with the world
+ * polygon: call body_update_world after the pose changes. */
+static inline vector_t body_rotate_vector(const body_t *body, vector_t v) {
+    return vec_rotate_cs(v, body->rotation_cos, body->rotation_sin);
+}
+
+static inline vector_t body_to_world(const body_t *body, vector_t local) {
+    return vec_add(body->centroid, body_rotate_vector(body, local));
+}
+
+static inline vector_t body_to_local(const body_t *body, vector_t world) {
+    vector_t d = vec_subtract(world, body->centroid);
+    return (vector_t){body->rotation_cos * d.x + body->rotation_sin * d.y,
+                      -body->rotation_sin * d.x + body->rotation_cos * d.y};
 }
 
 #endif // #ifndef BODY_PRIVATE_H

@@ -93,21 +93,6 @@ static int clip_segment(const clip_vertex_t in[2], clip_vertex_t out[2], vector_
     return n;
 }
 
-/* v in the frame of body (undoing its rotation, relative to its centroid). */
-static vector_t to_local(const body_t *body, vector_t v) {
-    vector_t d = vec_subtract(v, body->centroid);
-    return (vector_t){body->rotation_cos * d.x + body->rotation_sin * d.y,
-                      -body->rotation_sin * d.x + body->rotation_cos * d.y};
-}
-
-static vector_t rotate_by(const body_t *body, vector_t v) {
-    return vec_rotate_cs(v, body->rotation_cos, body->rotation_sin);
-}
-
-static vector_t to_world(const body_t *body, vector_t v) {
-    return vec_add(body->centroid, rotate_by(body, v));
-}
-
 manifold_t manifold_collide(body_t *a, body_t *b, double margin, manifold_features_t *features) {
     manifold_t manifold = {VEC_ZERO, 0, {{VEC_ZERO, 0.0, 0}, {VEC_ZERO, 0.0, 0}}};
     face_separation_t face_a = max_face_separation(a, b, margin);
@@ -142,17 +127,10 @@ manifold_t manifold_collide(body_t *a, body_t *b, double margin, manifold_featur
     features->normal = reference->local_normals[ref_edge];
     features->face_point = reference->local_vertices[ref_edge];
     for (int i = 0; i < 2; i++) {
-        features->points[i] = to_local(incident, twice[i].p);
+        features->points[i] = body_to_local(incident, twice[i].p);
         features->ids[i] = base | (twice[i].feature & 0xff);
-        double separation = vec_dot(ref_normal, vec_subtract(twice[i].p, v1));
-        if (separation > margin) continue;
-        manifold_point_t *point = &manifold.points[manifold.point_count++];
-        point->separation = separation;
-        point->point = vec_subtract(twice[i].p, vec_multiply(0.5 * separation, ref_normal));
-        point->id = features->ids[i];
     }
-    manifold.normal = flip ? vec_negate(ref_normal) : ref_normal;
-    return manifold;
+    return manifold_evaluate(features, a, b, margin);
 }
 
 manifold_t manifold_evaluate(const manifold_features_t *features, const body_t *a,
@@ -160,10 +138,10 @@ manifold_t manifold_evaluate(const manifold_features_t *features, const body_t *
     manifold_t manifold = {VEC_ZERO, 0, {{VEC_ZERO, 0.0, 0}, {VEC_ZERO, 0.0, 0}}};
     const body_t *reference = features->flip ? b : a;
     const body_t *incident = features->flip ? a : b;
-    vector_t normal = rotate_by(reference, features->normal);
-    vector_t face = to_world(reference, features->face_point);
+    vector_t normal = body_rotate_vector(reference, features->normal);
+    vector_t face = body_to_world(reference, features->face_point);
     for (int i = 0; i < features->point_count; i++) {
-        vector_t p = to_world(incident, features->points[i]);
+        vector_t p = body_to_world(incident, features->points[i]);
         double separation = vec_dot(normal, vec_subtract(p, face));
         if (separation > margin) continue;
         manifold_point_t *point = &manifold.points[manifold.point_count++];

@@ -175,10 +175,7 @@ static void warm_from_cache(solver_contact_t *contact, const cached_contact_t *o
 }
 
 static relative_pose_t relative_pose(const body_t *a, const body_t *b) {
-    vector_t d = vec_subtract(b->centroid, a->centroid);
-    return (relative_pose_t){{a->rotation_cos * d.x + a->rotation_sin * d.y,
-                              -a->rotation_sin * d.x + a->rotation_cos * d.y},
-                             b->angle - a->angle};
+    return (relative_pose_t){body_to_local(a, b->centroid), b->angle - a->angle};
 }
 
 static bool pose_is_close(relative_pose_t now, relative_pose_t then) {
@@ -187,9 +184,9 @@ static bool pose_is_close(relative_pose_t now, relative_pose_t then) {
            fabs(now.angle - then.angle) < REUSE_ANGLE;
 }
 
-static void add_contact(world_t *world, body_t *a, body_t *b, const manifold_t *manifold,
-                        const manifold_features_t *features, relative_pose_t pose,
-                        const cached_contact_t *old) {
+static void add_contact(world_t *world, body_t *a, body_t *b, uint64_t key,
+                        const manifold_t *manifold, const manifold_features_t *features,
+                        relative_pose_t pose, const cached_contact_t *old) {
     size_t n = world->contact_count;
     memory_reserve((void **)&world->contacts, &world->contact_capacity, n + 1,
                    sizeof(solver_contact_t));
@@ -215,7 +212,7 @@ static void add_contact(world_t *world, body_t *a, body_t *b, const manifold_t *
         point->id = manifold->points[i].id;
         source->points[i] = manifold->points[i].point;
     }
-    source->key = pair_key(a, b);
+    source->key = key;
     source->body_a = a;
     source->body_b = b;
     source->features = *features;
@@ -230,7 +227,8 @@ static void narrowphase(world_t *world, body_t **bodies, const broadphase_pair_t
     for (size_t i = 0; i < pair_count; i++) {
         body_t *a = bodies[pairs[i].a], *b = bodies[pairs[i].b];
         double margin = world->margins[pairs[i].a] + world->margins[pairs[i].b];
-        const cached_contact_t *old = find_cached(world, pair_key(a, b));
+        uint64_t key = pair_key(a, b);
+        const cached_contact_t *old = find_cached(world, key);
         relative_pose_t pose = relative_pose(a, b);
         manifold_features_t features;
         manifold_t manifold;
@@ -241,7 +239,9 @@ static void narrowphase(world_t *world, body_t **bodies, const broadphase_pair_t
         } else {
             manifold = manifold_collide(a, b, margin, &features);
         }
-        if (manifold.point_count > 0) add_contact(world, a, b, &manifold, &features, pose, old);
+        if (manifold.point_count > 0) {
+            add_contact(world, a, b, key, &manifold, &features, pose, old);
+        }
     }
 }
 
