@@ -59,6 +59,11 @@ struct body {
     uint32_t id;
     /* Set by the scene each step: the body's row in the solver's arrays. */
     uint32_t solver_index;
+    /* Set by the contact pipeline: the contacts this body had as body a in
+     * step contact_step of its world, at [contact_first, contact_first +
+     * contact_count) of that step's contact buffer (world.c). */
+    uint32_t contact_first, contact_count;
+    uint64_t contact_step;
 };
 
 /* Recomputes the world vertices, normals and bounds if the pose changed. */

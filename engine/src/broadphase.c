@@ -16,8 +16,10 @@ struct broadphase {
     size_t bucket_capacity;
     uint32_t *large;
     size_t large_capacity;
-    broadphase_pair_t *pairs;
-    size_t pair_count, pair_capacity;
+    broadphase_pair_t *pairs, *pairs_by_a;
+    size_t pair_count, pair_capacity, pairs_by_a_capacity;
+    uint32_t *pair_start; /* size proxy count + 1 */
+    size_t pair_start_capacity;
     size_t tests;
 };
 
@@ -31,6 +33,8 @@ void broadphase_free(broadphase_t *broadphase) {
     memory_free(broadphase->bucket_start);
     memory_free(broadphase->large);
     memory_free(broadphase->pairs);
+    memory_free(broadphase->pairs_by_a);
+    memory_free(broadphase->pair_start);
     memory_free(broadphase);
 }
 
@@ -173,6 +177,23 @@ static void pairs_with_large(broadphase_t *broadphase, const broadphase_proxy_t 
     }
 }
 
+/* Counting sort of the pairs by their first proxy. */
+static const broadphase_pair_t *sort_pairs(broadphase_t *broadphase, size_t count) {
+    size_t n = broadphase->pair_count;
+    memory_reserve((void **)&broadphase->pairs_by_a, &broadphase->pairs_by_a_capacity, n,
+                   sizeof(broadphase_pair_t));
+    memory_reserve((void **)&broadphase->pair_start, &broadphase->pair_start_capacity, count + 1,
+                   sizeof(uint32_t));
+    uint32_t *start = broadphase->pair_start;
+    memset(start, 0, (count + 1) * sizeof(uint32_t));
+    for (size_t i = 0; i < n; i++) start[broadphase->pairs[i].a + 1]++;
+    for (size_t i = 0; i < count; i++) start[i + 1] += start[i];
+    for (size_t i = 0; i < n; i++) {
+        broadphase->pairs_by_a[start[broadphase->pairs[i].a]++] = broadphase->pairs[i];
+    }
+    return broadphase->pairs_by_a;
+}
+
 size_t broadphase_find_pairs(broadphase_t *broadphase, const broadphase_proxy_t *proxies,
                              size_t count, const broadphase_pair_t **pairs, size_t *tests) {
     broadphase->pair_count = 0;
@@ -183,7 +204,7 @@ size_t broadphase_find_pairs(broadphase_t *broadphase, const broadphase_proxy_t 
     size_t buckets = sort_entries(broadphase, n);
     pairs_in_buckets(broadphase, proxies, buckets, inverse_size);
     if (large_count > 0) pairs_with_large(broadphase, proxies, count, large_count);
-    *pairs = broadphase->pairs;
+    *pairs = sort_pairs(broadphase, count);
     *tests += broadphase->tests + n;
     return broadphase->pair_count;
 }

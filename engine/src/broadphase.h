@@ -40,7 +40,8 @@ void broadphase_free(broadphase_t *broadphase);
 
 /* Fills *pairs (a buffer the broadphase owns, valid until the next call)
  * with every pair of proxies whose boxes overlap and whose filters allow a
- * contact, each pair once; returns how many. Adds the number of box
+ * contact, each pair once, sorted by a (so a pair's first body is visited
+ * in order, and its contacts are grouped); returns how many. Adds the number of box
  * comparisons it made to *tests (the work, for tests of its scaling). */
 size_t broadphase_find_pairs(broadphase_t *broadphase, const broadphase_proxy_t *proxies,
                              size_t count, const broadphase_pair_t **pairs, size_t *tests);

@@ -37,17 +37,6 @@ typedef struct {
     relative_pose_t pose;
 } contact_source_t;
 
-/* Last step's contact of one pair: impulses for warm starting, features
- * for reuse. */
-typedef struct {
-    uint64_t key;
-    int point_count;
-    uint32_t ids[2];
-    double normal_impulse[2], tangent_impulse[2];
-    manifold_features_t features;
-    relative_pose_t pose;
-} cached_contact_t;
-
 struct world {
     broadphase_t *broadphase;
     broadphase_proxy_t *proxies;
@@ -59,15 +48,24 @@ struct world {
     double *margins;
     size_t margin_capacity;
 
-    /* This step's contacts, with their sources in parallel. */
+    /* This step's contacts, with their sources in parallel, grouped by
+     * body a (the broadphase hands over its pairs sorted by a). */
     solver_contact_t *contacts;
     solver_anchor_t *anchors;
     contact_source_t *sources;
     size_t contact_count, contact_capacity, anchor_capacity, source_capacity;
 
-    /* Last step's contacts, in an open-addressing table by key. */
-    cached_contact_t *cache;
-    size_t cache_capacity; /* a power of two, or 0 */
+    /* Last step's contacts and sources: the buffers swap each step, so
+     * warm starting and feature reuse read last step's results where the
+     * solver left them, with nothing copied. Each body knows where its
+     * group starts (body_private.h). */
+    solver_contact_t *old_contacts;
+    contact_source_t *old_sources;
+    size_t old_count, old_contact_capacity, old_source_capacity;
+
+    /* Steps taken, to tell a body's contact group of the last step from an
+     * older one. */
+    uint64_t step_number;
 
     int velocity_iterations, position_iterations;
 };
@@ -88,7 +86,8 @@ void world_free(world_t *world) {
     memory_free(world->contacts);
     memory_free(world->anchors);
     memory_free(world->sources);
-    memory_free(world->cache);
+    memory_free(world->old_contacts);
+    memory_free(world->old_sources);
     memory_free(world);
 }
 
@@ -99,13 +98,6 @@ void world_set_iterations(world_t *world, size_t velocity_iterations, size_t pos
 
 static uint64_t pair_key(const body_t *a, const body_t *b) {
     return (uint64_t)a->id << 32 | b->id;
-}
-
-static size_t hash_key(uint64_t key, size_t mask) {
-    key ^= key >> 33;
-    key *= 0xff51afd7ed558ccdULL;
-    key ^= key >> 33;
-    return (size_t)key & mask;
 }
 
 static void reserve_rows(world_t *world, size_t count) {
@@ -153,23 +145,25 @@ static void load_bodies(world_t *world, body_t **bodies, size_t count, const wor
     }
 }
 
-static const cached_contact_t *find_cached(const world_t *world, uint64_t key) {
-    if (world->cache_capacity == 0) return NULL;
-    size_t mask = world->cache_capacity - 1;
-    for (size_t slot = hash_key(key, mask);; slot = (slot + 1) & mask) {
-        const cached_contact_t *entry = &world->cache[slot];
-        if (entry->key == UINT64_MAX) return NULL;
-        if (entry->key == key) return entry;
+/* Last step's contact of the pair with this key, found among the contacts
+ * body a had as body a then; NULL when the pair had none. */
+static size_t find_old(const world_t *world, const body_t *a, uint64_t key) {
+    if (a->contact_step + 1 != world->step_number) return SIZE_MAX;
+    size_t end = (size_t)a->contact_first + a->contact_count;
+    if (end > world->old_count) return SIZE_MAX;
+    for (size_t i = a->contact_first; i < end; i++) {
+        if (world->old_sources[i].key == key) return i;
     }
+    return SIZE_MAX;
 }
 
 /* Copies last step's impulses to the points that are the same features. */
-static void warm_from_cache(solver_contact_t *contact, const cached_contact_t *old) {
+static void warm_from_old(solver_contact_t *contact, const solver_contact_t *old) {
     for (int i = 0; i < contact->point_count; i++) {
         for (int j = 0; j < old->point_count; j++) {
-            if (contact->points[i].id != old->ids[j]) continue;
-            contact->points[i].normal_impulse = old->normal_impulse[j];
-            contact->points[i].tangent_impulse = old->tangent_impulse[j];
+            if (contact->points[i].id != old->points[j].id) continue;
+            contact->points[i].normal_impulse = old->points[j].normal_impulse;
+            contact->points[i].tangent_impulse = old->points[j].tangent_impulse;
         }
     }
 }
@@ -186,7 +180,7 @@ static bool pose_is_close(relative_pose_t now, relative_pose_t then) {
 
 static void add_contact(world_t *world, body_t *a, body_t *b, uint64_t key,
                         const manifold_t *manifold, const manifold_features_t *features,
-                        relative_pose_t pose, const cached_contact_t *old) {
+                        relative_pose_t pose, const solver_contact_t *old) {
     size_t n = world->contact_count;
     memory_reserve((void **)&world->contacts, &world->contact_capacity, n + 1,
                    sizeof(solver_contact_t));
@@ -217,59 +211,69 @@ static void add_contact(world_t *world, body_t *a, body_t *b, uint64_t key,
     source->body_b = b;
     source->features = *features;
     source->pose = pose;
-    if (old != NULL) warm_from_cache(contact, old);
+    if (old != NULL) warm_from_old(contact, old);
     world->contact_count++;
 }
 
-static void narrowphase(world_t *world, body_t **bodies, const broadphase_pair_t *pairs,
-                        size_t pair_count) {
-    world->contact_count = 0;
-    for (size_t i = 0; i < pair_count; i++) {
-        body_t *a = bodies[pairs[i].a], *b = bodies[pairs[i].b];
-        double margin = world->margins[pairs[i].a] + world->margins[pairs[i].b];
+/* The contacts of the pairs whose body a is pairs[0].a; returns how many
+ * pairs that is. Last step's contacts of a are found before any of this
+ * step's are added, and then a is told where its new group lies. */
+static size_t collide_group(world_t *world, body_t **bodies, const broadphase_pair_t *pairs,
+                            size_t pair_count) {
+    body_t *a = bodies[pairs[0].a];
+    uint32_t first = (uint32_t)world->contact_count;
+    size_t n = 0;
+    for (; n < pair_count && pairs[n].a == pairs[0].a; n++) {
+        body_t *b = bodies[pairs[n].b];
+        double margin = world->margins[pairs[n].a] + world->margins[pairs[n].b];
         uint64_t key = pair_key(a, b);
-        const cached_contact_t *old = find_cached(world, key);
+        size_t old = find_old(world, a, key);
         relative_pose_t pose = relative_pose(a, b);
         manifold_features_t features;
         manifold_t manifold;
-        if (old != NULL && pose_is_close(pose, old->pose)) {
-            features = old->features;
-            pose = old->pose; /* measure drift from where they were found */
+        if (old != SIZE_MAX && pose_is_close(pose, world->old_sources[old].pose)) {
+            features = world->old_sources[old].features;
+            pose = world->old_sources[old].pose; /* measure drift from where they were found */
             manifold = manifold_evaluate(&features, a, b, margin);
         } else {
             manifold = manifold_collide(a, b, margin, &features);
         }
         if (manifold.point_count > 0) {
-            add_contact(world, a, b, key, &manifold, &features, pose, old);
+            add_contact(world, a, b, key, &manifold, &features, pose,
+                        old != SIZE_MAX ? &world->old_contacts[old] : NULL);
         }
     }
+    a->contact_first = first;
+    a->contact_count = (uint32_t)(world->contact_count - first);
+    a->contact_step = world->step_number;
+    return n;
 }
 
-/* This step's impulses become next step's cache. */
-static void store_cache(world_t *world) {
-    size_t needed = 16;
-    while (needed < 2 * world->contact_count) needed *= 2;
-    if (needed > world->cache_capacity) {
-        memory_free(world->cache);
-        world->cache = memory_alloc(needed * sizeof(cached_contact_t));
-        world->cache_capacity = needed;
-    }
-    size_t mask = world->cache_capacity - 1;
-    for (size_t i = 0; i < world->cache_capacity; i++) world->cache[i].key = UINT64_MAX;
-    for (size_t i = 0; i < world->contact_count; i++) {
-        const solver_contact_t *contact = &world->contacts[i];
-        size_t slot = hash_key(world->sources[i].key, mask);
-        while (world->cache[slot].key != UINT64_MAX) slot = (slot + 1) & mask;
-        cached_contact_t *entry = &world->cache[slot];
-        entry->key = world->sources[i].key;
-        entry->point_count = contact->point_count;
-        for (int j = 0; j < contact->point_count; j++) {
-            entry->ids[j] = contact->points[j].id;
-            entry->normal_impulse[j] = contact->points[j].normal_impulse;
-            entry->tangent_impulse[j] = contact->points[j].tangent_impulse;
-        }
-        entry->features = world->sources[i].features;
-        entry->pose = world->sources[i].pose;
+/* Last step's contacts become the old ones; this step's are written over
+ * the buffers of the step before. */
+static void swap_contact_buffers(world_t *world) {
+    solver_contact_t *contacts = world->contacts;
+    world->contacts = world->old_contacts;
+    world->old_contacts = contacts;
+    contact_source_t *sources = world->sources;
+    world->sources = world->old_sources;
+    world->old_sources = sources;
+    size_t capacity = world->contact_capacity;
+    world->contact_capacity = world->old_contact_capacity;
+    world->old_contact_capacity = capacity;
+    capacity = world->source_capacity;
+    world->source_capacity = world->old_source_capacity;
+    world->old_source_capacity = capacity;
+    world->old_count = world->contact_count;
+    world->contact_count = 0;
+    world->step_number++;
+}
+
+static void narrowphase(world_t *world, body_t **bodies, const broadphase_pair_t *pairs,
+                        size_t pair_count) {
+    swap_contact_buffers(world);
+    for (size_t i = 0; i < pair_count;) {
+        i += collide_group(world, bodies, pairs + i, pair_count - i);
     }
 }
 
@@ -309,7 +313,6 @@ void world_step(world_t *world, body_t **bodies, size_t count, const world_step_
     solver_solve(world->contacts, world->anchors, world->contact_count, world->velocities, world->states, count,
                  &settings);
     write_back(world, bodies, count, step);
-    store_cache(world);
 
     stats->broadphase_pairs += pair_count;
     stats->contacts += world->contact_count;
