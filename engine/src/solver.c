@@ -1,6 +1,7 @@
 #include "solver.h"
 #include <math.h>
 #include "scalar.h"
+#include "solver_wide.h"
 
 const double SOLVER_RESTITUTION_THRESHOLD = 1.0;
 const double SOLVER_LINEAR_SLOP = 0.001;
@@ -454,9 +455,9 @@ static void save_advanced(solver_state_t *states, size_t count) {
     }
 }
 
-void solver_solve(solver_contact_t *contacts, const solver_anchor_t *anchors, size_t contact_count,
-                  solver_velocity_t *velocities, solver_state_t *states, size_t body_count,
-                  const solver_settings_t *settings) {
+void solver_solve(solver_wide_t *wide, solver_contact_t *contacts, const solver_anchor_t *anchors,
+                  size_t contact_count, solver_velocity_t *velocities, solver_state_t *states,
+                  size_t body_count, const solver_settings_t *settings) {
     bool any_elastic = false;
     for (size_t i = 0; i < contact_count; i++) {
         prepare(&contacts[i], &anchors[i], velocities, states, settings);
@@ -466,9 +467,14 @@ void solver_solve(solver_contact_t *contacts, const solver_anchor_t *anchors, si
     if (any_elastic) {
         collision_pass(contacts, contact_count, velocities, settings->velocity_iterations);
     }
+    solver_wide_load(wide, contacts, contact_count, velocities, body_count);
     for (int iteration = 0; iteration < settings->velocity_iterations; iteration++) {
-        for (size_t i = 0; i < contact_count; i++) solve_velocity(&contacts[i], velocities);
+        solver_wide_iterate(wide, velocities);
+        for (size_t i = 0; i < wide->loose_count; i++) {
+            solve_velocity(&contacts[wide->loose[i]], velocities);
+        }
     }
+    solver_wide_store(wide, contacts);
     advance(velocities, states, body_count, settings);
     for (size_t i = 0; i < contact_count; i++) mark_impacts(&contacts[i], velocities, states);
     apply_impact_times(velocities, states, body_count, settings);

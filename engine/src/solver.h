@@ -95,12 +95,15 @@ extern const double SOLVER_RESTITUTION_THRESHOLD;
  * persist from step to step instead of flickering. */
 extern const double SOLVER_LINEAR_SLOP;
 
+typedef struct solver_wide solver_wide_t;
+
 /* Everything after the narrowphase: prepare, warm start, velocity
- * iterations, advance, position iterations. On entry each body's v, w are
- * its free velocities; on return they are its new velocities, and its state's
- * dx, dtheta are the displacements of the step. */
-void solver_solve(solver_contact_t *contacts, const solver_anchor_t *anchors, size_t contact_count,
-                  solver_velocity_t *velocities, solver_state_t *states, size_t body_count,
-                  const solver_settings_t *settings);
+ * iterations (in colour batches, solver_wide.h, whose arrays live in wide),
+ * advance, position iterations. On entry each body's v, w are its free
+ * velocities; on return they are its new velocities, and its state's dx,
+ * dtheta are the displacements of the step. */
+void solver_solve(solver_wide_t *wide, solver_contact_t *contacts, const solver_anchor_t *anchors,
+                  size_t contact_count, solver_velocity_t *velocities, solver_state_t *states,
+                  size_t body_count, const solver_settings_t *settings);
 
 #endif // #ifndef SOLVER_H

@@ -8,6 +8,7 @@
 #include "memory.h"
 #include "scene_private.h"
 #include "solver.h"
+#include "solver_wide.h"
 
 /* Every body's box is enlarged by how far it can move in a step plus this
  * (m), so a contact is found a step before it forms. */
@@ -67,6 +68,7 @@ struct world {
      * older one. */
     uint64_t step_number;
 
+    solver_wide_t wide;
     int velocity_iterations, position_iterations;
 };
 
@@ -88,6 +90,7 @@ void world_free(world_t *world) {
     memory_free(world->sources);
     memory_free(world->old_contacts);
     memory_free(world->old_sources);
+    solver_wide_free(&world->wide);
     memory_free(world);
 }
 
@@ -310,8 +313,8 @@ void world_step(world_t *world, body_t **bodies, size_t count, const world_step_
     narrowphase(world, bodies, pairs, pair_count);
     solver_settings_t settings = {step->dt, integrator_position_weight(step->integrator),
                                   world->velocity_iterations, world->position_iterations};
-    solver_solve(world->contacts, world->anchors, world->contact_count, world->velocities, world->states, count,
-                 &settings);
+    solver_solve(&world->wide, world->contacts, world->anchors, world->contact_count,
+                 world->velocities, world->states, count, &settings);
     write_back(world, bodies, count, step);
 
     stats->broadphase_pairs += pair_count;

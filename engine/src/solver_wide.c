@@ -1,0 +1,295 @@
+#include "solver_wide.h"
+#include <string.h>
+#include "memory.h"
+
+enum { LANES = 4 };
+
+/* Every function here that takes or returns a vector is static, so GCC's
+ * note that AVX changes how vectors are passed between objects does not
+ * apply. */
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic ignored "-Wpsabi"
+#endif
+
+/* Four doubles, and four 64-bit lane masks (all ones where a comparison
+ * held). aligned(8): the batches come from malloc, which promises less
+ * than the 32 bytes a vector would otherwise demand. */
+typedef double lane_t __attribute__((vector_size(LANES * sizeof(double)), aligned(8)));
+typedef int64_t mask_t __attribute__((vector_size(LANES * sizeof(int64_t)), aligned(8)));
+
+typedef struct {
+    lane_t rn_a, rn_b, rt_a, rt_b;
+    lane_t normal_mass, tangent_mass, target;
+    lane_t normal_impulse, tangent_impulse;
+} lane_point_t;
+
+/* Up to four contacts of one colour, all solved by the block solve or all
+ * point by point. A missing second point, and a lane without a contact,
+ * hold zeros: zero masses give zero impulses. */
+struct solver_batch {
+    lane_t nx, ny, friction;
+    lane_t ma, mb, ia, ib;
+    lane_t k11, k12, k22, m11, m12, m22; /* block batches only */
+    lane_point_t points[2];
+    uint32_t a[LANES], b[LANES]; /* body rows; empty lanes repeat lane 0's */
+    uint32_t contact[LANES];
+    int lanes;
+    bool block;
+};
+
+/* The two bodies' velocities in a batch, lane by lane. */
+typedef struct {
+    lane_t vx, vy, w;
+} lane_body_t;
+
+static inline lane_t select_lane(mask_t condition, lane_t yes, lane_t no) {
+    return (lane_t)(((mask_t)yes & condition) | ((mask_t)no & ~condition));
+}
+
+/* As scalar.h's max_of and min_of, lane by lane. */
+static inline lane_t max_lane(lane_t a, lane_t b) {
+    return select_lane((mask_t)(a > b), a, b);
+}
+
+static inline lane_t min_lane(lane_t a, lane_t b) {
+    return select_lane((mask_t)(a < b), a, b);
+}
+
+static inline lane_body_t gather(const solver_velocity_t *rows, const uint32_t index[LANES]) {
+    const solver_velocity_t *r0 = &rows[index[0]], *r1 = &rows[index[1]];
+    const solver_velocity_t *r2 = &rows[index[2]], *r3 = &rows[index[3]];
+    return (lane_body_t){
+        .vx = {r0->v.x, r1->v.x, r2->v.x, r3->v.x},
+        .vy = {r0->v.y, r1->v.y, r2->v.y, r3->v.y},
+        .w = {r0->w, r1->w, r2->w, r3->w},
+    };
+}
+
+static inline void scatter(solver_velocity_t *rows, const uint32_t index[LANES], int lanes,
+                           const lane_body_t *body) {
+    for (int l = 0; l < lanes; l++) {
+        solver_velocity_t *row = &rows[index[l]];
+        row->v.x = body->vx[l];
+        row->v.y = body->vy[l];
+        row->w = body->w[l];
+    }
+}
+
+/* Relative velocity of b over a along (dx, dy), lever terms rd_a, rd_b. */
+static inline lane_t relative_along(const lane_body_t *a, const lane_body_t *b, lane_t dx,
+                                    lane_t dy, lane_t rd_a, lane_t rd_b) {
+    return dx * (b->vx - a->vx) + dy * (b->vy - a->vy) + b->w * rd_b - a->w * rd_a;
+}
+
+static inline void apply_along(const solver_batch_t *batch, lane_body_t *a, lane_body_t *b,
+                               lane_t dx, lane_t dy, lane_t rd_a, lane_t rd_b, lane_t lambda) {
+    a->vx -= batch->ma * lambda * dx;
+    a->vy -= batch->ma * lambda * dy;
+    a->w -= batch->ia * lambda * rd_a;
+    b->vx += batch->mb * lambda * dx;
+    b->vy += batch->mb * lambda * dy;
+    b->w += batch->ib * lambda * rd_b;
+}
+
+static inline void solve_friction(solver_batch_t *batch, lane_body_t *a, lane_body_t *b) {
+    lane_t tx = -batch->ny, ty = batch->nx;
+    for (int i = 0; i < 2; i++) {
+        lane_point_t *p = &batch->points[i];
+        lane_t vt = relative_along(a, b, tx, ty, p->rt_a, p->rt_b);
+        lane_t limit = batch->friction * p->normal_impulse;
+        lane_t total =
+            max_lane(-limit, min_lane(p->tangent_impulse - p->tangent_mass * vt, limit));
+        lane_t delta = total - p->tangent_impulse;
+        p->tangent_impulse = total;
+        apply_along(batch, a, b, tx, ty, p->rt_a, p->rt_b, delta);
+    }
+}
+
+static inline void solve_normal_points(solver_batch_t *batch, lane_body_t *a, lane_body_t *b) {
+    const lane_t zero = {0.0, 0.0, 0.0, 0.0};
+    for (int i = 0; i < 2; i++) {
+        lane_point_t *p = &batch->points[i];
+        lane_t vn = relative_along(a, b, batch->nx, batch->ny, p->rn_a, p->rn_b);
+        lane_t total = max_lane(p->normal_impulse - p->normal_mass * (vn - p->target), zero);
+        lane_t delta = total - p->normal_impulse;
+        p->normal_impulse = total;
+        apply_along(batch, a, b, batch->nx, batch->ny, p->rn_a, p->rn_b, delta);
+    }
+}
+
+/* solver.c's block solve with its four cases evaluated in every lane and
+ * the first that holds selected (the case order is the scalar one). */
+static inline void solve_normal_block(solver_batch_t *batch, lane_body_t *a, lane_body_t *b) {
+    const lane_t zero = {0.0, 0.0, 0.0, 0.0};
+    lane_point_t *p1 = &batch->points[0], *p2 = &batch->points[1];
+    lane_t a1 = p1->normal_impulse, a2 = p2->normal_impulse;
+    lane_t b1 = relative_along(a, b, batch->nx, batch->ny, p1->rn_a, p1->rn_b) - p1->target;
+    lane_t b2 = relative_along(a, b, batch->nx, batch->ny, p2->rn_a, p2->rn_b) - p2->target;
+    b1 -= batch->k11 * a1 + batch->k12 * a2;
+    b2 -= batch->k12 * a1 + batch->k22 * a2;
+
+    lane_t both1 = -(batch->m11 * b1 + batch->m12 * b2);
+    lane_t both2 = -(batch->m12 * b1 + batch->m22 * b2);
+    mask_t both = (mask_t)(both1 >= zero) & (mask_t)(both2 >= zero);
+    lane_t first = -p1->normal_mass * b1;
+    mask_t first_only = (mask_t)(first >= zero) & (mask_t)(batch->k12 * first + b2 >= zero);
+    lane_t second = -p2->normal_mass * b2;
+    mask_t second_only = (mask_t)(second >= zero) & (mask_t)(batch->k12 * second + b1 >= zero);
+    mask_t neither = (mask_t)(b1 >= zero) & (mask_t)(b2 >= zero);
+
+    lane_t x1 = select_lane(neither, zero, a1), x2 = select_lane(neither, zero, a2);
+    x1 = select_lane(second_only, zero, x1);
+    x2 = select_lane(second_only, second, x2);
+    x1 = select_lane(first_only, first, x1);
+    x2 = select_lane(first_only, zero, x2);
+    x1 = select_lane(both, both1, x1);
+    x2 = select_lane(both, both2, x2);
+
+    lane_t d1 = x1 - a1, d2 = x2 - a2;
+    lane_t total = d1 + d2;
+    a->vx -= batch->ma * total * batch->nx;
+    a->vy -= batch->ma * total * batch->ny;
+    a->w -= batch->ia * (d1 * p1->rn_a + d2 * p2->rn_a);
+    b->vx += batch->mb * total * batch->nx;
+    b->vy += batch->mb * total * batch->ny;
+    b->w += batch->ib * (d1 * p1->rn_b + d2 * p2->rn_b);
+    p1->normal_impulse = x1;
+    p2->normal_impulse = x2;
+}
+
+/* Built twice where the compiler can (GCC and Clang on x86-64 with ifunc
+ * support): once for AVX2, which does a batch's four lanes in one
+ * instruction, and once for the baseline (two SSE2 instructions); the
+ * loader picks the one the processor runs. Neither uses fused
+ * multiply-add, so both give the same numbers. */
+#if defined(__x86_64__) && defined(__GNUC__) && defined(__ELF__)
+__attribute__((target_clones("avx2", "default")))
+#endif
+void solver_wide_iterate(solver_wide_t *wide, solver_velocity_t *rows) {
+    for (size_t i = 0; i < wide->batch_count; i++) {
+        solver_batch_t *batch = &wide->batches[i];
+        lane_body_t a = gather(rows, batch->a), b = gather(rows, batch->b);
+        solve_friction(batch, &a, &b);
+        if (batch->block) {
+            solve_normal_block(batch, &a, &b);
+        } else {
+            solve_normal_points(batch, &a, &b);
+        }
+        scatter(rows, batch->a, batch->lanes, &a);
+        scatter(rows, batch->b, batch->lanes, &b);
+    }
+}
+
+static void load_lane(solver_batch_t *batch, int l, const solver_contact_t *c, uint32_t index,
+                      const solver_velocity_t *rows) {
+    batch->a[l] = c->a;
+    batch->b[l] = c->b;
+    batch->contact[l] = index;
+    batch->nx[l] = c->normal.x;
+    batch->ny[l] = c->normal.y;
+    batch->friction[l] = c->friction;
+    batch->ma[l] = rows[c->a].inverse_mass;
+    batch->mb[l] = rows[c->b].inverse_mass;
+    batch->ia[l] = rows[c->a].inverse_inertia;
+    batch->ib[l] = rows[c->b].inverse_inertia;
+    batch->k11[l] = c->k11;
+    batch->k12[l] = c->k12;
+    batch->k22[l] = c->k22;
+    batch->m11[l] = c->m11;
+    batch->m12[l] = c->m12;
+    batch->m22[l] = c->m22;
+    for (int i = 0; i < c->point_count; i++) {
+        const solver_point_t *p = &c->points[i];
+        lane_point_t *lp = &batch->points[i];
+        lp->rn_a[l] = p->rn_a;
+        lp->rn_b[l] = p->rn_b;
+        lp->rt_a[l] = p->rt_a;
+        lp->rt_b[l] = p->rt_b;
+        lp->normal_mass[l] = p->normal_mass;
+        lp->tangent_mass[l] = p->tangent_mass;
+        lp->target[l] = p->target;
+        lp->normal_impulse[l] = p->normal_impulse;
+        lp->tangent_impulse[l] = p->tangent_impulse;
+    }
+}
+
+/* Packs order[0 .. count) (at most LANES contacts) into one batch. */
+static void load_batch(solver_batch_t *batch, const uint32_t *order, int count, bool block,
+                       const solver_contact_t *contacts, const solver_velocity_t *rows) {
+    memset(batch, 0, sizeof *batch);
+    batch->lanes = count;
+    batch->block = block;
+    for (int l = 0; l < count; l++) load_lane(batch, l, &contacts[order[l]], order[l], rows);
+    for (int l = count; l < LANES; l++) {
+        batch->a[l] = batch->a[0];
+        batch->b[l] = batch->b[0];
+    }
+}
+
+/* Orders the contacts by colour, and within a colour block solves first;
+ * the uncoloured go to the loose list. Returns the group boundaries in
+ * start (2 * COLORING_MAX_COLORS + 1 entries). */
+static void sort_by_color(solver_wide_t *wide, const solver_contact_t *contacts, size_t count,
+                          uint32_t *start) {
+    enum { GROUPS = 2 * COLORING_MAX_COLORS };
+    memset(start, 0, (GROUPS + 1) * sizeof(uint32_t));
+    wide->loose_count = 0;
+    for (size_t i = 0; i < count; i++) {
+        if (wide->colors[i] == COLORING_NONE) {
+            wide->loose[wide->loose_count++] = (uint32_t)i;
+            continue;
+        }
+        start[2 * wide->colors[i] + !contacts[i].block + 1]++;
+    }
+    for (int g = 0; g < GROUPS; g++) start[g + 1] += start[g];
+    uint32_t next[GROUPS];
+    memcpy(next, start, sizeof next);
+    for (size_t i = 0; i < count; i++) {
+        if (wide->colors[i] == COLORING_NONE) continue;
+        wide->order[next[2 * wide->colors[i] + !contacts[i].block]++] = (uint32_t)i;
+    }
+}
+
+void solver_wide_load(solver_wide_t *wide, const solver_contact_t *contacts, size_t count,
+                      const solver_velocity_t *rows, size_t body_count) {
+    enum { GROUPS = 2 * COLORING_MAX_COLORS };
+    memory_reserve((void **)&wide->colors, &wide->color_capacity, count, sizeof(uint8_t));
+    memory_reserve((void **)&wide->order, &wide->order_capacity, count, sizeof(uint32_t));
+    memory_reserve((void **)&wide->loose, &wide->loose_capacity, count, sizeof(uint32_t));
+    /* At most one partly filled batch per group. */
+    memory_reserve((void **)&wide->batches, &wide->batch_capacity, count / LANES + GROUPS,
+                   sizeof(solver_batch_t));
+    coloring_assign(&wide->coloring, contacts, count, rows, body_count, wide->colors);
+    uint32_t start[GROUPS + 1];
+    sort_by_color(wide, contacts, count, start);
+    wide->batch_count = 0;
+    for (int g = 0; g < GROUPS; g++) {
+        for (uint32_t i = start[g]; i < start[g + 1]; i += LANES) {
+            int n = (int)(start[g + 1] - i < LANES ? start[g + 1] - i : LANES);
+            load_batch(&wide->batches[wide->batch_count++], wide->order + i, n, g % 2 == 0,
+                       contacts, rows);
+        }
+    }
+}
+
+void solver_wide_store(const solver_wide_t *wide, solver_contact_t *contacts) {
+    for (size_t i = 0; i < wide->batch_count; i++) {
+        const solver_batch_t *batch = &wide->batches[i];
+        for (int l = 0; l < batch->lanes; l++) {
+            solver_contact_t *c = &contacts[batch->contact[l]];
+            for (int k = 0; k < c->point_count; k++) {
+                c->points[k].normal_impulse = batch->points[k].normal_impulse[l];
+                c->points[k].tangent_impulse = batch->points[k].tangent_impulse[l];
+            }
+        }
+    }
+}
+
+void solver_wide_free(solver_wide_t *wide) {
+    coloring_free(&wide->coloring);
+    memory_free(wide->colors);
+    memory_free(wide->order);
+    memory_free(wide->batches);
+    memory_free(wide->loose);
+    memset(wide, 0, sizeof *wide);
+}
