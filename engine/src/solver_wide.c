@@ -4,12 +4,17 @@
 
 enum { LANES = 4 };
 
-/* Every function here that takes or returns a vector is static, so GCC's
- * note that AVX changes how vectors are passed between objects does not
- * apply. */
-#if defined(__GNUC__) && !defined(__clang__)
+/* Vectors are returned from static functions only (always inlined), so
+ * GCC's warning that AVX changes how they are returned between objects does
+ * not apply. */
+#if defined(__GNUC__)
 #pragma GCC diagnostic ignored "-Wpsabi"
 #endif
+
+/* The kernels below must be inlined into each clone of
+ * solver_wide_iterate to be compiled for its instruction set; GCC
+ * otherwise keeps the larger ones out of line, as baseline code. */
+#define LANE_INLINE static inline __attribute__((always_inline))
 
 /* Four doubles, and four 64-bit lane masks (all ones where a comparison
  * held). aligned(8): the batches come from malloc, which promises less
@@ -17,8 +22,18 @@ enum { LANES = 4 };
 typedef double lane_t __attribute__((vector_size(LANES * sizeof(double)), aligned(8)));
 typedef int64_t mask_t __attribute__((vector_size(LANES * sizeof(int64_t)), aligned(8)));
 
+/* A direction, lane by lane. */
 typedef struct {
-    lane_t rn_a, rn_b, rt_a, rt_b;
+    lane_t x, y;
+} lane_vector_t;
+
+/* A point's lever terms along a direction d: r_a x d and r_b x d. */
+typedef struct {
+    lane_t a, b;
+} lane_lever_t;
+
+typedef struct {
+    lane_lever_t rn, rt;
     lane_t normal_mass, tangent_mass, target;
     lane_t normal_impulse, tangent_impulse;
 } lane_point_t;
@@ -27,7 +42,8 @@ typedef struct {
  * point by point. A missing second point, and a lane without a contact,
  * hold zeros: zero masses give zero impulses. */
 struct solver_batch {
-    lane_t nx, ny, friction;
+    lane_vector_t normal;
+    lane_t friction;
     lane_t ma, mb, ia, ib;
     lane_t k11, k12, k22, m11, m12, m22; /* block batches only */
     lane_point_t points[2];
@@ -42,20 +58,16 @@ typedef struct {
     lane_t vx, vy, w;
 } lane_body_t;
 
-static inline lane_t select_lane(mask_t condition, lane_t yes, lane_t no) {
-    return (lane_t)(((mask_t)yes & condition) | ((mask_t)no & ~condition));
-}
+/* yes where condition holds, no elsewhere; and scalar.h's max_of and
+ * min_of, lane by lane. Macros, not functions: a vector passed by value
+ * goes through memory on the baseline instruction set. Arguments must be
+ * free of side effects. */
+#define select_lane(condition, yes, no) \
+    ((lane_t)(((mask_t)(yes) & (condition)) | ((mask_t)(no) & ~(condition))))
+#define max_lane(a, b) select_lane((mask_t)((a) > (b)), (a), (b))
+#define min_lane(a, b) select_lane((mask_t)((a) < (b)), (a), (b))
 
-/* As scalar.h's max_of and min_of, lane by lane. */
-static inline lane_t max_lane(lane_t a, lane_t b) {
-    return select_lane((mask_t)(a > b), a, b);
-}
-
-static inline lane_t min_lane(lane_t a, lane_t b) {
-    return select_lane((mask_t)(a < b), a, b);
-}
-
-static inline lane_body_t gather(const solver_velocity_t *rows, const uint32_t index[LANES]) {
+LANE_INLINE lane_body_t gather(const solver_velocity_t *rows, const uint32_t index[LANES]) {
     const solver_velocity_t *r0 = &rows[index[0]], *r1 = &rows[index[1]];
     const solver_velocity_t *r2 = &rows[index[2]], *r3 = &rows[index[3]];
     return (lane_body_t){
@@ -65,7 +77,7 @@ static inline lane_body_t gather(const solver_velocity_t *rows, const uint32_t i
     };
 }
 
-static inline void scatter(solver_velocity_t *rows, const uint32_t index[LANES], int lanes,
+LANE_INLINE void scatter(solver_velocity_t *rows, const uint32_t index[LANES], int lanes,
                            const lane_body_t *body) {
     for (int l = 0; l < lanes; l++) {
         solver_velocity_t *row = &rows[index[l]];
@@ -76,55 +88,60 @@ static inline void scatter(solver_velocity_t *rows, const uint32_t index[LANES],
 }
 
 /* Relative velocity of b over a along (dx, dy), lever terms rd_a, rd_b. */
-static inline lane_t relative_along(const lane_body_t *a, const lane_body_t *b, lane_t dx,
-                                    lane_t dy, lane_t rd_a, lane_t rd_b) {
-    return dx * (b->vx - a->vx) + dy * (b->vy - a->vy) + b->w * rd_b - a->w * rd_a;
+/* Directions and lever terms go by pointer: vectors passed by value would
+ * go through memory on the baseline instruction set. */
+LANE_INLINE lane_t relative_along(const lane_body_t *a, const lane_body_t *b,
+                                  const lane_vector_t *d, const lane_lever_t *r) {
+    return d->x * (b->vx - a->vx) + d->y * (b->vy - a->vy) + b->w * r->b - a->w * r->a;
 }
 
-static inline void apply_along(const solver_batch_t *batch, lane_body_t *a, lane_body_t *b,
-                               lane_t dx, lane_t dy, lane_t rd_a, lane_t rd_b, lane_t lambda) {
-    a->vx -= batch->ma * lambda * dx;
-    a->vy -= batch->ma * lambda * dy;
-    a->w -= batch->ia * lambda * rd_a;
-    b->vx += batch->mb * lambda * dx;
-    b->vy += batch->mb * lambda * dy;
-    b->w += batch->ib * lambda * rd_b;
+LANE_INLINE void apply_along(const solver_batch_t *batch, lane_body_t *a, lane_body_t *b,
+                             const lane_vector_t *d, const lane_lever_t *r,
+                             const lane_t *impulse) {
+    lane_t lambda = *impulse;
+    a->vx -= batch->ma * lambda * d->x;
+    a->vy -= batch->ma * lambda * d->y;
+    a->w -= batch->ia * lambda * r->a;
+    b->vx += batch->mb * lambda * d->x;
+    b->vy += batch->mb * lambda * d->y;
+    b->w += batch->ib * lambda * r->b;
 }
 
-static inline void solve_friction(solver_batch_t *batch, lane_body_t *a, lane_body_t *b) {
-    lane_t tx = -batch->ny, ty = batch->nx;
+LANE_INLINE void solve_friction(solver_batch_t *batch, lane_body_t *a, lane_body_t *b) {
+    lane_vector_t tangent = {-batch->normal.y, batch->normal.x};
     for (int i = 0; i < 2; i++) {
         lane_point_t *p = &batch->points[i];
-        lane_t vt = relative_along(a, b, tx, ty, p->rt_a, p->rt_b);
+        lane_t vt = relative_along(a, b, &tangent, &p->rt);
         lane_t limit = batch->friction * p->normal_impulse;
-        lane_t total =
-            max_lane(-limit, min_lane(p->tangent_impulse - p->tangent_mass * vt, limit));
+        lane_t wanted = p->tangent_impulse - p->tangent_mass * vt;
+        lane_t total = max_lane(-limit, min_lane(wanted, limit));
         lane_t delta = total - p->tangent_impulse;
         p->tangent_impulse = total;
-        apply_along(batch, a, b, tx, ty, p->rt_a, p->rt_b, delta);
+        apply_along(batch, a, b, &tangent, &p->rt, &delta);
     }
 }
 
-static inline void solve_normal_points(solver_batch_t *batch, lane_body_t *a, lane_body_t *b) {
+LANE_INLINE void solve_normal_points(solver_batch_t *batch, lane_body_t *a, lane_body_t *b) {
     const lane_t zero = {0.0, 0.0, 0.0, 0.0};
     for (int i = 0; i < 2; i++) {
         lane_point_t *p = &batch->points[i];
-        lane_t vn = relative_along(a, b, batch->nx, batch->ny, p->rn_a, p->rn_b);
-        lane_t total = max_lane(p->normal_impulse - p->normal_mass * (vn - p->target), zero);
+        lane_t vn = relative_along(a, b, &batch->normal, &p->rn);
+        lane_t wanted = p->normal_impulse - p->normal_mass * (vn - p->target);
+        lane_t total = max_lane(wanted, zero);
         lane_t delta = total - p->normal_impulse;
         p->normal_impulse = total;
-        apply_along(batch, a, b, batch->nx, batch->ny, p->rn_a, p->rn_b, delta);
+        apply_along(batch, a, b, &batch->normal, &p->rn, &delta);
     }
 }
 
 /* solver.c's block solve with its four cases evaluated in every lane and
  * the first that holds selected (the case order is the scalar one). */
-static inline void solve_normal_block(solver_batch_t *batch, lane_body_t *a, lane_body_t *b) {
+LANE_INLINE void solve_normal_block(solver_batch_t *batch, lane_body_t *a, lane_body_t *b) {
     const lane_t zero = {0.0, 0.0, 0.0, 0.0};
     lane_point_t *p1 = &batch->points[0], *p2 = &batch->points[1];
     lane_t a1 = p1->normal_impulse, a2 = p2->normal_impulse;
-    lane_t b1 = relative_along(a, b, batch->nx, batch->ny, p1->rn_a, p1->rn_b) - p1->target;
-    lane_t b2 = relative_along(a, b, batch->nx, batch->ny, p2->rn_a, p2->rn_b) - p2->target;
+    lane_t b1 = relative_along(a, b, &batch->normal, &p1->rn) - p1->target;
+    lane_t b2 = relative_along(a, b, &batch->normal, &p2->rn) - p2->target;
     b1 -= batch->k11 * a1 + batch->k12 * a2;
     b2 -= batch->k12 * a1 + batch->k22 * a2;
 
@@ -147,12 +164,12 @@ static inline void solve_normal_block(solver_batch_t *batch, lane_body_t *a, lan
 
     lane_t d1 = x1 - a1, d2 = x2 - a2;
     lane_t total = d1 + d2;
-    a->vx -= batch->ma * total * batch->nx;
-    a->vy -= batch->ma * total * batch->ny;
-    a->w -= batch->ia * (d1 * p1->rn_a + d2 * p2->rn_a);
-    b->vx += batch->mb * total * batch->nx;
-    b->vy += batch->mb * total * batch->ny;
-    b->w += batch->ib * (d1 * p1->rn_b + d2 * p2->rn_b);
+    a->vx -= batch->ma * total * batch->normal.x;
+    a->vy -= batch->ma * total * batch->normal.y;
+    a->w -= batch->ia * (d1 * p1->rn.a + d2 * p2->rn.a);
+    b->vx += batch->mb * total * batch->normal.x;
+    b->vy += batch->mb * total * batch->normal.y;
+    b->w += batch->ib * (d1 * p1->rn.b + d2 * p2->rn.b);
     p1->normal_impulse = x1;
     p2->normal_impulse = x2;
 }
@@ -185,8 +202,8 @@ static void load_lane(solver_batch_t *batch, int l, const solver_contact_t *c, u
     batch->a[l] = c->a;
     batch->b[l] = c->b;
     batch->contact[l] = index;
-    batch->nx[l] = c->normal.x;
-    batch->ny[l] = c->normal.y;
+    batch->normal.x[l] = c->normal.x;
+    batch->normal.y[l] = c->normal.y;
     batch->friction[l] = c->friction;
     batch->ma[l] = rows[c->a].inverse_mass;
     batch->mb[l] = rows[c->b].inverse_mass;
@@ -201,10 +218,10 @@ static void load_lane(solver_batch_t *batch, int l, const solver_contact_t *c, u
     for (int i = 0; i < c->point_count; i++) {
         const solver_point_t *p = &c->points[i];
         lane_point_t *lp = &batch->points[i];
-        lp->rn_a[l] = p->rn_a;
-        lp->rn_b[l] = p->rn_b;
-        lp->rt_a[l] = p->rt_a;
-        lp->rt_b[l] = p->rt_b;
+        lp->rn.a[l] = p->rn_a;
+        lp->rn.b[l] = p->rn_b;
+        lp->rt.a[l] = p->rt_a;
+        lp->rt.b[l] = p->rt_b;
         lp->normal_mass[l] = p->normal_mass;
         lp->tangent_mass[l] = p->tangent_mass;
         lp->target[l] = p->target;

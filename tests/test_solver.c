@@ -1,0 +1,265 @@
+/* The solver's internals that the scene tests cannot see directly: the
+ * colouring of the contact graph and the four-lane velocity iterations.
+ * Contacts are built by hand here, with the effective masses computed from
+ * their definitions, so a mistake in solver.c's preparation cannot hide
+ * one in the batches. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include "coloring.h"
+#include "solver_wide.h"
+#include "test.h"
+
+/* The SCENES.md generator, for reproducible random graphs. */
+static uint32_t lcg_state = 12345;
+
+static double lcg_uniform(void) {
+    lcg_state = (uint32_t)((1103515245ull * lcg_state + 12345ull) % 2147483648ull);
+    return lcg_state / 2147483648.0;
+}
+
+static uint32_t lcg_below(uint32_t n) {
+    return (uint32_t)(lcg_uniform() * n);
+}
+
+static solver_velocity_t movable_row(void) {
+    return (solver_velocity_t){{0.0, 0.0}, 0.0, 1.0, 1.0};
+}
+
+static bool moves(const solver_velocity_t *row) {
+    return row->inverse_mass != 0.0 || row->inverse_inertia != 0.0;
+}
+
+static bool share_movable(const solver_contact_t *c, const solver_contact_t *d,
+                          const solver_velocity_t *rows) {
+    uint32_t mine[2] = {c->a, c->b}, theirs[2] = {d->a, d->b};
+    for (int i = 0; i < 2; i++) {
+        for (int j = 0; j < 2; j++) {
+            if (mine[i] == theirs[j] && moves(&rows[mine[i]])) return true;
+        }
+    }
+    return false;
+}
+
+static void coloring_separates_movable_bodies(void) {
+    enum { BODIES = 300, STATIC = 5, CONTACTS = 1200 };
+    solver_velocity_t rows[BODIES];
+    for (int i = 0; i < BODIES; i++) rows[i] = movable_row();
+    for (int i = 0; i < STATIC; i++) rows[i] = (solver_velocity_t){{0.0, 0.0}, 0.0, 0.0, 0.0};
+    static solver_contact_t contacts[CONTACTS];
+    for (int i = 0; i < CONTACTS; i++) {
+        uint32_t a = lcg_below(BODIES), b;
+        do b = lcg_below(BODIES); while (b == a || (a < STATIC && b < STATIC));
+        contacts[i] = (solver_contact_t){.a = a, .b = b};
+    }
+    uint8_t colors[CONTACTS];
+    coloring_t coloring = {0};
+    int used = coloring_assign(&coloring, contacts, CONTACTS, rows, BODIES, colors);
+    int highest = -1, statics_shared = 0;
+    for (int i = 0; i < CONTACTS; i++) {
+        CHECK(colors[i] != COLORING_NONE); /* degree about 8: 24 colours suffice */
+        if (colors[i] != COLORING_NONE && colors[i] > highest) highest = colors[i];
+        for (int j = 0; j < i; j++) {
+            if (colors[j] != colors[i]) continue;
+            CHECK(!share_movable(&contacts[i], &contacts[j], rows));
+            statics_shared += contacts[i].a < STATIC && contacts[j].a == contacts[i].a;
+        }
+        /* Greedy: every lower colour was taken by an earlier neighbour. */
+        for (int lower = 0; lower < colors[i] && colors[i] != COLORING_NONE; lower++) {
+            bool blocked = false;
+            for (int j = 0; j < i && !blocked; j++) {
+                blocked = colors[j] == lower && share_movable(&contacts[i], &contacts[j], rows);
+            }
+            CHECK(blocked);
+        }
+    }
+    CHECK(used == highest + 1);
+    CHECK(statics_shared > 0); /* a static body is no conflict */
+    coloring_free(&coloring);
+}
+
+/* A body with more contacts than there are colours: the rest are left
+ * uncoloured, to be solved one by one. */
+static void coloring_leaves_the_excess_uncoloured(void) {
+    enum { SPOKES = COLORING_MAX_COLORS + 6 };
+    solver_velocity_t rows[SPOKES + 1];
+    solver_contact_t contacts[SPOKES];
+    for (int i = 0; i <= SPOKES; i++) rows[i] = movable_row();
+    for (int i = 0; i < SPOKES; i++) contacts[i] = (solver_contact_t){.a = 0, .b = (uint32_t)i + 1};
+    uint8_t colors[SPOKES];
+    coloring_t coloring = {0};
+    CHECK(coloring_assign(&coloring, contacts, SPOKES, rows, SPOKES + 1, colors) ==
+          COLORING_MAX_COLORS);
+    for (int i = 0; i < SPOKES; i++) {
+        CHECK(colors[i] == (i < COLORING_MAX_COLORS ? i : COLORING_NONE));
+    }
+    coloring_free(&coloring);
+}
+
+/* A contact point from its lever arms, with the effective masses of their
+ * definition: 1 / (ma + mb + ia (r_a x d)^2 + ib (r_b x d)^2). */
+static solver_point_t make_point(vector_t r_a, vector_t r_b, vector_t normal,
+                                 const solver_velocity_t *a, const solver_velocity_t *b,
+                                 double target, uint32_t id) {
+    vector_t tangent = {-normal.y, normal.x};
+    solver_point_t p = {.rn_a = vec_cross(r_a, normal), .rn_b = vec_cross(r_b, normal),
+                        .rt_a = vec_cross(r_a, tangent), .rt_b = vec_cross(r_b, tangent),
+                        .target = target, .id = id};
+    double m = a->inverse_mass + b->inverse_mass;
+    p.normal_mass =
+        1.0 / (m + a->inverse_inertia * p.rn_a * p.rn_a + b->inverse_inertia * p.rn_b * p.rn_b);
+    p.tangent_mass =
+        1.0 / (m + a->inverse_inertia * p.rt_a * p.rt_a + b->inverse_inertia * p.rt_b * p.rt_b);
+    return p;
+}
+
+static void make_block(solver_contact_t *c, const solver_velocity_t *a,
+                       const solver_velocity_t *b) {
+    const solver_point_t *p = c->points, *q = c->points + 1;
+    double m = a->inverse_mass + b->inverse_mass;
+    c->k11 = m + a->inverse_inertia * p->rn_a * p->rn_a + b->inverse_inertia * p->rn_b * p->rn_b;
+    c->k22 = m + a->inverse_inertia * q->rn_a * q->rn_a + b->inverse_inertia * q->rn_b * q->rn_b;
+    c->k12 = m + a->inverse_inertia * p->rn_a * q->rn_a + b->inverse_inertia * p->rn_b * q->rn_b;
+    double det = c->k11 * c->k22 - c->k12 * c->k12;
+    c->m11 = c->k22 / det;
+    c->m12 = -c->k12 / det;
+    c->m22 = c->k11 / det;
+    c->block = true;
+}
+
+static double normal_velocity(const solver_contact_t *c, const solver_point_t *p,
+                              const solver_velocity_t *rows) {
+    const solver_velocity_t *a = &rows[c->a], *b = &rows[c->b];
+    return vec_dot(c->normal, vec_subtract(b->v, a->v)) + b->w * p->rn_b - a->w * p->rn_a;
+}
+
+/*
+ * Eleven contacts on distinct pairs of bodies (three share the static
+ * floor, row 0), of three kinds: two-point block solves, two points one at
+ * a time, and one point. They fill three batches, the last partly. Each
+ * approaches at its own velocity. Because no two share a movable body, a
+ * block or one-point contact must be solved exactly in one iteration (the
+ * complementarity conditions hold to rounding), and every body's velocity
+ * must have changed by exactly the impulses its contacts report.
+ */
+static void batches_solve_isolated_contacts(void) {
+    enum { CONTACTS = 11, BODIES = 2 * CONTACTS + 1 };
+    solver_velocity_t rows[BODIES], before[BODIES];
+    rows[0] = (solver_velocity_t){{0.0, 0.0}, 0.0, 0.0, 0.0};
+    for (int i = 1; i < BODIES; i++) {
+        rows[i] = (solver_velocity_t){{lcg_uniform() - 0.5, lcg_uniform() - 0.5},
+                                      lcg_uniform() - 0.5, 0.5 + lcg_uniform(),
+                                      2.0 + lcg_uniform()};
+    }
+    solver_contact_t contacts[CONTACTS];
+    for (int i = 0; i < CONTACTS; i++) {
+        solver_contact_t *c = &contacts[i];
+        memset(c, 0, sizeof *c);
+        c->a = i < 3 ? 0 : (uint32_t)(2 * i + 1);
+        c->b = (uint32_t)(2 * i + 2);
+        double angle = 2.0 * M_PI * lcg_uniform();
+        c->normal = (vector_t){cos(angle), sin(angle)};
+        c->friction = 0.6;
+        /* Approaching: b moves against the normal. */
+        rows[c->b].v = vec_add(rows[c->b].v, vec_multiply(-2.0, c->normal));
+        vector_t tangent = {-c->normal.y, c->normal.x};
+        int kind = i % 3; /* 0 block, 1 two points one by one, 2 one point */
+        c->point_count = kind == 2 ? 1 : 2;
+        for (int k = 0; k < c->point_count; k++) {
+            vector_t along = vec_multiply(k == 0 ? 0.4 : -0.4, tangent);
+            vector_t r_a = vec_add(vec_multiply(0.5, c->normal), along);
+            vector_t r_b = vec_add(vec_multiply(-0.5, c->normal), along);
+            double target = k == 0 ? 0.0 : 0.3;
+            c->points[k] = make_point(r_a, r_b, c->normal, &rows[c->a], &rows[c->b], target,
+                                      (uint32_t)k);
+            c->points[k].normal_impulse = 0.1 * k; /* a warm start */
+        }
+        if (kind == 0) make_block(c, &rows[c->a], &rows[c->b]);
+    }
+    memcpy(before, rows, sizeof rows);
+
+    solver_wide_t wide = {0};
+    solver_wide_load(&wide, contacts, CONTACTS, rows, BODIES);
+    CHECK(wide.loose_count == 0);
+    solver_wide_iterate(&wide, rows);
+    solver_wide_store(&wide, contacts);
+
+    CHECK_VEC(rows[0].v, 0.0, 0.0, 0.0);
+    CHECK(rows[0].w == 0.0);
+    for (int i = 0; i < CONTACTS; i++) {
+        const solver_contact_t *c = &contacts[i];
+        vector_t tangent = {-c->normal.y, c->normal.x};
+        vector_t impulse = {0.0, 0.0};
+        double angular_a = 0.0, angular_b = 0.0;
+        for (int k = 0; k < c->point_count; k++) {
+            const solver_point_t *p = &c->points[k];
+            /* Warm-start impulses are already in the velocities. */
+            double applied = p->normal_impulse - 0.1 * k;
+            impulse = vec_add(impulse, vec_add(vec_multiply(applied, c->normal),
+                                               vec_multiply(p->tangent_impulse, tangent)));
+            angular_a += applied * p->rn_a + p->tangent_impulse * p->rt_a;
+            angular_b += applied * p->rn_b + p->tangent_impulse * p->rt_b;
+            CHECK(p->normal_impulse >= 0.0);
+            /* Friction saw the normal impulse before this iteration's. */
+            CHECK(fabs(p->tangent_impulse) <= 0.6 * 0.1 * k + 1e-15);
+            if (i % 3 != 1) {
+                double gap = normal_velocity(c, p, rows) - p->target;
+                CHECK(gap >= -1e-12);
+                CHECK(fabs(p->normal_impulse * gap) < 1e-12);
+            }
+        }
+        const solver_velocity_t *a = &rows[c->a], *b = &rows[c->b];
+        const solver_velocity_t *a0 = &before[c->a], *b0 = &before[c->b];
+        vector_t expect_b = vec_add(b0->v, vec_multiply(b0->inverse_mass, impulse));
+        CHECK_VEC(b->v, expect_b.x, expect_b.y, 1e-12);
+        CHECK_NEAR(b->w, b0->w + b0->inverse_inertia * angular_b, 1e-12);
+        if (c->a != 0) {
+            vector_t expect_a = vec_subtract(a0->v, vec_multiply(a0->inverse_mass, impulse));
+            CHECK_VEC(a->v, expect_a.x, expect_a.y, 1e-12);
+            CHECK_NEAR(a->w, a0->w - a0->inverse_inertia * angular_a, 1e-12);
+        }
+    }
+    solver_wide_free(&wide);
+}
+
+/* The two-points-one-by-one contacts converge to the same complementarity
+ * conditions when iterated. */
+static void batches_converge_when_iterated(void) {
+    solver_velocity_t rows[3] = {{{0.0, 0.0}, 0.0, 0.0, 0.0},
+                                 {{0.3, -2.0}, 0.7, 1.0, 3.0},
+                                 {{-0.2, -1.0}, -0.4, 0.5, 1.5}};
+    solver_contact_t contacts[2];
+    vector_t up = {0.0, 1.0}, tangent = {-1.0, 0.0};
+    for (int i = 0; i < 2; i++) {
+        solver_contact_t *c = &contacts[i];
+        memset(c, 0, sizeof *c);
+        c->a = 0;
+        c->b = (uint32_t)i + 1;
+        c->normal = up;
+        c->friction = 0.6;
+        c->point_count = 2;
+        for (int k = 0; k < 2; k++) {
+            vector_t along = vec_multiply(k == 0 ? 0.5 : -0.3, tangent);
+            c->points[k] = make_point(along, vec_add(along, (vector_t){0.0, -0.5}), up,
+                                      &rows[c->a], &rows[c->b], 0.0, (uint32_t)k);
+        }
+    }
+    solver_wide_t wide = {0};
+    solver_wide_load(&wide, contacts, 2, rows, 3);
+    for (int iteration = 0; iteration < 60; iteration++) solver_wide_iterate(&wide, rows);
+    solver_wide_store(&wide, contacts);
+    for (int i = 0; i < 2; i++) {
+        for (int k = 0; k < 2; k++) {
+            const solver_point_t *p = &contacts[i].points[k];
+            double gap = normal_velocity(&contacts[i], p, rows) - p->target;
+            CHECK(gap >= -1e-9);
+            CHECK(fabs(p->normal_impulse * gap) < 1e-9);
+            CHECK(fabs(p->tangent_impulse) <= 0.6 * p->normal_impulse + 1e-9);
+        }
+    }
+    solver_wide_free(&wide);
+}
+
+TEST_SUITE(solver, TEST_CASE(coloring_separates_movable_bodies),
+           TEST_CASE(coloring_leaves_the_excess_uncoloured),
+           TEST_CASE(batches_solve_isolated_contacts), TEST_CASE(batches_converge_when_iterated));
