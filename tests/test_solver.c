@@ -169,7 +169,10 @@ static void batches_solve_isolated_contacts(void) {
             vector_t along = vec_multiply(k == 0 ? 0.4 : -0.4, tangent);
             vector_t r_a = vec_add(vec_multiply(0.5, c->normal), along);
             vector_t r_b = vec_add(vec_multiply(-0.5, c->normal), along);
-            double target = k == 0 ? 0.0 : 0.3;
+            /* Block contacts 3, 6 and 9 leave the second point, the first,
+             * and both free to separate: each case of the block solve. */
+            bool free = (k == 0 && (i == 6 || i == 9)) || (k == 1 && (i == 3 || i == 9));
+            double target = free ? -5.0 : k == 0 ? 0.0 : 0.3;
             c->points[k] = make_point(r_a, r_b, c->normal, &rows[c->a], &rows[c->b], target,
                                       (uint32_t)k);
             c->points[k].normal_impulse = 0.1 * k; /* a warm start */

@@ -47,7 +47,7 @@ struct solver_batch {
     lane_t ma, mb, ia, ib;
     lane_t k11, k12, k22, m11, m12, m22; /* block batches only */
     lane_point_t points[2];
-    uint32_t a[LANES], b[LANES]; /* body rows; empty lanes repeat lane 0's */
+    uint32_t a[LANES], b[LANES]; /* body rows; empty lanes read row 0 */
     uint32_t contact[LANES];
     int lanes;
     bool block;
@@ -237,10 +237,6 @@ static void load_batch(solver_batch_t *batch, const uint32_t *order, int count, 
     batch->lanes = count;
     batch->block = block;
     for (int l = 0; l < count; l++) load_lane(batch, l, &contacts[order[l]], order[l], rows);
-    for (int l = count; l < LANES; l++) {
-        batch->a[l] = batch->a[0];
-        batch->b[l] = batch->b[0];
-    }
 }
 
 /* Orders the contacts by colour, and within a colour block solves first;
