@@ -10,7 +10,7 @@ const double SOLVER_LINEAR_SLOP = 0.001;
  * 40-row pyramid (measured). */
 static const double POSITION_CORRECTION_RATE = 0.2;
 static const double STATIC_POSITION_CORRECTION_RATE = 0.5;
-static const double MAX_POSITION_CORRECTION = 0.2;
+const double SOLVER_MAX_POSITION_CORRECTION = 0.2;
 /* The most the position correction may move one body in one step (m, rad),
  * over all its contacts and iterations. A body squeezed by many deep
  * contacts was otherwise shoved 1.4 m in a step, through a 1 m wall, in the
@@ -124,6 +124,10 @@ static void set_target(solver_point_t *p, vector_t r_a, vector_t r_b, vector_t n
     p->target = closing;
 }
 
+static bool is_static(const solver_velocity_t *row) {
+    return row->inverse_mass == 0.0 && row->inverse_inertia == 0.0;
+}
+
 static void prepare(solver_contact_t *c, const solver_anchor_t *anchor,
                     const solver_velocity_t *velocities, const solver_state_t *states,
                     const solver_settings_t *s) {
@@ -144,6 +148,8 @@ static void prepare(solver_contact_t *c, const solver_anchor_t *anchor,
         set_target(p, anchor->r_a[i], anchor->r_b[i], c->normal, c->restitution, &states[c->a],
                    &states[c->b], s);
     }
+    c->position_rate = is_static(a) || is_static(b) ? STATIC_POSITION_CORRECTION_RATE
+                                                    : POSITION_CORRECTION_RATE;
     c->block = false;
     if (c->point_count == 2) {
         const solver_point_t *p1 = &c->points[0], *p2 = &c->points[1];
@@ -333,22 +339,17 @@ static void collision_pass(solver_contact_t *contacts, size_t count, solver_velo
 }
 
 /* Where the integrator will put each body with the solved velocities. */
-static void advance(const solver_velocity_t *velocities, solver_state_t *states, size_t count,
-                    const solver_settings_t *s) {
+static void advance(const solver_bodies_t *bodies, const solver_settings_t *s) {
     double w = s->position_weight;
-    for (size_t i = 0; i < count; i++) {
-        solver_state_t *state = &states[i];
-        const solver_velocity_t *velocity = &velocities[i];
-        state->dx = vec_multiply(s->dt, vec_add(vec_multiply(1.0 - w, state->v_start),
+    for (size_t i = 0; i < bodies->body_count; i++) {
+        const solver_state_t *state = &bodies->states[i];
+        const solver_velocity_t *velocity = &bodies->velocities[i];
+        solver_displacement_t *moved = &bodies->displacements[i];
+        moved->dx = vec_multiply(s->dt, vec_add(vec_multiply(1.0 - w, state->v_start),
                                                 vec_multiply(w, velocity->v)));
-        state->dtheta = s->dt * ((1.0 - w) * state->w_start + w * velocity->w);
+        moved->dtheta = s->dt * ((1.0 - w) * state->w_start + w * velocity->w);
     }
 }
-
-static bool is_static(const solver_velocity_t *row) {
-    return row->inverse_mass == 0.0 && row->inverse_inertia == 0.0;
-}
-
 
 static bool pushes(const solver_contact_t *c) {
     for (int i = 0; i < c->point_count; i++) {
@@ -388,15 +389,15 @@ static void mark_impacts(const solver_contact_t *c, const solver_velocity_t *vel
  * timing it so pushed bodies of the 10000-body pile through its floor and
  * walls (measured), so the integrator's own timing is kept there.
  */
-static void apply_impact_times(const solver_velocity_t *velocities, solver_state_t *states,
-                               size_t count, const solver_settings_t *s) {
-    for (size_t i = 0; i < count; i++) {
-        solver_state_t *state = &states[i];
+static void apply_impact_times(const solver_bodies_t *bodies, const solver_settings_t *s) {
+    for (size_t i = 0; i < bodies->body_count; i++) {
+        const solver_state_t *state = &bodies->states[i];
         if (state->impact_time < 0.0 || state->pushing_contacts != 1) continue;
+        const solver_velocity_t *velocity = &bodies->velocities[i];
+        solver_displacement_t *moved = &bodies->displacements[i];
         double shift = s->dt - state->impact_time - s->position_weight * s->dt;
-        state->dx = vec_add(state->dx,
-                            vec_multiply(shift, vec_subtract(velocities[i].v, state->v_free)));
-        state->dtheta += shift * (velocities[i].w - state->w_free);
+        moved->dx = vec_add(moved->dx, vec_multiply(shift, vec_subtract(velocity->v, state->v_free)));
+        moved->dtheta += shift * (velocity->w - state->w_free);
     }
 }
 
@@ -405,23 +406,19 @@ static void apply_impact_times(const solver_velocity_t *velocities, solver_state
  * re-estimated from the displacements so far, to first order in the
  * rotation (a step turns a body by a small angle), and pushed back toward
  * -slop by a fraction of the overlap. Only positions move: no energy is
- * added.
+ * added. solver_wide.c does the same four contacts at a time.
  */
 static void solve_position(const solver_contact_t *c, const solver_velocity_t *velocities,
-                           solver_state_t *states) {
-    solver_state_t *a = &states[c->a], *b = &states[c->b];
+                           solver_displacement_t *displacements) {
+    solver_displacement_t *a = &displacements[c->a], *b = &displacements[c->b];
     double ma = velocities[c->a].inverse_mass, ia = velocities[c->a].inverse_inertia;
     double mb = velocities[c->b].inverse_mass, ib = velocities[c->b].inverse_inertia;
     for (int i = 0; i < c->point_count; i++) {
         const solver_point_t *p = &c->points[i];
         double separation = p->separation + vec_dot(c->normal, vec_subtract(b->dx, a->dx)) +
                             b->dtheta * p->rn_b - a->dtheta * p->rn_a;
-        double rate = (ma == 0.0 && ia == 0.0) || (mb == 0.0 && ib == 0.0)
-                          ? STATIC_POSITION_CORRECTION_RATE
-                          : POSITION_CORRECTION_RATE;
-        double error = max_of(-MAX_POSITION_CORRECTION,
-                              min_of(rate * (separation + SOLVER_LINEAR_SLOP), 0.0));
-        if (error == 0.0) continue;
+        double error = max_of(-SOLVER_MAX_POSITION_CORRECTION,
+                              min_of(c->position_rate * (separation + SOLVER_LINEAR_SLOP), 0.0));
         double lambda = -error * p->normal_mass;
         a->dx = vec_subtract(a->dx, vec_multiply(ma * lambda, c->normal));
         a->dtheta -= ia * lambda * p->rn_a;
@@ -431,43 +428,45 @@ static void solve_position(const solver_contact_t *c, const solver_velocity_t *v
 }
 
 /* Caps what the position pass moved each body (MAX_BODY_CORRECTION). */
-static void limit_corrections(solver_state_t *states, size_t count) {
-    for (size_t i = 0; i < count; i++) {
-        solver_state_t *state = &states[i];
-        vector_t moved = vec_subtract(state->dx, state->dx_advanced);
-        double length = vec_get_length(moved);
+static void limit_corrections(const solver_bodies_t *bodies) {
+    for (size_t i = 0; i < bodies->body_count; i++) {
+        const solver_state_t *state = &bodies->states[i];
+        solver_displacement_t *moved = &bodies->displacements[i];
+        vector_t corrected = vec_subtract(moved->dx, state->dx_advanced);
+        double length = vec_get_length(corrected);
         if (length > MAX_BODY_CORRECTION) {
-            state->dx = vec_add(state->dx_advanced,
-                                vec_multiply(MAX_BODY_CORRECTION / length, moved));
+            moved->dx = vec_add(state->dx_advanced,
+                                vec_multiply(MAX_BODY_CORRECTION / length, corrected));
         }
-        double turned = state->dtheta - state->dtheta_advanced;
+        double turned = moved->dtheta - state->dtheta_advanced;
         if (fabs(turned) > MAX_BODY_ROTATION_CORRECTION) {
-            state->dtheta = state->dtheta_advanced + copysign(MAX_BODY_ROTATION_CORRECTION, turned);
+            moved->dtheta = state->dtheta_advanced + copysign(MAX_BODY_ROTATION_CORRECTION, turned);
         }
     }
 }
 
 /* Remembers where the bodies are before the position pass. */
-static void save_advanced(solver_state_t *states, size_t count) {
-    for (size_t i = 0; i < count; i++) {
-        states[i].dx_advanced = states[i].dx;
-        states[i].dtheta_advanced = states[i].dtheta;
+static void save_advanced(const solver_bodies_t *bodies) {
+    for (size_t i = 0; i < bodies->body_count; i++) {
+        bodies->states[i].dx_advanced = bodies->displacements[i].dx;
+        bodies->states[i].dtheta_advanced = bodies->displacements[i].dtheta;
     }
 }
 
 void solver_solve(solver_wide_t *wide, solver_contact_t *contacts, const solver_anchor_t *anchors,
-                  size_t contact_count, solver_velocity_t *velocities, solver_state_t *states,
-                  size_t body_count, const solver_settings_t *settings) {
+                  size_t contact_count, const solver_bodies_t *bodies,
+                  const solver_settings_t *settings) {
+    solver_velocity_t *velocities = bodies->velocities;
     bool any_elastic = false;
     for (size_t i = 0; i < contact_count; i++) {
-        prepare(&contacts[i], &anchors[i], velocities, states, settings);
+        prepare(&contacts[i], &anchors[i], velocities, bodies->states, settings);
         any_elastic |= contacts[i].restitution > 0.0;
     }
     for (size_t i = 0; i < contact_count; i++) warm_start(&contacts[i], velocities);
     if (any_elastic) {
         collision_pass(contacts, contact_count, velocities, settings->velocity_iterations);
     }
-    solver_wide_load(wide, contacts, contact_count, velocities, body_count);
+    solver_wide_load(wide, contacts, contact_count, velocities, bodies->body_count);
     for (int iteration = 0; iteration < settings->velocity_iterations; iteration++) {
         solver_wide_iterate(wide, velocities);
         for (size_t i = 0; i < wide->loose_count; i++) {
@@ -475,12 +474,17 @@ void solver_solve(solver_wide_t *wide, solver_contact_t *contacts, const solver_
         }
     }
     solver_wide_store(wide, contacts);
-    advance(velocities, states, body_count, settings);
-    for (size_t i = 0; i < contact_count; i++) mark_impacts(&contacts[i], velocities, states);
-    apply_impact_times(velocities, states, body_count, settings);
-    save_advanced(states, body_count);
-    for (int iteration = 0; iteration < settings->position_iterations; iteration++) {
-        for (size_t i = 0; i < contact_count; i++) solve_position(&contacts[i], velocities, states);
+    advance(bodies, settings);
+    for (size_t i = 0; i < contact_count; i++) {
+        mark_impacts(&contacts[i], velocities, bodies->states);
     }
-    limit_corrections(states, body_count);
+    apply_impact_times(bodies, settings);
+    save_advanced(bodies);
+    for (int iteration = 0; iteration < settings->position_iterations; iteration++) {
+        solver_wide_correct_positions(wide, bodies->displacements, iteration % 2 == 1);
+        for (size_t i = 0; i < wide->loose_count; i++) {
+            solve_position(&contacts[wide->loose[i]], velocities, bodies->displacements);
+        }
+    }
+    limit_corrections(bodies);
 }

@@ -38,13 +38,18 @@ typedef struct {
     vector_t v_free;         /* at the end of the step if no contact acted */
     double w_free;
     vector_t acceleration;   /* (force / mass) + gravity: for times of impact */
-    vector_t dx;             /* displacement this step: advanced, then corrected */
-    double dtheta;
     vector_t dx_advanced;    /* dx before the position correction */
     double dtheta_advanced;
     double impact_time;      /* of an impact against a static body (s), < 0 for none */
     int pushing_contacts;    /* contacts with a normal impulse this step */
 } solver_state_t;
+
+/* What the position iterations touch, one row per body: the displacement
+ * of this step, advanced by the integrator's rule, then corrected. */
+typedef struct {
+    vector_t dx;
+    double dtheta;
+} solver_displacement_t;
 
 /* One contact point, as the iterations see it. The lever arms r (from each
  * centroid to the point) enter only through r x n and r x t, computed once,
@@ -75,6 +80,7 @@ typedef struct {
     bool block;
     vector_t normal;         /* unit, from a toward b; the tangent is perp(normal) */
     double friction, restitution;
+    double position_rate;    /* fraction of an overlap the position pass removes per iteration */
     /* The 2x2 normal effective-mass matrix K and its inverse (block solve). */
     double k11, k12, k22;
     double m11, m12, m22;
@@ -94,16 +100,26 @@ extern const double SOLVER_RESTITUTION_THRESHOLD;
 /* Overlap the position correction leaves alone (m), so resting contacts
  * persist from step to step instead of flickering. */
 extern const double SOLVER_LINEAR_SLOP;
+/* The most one point's position correction removes at once (m). */
+extern const double SOLVER_MAX_POSITION_CORRECTION;
 
 typedef struct solver_wide solver_wide_t;
 
+/* The rows of every body, body_count of each. */
+typedef struct {
+    solver_velocity_t *velocities;
+    solver_displacement_t *displacements;
+    solver_state_t *states;
+    size_t body_count;
+} solver_bodies_t;
+
 /* Everything after the narrowphase: prepare, warm start, velocity
- * iterations (in colour batches, solver_wide.h, whose arrays live in wide),
- * advance, position iterations. On entry each body's v, w are its free
- * velocities; on return they are its new velocities, and its state's dx,
- * dtheta are the displacements of the step. */
+ * iterations and position iterations (in colour batches, solver_wide.h,
+ * whose arrays live in wide), advance. On entry each body's v, w are its
+ * free velocities; on return they are its new velocities, and its
+ * displacement is the one of the step. */
 void solver_solve(solver_wide_t *wide, solver_contact_t *contacts, const solver_anchor_t *anchors,
-                  size_t contact_count, solver_velocity_t *velocities, solver_state_t *states,
-                  size_t body_count, const solver_settings_t *settings);
+                  size_t contact_count, const solver_bodies_t *bodies,
+                  const solver_settings_t *settings);
 
 #endif // #ifndef SOLVER_H

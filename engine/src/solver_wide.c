@@ -53,6 +53,18 @@ struct solver_batch {
     bool block;
 };
 
+/* The same contacts, with what the position pass needs. */
+struct solver_position_batch {
+    lane_vector_t normal;
+    lane_t ma, mb, ia, ib, rate;
+    struct {
+        lane_lever_t rn;
+        lane_t normal_mass, separation;
+    } points[2];
+    uint32_t a[LANES], b[LANES];
+    int lanes;
+};
+
 /* The two bodies' velocities in a batch, lane by lane. */
 typedef struct {
     lane_t vx, vy, w;
@@ -197,6 +209,92 @@ void solver_wide_iterate(solver_wide_t *wide, solver_velocity_t *rows) {
     }
 }
 
+/* The bodies' displacements in a batch, lane by lane. */
+typedef struct {
+    lane_t dx, dy, dtheta;
+} lane_displacement_t;
+
+LANE_INLINE lane_displacement_t gather_displacements(const solver_displacement_t *rows,
+                                                     const uint32_t index[LANES]) {
+    const solver_displacement_t *r0 = &rows[index[0]], *r1 = &rows[index[1]];
+    const solver_displacement_t *r2 = &rows[index[2]], *r3 = &rows[index[3]];
+    return (lane_displacement_t){
+        .dx = {r0->dx.x, r1->dx.x, r2->dx.x, r3->dx.x},
+        .dy = {r0->dx.y, r1->dx.y, r2->dx.y, r3->dx.y},
+        .dtheta = {r0->dtheta, r1->dtheta, r2->dtheta, r3->dtheta},
+    };
+}
+
+LANE_INLINE void scatter_displacements(solver_displacement_t *rows, const uint32_t index[LANES],
+                                       int lanes, const lane_displacement_t *moved) {
+    for (int l = 0; l < lanes; l++) {
+        solver_displacement_t *row = &rows[index[l]];
+        row->dx.x = moved->dx[l];
+        row->dx.y = moved->dy[l];
+        row->dtheta = moved->dtheta[l];
+    }
+}
+
+/* solver.c's solve_position, lane by lane. */
+LANE_INLINE void correct_batch(const solver_position_batch_t *batch, lane_displacement_t *a,
+                               lane_displacement_t *b) {
+    const lane_t zero = {0.0, 0.0, 0.0, 0.0};
+    const lane_t slop = zero + SOLVER_LINEAR_SLOP;
+    const lane_t most = zero - SOLVER_MAX_POSITION_CORRECTION;
+    const lane_vector_t *n = &batch->normal;
+    for (int i = 0; i < 2; i++) {
+        const lane_lever_t *rn = &batch->points[i].rn;
+        lane_t separation = batch->points[i].separation +
+                            (n->x * (b->dx - a->dx) + n->y * (b->dy - a->dy)) +
+                            b->dtheta * rn->b - a->dtheta * rn->a;
+        lane_t wanted = batch->rate * (separation + slop);
+        lane_t capped = min_lane(wanted, zero);
+        lane_t error = max_lane(most, capped);
+        lane_t lambda = -error * batch->points[i].normal_mass;
+        a->dx -= batch->ma * lambda * n->x;
+        a->dy -= batch->ma * lambda * n->y;
+        a->dtheta -= batch->ia * lambda * rn->a;
+        b->dx += batch->mb * lambda * n->x;
+        b->dy += batch->mb * lambda * n->y;
+        b->dtheta += batch->ib * lambda * rn->b;
+    }
+}
+
+#if defined(__x86_64__) && defined(__GNUC__) && defined(__ELF__)
+__attribute__((target_clones("avx2", "default")))
+#endif
+void solver_wide_correct_positions(solver_wide_t *wide, solver_displacement_t *displacements,
+                                   bool backward) {
+    size_t count = wide->batch_count;
+    for (size_t k = 0; k < count; k++) {
+        const solver_position_batch_t *batch = &wide->position_batches[backward ? count - 1 - k : k];
+        lane_displacement_t a = gather_displacements(displacements, batch->a);
+        lane_displacement_t b = gather_displacements(displacements, batch->b);
+        correct_batch(batch, &a, &b);
+        scatter_displacements(displacements, batch->a, batch->lanes, &a);
+        scatter_displacements(displacements, batch->b, batch->lanes, &b);
+    }
+}
+
+static void load_position_lane(solver_position_batch_t *batch, int l, const solver_contact_t *c,
+                               const solver_velocity_t *rows) {
+    batch->a[l] = c->a;
+    batch->b[l] = c->b;
+    batch->normal.x[l] = c->normal.x;
+    batch->normal.y[l] = c->normal.y;
+    batch->ma[l] = rows[c->a].inverse_mass;
+    batch->mb[l] = rows[c->b].inverse_mass;
+    batch->ia[l] = rows[c->a].inverse_inertia;
+    batch->ib[l] = rows[c->b].inverse_inertia;
+    batch->rate[l] = c->position_rate;
+    for (int i = 0; i < c->point_count; i++) {
+        batch->points[i].rn.a[l] = c->points[i].rn_a;
+        batch->points[i].rn.b[l] = c->points[i].rn_b;
+        batch->points[i].normal_mass[l] = c->points[i].normal_mass;
+        batch->points[i].separation[l] = c->points[i].separation;
+    }
+}
+
 static void load_lane(solver_batch_t *batch, int l, const solver_contact_t *c, uint32_t index,
                       const solver_velocity_t *rows) {
     batch->a[l] = c->a;
@@ -230,13 +328,20 @@ static void load_lane(solver_batch_t *batch, int l, const solver_contact_t *c, u
     }
 }
 
-/* Packs order[0 .. count) (at most LANES contacts) into one batch. */
-static void load_batch(solver_batch_t *batch, const uint32_t *order, int count, bool block,
-                       const solver_contact_t *contacts, const solver_velocity_t *rows) {
+/* Packs order[0 .. count) (at most LANES contacts) into batch number i. */
+static void load_batch(solver_wide_t *wide, size_t i, const uint32_t *order, int count,
+                       bool block, const solver_contact_t *contacts,
+                       const solver_velocity_t *rows) {
+    solver_batch_t *batch = &wide->batches[i];
+    solver_position_batch_t *position = &wide->position_batches[i];
     memset(batch, 0, sizeof *batch);
-    batch->lanes = count;
+    memset(position, 0, sizeof *position);
+    batch->lanes = position->lanes = count;
     batch->block = block;
-    for (int l = 0; l < count; l++) load_lane(batch, l, &contacts[order[l]], order[l], rows);
+    for (int l = 0; l < count; l++) {
+        load_lane(batch, l, &contacts[order[l]], order[l], rows);
+        load_position_lane(position, l, &contacts[order[l]], rows);
+    }
 }
 
 /* Orders the contacts by colour, and within a colour block solves first;
@@ -272,6 +377,8 @@ void solver_wide_load(solver_wide_t *wide, const solver_contact_t *contacts, siz
     /* At most one partly filled batch per group. */
     memory_reserve((void **)&wide->batches, &wide->batch_capacity, count / LANES + GROUPS,
                    sizeof(solver_batch_t));
+    memory_reserve((void **)&wide->position_batches, &wide->position_batch_capacity,
+                   count / LANES + GROUPS, sizeof(solver_position_batch_t));
     coloring_assign(&wide->coloring, contacts, count, rows, body_count, wide->colors);
     uint32_t start[GROUPS + 1];
     sort_by_color(wide, contacts, count, start);
@@ -279,8 +386,8 @@ void solver_wide_load(solver_wide_t *wide, const solver_contact_t *contacts, siz
     for (int g = 0; g < GROUPS; g++) {
         for (uint32_t i = start[g]; i < start[g + 1]; i += LANES) {
             int n = (int)(start[g + 1] - i < LANES ? start[g + 1] - i : LANES);
-            load_batch(&wide->batches[wide->batch_count++], wide->order + i, n, g % 2 == 0,
-                       contacts, rows);
+            load_batch(wide, wide->batch_count++, wide->order + i, n, g % 2 == 0, contacts,
+                       rows);
         }
     }
 }
@@ -303,6 +410,7 @@ void solver_wide_free(solver_wide_t *wide) {
     memory_free(wide->colors);
     memory_free(wide->order);
     memory_free(wide->batches);
+    memory_free(wide->position_batches);
     memory_free(wide->loose);
     memset(wide, 0, sizeof *wide);
 }

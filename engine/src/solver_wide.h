@@ -2,7 +2,7 @@
 #define SOLVER_WIDE_H
 
 /*
- * The velocity iterations four contacts at a time. Contacts of one colour
+ * The velocity and position iterations four contacts at a time. Contacts of one colour
  * (coloring.h) share no movable body, so four of them are packed lane by
  * lane into a batch, structure-of-arrays, and solved with vector arithmetic:
  * the same friction, two-point block and one-point solves as solver.c, in
@@ -28,6 +28,7 @@
 #include "solver.h"
 
 typedef struct solver_batch solver_batch_t;
+typedef struct solver_position_batch solver_position_batch_t;
 
 struct solver_wide {
     coloring_t coloring;
@@ -37,6 +38,8 @@ struct solver_wide {
     size_t order_capacity;
     solver_batch_t *batches;
     size_t batch_count, batch_capacity;
+    solver_position_batch_t *position_batches; /* the same contacts, for the position pass */
+    size_t position_batch_capacity;
     uint32_t *loose;
     size_t loose_count, loose_capacity;
 };
@@ -50,6 +53,16 @@ void solver_wide_load(solver_wide_t *wide, const solver_contact_t *contacts, siz
 
 /* One velocity iteration over every batch, colour by colour. */
 void solver_wide_iterate(solver_wide_t *wide, solver_velocity_t *rows);
+
+/* One position iteration (solver.c's solve_position) over every batch,
+ * colour by colour, from the last batch back when backward. Within a colour
+ * the contacts are corrected side by side, so a one-way sweep leaves the
+ * colours solved first at a disadvantage; sweeping back and forth in turn
+ * restores the quality of solving in contact order (pyramid(40) top box
+ * 0.086 m down against 0.093 m one-way and 0.084 m in contact order; the
+ * velocity iterations, swept the same way, got worse, 0.18 m). */
+void solver_wide_correct_positions(solver_wide_t *wide, solver_displacement_t *displacements,
+                                   bool backward);
 
 /* Writes the batches' accumulated impulses back to their contacts. */
 void solver_wide_store(const solver_wide_t *wide, solver_contact_t *contacts);

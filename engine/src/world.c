@@ -46,6 +46,8 @@ struct world {
     size_t velocity_capacity;
     solver_state_t *states;
     size_t state_capacity;
+    solver_displacement_t *displacements;
+    size_t displacement_capacity;
     double *margins;
     size_t margin_capacity;
 
@@ -84,6 +86,7 @@ void world_free(world_t *world) {
     memory_free(world->proxies);
     memory_free(world->velocities);
     memory_free(world->states);
+    memory_free(world->displacements);
     memory_free(world->margins);
     memory_free(world->contacts);
     memory_free(world->anchors);
@@ -107,6 +110,8 @@ static void reserve_rows(world_t *world, size_t count) {
     memory_reserve((void **)&world->velocities, &world->velocity_capacity, count,
                    sizeof(solver_velocity_t));
     memory_reserve((void **)&world->states, &world->state_capacity, count, sizeof(solver_state_t));
+    memory_reserve((void **)&world->displacements, &world->displacement_capacity, count,
+                   sizeof(solver_displacement_t));
     memory_reserve((void **)&world->proxies, &world->proxy_capacity, count,
                    sizeof(broadphase_proxy_t));
     memory_reserve((void **)&world->margins, &world->margin_capacity, count, sizeof(double));
@@ -288,6 +293,7 @@ static void write_back(world_t *world, body_t **bodies, size_t count, const worl
     for (size_t i = 0; i < count; i++) {
         const solver_velocity_t *velocity = &world->velocities[i];
         const solver_state_t *state = &world->states[i];
+        const solver_displacement_t *moved = &world->displacements[i];
         body_t *body = bodies[i];
         if (body->inverse_mass > 0.0) {
             vector_t change = vec_subtract(velocity->v, state->v_free);
@@ -298,9 +304,9 @@ static void write_back(world_t *world, body_t **bodies, size_t count, const worl
         }
         vector_t drift = vec_multiply(step->dt, vec_add(vec_multiply(1.0 - w, state->v_start),
                                                         vec_multiply(w, velocity->v)));
-        body->position_correction = vec_subtract(state->dx, drift);
+        body->position_correction = vec_subtract(moved->dx, drift);
         body->angle_correction =
-            state->dtheta - step->dt * ((1.0 - w) * state->w_start + w * velocity->w);
+            moved->dtheta - step->dt * ((1.0 - w) * state->w_start + w * velocity->w);
     }
 }
 
@@ -313,8 +319,9 @@ void world_step(world_t *world, body_t **bodies, size_t count, const world_step_
     narrowphase(world, bodies, pairs, pair_count);
     solver_settings_t settings = {step->dt, integrator_position_weight(step->integrator),
                                   world->velocity_iterations, world->position_iterations};
-    solver_solve(&world->wide, world->contacts, world->anchors, world->contact_count,
-                 world->velocities, world->states, count, &settings);
+    solver_bodies_t rows = {world->velocities, world->displacements, world->states, count};
+    solver_solve(&world->wide, world->contacts, world->anchors, world->contact_count, &rows,
+                 &settings);
     write_back(world, bodies, count, step);
 
     stats->broadphase_pairs += pair_count;
