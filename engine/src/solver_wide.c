@@ -32,42 +32,60 @@ typedef struct {
     lane_t a, b;
 } lane_lever_t;
 
-typedef struct {
+struct lane_point {
     lane_lever_t rn, rt;
     lane_t normal_mass, tangent_mass, target;
     lane_t normal_impulse, tangent_impulse;
-} lane_point_t;
+};
 
-/* Up to four contacts of one colour, all solved by the block solve or all
- * point by point. A missing second point, and a lane without a contact,
- * hold zeros: zero masses give zero impulses. */
+/* What the block solve adds to a batch of two-point contacts: the 2x2
+ * normal effective-mass matrix K and its inverse. */
+struct lane_block {
+    lane_t k11, k12, k22, m11, m12, m22;
+};
+
+/*
+ * Up to four contacts of one colour and one kind. The batches of a step lie
+ * in colour order, and their variable parts follow in arrays of their own,
+ * in the same order: a batch's 1 or 2 points in wide->points, a block
+ * batch's matrices in wide->blocks. So a sweep reads three arrays straight
+ * through, and a one-point contact (half of a pile's) costs one point, not
+ * two. A lane without a contact holds zeros (zero masses give zero
+ * impulses) and reads body row 0.
+ */
+typedef enum { BATCH_BLOCK, BATCH_PAIR, BATCH_SINGLE, BATCH_KINDS } batch_kind_t;
+
 struct solver_batch {
     lane_vector_t normal;
     lane_t friction;
-    lane_t ma, mb, ia, ib;
-    lane_t k11, k12, k22, m11, m12, m22; /* block batches only */
-    lane_point_t points[2];
-    uint32_t a[LANES], b[LANES]; /* body rows; empty lanes read row 0 */
+    uint32_t a[LANES], b[LANES];
     uint32_t contact[LANES];
-    int lanes;
-    bool block;
+    uint8_t lanes, kind;
 };
 
-/* The same contacts, with what the position pass needs. */
+/* The same contacts, with what the position pass needs; their points
+ * follow in wide->position_points. */
 struct solver_position_batch {
     lane_vector_t normal;
     lane_t ma, mb, ia, ib, rate;
-    struct {
-        lane_lever_t rn;
-        lane_t normal_mass, separation;
-    } points[2];
     uint32_t a[LANES], b[LANES];
-    int lanes;
+    uint8_t lanes, point_count;
 };
 
-/* The two bodies' velocities in a batch, lane by lane. */
+struct solver_position_point {
+    lane_lever_t rn;
+    lane_t normal_mass, separation;
+};
+
+static int kind_points(batch_kind_t kind) {
+    return kind == BATCH_SINGLE ? 1 : 2;
+}
+
+/* The two bodies of a batch, lane by lane: velocities, and the inverse
+ * masses, which share the velocities' cache line. */
 typedef struct {
     lane_t vx, vy, w;
+    lane_t inverse_mass, inverse_inertia;
 } lane_body_t;
 
 /* yes where condition holds, no elsewhere; and scalar.h's max_of and
@@ -86,11 +104,15 @@ LANE_INLINE lane_body_t gather(const solver_velocity_t *rows, const uint32_t ind
         .vx = {r0->v.x, r1->v.x, r2->v.x, r3->v.x},
         .vy = {r0->v.y, r1->v.y, r2->v.y, r3->v.y},
         .w = {r0->w, r1->w, r2->w, r3->w},
+        .inverse_mass = {r0->inverse_mass, r1->inverse_mass, r2->inverse_mass,
+                         r3->inverse_mass},
+        .inverse_inertia = {r0->inverse_inertia, r1->inverse_inertia, r2->inverse_inertia,
+                            r3->inverse_inertia},
     };
 }
 
 LANE_INLINE void scatter(solver_velocity_t *rows, const uint32_t index[LANES], int lanes,
-                           const lane_body_t *body) {
+                         const lane_body_t *body) {
     for (int l = 0; l < lanes; l++) {
         solver_velocity_t *row = &rows[index[l]];
         row->v.x = body->vx[l];
@@ -99,71 +121,73 @@ LANE_INLINE void scatter(solver_velocity_t *rows, const uint32_t index[LANES], i
     }
 }
 
-/* Relative velocity of b over a along (dx, dy), lever terms rd_a, rd_b. */
-/* Directions and lever terms go by pointer: vectors passed by value would
+/* Relative velocity of b over a along direction d, lever terms r.
+ * Directions and lever terms go by pointer: vectors passed by value would
  * go through memory on the baseline instruction set. */
 LANE_INLINE lane_t relative_along(const lane_body_t *a, const lane_body_t *b,
                                   const lane_vector_t *d, const lane_lever_t *r) {
     return d->x * (b->vx - a->vx) + d->y * (b->vy - a->vy) + b->w * r->b - a->w * r->a;
 }
 
-LANE_INLINE void apply_along(const solver_batch_t *batch, lane_body_t *a, lane_body_t *b,
-                             const lane_vector_t *d, const lane_lever_t *r,
-                             const lane_t *impulse) {
+LANE_INLINE void apply_along(lane_body_t *a, lane_body_t *b, const lane_vector_t *d,
+                             const lane_lever_t *r, const lane_t *impulse) {
     lane_t lambda = *impulse;
-    a->vx -= batch->ma * lambda * d->x;
-    a->vy -= batch->ma * lambda * d->y;
-    a->w -= batch->ia * lambda * r->a;
-    b->vx += batch->mb * lambda * d->x;
-    b->vy += batch->mb * lambda * d->y;
-    b->w += batch->ib * lambda * r->b;
+    a->vx -= a->inverse_mass * lambda * d->x;
+    a->vy -= a->inverse_mass * lambda * d->y;
+    a->w -= a->inverse_inertia * lambda * r->a;
+    b->vx += b->inverse_mass * lambda * d->x;
+    b->vy += b->inverse_mass * lambda * d->y;
+    b->w += b->inverse_inertia * lambda * r->b;
 }
 
-LANE_INLINE void solve_friction(solver_batch_t *batch, lane_body_t *a, lane_body_t *b) {
+LANE_INLINE void solve_friction(const solver_batch_t *batch, lane_point_t *points, int count,
+                                lane_body_t *a, lane_body_t *b) {
     lane_vector_t tangent = {-batch->normal.y, batch->normal.x};
-    for (int i = 0; i < 2; i++) {
-        lane_point_t *p = &batch->points[i];
+    for (int i = 0; i < count; i++) {
+        lane_point_t *p = &points[i];
         lane_t vt = relative_along(a, b, &tangent, &p->rt);
         lane_t limit = batch->friction * p->normal_impulse;
         lane_t wanted = p->tangent_impulse - p->tangent_mass * vt;
         lane_t total = max_lane(-limit, min_lane(wanted, limit));
         lane_t delta = total - p->tangent_impulse;
         p->tangent_impulse = total;
-        apply_along(batch, a, b, &tangent, &p->rt, &delta);
+        apply_along(a, b, &tangent, &p->rt, &delta);
     }
 }
 
-LANE_INLINE void solve_normal_points(solver_batch_t *batch, lane_body_t *a, lane_body_t *b) {
+LANE_INLINE void solve_normal_points(const solver_batch_t *batch, lane_point_t *points, int count,
+                                     lane_body_t *a, lane_body_t *b) {
     const lane_t zero = {0.0, 0.0, 0.0, 0.0};
-    for (int i = 0; i < 2; i++) {
-        lane_point_t *p = &batch->points[i];
+    for (int i = 0; i < count; i++) {
+        lane_point_t *p = &points[i];
         lane_t vn = relative_along(a, b, &batch->normal, &p->rn);
         lane_t wanted = p->normal_impulse - p->normal_mass * (vn - p->target);
         lane_t total = max_lane(wanted, zero);
         lane_t delta = total - p->normal_impulse;
         p->normal_impulse = total;
-        apply_along(batch, a, b, &batch->normal, &p->rn, &delta);
+        apply_along(a, b, &batch->normal, &p->rn, &delta);
     }
 }
 
 /* solver.c's block solve with its four cases evaluated in every lane and
  * the first that holds selected (the case order is the scalar one). */
-LANE_INLINE void solve_normal_block(solver_batch_t *batch, lane_body_t *a, lane_body_t *b) {
+LANE_INLINE void solve_normal_block(const solver_batch_t *batch, lane_point_t *points,
+                                    const lane_block_t *k, lane_body_t *a, lane_body_t *b) {
     const lane_t zero = {0.0, 0.0, 0.0, 0.0};
-    lane_point_t *p1 = &batch->points[0], *p2 = &batch->points[1];
+    lane_point_t *p1 = &points[0], *p2 = &points[1];
     lane_t a1 = p1->normal_impulse, a2 = p2->normal_impulse;
     lane_t b1 = relative_along(a, b, &batch->normal, &p1->rn) - p1->target;
     lane_t b2 = relative_along(a, b, &batch->normal, &p2->rn) - p2->target;
-    b1 -= batch->k11 * a1 + batch->k12 * a2;
-    b2 -= batch->k12 * a1 + batch->k22 * a2;
+    b1 -= k->k11 * a1 + k->k12 * a2;
+    b2 -= k->k12 * a1 + k->k22 * a2;
 
-    lane_t both1 = -(batch->m11 * b1 + batch->m12 * b2);
-    lane_t both2 = -(batch->m12 * b1 + batch->m22 * b2);
+    lane_t both1 = -(k->m11 * b1 + k->m12 * b2);
+    lane_t both2 = -(k->m12 * b1 + k->m22 * b2);
     mask_t both = (mask_t)(both1 >= zero) & (mask_t)(both2 >= zero);
     lane_t first = -p1->normal_mass * b1;
-    mask_t first_only = (mask_t)(first >= zero) & (mask_t)(batch->k12 * first + b2 >= zero);
+    mask_t first_only = (mask_t)(first >= zero) & (mask_t)(k->k12 * first + b2 >= zero);
     lane_t second = -p2->normal_mass * b2;
-    mask_t second_only = (mask_t)(second >= zero) & (mask_t)(batch->k12 * second + b1 >= zero);
+    mask_t second_only = (mask_t)(second >= zero) & (mask_t)(k->k12 * second + b1 >= zero);
     mask_t neither = (mask_t)(b1 >= zero) & (mask_t)(b2 >= zero);
 
     lane_t x1 = select_lane(neither, zero, a1), x2 = select_lane(neither, zero, a2);
@@ -176,12 +200,12 @@ LANE_INLINE void solve_normal_block(solver_batch_t *batch, lane_body_t *a, lane_
 
     lane_t d1 = x1 - a1, d2 = x2 - a2;
     lane_t total = d1 + d2;
-    a->vx -= batch->ma * total * batch->normal.x;
-    a->vy -= batch->ma * total * batch->normal.y;
-    a->w -= batch->ia * (d1 * p1->rn.a + d2 * p2->rn.a);
-    b->vx += batch->mb * total * batch->normal.x;
-    b->vy += batch->mb * total * batch->normal.y;
-    b->w += batch->ib * (d1 * p1->rn.b + d2 * p2->rn.b);
+    a->vx -= a->inverse_mass * total * batch->normal.x;
+    a->vy -= a->inverse_mass * total * batch->normal.y;
+    a->w -= a->inverse_inertia * (d1 * p1->rn.a + d2 * p2->rn.a);
+    b->vx += b->inverse_mass * total * batch->normal.x;
+    b->vy += b->inverse_mass * total * batch->normal.y;
+    b->w += b->inverse_inertia * (d1 * p1->rn.b + d2 * p2->rn.b);
     p1->normal_impulse = x1;
     p2->normal_impulse = x2;
 }
@@ -192,17 +216,45 @@ LANE_INLINE void solve_normal_block(solver_batch_t *batch, lane_body_t *a, lane_
  * loader picks the one the processor runs. Neither uses fused
  * multiply-add, so both give the same numbers. */
 #if defined(__x86_64__) && defined(__GNUC__) && defined(__ELF__)
-__attribute__((target_clones("avx2", "default")))
+#define LANE_CLONES __attribute__((target_clones("avx2", "default")))
+#else
+#define LANE_CLONES
 #endif
+
+/* The rows of a batch two ahead are fetched while this one is solved: the
+ * rows are scattered over the body array, and waiting for them was the
+ * largest cost of a sweep (measured). */
+LANE_INLINE void prefetch_rows(const solver_velocity_t *rows, const solver_batch_t *batch) {
+    for (int l = 0; l < LANES; l++) {
+        __builtin_prefetch(&rows[batch->a[l]]);
+        __builtin_prefetch(&rows[batch->b[l]]);
+    }
+}
+
+LANE_CLONES
 void solver_wide_iterate(solver_wide_t *wide, solver_velocity_t *rows) {
+    lane_point_t *points = wide->points;
+    const lane_block_t *blocks = wide->blocks;
     for (size_t i = 0; i < wide->batch_count; i++) {
-        solver_batch_t *batch = &wide->batches[i];
+        const solver_batch_t *batch = &wide->batches[i];
+        if (i + 2 < wide->batch_count) prefetch_rows(rows, &wide->batches[i + 2]);
         lane_body_t a = gather(rows, batch->a), b = gather(rows, batch->b);
-        solve_friction(batch, &a, &b);
-        if (batch->block) {
-            solve_normal_block(batch, &a, &b);
-        } else {
-            solve_normal_points(batch, &a, &b);
+        switch (batch->kind) {
+        case BATCH_BLOCK:
+            solve_friction(batch, points, 2, &a, &b);
+            solve_normal_block(batch, points, blocks++, &a, &b);
+            points += 2;
+            break;
+        case BATCH_PAIR:
+            solve_friction(batch, points, 2, &a, &b);
+            solve_normal_points(batch, points, 2, &a, &b);
+            points += 2;
+            break;
+        default:
+            solve_friction(batch, points, 1, &a, &b);
+            solve_normal_points(batch, points, 1, &a, &b);
+            points += 1;
+            break;
         }
         scatter(rows, batch->a, batch->lanes, &a);
         scatter(rows, batch->b, batch->lanes, &b);
@@ -236,21 +288,22 @@ LANE_INLINE void scatter_displacements(solver_displacement_t *rows, const uint32
 }
 
 /* solver.c's solve_position, lane by lane. */
-LANE_INLINE void correct_batch(const solver_position_batch_t *batch, lane_displacement_t *a,
+LANE_INLINE void correct_batch(const solver_position_batch_t *batch,
+                               const solver_position_point_t *points, lane_displacement_t *a,
                                lane_displacement_t *b) {
     const lane_t zero = {0.0, 0.0, 0.0, 0.0};
     const lane_t slop = zero + SOLVER_LINEAR_SLOP;
     const lane_t most = zero - SOLVER_MAX_POSITION_CORRECTION;
     const lane_vector_t *n = &batch->normal;
-    for (int i = 0; i < 2; i++) {
-        const lane_lever_t *rn = &batch->points[i].rn;
-        lane_t separation = batch->points[i].separation +
+    for (int i = 0; i < batch->point_count; i++) {
+        const lane_lever_t *rn = &points[i].rn;
+        lane_t separation = points[i].separation +
                             (n->x * (b->dx - a->dx) + n->y * (b->dy - a->dy)) +
                             b->dtheta * rn->b - a->dtheta * rn->a;
         lane_t wanted = batch->rate * (separation + slop);
         lane_t capped = min_lane(wanted, zero);
         lane_t error = max_lane(most, capped);
-        lane_t lambda = -error * batch->points[i].normal_mass;
+        lane_t lambda = -error * points[i].normal_mass;
         a->dx -= batch->ma * lambda * n->x;
         a->dy -= batch->ma * lambda * n->y;
         a->dtheta -= batch->ia * lambda * rn->a;
@@ -260,62 +313,64 @@ LANE_INLINE void correct_batch(const solver_position_batch_t *batch, lane_displa
     }
 }
 
-#if defined(__x86_64__) && defined(__GNUC__) && defined(__ELF__)
-__attribute__((target_clones("avx2", "default")))
-#endif
+LANE_INLINE void correct_one(const solver_position_batch_t *batch,
+                             const solver_position_point_t *points,
+                             solver_displacement_t *displacements) {
+    lane_displacement_t a = gather_displacements(displacements, batch->a);
+    lane_displacement_t b = gather_displacements(displacements, batch->b);
+    correct_batch(batch, points, &a, &b);
+    scatter_displacements(displacements, batch->a, batch->lanes, &a);
+    scatter_displacements(displacements, batch->b, batch->lanes, &b);
+}
+
+LANE_CLONES
 void solver_wide_correct_positions(solver_wide_t *wide, solver_displacement_t *displacements,
                                    bool backward) {
     size_t count = wide->batch_count;
-    for (size_t k = 0; k < count; k++) {
-        const solver_position_batch_t *batch = &wide->position_batches[backward ? count - 1 - k : k];
-        lane_displacement_t a = gather_displacements(displacements, batch->a);
-        lane_displacement_t b = gather_displacements(displacements, batch->b);
-        correct_batch(batch, &a, &b);
-        scatter_displacements(displacements, batch->a, batch->lanes, &a);
-        scatter_displacements(displacements, batch->b, batch->lanes, &b);
+    if (!backward) {
+        const solver_position_point_t *points = wide->position_points;
+        for (size_t i = 0; i < count; i++) {
+            const solver_position_batch_t *batch = &wide->position_batches[i];
+            correct_one(batch, points, displacements);
+            points += batch->point_count;
+        }
+        return;
+    }
+    const solver_position_point_t *points = wide->position_points + wide->point_count;
+    for (size_t i = count; i-- > 0;) {
+        const solver_position_batch_t *batch = &wide->position_batches[i];
+        points -= batch->point_count;
+        correct_one(batch, points, displacements);
     }
 }
 
-static void load_position_lane(solver_position_batch_t *batch, int l, const solver_contact_t *c,
-                               const solver_velocity_t *rows) {
-    batch->a[l] = c->a;
-    batch->b[l] = c->b;
-    batch->normal.x[l] = c->normal.x;
-    batch->normal.y[l] = c->normal.y;
-    batch->ma[l] = rows[c->a].inverse_mass;
-    batch->mb[l] = rows[c->b].inverse_mass;
-    batch->ia[l] = rows[c->a].inverse_inertia;
-    batch->ib[l] = rows[c->b].inverse_inertia;
-    batch->rate[l] = c->position_rate;
-    for (int i = 0; i < c->point_count; i++) {
-        batch->points[i].rn.a[l] = c->points[i].rn_a;
-        batch->points[i].rn.b[l] = c->points[i].rn_b;
-        batch->points[i].normal_mass[l] = c->points[i].normal_mass;
-        batch->points[i].separation[l] = c->points[i].separation;
-    }
-}
-
-static void load_lane(solver_batch_t *batch, int l, const solver_contact_t *c, uint32_t index,
+static void load_lane(solver_wide_t *wide, const solver_contact_t *c, uint32_t index, int l,
                       const solver_velocity_t *rows) {
-    batch->a[l] = c->a;
-    batch->b[l] = c->b;
+    solver_batch_t *batch = &wide->batches[wide->batch_count];
+    solver_position_batch_t *position = &wide->position_batches[wide->batch_count];
+    batch->a[l] = position->a[l] = c->a;
+    batch->b[l] = position->b[l] = c->b;
     batch->contact[l] = index;
-    batch->normal.x[l] = c->normal.x;
-    batch->normal.y[l] = c->normal.y;
+    batch->normal.x[l] = position->normal.x[l] = c->normal.x;
+    batch->normal.y[l] = position->normal.y[l] = c->normal.y;
     batch->friction[l] = c->friction;
-    batch->ma[l] = rows[c->a].inverse_mass;
-    batch->mb[l] = rows[c->b].inverse_mass;
-    batch->ia[l] = rows[c->a].inverse_inertia;
-    batch->ib[l] = rows[c->b].inverse_inertia;
-    batch->k11[l] = c->k11;
-    batch->k12[l] = c->k12;
-    batch->k22[l] = c->k22;
-    batch->m11[l] = c->m11;
-    batch->m12[l] = c->m12;
-    batch->m22[l] = c->m22;
+    position->ma[l] = rows[c->a].inverse_mass;
+    position->mb[l] = rows[c->b].inverse_mass;
+    position->ia[l] = rows[c->a].inverse_inertia;
+    position->ib[l] = rows[c->b].inverse_inertia;
+    position->rate[l] = c->position_rate;
+    if (batch->kind == BATCH_BLOCK) {
+        lane_block_t *k = &wide->blocks[wide->block_count];
+        k->k11[l] = c->k11;
+        k->k12[l] = c->k12;
+        k->k22[l] = c->k22;
+        k->m11[l] = c->m11;
+        k->m12[l] = c->m12;
+        k->m22[l] = c->m22;
+    }
     for (int i = 0; i < c->point_count; i++) {
         const solver_point_t *p = &c->points[i];
-        lane_point_t *lp = &batch->points[i];
+        lane_point_t *lp = &wide->points[wide->point_count + (size_t)i];
         lp->rn.a[l] = p->rn_a;
         lp->rn.b[l] = p->rn_b;
         lp->rt.a[l] = p->rt_a;
@@ -325,31 +380,48 @@ static void load_lane(solver_batch_t *batch, int l, const solver_contact_t *c, u
         lp->target[l] = p->target;
         lp->normal_impulse[l] = p->normal_impulse;
         lp->tangent_impulse[l] = p->tangent_impulse;
+        solver_position_point_t *pp = &wide->position_points[wide->point_count + (size_t)i];
+        pp->rn.a[l] = p->rn_a;
+        pp->rn.b[l] = p->rn_b;
+        pp->normal_mass[l] = p->normal_mass;
+        pp->separation[l] = p->separation;
     }
 }
 
-/* Packs order[0 .. count) (at most LANES contacts) into batch number i. */
-static void load_batch(solver_wide_t *wide, size_t i, const uint32_t *order, int count,
-                       bool block, const solver_contact_t *contacts,
-                       const solver_velocity_t *rows) {
-    solver_batch_t *batch = &wide->batches[i];
-    solver_position_batch_t *position = &wide->position_batches[i];
+/* Packs order[0 .. count) (at most LANES contacts of one kind) into the
+ * next batch, its points and its block. */
+static void load_batch(solver_wide_t *wide, const uint32_t *order, int count, batch_kind_t kind,
+                       const solver_contact_t *contacts, const solver_velocity_t *rows) {
+    int points = kind_points(kind);
+    solver_batch_t *batch = &wide->batches[wide->batch_count];
+    solver_position_batch_t *position = &wide->position_batches[wide->batch_count];
     memset(batch, 0, sizeof *batch);
     memset(position, 0, sizeof *position);
-    batch->lanes = position->lanes = count;
-    batch->block = block;
-    for (int l = 0; l < count; l++) {
-        load_lane(batch, l, &contacts[order[l]], order[l], rows);
-        load_position_lane(position, l, &contacts[order[l]], rows);
-    }
+    memset(&wide->points[wide->point_count], 0, (size_t)points * sizeof(lane_point_t));
+    memset(&wide->position_points[wide->point_count], 0,
+           (size_t)points * sizeof(solver_position_point_t));
+    if (kind == BATCH_BLOCK) memset(&wide->blocks[wide->block_count], 0, sizeof(lane_block_t));
+    batch->lanes = position->lanes = (uint8_t)count;
+    batch->kind = (uint8_t)kind;
+    position->point_count = (uint8_t)points;
+    for (int l = 0; l < count; l++) load_lane(wide, &contacts[order[l]], order[l], l, rows);
+    wide->batch_count++;
+    wide->point_count += (size_t)points;
+    wide->block_count += kind == BATCH_BLOCK;
 }
 
-/* Orders the contacts by colour, and within a colour block solves first;
- * the uncoloured go to the loose list. Returns the group boundaries in
- * start (2 * COLORING_MAX_COLORS + 1 entries). */
+static batch_kind_t kind_of(const solver_contact_t *c) {
+    if (c->block) return BATCH_BLOCK;
+    return c->point_count == 2 ? BATCH_PAIR : BATCH_SINGLE;
+}
+
+enum { GROUPS = BATCH_KINDS * COLORING_MAX_COLORS };
+
+/* Orders the contacts by colour, and within a colour by kind; the
+ * uncoloured go to the loose list. Fills start (GROUPS + 1 entries) with
+ * the group boundaries in wide->order. */
 static void sort_by_color(solver_wide_t *wide, const solver_contact_t *contacts, size_t count,
                           uint32_t *start) {
-    enum { GROUPS = 2 * COLORING_MAX_COLORS };
     memset(start, 0, (GROUPS + 1) * sizeof(uint32_t));
     wide->loose_count = 0;
     for (size_t i = 0; i < count; i++) {
@@ -357,51 +429,61 @@ static void sort_by_color(solver_wide_t *wide, const solver_contact_t *contacts,
             wide->loose[wide->loose_count++] = (uint32_t)i;
             continue;
         }
-        start[2 * wide->colors[i] + !contacts[i].block + 1]++;
+        start[BATCH_KINDS * wide->colors[i] + kind_of(&contacts[i]) + 1]++;
     }
     for (int g = 0; g < GROUPS; g++) start[g + 1] += start[g];
     uint32_t next[GROUPS];
     memcpy(next, start, sizeof next);
     for (size_t i = 0; i < count; i++) {
         if (wide->colors[i] == COLORING_NONE) continue;
-        wide->order[next[2 * wide->colors[i] + !contacts[i].block]++] = (uint32_t)i;
+        wide->order[next[BATCH_KINDS * wide->colors[i] + kind_of(&contacts[i])]++] = (uint32_t)i;
     }
+}
+
+static void reserve(solver_wide_t *wide, size_t count) {
+    /* At most one partly filled batch per group. */
+    size_t batches = count / LANES + GROUPS;
+    memory_reserve((void **)&wide->colors, &wide->color_capacity, count, sizeof(uint8_t));
+    memory_reserve((void **)&wide->order, &wide->order_capacity, count, sizeof(uint32_t));
+    memory_reserve((void **)&wide->loose, &wide->loose_capacity, count, sizeof(uint32_t));
+    memory_reserve((void **)&wide->batches, &wide->batch_capacity, batches,
+                   sizeof(solver_batch_t));
+    memory_reserve((void **)&wide->position_batches, &wide->position_batch_capacity, batches,
+                   sizeof(solver_position_batch_t));
+    memory_reserve((void **)&wide->points, &wide->point_capacity, 2 * batches,
+                   sizeof(lane_point_t));
+    memory_reserve((void **)&wide->position_points, &wide->position_point_capacity, 2 * batches,
+                   sizeof(solver_position_point_t));
+    memory_reserve((void **)&wide->blocks, &wide->block_capacity, batches, sizeof(lane_block_t));
 }
 
 void solver_wide_load(solver_wide_t *wide, const solver_contact_t *contacts, size_t count,
                       const solver_velocity_t *rows, size_t body_count) {
-    enum { GROUPS = 2 * COLORING_MAX_COLORS };
-    memory_reserve((void **)&wide->colors, &wide->color_capacity, count, sizeof(uint8_t));
-    memory_reserve((void **)&wide->order, &wide->order_capacity, count, sizeof(uint32_t));
-    memory_reserve((void **)&wide->loose, &wide->loose_capacity, count, sizeof(uint32_t));
-    /* At most one partly filled batch per group. */
-    memory_reserve((void **)&wide->batches, &wide->batch_capacity, count / LANES + GROUPS,
-                   sizeof(solver_batch_t));
-    memory_reserve((void **)&wide->position_batches, &wide->position_batch_capacity,
-                   count / LANES + GROUPS, sizeof(solver_position_batch_t));
+    reserve(wide, count);
     coloring_assign(&wide->coloring, contacts, count, rows, body_count, wide->colors);
     uint32_t start[GROUPS + 1];
     sort_by_color(wide, contacts, count, start);
-    wide->batch_count = 0;
+    wide->batch_count = wide->point_count = wide->block_count = 0;
     for (int g = 0; g < GROUPS; g++) {
         for (uint32_t i = start[g]; i < start[g + 1]; i += LANES) {
             int n = (int)(start[g + 1] - i < LANES ? start[g + 1] - i : LANES);
-            load_batch(wide, wide->batch_count++, wide->order + i, n, g % 2 == 0, contacts,
-                       rows);
+            load_batch(wide, wide->order + i, n, (batch_kind_t)(g % BATCH_KINDS), contacts, rows);
         }
     }
 }
 
 void solver_wide_store(const solver_wide_t *wide, solver_contact_t *contacts) {
+    const lane_point_t *points = wide->points;
     for (size_t i = 0; i < wide->batch_count; i++) {
         const solver_batch_t *batch = &wide->batches[i];
         for (int l = 0; l < batch->lanes; l++) {
             solver_contact_t *c = &contacts[batch->contact[l]];
             for (int k = 0; k < c->point_count; k++) {
-                c->points[k].normal_impulse = batch->points[k].normal_impulse[l];
-                c->points[k].tangent_impulse = batch->points[k].tangent_impulse[l];
+                c->points[k].normal_impulse = points[k].normal_impulse[l];
+                c->points[k].tangent_impulse = points[k].tangent_impulse[l];
             }
         }
+        points += kind_points((batch_kind_t)batch->kind);
     }
 }
 
@@ -411,6 +493,9 @@ void solver_wide_free(solver_wide_t *wide) {
     memory_free(wide->order);
     memory_free(wide->batches);
     memory_free(wide->position_batches);
+    memory_free(wide->points);
+    memory_free(wide->position_points);
+    memory_free(wide->blocks);
     memory_free(wide->loose);
     memset(wide, 0, sizeof *wide);
 }

@@ -29,6 +29,9 @@
 
 typedef struct solver_batch solver_batch_t;
 typedef struct solver_position_batch solver_position_batch_t;
+typedef struct solver_position_point solver_position_point_t;
+typedef struct lane_point lane_point_t;
+typedef struct lane_block lane_block_t;
 
 struct solver_wide {
     coloring_t coloring;
@@ -40,6 +43,13 @@ struct solver_wide {
     size_t batch_count, batch_capacity;
     solver_position_batch_t *position_batches; /* the same contacts, for the position pass */
     size_t position_batch_capacity;
+    /* The batches' points (1 or 2 each, in batch order) and the block
+     * batches' matrices (in batch order). */
+    lane_point_t *points;
+    solver_position_point_t *position_points;
+    size_t point_count, point_capacity, position_point_capacity;
+    lane_block_t *blocks;
+    size_t block_count, block_capacity;
     uint32_t *loose;
     size_t loose_count, loose_capacity;
 };
