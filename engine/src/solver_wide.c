@@ -395,12 +395,16 @@ static void load_batch(solver_wide_t *wide, const uint32_t *order, int count, ba
     int points = kind_points(kind);
     solver_batch_t *batch = &wide->batches[wide->batch_count];
     solver_position_batch_t *position = &wide->position_batches[wide->batch_count];
-    memset(batch, 0, sizeof *batch);
-    memset(position, 0, sizeof *position);
-    memset(&wide->points[wide->point_count], 0, (size_t)points * sizeof(lane_point_t));
-    memset(&wide->position_points[wide->point_count], 0,
-           (size_t)points * sizeof(solver_position_point_t));
-    if (kind == BATCH_BLOCK) memset(&wide->blocks[wide->block_count], 0, sizeof(lane_block_t));
+    if (count < LANES) { /* a full batch has every lane written below */
+        memset(batch, 0, sizeof *batch);
+        memset(position, 0, sizeof *position);
+        memset(&wide->points[wide->point_count], 0, (size_t)points * sizeof(lane_point_t));
+        memset(&wide->position_points[wide->point_count], 0,
+               (size_t)points * sizeof(solver_position_point_t));
+        if (kind == BATCH_BLOCK) {
+            memset(&wide->blocks[wide->block_count], 0, sizeof(lane_block_t));
+        }
+    }
     batch->lanes = position->lanes = (uint8_t)count;
     batch->kind = (uint8_t)kind;
     position->point_count = (uint8_t)points;

@@ -199,7 +199,7 @@ static void add_contact(world_t *world, body_t *a, body_t *b, uint64_t key,
     solver_contact_t *contact = &world->contacts[n];
     solver_anchor_t *anchor = &world->anchors[n];
     contact_source_t *source = &world->sources[n];
-    memset(contact, 0, sizeof *contact);
+    /* The solver's fields are all set by its prepare step. */
     contact->a = a->solver_index;
     contact->b = b->solver_index;
     contact->normal = manifold->normal;
@@ -212,6 +212,7 @@ static void add_contact(world_t *world, body_t *a, body_t *b, uint64_t key,
         anchor->r_b[i] = vec_subtract(manifold->points[i].point, b->centroid);
         point->separation = manifold->points[i].separation;
         point->id = manifold->points[i].id;
+        point->normal_impulse = point->tangent_impulse = 0.0;
         source->points[i] = manifold->points[i].point;
     }
     source->key = key;
