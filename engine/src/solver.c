@@ -83,7 +83,7 @@ static double time_of_impact(double s, double v, double a, double dt) {
  * for constant accelerations is known: the point hits at time tau with
  * speed vi and leaves at -e vi, and ends the step at -e vi + a (dt - tau).
  * That is the target; for a body whose only push was such an impact on a
- * static body, apply_impact_times then moves it as if the impulse had acted
+ * static body, apply_impact_time then moves it as if the impulse had acted
  * at tau. Bounce heights come out exact to rounding at any dt
  * (tests/test_contacts.c).
  */
@@ -338,19 +338,6 @@ static void collision_pass(solver_contact_t *contacts, size_t count, solver_velo
     }
 }
 
-/* Where the integrator will put each body with the solved velocities. */
-static void advance(const solver_bodies_t *bodies, const solver_settings_t *s) {
-    double w = s->position_weight;
-    for (size_t i = 0; i < bodies->body_count; i++) {
-        const solver_state_t *state = &bodies->states[i];
-        const solver_velocity_t *velocity = &bodies->velocities[i];
-        solver_displacement_t *moved = &bodies->displacements[i];
-        moved->dx = vec_multiply(s->dt, vec_add(vec_multiply(1.0 - w, state->v_start),
-                                                vec_multiply(w, velocity->v)));
-        moved->dtheta = s->dt * ((1.0 - w) * state->w_start + w * velocity->w);
-    }
-}
-
 static bool pushes(const solver_contact_t *c) {
     for (int i = 0; i < c->point_count; i++) {
         if (c->points[i].normal_impulse > 0.0 || c->points[i].restitution_impulse > 0.0) return true;
@@ -389,15 +376,29 @@ static void mark_impacts(const solver_contact_t *c, const solver_velocity_t *vel
  * timing it so pushed bodies of the 10000-body pile through its floor and
  * walls (measured), so the integrator's own timing is kept there.
  */
-static void apply_impact_times(const solver_bodies_t *bodies, const solver_settings_t *s) {
+static void apply_impact_time(const solver_state_t *state, const solver_velocity_t *velocity,
+                              solver_displacement_t *moved, const solver_settings_t *s) {
+    if (state->impact_time < 0.0 || state->pushing_contacts != 1) return;
+    double shift = s->dt - state->impact_time - s->position_weight * s->dt;
+    moved->dx = vec_add(moved->dx, vec_multiply(shift, vec_subtract(velocity->v, state->v_free)));
+    moved->dtheta += shift * (velocity->w - state->w_free);
+}
+
+/* Where the integrator will put each body with the solved velocities
+ * (with its impact timing, see apply_impact_time), remembered as where the
+ * position pass starts from. */
+static void advance(const solver_bodies_t *bodies, const solver_settings_t *s) {
+    double w = s->position_weight;
     for (size_t i = 0; i < bodies->body_count; i++) {
-        const solver_state_t *state = &bodies->states[i];
-        if (state->impact_time < 0.0 || state->pushing_contacts != 1) continue;
+        solver_state_t *state = &bodies->states[i];
         const solver_velocity_t *velocity = &bodies->velocities[i];
         solver_displacement_t *moved = &bodies->displacements[i];
-        double shift = s->dt - state->impact_time - s->position_weight * s->dt;
-        moved->dx = vec_add(moved->dx, vec_multiply(shift, vec_subtract(velocity->v, state->v_free)));
-        moved->dtheta += shift * (velocity->w - state->w_free);
+        moved->dx = vec_multiply(s->dt, vec_add(vec_multiply(1.0 - w, state->v_start),
+                                                vec_multiply(w, velocity->v)));
+        moved->dtheta = s->dt * ((1.0 - w) * state->w_start + w * velocity->w);
+        apply_impact_time(state, velocity, moved, s);
+        state->dx_advanced = moved->dx;
+        state->dtheta_advanced = moved->dtheta;
     }
 }
 
@@ -445,24 +446,18 @@ static void limit_corrections(const solver_bodies_t *bodies) {
     }
 }
 
-/* Remembers where the bodies are before the position pass. */
-static void save_advanced(const solver_bodies_t *bodies) {
-    for (size_t i = 0; i < bodies->body_count; i++) {
-        bodies->states[i].dx_advanced = bodies->displacements[i].dx;
-        bodies->states[i].dtheta_advanced = bodies->displacements[i].dtheta;
-    }
-}
-
 void solver_solve(solver_wide_t *wide, solver_contact_t *contacts, const solver_anchor_t *anchors,
                   size_t contact_count, const solver_bodies_t *bodies,
                   const solver_settings_t *settings) {
     solver_velocity_t *velocities = bodies->velocities;
     bool any_elastic = false;
+    /* Preparing reads the velocities at the start of the step, not the ones
+     * warm starting changes, so the two go in one pass. */
     for (size_t i = 0; i < contact_count; i++) {
         prepare(&contacts[i], &anchors[i], velocities, bodies->states, settings);
+        warm_start(&contacts[i], velocities);
         any_elastic |= contacts[i].restitution > 0.0;
     }
-    for (size_t i = 0; i < contact_count; i++) warm_start(&contacts[i], velocities);
     if (any_elastic) {
         collision_pass(contacts, contact_count, velocities, settings->velocity_iterations);
     }
@@ -474,12 +469,10 @@ void solver_solve(solver_wide_t *wide, solver_contact_t *contacts, const solver_
         }
     }
     solver_wide_store(wide, contacts);
-    advance(bodies, settings);
     for (size_t i = 0; i < contact_count; i++) {
         mark_impacts(&contacts[i], velocities, bodies->states);
     }
-    apply_impact_times(bodies, settings);
-    save_advanced(bodies);
+    advance(bodies, settings);
     for (int iteration = 0; iteration < settings->position_iterations; iteration++) {
         solver_wide_correct_positions(wide, bodies->displacements, iteration % 2 == 1);
         for (size_t i = 0; i < wide->loose_count; i++) {
