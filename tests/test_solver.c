@@ -288,7 +288,7 @@ static void batches_correct_overlaps_by_their_rate(void) {
         solver_contact_t contacts[CONTACTS];
         for (int i = 0; i < BODIES; i++) {
             rows[i] = (solver_velocity_t){{0.0, 0.0}, 0.0, 1.0 / (1.0 + i), 0.5 / (1.0 + i)};
-            moved[i] = (solver_displacement_t){{0.01 * i, -0.02 * i}, 0.001 * i};
+            moved[i] = (solver_displacement_t){{0.01 * i, -0.02 * i}, 0.001 * i, 0.0};
         }
         for (int i = 0; i < CONTACTS; i++) {
             solver_contact_t *c = &contacts[i];

@@ -396,6 +396,7 @@ static void advance(const solver_bodies_t *bodies, const solver_settings_t *s) {
         moved->dx = vec_multiply(s->dt, vec_add(vec_multiply(1.0 - w, state->v_start),
                                                 vec_multiply(w, velocity->v)));
         moved->dtheta = s->dt * ((1.0 - w) * state->w_start + w * velocity->w);
+        moved->unused = 0.0;
         apply_impact_time(state, velocity, moved, s);
         state->dx_advanced = moved->dx;
         state->dtheta_advanced = moved->dtheta;

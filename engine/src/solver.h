@@ -30,6 +30,10 @@ typedef struct {
     double w;
     double inverse_mass, inverse_inertia;
 } solver_velocity_t;
+/* solver_wide.c loads and stores v, w and inverse_mass as one vector of
+ * four doubles. */
+_Static_assert(offsetof(solver_velocity_t, inverse_mass) == 3 * sizeof(double),
+               "solver_velocity_t: v, w, inverse_mass must be the first four doubles");
 
 /* What the rest of the solve needs, one row per body. */
 typedef struct {
@@ -49,6 +53,7 @@ typedef struct {
 typedef struct {
     vector_t dx;
     double dtheta;
+    double unused; /* pads a row to the four doubles solver_wide.c loads at once */
 } solver_displacement_t;
 
 /* One contact point, as the iterations see it. The lever arms r (from each

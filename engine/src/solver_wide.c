@@ -97,22 +97,68 @@ typedef struct {
 #define max_lane(a, b) select_lane((mask_t)((a) > (b)), (a), (b))
 #define min_lane(a, b) select_lane((mask_t)((a) < (b)), (a), (b))
 
+/* Lanes picked from two vectors: indices 0 to 3 name a's lanes, 4 to 7
+ * b's (GCC and Clang spell the builtin differently). */
+#if defined(__clang__)
+#define shuffle_lanes(a, b, i, j, k, l) __builtin_shufflevector((a), (b), i, j, k, l)
+#else
+#define shuffle_lanes(a, b, i, j, k, l) __builtin_shuffle((a), (b), (mask_t){i, j, k, l})
+#endif
+
+/* Four vectors of four doubles, as rows or as columns. */
+typedef struct {
+    lane_t v0, v1, v2, v3;
+} lane_quad_t;
+
+/* Rows to columns and back: out.v<c>[l] = in.v<l>[c]. */
+LANE_INLINE lane_quad_t transpose(lane_quad_t in) {
+    lane_t low01 = shuffle_lanes(in.v0, in.v1, 0, 4, 2, 6);
+    lane_t high01 = shuffle_lanes(in.v0, in.v1, 1, 5, 3, 7);
+    lane_t low23 = shuffle_lanes(in.v2, in.v3, 0, 4, 2, 6);
+    lane_t high23 = shuffle_lanes(in.v2, in.v3, 1, 5, 3, 7);
+    return (lane_quad_t){shuffle_lanes(low01, low23, 0, 1, 4, 5),
+                         shuffle_lanes(high01, high23, 0, 1, 4, 5),
+                         shuffle_lanes(low01, low23, 2, 3, 6, 7),
+                         shuffle_lanes(high01, high23, 2, 3, 6, 7)};
+}
+
+LANE_INLINE lane_t load_lane(const void *source) {
+    lane_t value;
+    memcpy(&value, source, sizeof value);
+    return value;
+}
+
+/* A velocity row's first four doubles (v.x, v.y, w, inverse_mass) are one
+ * vector load; four of them transposed give the lanes. */
 LANE_INLINE lane_body_t gather(const solver_velocity_t *rows, const uint32_t index[LANES]) {
     const solver_velocity_t *r0 = &rows[index[0]], *r1 = &rows[index[1]];
     const solver_velocity_t *r2 = &rows[index[2]], *r3 = &rows[index[3]];
+    lane_quad_t columns = transpose(
+        (lane_quad_t){load_lane(r0), load_lane(r1), load_lane(r2), load_lane(r3)});
     return (lane_body_t){
-        .vx = {r0->v.x, r1->v.x, r2->v.x, r3->v.x},
-        .vy = {r0->v.y, r1->v.y, r2->v.y, r3->v.y},
-        .w = {r0->w, r1->w, r2->w, r3->w},
-        .inverse_mass = {r0->inverse_mass, r1->inverse_mass, r2->inverse_mass,
-                         r3->inverse_mass},
+        .vx = columns.v0,
+        .vy = columns.v1,
+        .w = columns.v2,
+        .inverse_mass = columns.v3,
         .inverse_inertia = {r0->inverse_inertia, r1->inverse_inertia, r2->inverse_inertia,
                             r3->inverse_inertia},
     };
 }
 
+/* A full batch writes its rows back as vectors (the inverse mass goes back
+ * unchanged); a partial one lane by lane, so that its empty lanes, which
+ * read row 0, do not write it. */
 LANE_INLINE void scatter(solver_velocity_t *rows, const uint32_t index[LANES], int lanes,
                          const lane_body_t *body) {
+    if (lanes == LANES) {
+        lane_quad_t stored =
+            transpose((lane_quad_t){body->vx, body->vy, body->w, body->inverse_mass});
+        memcpy(&rows[index[0]], &stored.v0, sizeof(lane_t));
+        memcpy(&rows[index[1]], &stored.v1, sizeof(lane_t));
+        memcpy(&rows[index[2]], &stored.v2, sizeof(lane_t));
+        memcpy(&rows[index[3]], &stored.v3, sizeof(lane_t));
+        return;
+    }
     for (int l = 0; l < lanes; l++) {
         solver_velocity_t *row = &rows[index[l]];
         row->v.x = body->vx[l];
@@ -263,22 +309,30 @@ void solver_wide_iterate(solver_wide_t *wide, solver_velocity_t *rows) {
 
 /* The bodies' displacements in a batch, lane by lane. */
 typedef struct {
-    lane_t dx, dy, dtheta;
+    lane_t dx, dy, dtheta, unused;
 } lane_displacement_t;
 
 LANE_INLINE lane_displacement_t gather_displacements(const solver_displacement_t *rows,
                                                      const uint32_t index[LANES]) {
-    const solver_displacement_t *r0 = &rows[index[0]], *r1 = &rows[index[1]];
-    const solver_displacement_t *r2 = &rows[index[2]], *r3 = &rows[index[3]];
-    return (lane_displacement_t){
-        .dx = {r0->dx.x, r1->dx.x, r2->dx.x, r3->dx.x},
-        .dy = {r0->dx.y, r1->dx.y, r2->dx.y, r3->dx.y},
-        .dtheta = {r0->dtheta, r1->dtheta, r2->dtheta, r3->dtheta},
-    };
+    lane_quad_t columns =
+        transpose((lane_quad_t){load_lane(&rows[index[0]]), load_lane(&rows[index[1]]),
+                                load_lane(&rows[index[2]]), load_lane(&rows[index[3]])});
+    return (lane_displacement_t){.dx = columns.v0, .dy = columns.v1, .dtheta = columns.v2,
+                                 .unused = columns.v3};
 }
 
+/* As scatter does with velocities. */
 LANE_INLINE void scatter_displacements(solver_displacement_t *rows, const uint32_t index[LANES],
                                        int lanes, const lane_displacement_t *moved) {
+    if (lanes == LANES) {
+        lane_quad_t stored =
+            transpose((lane_quad_t){moved->dx, moved->dy, moved->dtheta, moved->unused});
+        memcpy(&rows[index[0]], &stored.v0, sizeof(lane_t));
+        memcpy(&rows[index[1]], &stored.v1, sizeof(lane_t));
+        memcpy(&rows[index[2]], &stored.v2, sizeof(lane_t));
+        memcpy(&rows[index[3]], &stored.v3, sizeof(lane_t));
+        return;
+    }
     for (int l = 0; l < lanes; l++) {
         solver_displacement_t *row = &rows[index[l]];
         row->dx.x = moved->dx[l];
@@ -344,7 +398,7 @@ void solver_wide_correct_positions(solver_wide_t *wide, solver_displacement_t *d
     }
 }
 
-static void load_lane(solver_wide_t *wide, const solver_contact_t *c, uint32_t index, int l,
+static void pack_lane(solver_wide_t *wide, const solver_contact_t *c, uint32_t index, int l,
                       const solver_velocity_t *rows) {
     solver_batch_t *batch = &wide->batches[wide->batch_count];
     solver_position_batch_t *position = &wide->position_batches[wide->batch_count];
@@ -408,7 +462,7 @@ static void load_batch(solver_wide_t *wide, const uint32_t *order, int count, ba
     batch->lanes = position->lanes = (uint8_t)count;
     batch->kind = (uint8_t)kind;
     position->point_count = (uint8_t)points;
-    for (int l = 0; l < count; l++) load_lane(wide, &contacts[order[l]], order[l], l, rows);
+    for (int l = 0; l < count; l++) pack_lane(wide, &contacts[order[l]], order[l], l, rows);
     wide->batch_count++;
     wide->point_count += (size_t)points;
     wide->block_count += kind == BATCH_BLOCK;
