@@ -117,7 +117,7 @@ static size_t fill_entries(broadphase_t *broadphase, const broadphase_proxy_t *p
 /* Counting sort of the entries by bucket. Returns the bucket count. */
 static size_t sort_entries(broadphase_t *broadphase, size_t n) {
     size_t buckets = 64;
-    while (buckets < 2 * n) buckets *= 2;
+    while (2 * buckets < n) buckets *= 2; /* cells hold several entries: few collide */
     uint32_t mask = (uint32_t)(buckets - 1);
     memory_reserve((void **)&broadphase->bucket_start, &broadphase->bucket_capacity, buckets + 1,
                    sizeof(uint32_t));
