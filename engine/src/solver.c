@@ -452,17 +452,16 @@ void solver_solve(solver_wide_t *wide, solver_contact_t *contacts, const solver_
                   const solver_settings_t *settings) {
     solver_velocity_t *velocities = bodies->velocities;
     bool any_elastic = false;
-    /* Preparing reads the velocities at the start of the step, not the ones
-     * warm starting changes, so the two go in one pass. */
     for (size_t i = 0; i < contact_count; i++) {
         prepare(&contacts[i], &anchors[i], velocities, bodies->states, settings);
-        warm_start(&contacts[i], velocities);
         any_elastic |= contacts[i].restitution > 0.0;
     }
+    solver_wide_load(wide, contacts, contact_count, velocities, bodies->body_count);
+    solver_wide_warm_start(wide, velocities);
+    for (size_t i = 0; i < wide->loose_count; i++) warm_start(&contacts[wide->loose[i]], velocities);
     if (any_elastic) {
         collision_pass(contacts, contact_count, velocities, settings->velocity_iterations);
     }
-    solver_wide_load(wide, contacts, contact_count, velocities, bodies->body_count);
     for (int iteration = 0; iteration < settings->velocity_iterations; iteration++) {
         solver_wide_iterate(wide, velocities);
         for (size_t i = 0; i < wide->loose_count; i++) {

@@ -278,6 +278,23 @@ LANE_INLINE void prefetch_rows(const solver_velocity_t *rows, const solver_batch
 }
 
 LANE_CLONES
+void solver_wide_warm_start(solver_wide_t *wide, solver_velocity_t *rows) {
+    const lane_point_t *points = wide->points;
+    for (size_t i = 0; i < wide->batch_count; i++) {
+        const solver_batch_t *batch = &wide->batches[i];
+        lane_body_t a = gather(rows, batch->a), b = gather(rows, batch->b);
+        lane_vector_t tangent = {-batch->normal.y, batch->normal.x};
+        int count = kind_points((batch_kind_t)batch->kind);
+        for (int k = 0; k < count; k++, points++) {
+            apply_along(&a, &b, &batch->normal, &points->rn, &points->normal_impulse);
+            apply_along(&a, &b, &tangent, &points->rt, &points->tangent_impulse);
+        }
+        scatter(rows, batch->a, batch->lanes, &a);
+        scatter(rows, batch->b, batch->lanes, &b);
+    }
+}
+
+LANE_CLONES
 void solver_wide_iterate(solver_wide_t *wide, solver_velocity_t *rows) {
     lane_point_t *points = wide->points;
     const lane_block_t *blocks = wide->blocks;

@@ -61,6 +61,10 @@ void solver_wide_free(solver_wide_t *wide);
 void solver_wide_load(solver_wide_t *wide, const solver_contact_t *contacts, size_t count,
                       const solver_velocity_t *rows, size_t body_count);
 
+/* Applies the batches' accumulated impulses (last step's, warm starting)
+ * to the velocities. */
+void solver_wide_warm_start(solver_wide_t *wide, solver_velocity_t *rows);
+
 /* One velocity iteration over every batch, colour by colour. */
 void solver_wide_iterate(solver_wide_t *wide, solver_velocity_t *rows);
 
