@@ -267,16 +267,6 @@ LANE_INLINE void solve_normal_block(const solver_batch_t *batch, lane_point_t *p
 #define LANE_CLONES
 #endif
 
-/* The rows of a batch two ahead are fetched while this one is solved: the
- * rows are scattered over the body array, and waiting for them was the
- * largest cost of a sweep (measured). */
-LANE_INLINE void prefetch_rows(const solver_velocity_t *rows, const solver_batch_t *batch) {
-    for (int l = 0; l < LANES; l++) {
-        __builtin_prefetch(&rows[batch->a[l]]);
-        __builtin_prefetch(&rows[batch->b[l]]);
-    }
-}
-
 LANE_CLONES
 void solver_wide_warm_start(solver_wide_t *wide, solver_velocity_t *rows) {
     const lane_point_t *points = wide->points;
@@ -300,7 +290,6 @@ void solver_wide_iterate(solver_wide_t *wide, solver_velocity_t *rows) {
     const lane_block_t *blocks = wide->blocks;
     for (size_t i = 0; i < wide->batch_count; i++) {
         const solver_batch_t *batch = &wide->batches[i];
-        if (i + 2 < wide->batch_count) prefetch_rows(rows, &wide->batches[i + 2]);
         lane_body_t a = gather(rows, batch->a), b = gather(rows, batch->b);
         switch (batch->kind) {
         case BATCH_BLOCK:
