@@ -14,11 +14,14 @@
  * (m), so a contact is found a step before it forms. */
 static const double CONTACT_MARGIN = 0.01;
 /* A pair's manifold features are reused while the pair's relative pose
- * stays this close (m, rad) to the pose they were found at: a contact point
- * is then at most a few millimetres off, and a settled pile skips most of
- * the separating-axis work. */
-static const double REUSE_DISTANCE = 0.005;
-static const double REUSE_ANGLE = 0.01;
+ * stays this close (m, rad) to the pose they were found at. The points are
+ * evaluated at the current poses; only where clipping cut the incident edge
+ * can a point be up to about a centimetre off where clipping would cut it
+ * now. A pile then skips most of the separating-axis work: at 1 cm and
+ * 0.02 rad, pile(1000) runs 5.6% fewer instructions than at 5 mm and
+ * 0.01 rad, with the same penetrations and the same pyramid (measured). */
+static const double REUSE_DISTANCE = 0.01;
+static const double REUSE_ANGLE = 0.02;
 
 /* Where b is as seen from a: b's centroid in a's frame and the angle
  * between them. */
