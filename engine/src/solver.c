@@ -451,10 +451,14 @@ void solver_solve(solver_wide_t *wide, solver_contact_t *contacts, const solver_
                   size_t contact_count, const solver_bodies_t *bodies,
                   const solver_settings_t *settings) {
     solver_velocity_t *velocities = bodies->velocities;
-    bool any_elastic = false;
+    /* A step pays for the collision pass only with an elastic contact, and
+     * for timing impacts only with an impact. */
+    bool any_elastic = false, any_impact = false;
     for (size_t i = 0; i < contact_count; i++) {
-        prepare(&contacts[i], &anchors[i], velocities, bodies->states, settings);
-        any_elastic |= contacts[i].restitution > 0.0;
+        solver_contact_t *c = &contacts[i];
+        prepare(c, &anchors[i], velocities, bodies->states, settings);
+        any_elastic |= c->restitution > 0.0;
+        for (int k = 0; k < c->point_count; k++) any_impact |= c->points[k].impact_time >= 0.0;
     }
     solver_wide_load(wide, contacts, contact_count, velocities, bodies->body_count);
     solver_wide_warm_start(wide, velocities);
@@ -469,7 +473,7 @@ void solver_solve(solver_wide_t *wide, solver_contact_t *contacts, const solver_
         }
     }
     solver_wide_store(wide, contacts);
-    for (size_t i = 0; i < contact_count; i++) {
+    for (size_t i = 0; any_impact && i < contact_count; i++) {
         mark_impacts(&contacts[i], velocities, bodies->states);
     }
     advance(bodies, settings);
