@@ -11,9 +11,9 @@ enum { LANES = 4 };
 #pragma GCC diagnostic ignored "-Wpsabi"
 #endif
 
-/* The kernels below must be inlined into each clone of
- * solver_wide_iterate to be compiled for its instruction set; GCC
- * otherwise keeps the larger ones out of line, as baseline code. */
+/* The kernels below must be inlined into each clone of the exported
+ * functions to be compiled for its instruction set; GCC otherwise keeps
+ * the larger ones out of line, as baseline code. */
 #define LANE_INLINE static inline __attribute__((always_inline))
 
 /* Four doubles, and four 64-bit lane masks (all ones where a comparison
@@ -50,8 +50,9 @@ struct lane_block {
  * in the same order: a batch's 1 or 2 points in wide->points, a block
  * batch's matrices in wide->blocks. So a sweep reads three arrays straight
  * through, and a one-point contact (half of a pile's) costs one point, not
- * two. A lane without a contact holds zeros (zero masses give zero
- * impulses) and reads body row 0.
+ * two. A lane without a contact reads body row 0 and holds zero point data:
+ * its effective masses are zero, so its impulses are zero, and it is never
+ * written back.
  */
 typedef enum { BATCH_BLOCK, BATCH_PAIR, BATCH_SINGLE, BATCH_KINDS } batch_kind_t;
 
@@ -82,7 +83,7 @@ static int kind_points(batch_kind_t kind) {
 }
 
 /* The two bodies of a batch, lane by lane: velocities, and the inverse
- * masses, which share the velocities' cache line. */
+ * masses, which are loaded with them. */
 typedef struct {
     lane_t vx, vy, w;
     lane_t inverse_mass, inverse_inertia;

@@ -2,10 +2,11 @@
 #define SOLVER_WIDE_H
 
 /*
- * The velocity and position iterations four contacts at a time. Contacts of one colour
- * (coloring.h) share no movable body, so four of them are packed lane by
- * lane into a batch, structure-of-arrays, and solved with vector arithmetic:
- * the same friction, two-point block and one-point solves as solver.c, in
+ * Warm starting, the velocity iterations and the position iterations, four
+ * contacts at a time. Contacts of one colour (coloring.h) share no movable
+ * body, so four of them are packed lane by lane into a batch,
+ * structure-of-arrays, and solved with vector arithmetic: the same
+ * friction, two-point block, one-point and position solves as solver.c, in
  * the same order within a contact and with the same rounding (no fused
  * multiply-add), so a contact gets the answer solver.c would give it at
  * its place in the order. The order across contacts is by colour.
