@@ -195,13 +195,7 @@ static bool pose_is_close(relative_pose_t now, relative_pose_t then) {
 static void add_contact(world_t *world, body_t *a, body_t *b, uint64_t key,
                         const manifold_t *manifold, const manifold_features_t *features,
                         relative_pose_t pose, const solver_contact_t *old) {
-    size_t n = world->contact_count;
-    memory_reserve((void **)&world->contacts, &world->contact_capacity, n + 1,
-                   sizeof(solver_contact_t));
-    memory_reserve((void **)&world->sources, &world->source_capacity, n + 1,
-                   sizeof(contact_source_t));
-    memory_reserve((void **)&world->anchors, &world->anchor_capacity, n + 1,
-                   sizeof(solver_anchor_t));
+    size_t n = world->contact_count; /* narrowphase reserved a contact per pair */
     solver_contact_t *contact = &world->contacts[n];
     solver_anchor_t *anchor = &world->anchors[n];
     contact_source_t *source = &world->sources[n];
@@ -287,6 +281,13 @@ static void swap_contact_buffers(world_t *world) {
 static void narrowphase(world_t *world, body_t **bodies, const broadphase_pair_t *pairs,
                         size_t pair_count) {
     swap_contact_buffers(world);
+    /* A pair makes at most one contact. */
+    memory_reserve((void **)&world->contacts, &world->contact_capacity, pair_count,
+                   sizeof(solver_contact_t));
+    memory_reserve((void **)&world->sources, &world->source_capacity, pair_count,
+                   sizeof(contact_source_t));
+    memory_reserve((void **)&world->anchors, &world->anchor_capacity, pair_count,
+                   sizeof(solver_anchor_t));
     for (size_t i = 0; i < pair_count;) {
         i += collide_group(world, bodies, pairs + i, pair_count - i);
     }
