@@ -4,11 +4,13 @@
 #include "memory.h"
 #include "scalar.h"
 
-/* A proxy in one cell, with its box: the pair search then reads the
- * entries of a cell straight through instead of looking each box up. */
+/* A proxy in one cell, with its box and the cell of its box's lower-left
+ * corner: the pair search then reads the entries of a cell straight
+ * through instead of looking each box up. */
 typedef struct {
     aabb_t box;
-    int32_t ix, iy;
+    int32_t ix, iy;     /* this cell */
+    int32_t min_x, min_y; /* the cell of box.min */
     uint32_t proxy;
 } cell_entry_t;
 
@@ -48,8 +50,10 @@ bool broadphase_filters_allow(const broadphase_proxy_t *a, const broadphase_prox
 }
 
 static void add_pair(broadphase_t *broadphase, uint32_t a, uint32_t b) {
-    memory_reserve((void **)&broadphase->pairs, &broadphase->pair_capacity,
-                   broadphase->pair_count + 1, sizeof(broadphase_pair_t));
+    if (broadphase->pair_count == broadphase->pair_capacity) {
+        memory_reserve((void **)&broadphase->pairs, &broadphase->pair_capacity,
+                       broadphase->pair_count + 1, sizeof(broadphase_pair_t));
+    }
     broadphase->pairs[broadphase->pair_count++] =
         a < b ? (broadphase_pair_t){a, b} : (broadphase_pair_t){b, a};
 }
@@ -107,7 +111,7 @@ static size_t fill_entries(broadphase_t *broadphase, const broadphase_proxy_t *p
                        n + (size_t)cells, sizeof(cell_entry_t));
         for (int32_t iy = y0; iy <= y1; iy++) {
             for (int32_t ix = x0; ix <= x1; ix++) {
-                broadphase->entries[n++] = (cell_entry_t){box, ix, iy, (uint32_t)i};
+                broadphase->entries[n++] = (cell_entry_t){box, ix, iy, x0, y0, (uint32_t)i};
             }
         }
     }
@@ -142,7 +146,7 @@ static size_t sort_entries(broadphase_t *broadphase, size_t n) {
 /* Pairs that share a cell; a pair sharing several cells is reported only in
  * the cell holding the lower-left corner of the boxes' intersection. */
 static void pairs_in_buckets(broadphase_t *broadphase, const broadphase_proxy_t *proxies,
-                             size_t buckets, double inverse_size) {
+                             size_t buckets) {
     const cell_entry_t *sorted = broadphase->sorted;
     size_t tests = 0;
     for (size_t b = 0; b < buckets; b++) {
@@ -153,8 +157,10 @@ static void pairs_in_buckets(broadphase_t *broadphase, const broadphase_proxy_t 
             for (uint32_t q = p + 1; q < end; q++) {
                 const cell_entry_t *c = &sorted[q];
                 if (c->ix != a->ix || c->iy != a->iy || !aabb_overlaps(a->box, c->box)) continue;
-                int32_t corner_x = cell_index(max_of(a->box.min.x, c->box.min.x), inverse_size);
-                int32_t corner_y = cell_index(max_of(a->box.min.y, c->box.min.y), inverse_size);
+                /* cell_index is monotonic: the corner's cell is the larger
+                 * of the two boxes' lower-left cells. */
+                int32_t corner_x = a->min_x > c->min_x ? a->min_x : c->min_x;
+                int32_t corner_y = a->min_y > c->min_y ? a->min_y : c->min_y;
                 if (corner_x != a->ix || corner_y != a->iy) continue;
                 if (!broadphase_filters_allow(&proxies[a->proxy], &proxies[c->proxy])) continue;
                 add_pair(broadphase, a->proxy, c->proxy);
@@ -207,7 +213,7 @@ size_t broadphase_find_pairs(broadphase_t *broadphase, const broadphase_proxy_t 
     size_t large_count;
     size_t n = fill_entries(broadphase, proxies, count, inverse_size, &large_count);
     size_t buckets = sort_entries(broadphase, n);
-    pairs_in_buckets(broadphase, proxies, buckets, inverse_size);
+    pairs_in_buckets(broadphase, proxies, buckets);
     if (large_count > 0) pairs_with_large(broadphase, proxies, count, large_count);
     *pairs = sort_pairs(broadphase, count);
     *tests += broadphase->tests + n;
