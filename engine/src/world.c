@@ -6,6 +6,7 @@
 #include "integrator.h"
 #include "manifold.h"
 #include "memory.h"
+#include "scalar.h"
 #include "scene_private.h"
 #include "solver.h"
 #include "solver_wide.h"
@@ -145,8 +146,8 @@ static void load_bodies(world_t *world, body_t **bodies, size_t count, const wor
         velocity->inverse_inertia = body->inverse_inertia;
 
         /* How far any point of the body can move this step, bounded. */
-        double speed = fmax(vec_get_length(state->v_start), vec_get_length(state->v_free));
-        double spin = fmax(fabs(state->w_start), fabs(state->w_free)) * body->radius;
+        double speed = max_of(vec_get_length(state->v_start), vec_get_length(state->v_free));
+        double spin = max_of(fabs(state->w_start), fabs(state->w_free)) * body->radius;
         double margin = dt * (speed + spin) + CONTACT_MARGIN;
         world->margins[i] = margin;
         broadphase_proxy_t *proxy = &world->proxies[i];
@@ -204,7 +205,7 @@ static void add_contact(world_t *world, body_t *a, body_t *b, uint64_t key,
     contact->b = b->solver_index;
     contact->normal = manifold->normal;
     contact->friction = sqrt(a->friction * b->friction);
-    contact->restitution = fmax(a->elasticity, b->elasticity);
+    contact->restitution = max_of(a->elasticity, b->elasticity);
     contact->point_count = manifold->point_count;
     for (int i = 0; i < manifold->point_count; i++) {
         solver_point_t *point = &contact->points[i];
