@@ -435,8 +435,9 @@ static void limit_corrections(const solver_bodies_t *bodies) {
         const solver_state_t *state = &bodies->states[i];
         solver_displacement_t *moved = &bodies->displacements[i];
         vector_t corrected = vec_subtract(moved->dx, state->dx_advanced);
-        double length = vec_get_length(corrected);
-        if (length > MAX_BODY_CORRECTION) {
+        double squared = vec_dot(corrected, corrected);
+        if (squared > MAX_BODY_CORRECTION * MAX_BODY_CORRECTION) { /* rare: no sqrt otherwise */
+            double length = sqrt(squared);
             moved->dx = vec_add(state->dx_advanced,
                                 vec_multiply(MAX_BODY_CORRECTION / length, corrected));
         }
