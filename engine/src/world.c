@@ -124,6 +124,21 @@ static void reserve_rows(world_t *world, size_t count) {
     memory_reserve((void **)&world->margins, &world->margin_capacity, count, sizeof(double));
 }
 
+/* The box a body sweeps this step: its bounds moved along both velocities
+ * it may have (at the start, and free of contacts), grown all round by
+ * grow (what rotation and the contact margin add). Only the direction of
+ * motion is enlarged, so bodies moving together, like a falling grid, do not
+ * pair, while a body and whatever lies ahead of it do. */
+static aabb_t swept_box(aabb_t bounds, double dt, const solver_state_t *state, double grow) {
+    vector_t d1 = vec_multiply(dt, state->v_start), d2 = vec_multiply(dt, state->v_free);
+    return (aabb_t){
+        {bounds.min.x + min_of(0.0, min_of(d1.x, d2.x)) - grow,
+         bounds.min.y + min_of(0.0, min_of(d1.y, d2.y)) - grow},
+        {bounds.max.x + max_of(0.0, max_of(d1.x, d2.x)) + grow,
+         bounds.max.y + max_of(0.0, max_of(d1.y, d2.y)) + grow},
+    };
+}
+
 /* Loads each body's rows for the solver and its broadphase proxy. */
 static void load_bodies(world_t *world, body_t **bodies, size_t count, const world_step_t *step) {
     reserve_rows(world, count);
@@ -145,14 +160,13 @@ static void load_bodies(world_t *world, body_t **bodies, size_t count, const wor
         velocity->inverse_mass = body->inverse_mass;
         velocity->inverse_inertia = body->inverse_inertia;
 
-        /* How far any point of the body can move this step, bounded. */
+        /* How far any point of the body can move this step, bounded: the
+         * narrowphase keeps speculative points up to this far apart. */
         double speed = max_of(vec_get_length(state->v_start), vec_get_length(state->v_free));
         double spin = max_of(fabs(state->w_start), fabs(state->w_free)) * body->radius;
-        double margin = dt * (speed + spin) + CONTACT_MARGIN;
-        world->margins[i] = margin;
+        world->margins[i] = dt * (speed + spin) + CONTACT_MARGIN;
         broadphase_proxy_t *proxy = &world->proxies[i];
-        proxy->box.min = vec_subtract(body->bounds.min, (vector_t){margin, margin});
-        proxy->box.max = vec_add(body->bounds.max, (vector_t){margin, margin});
+        proxy->box = swept_box(body->bounds, dt, state, dt * spin + CONTACT_MARGIN);
         proxy->fixed = body->inverse_mass == 0.0 && body->inverse_inertia == 0.0;
         proxy->category = body->removed ? 0 : body->category;
         proxy->mask = body->mask;
