@@ -8,9 +8,11 @@
  * impulses (so a box lands and leaves flat), impacts timed within the step,
  * and non-linear Gauss-Seidel position correction.
  *
- * It works on plain arrays (solver_body_t rows, solver_contact_t
+ * It works on plain arrays (solver_bodies_t's rows, solver_contact_t
  * constraints) that world.c fills from the bodies and writes back; it knows
- * nothing of scenes or lists.
+ * nothing of scenes or lists. The iterations run four contacts at a time in
+ * colour batches (solver_wide.h); this file holds the rest, and the
+ * one-at-a-time solves for contacts no colour could take.
  *
  * The integrator decides where a velocity puts a body: x' = x + dt ((1 - w) v
  * + w v'), with w its position weight (1/2 for the seed scheme). The solver
