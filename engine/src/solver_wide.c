@@ -129,35 +129,50 @@ LANE_INLINE lane_t load_lane(const void *source) {
     return value;
 }
 
-/* A velocity row's first four doubles (v.x, v.y, w, inverse_mass) are one
- * vector load; four of them transposed give the lanes. */
+/* Rows of `stride` bytes at rows + index[l] * stride begin with four
+ * doubles; each row's four are one vector load, and four rows transposed
+ * give each double's four lanes. */
+LANE_INLINE lane_quad_t load_columns(const void *rows, size_t stride,
+                                     const uint32_t index[LANES]) {
+    const char *base = rows;
+    return transpose((lane_quad_t){load_lane(base + index[0] * stride),
+                                   load_lane(base + index[1] * stride),
+                                   load_lane(base + index[2] * stride),
+                                   load_lane(base + index[3] * stride)});
+}
+
+/* The inverse of load_columns, for a full batch: all four rows written
+ * back as vectors. (A partial batch writes lane by lane, so that its empty
+ * lanes, which read row 0, do not write it.) */
+LANE_INLINE void store_columns(void *rows, size_t stride, const uint32_t index[LANES],
+                               lane_quad_t columns) {
+    char *base = rows;
+    lane_quad_t stored = transpose(columns);
+    memcpy(base + index[0] * stride, &stored.v0, sizeof(lane_t));
+    memcpy(base + index[1] * stride, &stored.v1, sizeof(lane_t));
+    memcpy(base + index[2] * stride, &stored.v2, sizeof(lane_t));
+    memcpy(base + index[3] * stride, &stored.v3, sizeof(lane_t));
+}
+
+/* A velocity row begins with v.x, v.y, w and inverse_mass (solver.h). */
 LANE_INLINE lane_body_t gather(const solver_velocity_t *rows, const uint32_t index[LANES]) {
-    const solver_velocity_t *r0 = &rows[index[0]], *r1 = &rows[index[1]];
-    const solver_velocity_t *r2 = &rows[index[2]], *r3 = &rows[index[3]];
-    lane_quad_t columns = transpose(
-        (lane_quad_t){load_lane(r0), load_lane(r1), load_lane(r2), load_lane(r3)});
+    lane_quad_t columns = load_columns(rows, sizeof *rows, index);
     return (lane_body_t){
         .vx = columns.v0,
         .vy = columns.v1,
         .w = columns.v2,
         .inverse_mass = columns.v3,
-        .inverse_inertia = {r0->inverse_inertia, r1->inverse_inertia, r2->inverse_inertia,
-                            r3->inverse_inertia},
+        .inverse_inertia = {rows[index[0]].inverse_inertia, rows[index[1]].inverse_inertia,
+                            rows[index[2]].inverse_inertia, rows[index[3]].inverse_inertia},
     };
 }
 
-/* A full batch writes its rows back as vectors (the inverse mass goes back
- * unchanged); a partial one lane by lane, so that its empty lanes, which
- * read row 0, do not write it. */
+/* The inverse mass goes back unchanged. */
 LANE_INLINE void scatter(solver_velocity_t *rows, const uint32_t index[LANES], int lanes,
                          const lane_body_t *body) {
     if (lanes == LANES) {
-        lane_quad_t stored =
-            transpose((lane_quad_t){body->vx, body->vy, body->w, body->inverse_mass});
-        memcpy(&rows[index[0]], &stored.v0, sizeof(lane_t));
-        memcpy(&rows[index[1]], &stored.v1, sizeof(lane_t));
-        memcpy(&rows[index[2]], &stored.v2, sizeof(lane_t));
-        memcpy(&rows[index[3]], &stored.v3, sizeof(lane_t));
+        store_columns(rows, sizeof *rows, index,
+                      (lane_quad_t){body->vx, body->vy, body->w, body->inverse_mass});
         return;
     }
     for (int l = 0; l < lanes; l++) {
@@ -321,23 +336,16 @@ typedef struct {
 
 LANE_INLINE lane_displacement_t gather_displacements(const solver_displacement_t *rows,
                                                      const uint32_t index[LANES]) {
-    lane_quad_t columns =
-        transpose((lane_quad_t){load_lane(&rows[index[0]]), load_lane(&rows[index[1]]),
-                                load_lane(&rows[index[2]]), load_lane(&rows[index[3]])});
+    lane_quad_t columns = load_columns(rows, sizeof *rows, index);
     return (lane_displacement_t){.dx = columns.v0, .dy = columns.v1, .dtheta = columns.v2,
                                  .unused = columns.v3};
 }
 
-/* As scatter does with velocities. */
 LANE_INLINE void scatter_displacements(solver_displacement_t *rows, const uint32_t index[LANES],
                                        int lanes, const lane_displacement_t *moved) {
     if (lanes == LANES) {
-        lane_quad_t stored =
-            transpose((lane_quad_t){moved->dx, moved->dy, moved->dtheta, moved->unused});
-        memcpy(&rows[index[0]], &stored.v0, sizeof(lane_t));
-        memcpy(&rows[index[1]], &stored.v1, sizeof(lane_t));
-        memcpy(&rows[index[2]], &stored.v2, sizeof(lane_t));
-        memcpy(&rows[index[3]], &stored.v3, sizeof(lane_t));
+        store_columns(rows, sizeof *rows, index,
+                      (lane_quad_t){moved->dx, moved->dy, moved->dtheta, moved->unused});
         return;
     }
     for (int l = 0; l < lanes; l++) {
