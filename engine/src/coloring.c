@@ -11,10 +11,6 @@ void coloring_free(coloring_t *coloring) {
     coloring->used_capacity = 0;
 }
 
-static bool can_move(const solver_velocity_t *row) {
-    return row->inverse_mass != 0.0 || row->inverse_inertia != 0.0;
-}
-
 int coloring_assign(coloring_t *coloring, const solver_contact_t *contacts, size_t contact_count,
                     const solver_velocity_t *rows, size_t body_count, uint8_t *colors) {
     memory_reserve((void **)&coloring->used, &coloring->used_capacity, body_count,
@@ -24,7 +20,8 @@ int coloring_assign(coloring_t *coloring, const solver_contact_t *contacts, size
     uint32_t all = 0;
     for (size_t i = 0; i < contact_count; i++) {
         uint32_t a = contacts[i].a, b = contacts[i].b;
-        bool move_a = can_move(&rows[a]), move_b = can_move(&rows[b]);
+        bool move_a = !solver_row_is_static(&rows[a]);
+        bool move_b = !solver_row_is_static(&rows[b]);
         uint32_t taken = (move_a ? used[a] : 0) | (move_b ? used[b] : 0);
         if (taken == FULL) {
             colors[i] = COLORING_NONE;

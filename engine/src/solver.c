@@ -124,10 +124,6 @@ static void set_target(solver_point_t *p, vector_t r_a, vector_t r_b, vector_t n
     p->target = closing;
 }
 
-static bool is_static(const solver_velocity_t *row) {
-    return row->inverse_mass == 0.0 && row->inverse_inertia == 0.0;
-}
-
 static void prepare(solver_contact_t *c, const solver_anchor_t *anchor,
                     const solver_velocity_t *velocities, const solver_state_t *states,
                     const solver_settings_t *s) {
@@ -148,8 +144,9 @@ static void prepare(solver_contact_t *c, const solver_anchor_t *anchor,
         set_target(p, anchor->r_a[i], anchor->r_b[i], c->normal, c->restitution, &states[c->a],
                    &states[c->b], s);
     }
-    c->position_rate = is_static(a) || is_static(b) ? STATIC_POSITION_CORRECTION_RATE
-                                                    : POSITION_CORRECTION_RATE;
+    bool against_static = solver_row_is_static(a) || solver_row_is_static(b);
+    c->position_rate =
+        against_static ? STATIC_POSITION_CORRECTION_RATE : POSITION_CORRECTION_RATE;
     c->block = false;
     if (c->point_count == 2) {
         const solver_point_t *p1 = &c->points[0], *p2 = &c->points[1];
@@ -353,7 +350,8 @@ static void mark_impacts(const solver_contact_t *c, const solver_velocity_t *vel
     solver_state_t *a = &states[c->a], *b = &states[c->b];
     a->pushing_contacts++;
     b->pushing_contacts++;
-    bool static_a = is_static(&velocities[c->a]), static_b = is_static(&velocities[c->b]);
+    bool static_a = solver_row_is_static(&velocities[c->a]);
+    bool static_b = solver_row_is_static(&velocities[c->b]);
     if (static_a == static_b) return;
     solver_state_t *movable = static_a ? b : a;
     for (int i = 0; i < c->point_count; i++) {

@@ -32,6 +32,12 @@ typedef struct {
     double w;
     double inverse_mass, inverse_inertia;
 } solver_velocity_t;
+/* Whether a row's body cannot move: no contact changes its velocity, so it
+ * takes no part in the colouring and gets the firmer static correction. */
+static inline bool solver_row_is_static(const solver_velocity_t *row) {
+    return row->inverse_mass == 0.0 && row->inverse_inertia == 0.0;
+}
+
 /* solver_wide.c loads and stores v, w and inverse_mass as one vector of
  * four doubles. */
 _Static_assert(offsetof(solver_velocity_t, inverse_mass) == 3 * sizeof(double),
