@@ -461,7 +461,9 @@ void solver_solve(solver_wide_t *wide, solver_contact_t *contacts, const solver_
     }
     solver_wide_load(wide, contacts, contact_count, velocities, bodies->body_count);
     solver_wide_warm_start(wide, velocities);
-    for (size_t i = 0; i < wide->loose_count; i++) warm_start(&contacts[wide->loose[i]], velocities);
+    for (size_t i = 0; i < wide->loose_count; i++) {
+        warm_start(&contacts[wide->loose[i]], velocities);
+    }
     if (any_elastic) {
         collision_pass(contacts, contact_count, velocities, settings->velocity_iterations);
     }
