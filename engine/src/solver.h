@@ -76,8 +76,12 @@ typedef struct {
     double tangent_impulse;  /* accumulated (N s), |.| <= friction * normal */
     double separation;       /* at the start of the step (m) */
     double impact_time;      /* when the gap closes within the step (s), or < 0 */
-    double bounce_target;    /* an impact's rebound velocity for the collision pass, or NAN */
-    double restitution_impulse; /* applied by the collision pass (N s), >= 0 */
+    /* What the accelerations add to the relative normal velocity between a
+     * pending impact and the end of the step (m/s); NAN when no impact is
+     * pending. */
+    double impact_offset;
+    double restitution_impulse; /* normal impulse of the collision pass (N s), >= 0 */
+    double restitution_tangent_impulse; /* friction of the collision pass (N s) */
     uint32_t id;
     bool touched;            /* touching, or an impact that has bounced this step */
 } solver_point_t;

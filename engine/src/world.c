@@ -367,7 +367,8 @@ contact_t world_get_contact(const world_t *world, size_t index) {
         entry.points[j] = source->points[j];
         entry.separation[j] = c->points[j].separation;
         entry.normal_impulse[j] = c->points[j].normal_impulse + c->points[j].restitution_impulse;
-        entry.tangent_impulse[j] = c->points[j].tangent_impulse;
+        entry.tangent_impulse[j] =
+            c->points[j].tangent_impulse + c->points[j].restitution_tangent_impulse;
         entry.touching |= c->points[j].separation <= 0.0 || entry.normal_impulse[j] > 0.0;
     }
     return entry;
