@@ -1,6 +1,7 @@
 #include "solver.h"
 #include <math.h>
 #include "scalar.h"
+#include "shock.h"
 #include "solver_wide.h"
 
 const double SOLVER_RESTITUTION_THRESHOLD = 1.0;
@@ -513,7 +514,7 @@ static void limit_corrections(const solver_bodies_t *bodies) {
     }
 }
 
-void solver_solve(solver_wide_t *wide, solver_contact_t *contacts, const solver_anchor_t *anchors,
+void solver_solve(solver_wide_t *wide, shock_t *shock, solver_contact_t *contacts, const solver_anchor_t *anchors,
                   size_t contact_count, const solver_bodies_t *bodies,
                   const solver_settings_t *settings) {
     solver_velocity_t *velocities = bodies->velocities;
@@ -534,10 +535,17 @@ void solver_solve(solver_wide_t *wide, solver_contact_t *contacts, const solver_
     if (any_elastic) {
         collision_pass(contacts, contact_count, velocities, settings->velocity_iterations);
     }
-    for (int iteration = 0; iteration < settings->velocity_iterations; iteration++) {
+    /* Shock propagation before the last iteration, which then spreads its
+     * pushes back over both bodies of each contact (shock.h). */
+    int shock_after = settings->velocity_iterations > 1 ? settings->velocity_iterations - 1 : 1;
+    for (int iteration = 1; iteration <= settings->velocity_iterations; iteration++) {
         solver_wide_iterate(wide, velocities);
         for (size_t i = 0; i < wide->loose_count; i++) {
             solve_velocity(&contacts[wide->loose[i]], velocities);
+        }
+        if (iteration == shock_after) {
+            solver_wide_store(wide, contacts);
+            shock_propagate(shock, contacts, contact_count, velocities, bodies->body_count);
         }
     }
     solver_wide_store(wide, contacts);

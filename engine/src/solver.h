@@ -121,6 +121,7 @@ extern const double SOLVER_LINEAR_SLOP;
 extern const double SOLVER_MAX_POSITION_CORRECTION;
 
 typedef struct solver_wide solver_wide_t;
+typedef struct shock shock_t;
 
 /* The rows of every body, body_count of each. */
 typedef struct {
@@ -135,7 +136,7 @@ typedef struct {
  * whose arrays live in wide), advance. On entry each body's v, w are its
  * free velocities; on return they are its new velocities, and its
  * displacement is the one of the step. */
-void solver_solve(solver_wide_t *wide, solver_contact_t *contacts, const solver_anchor_t *anchors,
+void solver_solve(solver_wide_t *wide, shock_t *shock, solver_contact_t *contacts, const solver_anchor_t *anchors,
                   size_t contact_count, const solver_bodies_t *bodies,
                   const solver_settings_t *settings);
 

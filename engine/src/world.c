@@ -9,6 +9,7 @@
 #include "scalar.h"
 #include "scene_private.h"
 #include "solver.h"
+#include "shock.h"
 #include "solver_wide.h"
 
 /* Every body's box is enlarged by how far it can move in a step plus this
@@ -78,6 +79,7 @@ struct world {
     uint64_t step_number;
 
     solver_wide_t wide;
+    shock_t shock;
     int velocity_iterations, position_iterations;
 };
 
@@ -101,6 +103,7 @@ void world_free(world_t *world) {
     memory_free(world->old_contacts);
     memory_free(world->old_sources);
     solver_wide_free(&world->wide);
+    shock_free(&world->shock);
     memory_free(world);
 }
 
@@ -343,7 +346,7 @@ void world_step(world_t *world, body_t **bodies, size_t count, const world_step_
     solver_settings_t settings = {step->dt, integrator_position_weight(step->integrator),
                                   world->velocity_iterations, world->position_iterations};
     solver_bodies_t rows = {world->velocities, world->displacements, world->states, count};
-    solver_solve(&world->wide, world->contacts, world->anchors, world->contact_count, &rows,
+    solver_solve(&world->wide, &world->shock, world->contacts, world->anchors, world->contact_count, &rows,
                  &settings);
     write_back(world, bodies, count, step);
 

@@ -76,6 +76,8 @@ static const int pile_sides[5] = {3, 4, 5, 6, 8};
 #define ORBIT_PERIODS 10
 
 /* stack2(r) */
+#define COLUMN_STEPS 3600
+#define COLUMN_JITTER 0.02
 #define STACK2_STEPS 600
 #define STACK2_GROUND_HALF_WIDTH 20.0
 

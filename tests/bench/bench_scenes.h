@@ -9,7 +9,7 @@
  *
  * Options:
  *   --scene NAME     pile, pyramid, bounce, cradle, orbit, stack2, tunnel,
- *                    overlap or all; repeatable or a comma list
+ *                    overlap, column or all; repeatable or a comma list
  *   --size X         the scene's size (pile N, pyramid B, bounce e, cradle n,
  *                    stack2 r, tunnel v); repeatable or a comma list
  *   --dt X           step of bounce and orbit (e.g. 1/600 or 0.001);
@@ -43,6 +43,10 @@
  *   overlap  max_speed (m/s, any box, any step), in_bounds (1 when every box
  *            stayed within x in [-20, 20], y >= 0 at every step),
  *            max_penetration (m, at step 300)
+ *   column   top_drift (m: the top box's |x - x0| at step 3600), top_drop (m:
+ *            its height change, negative = down), max_tilt (rad: the largest
+ *            |angle| of any box at step 3600), standing (1 when the top box
+ *            is within 0.5 m of where it started)
  */
 
 #include "bench_common.h"
@@ -56,11 +60,12 @@ typedef enum {
     SCENE_STACK2,
     SCENE_TUNNEL,
     SCENE_OVERLAP,
+    SCENE_COLUMN,
     SCENE_COUNT
 } bench_scene_id_t;
 
 static const char *const bench_scene_names[SCENE_COUNT] = {
-    "pile", "pyramid", "bounce", "cradle", "orbit", "stack2", "tunnel", "overlap"};
+    "pile", "pyramid", "bounce", "cradle", "orbit", "stack2", "tunnel", "overlap", "column"};
 
 typedef struct {
     bench_scene_id_t scene;
@@ -402,11 +407,46 @@ static inline void overlap_run(const bench_ops_t *ops, const bench_case_t *c, be
     ops->world_free(w);
 }
 
+/* ---- column(n): n unit boxes on the ground, each shifted sideways by a
+ * small random amount (a real stack is never exact), 60 s ---- */
+static inline void column_run(const bench_ops_t *ops, const bench_case_t *c, bench_run_t *out) {
+    int n = (int)c->size;
+    double mu = bench_shape_friction(ops, BENCH_FRICTION);
+    void *w = ops->world_new(BENCH_GRAVITY_Y, 1, n + 1);
+    ops->add_static_box(w, 0.0, -0.5, STACK2_GROUND_HALF_WIDTH, 0.5, mu,
+                        bench_static_elasticity(ops));
+    bench_shape_t box = bench_box_shape(0.5, 0.5);
+    bench_rng_t rng;
+    bench_rng_init(&rng);
+    int *ids = (int *)malloc(sizeof(int) * (size_t)n);
+    double top_x0 = 0.0;
+    for (int j = 0; j < n; j++) {
+        top_x0 = COLUMN_JITTER * (bench_rng_next(&rng) - 0.5);
+        ids[j] = ops->add_body(w, &box, top_x0, 0.5 + j, 0.0, bench_shape_area(&box), mu, 0.0, 1);
+    }
+    double total = 0.0;
+    for (int step = 1; step <= COLUMN_STEPS; step++) total += bench_step(ops, w, BENCH_DT);
+    out->step_ms = total / COLUMN_STEPS;
+    double tilt = 0.0;
+    bench_state_t s;
+    for (int j = 0; j < n; j++) {
+        ops->get_state(w, ids[j], &s);
+        double a = fabs(remainder(s.angle, 2.0 * M_PI));
+        if (a > tilt) tilt = a;
+    }
+    double drift = fabs(s.x - top_x0), drop = s.y - (0.5 + (n - 1));
+    snprintf(out->quality, sizeof out->quality,
+             "top_drift=%.4g top_drop=%.4g max_tilt=%.4g standing=%d", drift, drop, tilt,
+             drift < 0.5 && drop > -0.5);
+    free(ids);
+    ops->world_free(w);
+}
+
 typedef void (*bench_run_fn)(const bench_ops_t *, const bench_case_t *, bench_run_t *);
 
 static const bench_run_fn bench_runners[SCENE_COUNT] = {
     pile_run,  pyramid_run, bounce_run, cradle_run,
-    orbit_run, stack2_run,  tunnel_run, overlap_run};
+    orbit_run, stack2_run,  tunnel_run, overlap_run, column_run};
 
 /* Whether a variant runs a scene (only_scenes is a comma list or NULL). */
 static inline int bench_ops_runs(const bench_ops_t *ops, bench_scene_id_t scene) {
@@ -512,6 +552,7 @@ static inline void bench_default_sizes(bench_scene_id_t scene, int quick, double
         case SCENE_STACK2: list = stack2_all; n = 5; break;
         case SCENE_TUNNEL: list = tunnel_speeds; n = 10; break;
         case SCENE_OVERLAP: sizes[0] = 10; *count = 1; return;
+        case SCENE_COLUMN: sizes[0] = 10; sizes[1] = 20; *count = 2; return;
         default: break;
     }
     for (int i = 0; i < n; i++) sizes[i] = list[i];
