@@ -186,6 +186,43 @@ static void moment_of_inertia_of_known_shapes(void) {
     list_free(square);
 }
 
+/* A 1 m box centred at `center`. */
+static list_t *unit_box_at(vector_t center) {
+    return polygon_make_box(center, 0.5, 0.5);
+}
+
+static void area_and_check_of_a_unit_box_far_from_the_origin(void) {
+    /* A centre off the grid of doubles rounds each corner by up to half the
+     * spacing there, so each side is 1 m within one spacing and the area 1
+     * within about two: 2^-33 ~ 1.2e-10 at 1e6 m, 2^-19 ~ 1.9e-6 at 1e10 m.
+     * At 1e8 m the centre is on the grid: the corners are exact and so must
+     * be the area, to rounding. */
+    const struct {
+        vector_t center;
+        double tolerance;
+    } cases[] = {
+        {{1e6 + 0.3, 1e6 - 0.7}, 1e-9},
+        {{1e8, 1e8}, 1e-9},
+        {{-1e8 + 0.25, 1e8 + 0.125}, 1e-9},
+        {{1e10 + 0.3, -1e10 - 0.7}, 4e-6},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        list_t *box = unit_box_at(cases[i].center);
+        CHECK_NEAR(polygon_area(box), 1.0, cases[i].tolerance);
+        CHECK(polygon_check(box) == NULL);
+        CHECK(polygon_is_counterclockwise(box));
+        reverse(box);
+        CHECK_NEAR(polygon_area(box), -1.0, cases[i].tolerance);
+        CHECK(polygon_check(box) == NULL);
+        list_free(box);
+    }
+    /* A triangle of legs 3 and 4 at 1e8 m (exact corners): area 6. */
+    list_t *triangle = POLYGON({1e8, 1e8}, {1e8 + 3, 1e8}, {1e8, 1e8 + 4});
+    CHECK_RELATIVE(polygon_area(triangle), 6.0, 1e-9);
+    CHECK(polygon_check(triangle) == NULL);
+    list_free(triangle);
+}
+
 static void check_accepts_usable_shapes(void) {
     list_t *ccw = POLYGON({0, 0}, {1, 0}, {0, 1});
     list_t *cw = POLYGON({0, 0}, {0, 1}, {1, 0});
@@ -443,5 +480,7 @@ TEST_SUITE(polygon, TEST_CASE(area_of_known_shapes), TEST_CASE(area_is_signed_by
            TEST_CASE(centroid_of_degenerate_lists), TEST_CASE(translate_moves_every_vertex),
            TEST_CASE(rotate_about_a_point_counterclockwise),
            TEST_CASE(moment_of_inertia_of_known_shapes), TEST_CASE(check_accepts_usable_shapes),
-           TEST_CASE(check_names_each_problem), TEST_CASE(make_regular), TEST_CASE(make_box),
+           TEST_CASE(area_and_check_of_a_unit_box_far_from_the_origin),
+           TEST_CASE(check_names_each_problem),
+           TEST_CASE(make_regular), TEST_CASE(make_box),
            TEST_CASE(bad_input_aborts_with_message));

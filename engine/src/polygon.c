@@ -37,9 +37,15 @@ static void buffer_release(vertex_buffer_t *buffer) {
 }
 
 double polygon_array_signed_area(const vector_t *vertices, size_t count) {
+    if (count < 3) return 0.0;
+    /* A fan from the first vertex: products of absolute coordinates would
+     * bury the area in their rounding far from the origin (a unit box at
+     * 1e8 m came out 0). The two edges at that vertex add nothing. */
+    vector_t origin = vertices[0];
     double twice_area = 0.0;
-    for (size_t i = 0; i < count; i++) {
-        twice_area += vec_cross(vertices[i], vertices[(i + 1) % count]);
+    for (size_t i = 1; i + 1 < count; i++) {
+        twice_area += vec_cross(vec_subtract(vertices[i], origin),
+                                vec_subtract(vertices[i + 1], origin));
     }
     return 0.5 * twice_area;
 }
@@ -61,8 +67,8 @@ vector_t polygon_array_centroid(const vector_t *vertices, size_t count) {
     if (twice_area == 0.0) {
         /* Degenerate: fall back to the vertex mean so callers get a point. */
         vector_t mean = VEC_ZERO;
-        for (size_t i = 0; i < count; i++) mean = vec_add(mean, vertices[i]);
-        return vec_multiply(1.0 / (double)count, mean);
+        for (size_t i = 0; i < count; i++) mean = vec_add(mean, vec_subtract(vertices[i], origin));
+        return vec_add(origin, vec_multiply(1.0 / (double)count, mean));
     }
     return vec_add(origin, vec_multiply(1.0 / (3.0 * twice_area), sum));
 }
