@@ -223,6 +223,17 @@ static void area_and_check_of_a_unit_box_far_from_the_origin(void) {
     list_free(triangle);
 }
 
+static void check_accepts_a_regular_100000_gon(void) {
+    /* Each turn is 2 pi / 1e5 = 6.3e-5 rad between edges 6.3e-5 m long: a
+     * valid convex polygon, if a fine one. Area n/2 sin(2 pi / n). */
+    const size_t n = 100000;
+    list_t *polygon = polygon_make_regular(n, 1.0, (vector_t){3, -4}, 0.1);
+    CHECK(polygon_check(polygon) == NULL);
+    CHECK_RELATIVE(polygon_area(polygon), 0.5 * (double)n * sin(2 * M_PI / (double)n), 1e-12);
+    CHECK_RELATIVE(polygon_moment_of_inertia(polygon, 2.0), 1.0, 1e-8); /* m R^2 / 2 */
+    list_free(polygon);
+}
+
 static void check_accepts_usable_shapes(void) {
     list_t *ccw = POLYGON({0, 0}, {1, 0}, {0, 1});
     list_t *cw = POLYGON({0, 0}, {0, 1}, {1, 0});
@@ -283,6 +294,27 @@ static void check_names_each_problem(void) {
         star[i] = (vector_t){cos(a), sin(a)};
     }
     CHECK(refused_with(test_make_polygon(star, 5), "more than once"));
+}
+
+static void check_refuses_a_box_whose_area_overflows(void) {
+    /* 2e200 m wide: its area, 4e400 m^2, is not a double. */
+    CHECK(refused_with(polygon_make_box(VEC_ZERO, 1e200, 1e200),
+                       "polygon is too large: its area overflows"));
+    CHECK(refused_with(POLYGON({-1e300, 0}, {1e300, 0}, {0, 1e300}),
+                       "polygon is too large: its area overflows"));
+}
+
+static void check_tells_a_reflex_vertex_from_a_straight_angle(void) {
+    CHECK(refused_with(POLYGON({0, 0}, {2, 0}, {1, 1}, {2, 2}, {0, 2}),
+                       "polygon is not strictly convex: a vertex turns against the winding"));
+    CHECK(refused_with(POLYGON({0, 0}, {1, 0}, {2, 0}, {2, 2}, {0, 2}),
+                       "polygon is not strictly convex: three consecutive vertices are "
+                       "collinear"));
+    /* Collinear to rounding far from the origin: the middle vertex of the
+     * bottom edge sits on the line through its neighbours. */
+    CHECK(refused_with(POLYGON({1e8, 1e8}, {1e8 + 0.5, 1e8}, {1e8 + 1, 1e8}, {1e8 + 1, 1e8 + 1},
+                               {1e8, 1e8 + 1}),
+                       "collinear"));
 }
 
 static void make_regular(void) {
@@ -481,6 +513,9 @@ TEST_SUITE(polygon, TEST_CASE(area_of_known_shapes), TEST_CASE(area_is_signed_by
            TEST_CASE(rotate_about_a_point_counterclockwise),
            TEST_CASE(moment_of_inertia_of_known_shapes), TEST_CASE(check_accepts_usable_shapes),
            TEST_CASE(area_and_check_of_a_unit_box_far_from_the_origin),
+           TEST_CASE(check_accepts_a_regular_100000_gon),
            TEST_CASE(check_names_each_problem),
+           TEST_CASE(check_refuses_a_box_whose_area_overflows),
+           TEST_CASE(check_tells_a_reflex_vertex_from_a_straight_angle),
            TEST_CASE(make_regular), TEST_CASE(make_box),
            TEST_CASE(bad_input_aborts_with_message));
