@@ -75,7 +75,11 @@ void scene_add_force_creator(scene_t *scene, force_creator_t forcer, void *aux,
 void scene_add_bodies_force_creator(scene_t *scene, force_creator_t forcer, void *aux,
                                     list_t *bodies, free_func_t freer);
 
-/* Advances the scene by dt seconds (finite, > 0): the stages listed above. */
+/* Advances the scene by dt seconds (finite, >= 0): the stages listed above.
+ * dt = 0 runs no force creator, no world contact and no integration: bodies
+ * keep their poses, velocities and accumulated forces and impulses; it only
+ * reaps the bodies marked removed (stage 4) and clears the record. Negative,
+ * NaN or infinite dt stops the program ("dt must be finite and >= 0"). */
 void scene_tick(scene_t *scene, double dt);
 
 /* Additions beyond the seed API. */

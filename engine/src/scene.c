@@ -288,10 +288,16 @@ static void stage_reap(scene_t *scene) {
 
 void scene_tick(scene_t *scene, double dt) {
     REQUIRE_NOT_NULL(scene);
-    REQUIRE(isfinite(dt) && dt > 0.0, "dt must be finite and > 0 (got %g)", dt);
+    REQUIRE(isfinite(dt) && dt >= 0.0, "dt must be finite and >= 0 (got %g)", dt);
     scene->record_count = 0;
     scene->record_needs_world = false;
     scene->stats = (scene_stats_t){0};
+    if (dt == 0.0) {
+        /* No time passes, so nothing may move or collide; the caller only
+         * wants the pending removals applied (a paused game). */
+        stage_reap(scene);
+        return;
+    }
     if (scene->force_count > 0) stage_forces(scene);
     if (scene->world != NULL && scene->body_count > 0) {
         world_step_t step = {dt, scene->gravity, scene->integrator};
