@@ -329,6 +329,40 @@ static void inertia_of_a_box(void) {
     body_free(cw);
 }
 
+static void init_accepts_a_unit_box_far_from_the_origin(void) {
+    /* Mass 2, 1 m box: inertia 2 (1 + 1) / 12. A centre off the grid of
+     * doubles rounds the corners to its spacing (1.2e-10 m at 1e6 m, 1.9e-6 m
+     * at 1e10 m), which moves each side and the centroid by up to about that
+     * much, and the inertia by twice that, relative. At 1e8 m the centre is
+     * on the grid and the corners exact. */
+    const struct {
+        vector_t center;
+        double position_tolerance, inertia_tolerance;
+    } cases[] = {
+        {{1e6 + 0.3, -1e6 - 0.7}, 1e-9, 1e-9},
+        {{-1e8, 1e8}, 1e-9, 1e-9},
+        {{1e10 + 0.3, -1e10 - 0.7}, 4e-6, 1e-5},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        vector_t c = cases[i].center;
+        body_t *body = body_init(polygon_make_box(c, 0.5, 0.5), 2.0, RED);
+        CHECK_VEC(body_get_centroid(body), c.x, c.y, cases[i].position_tolerance);
+        CHECK(body_get_mass(body) == 2.0);
+        CHECK_RELATIVE(body_get_inertia(body), 2.0 * 2.0 / 12.0, cases[i].inertia_tolerance);
+        body_free(body);
+    }
+}
+
+static void init_accepts_a_regular_100000_gon(void) {
+    /* Turns of 6.3e-5 rad between edges 6.3e-5 m long are convex; the
+     * inertia tends to the disc's, m R^2 / 2. */
+    body_t *body = body_init(polygon_make_regular(100000, 1.0, (vector_t){2, 1}, 0.0), 4.0, RED);
+    CHECK_VEC(body_get_centroid(body), 2, 1, 1e-12);
+    CHECK(body_get_mass(body) == 4.0);
+    CHECK_RELATIVE(body_get_inertia(body), 2.0, 1e-8);
+    body_free(body);
+}
+
 static void impulse_at_a_point_gives_the_right_spin(void) {
     /* Box 2 x 1, m = 3: I = 3 (4 + 1) / 12 = 1.25. Impulse (0, 2) at the
      * right edge's middle, r = (1, 0): v = (0, 2/3), w = r x J / I = 1.6. */
@@ -470,6 +504,9 @@ BAD_CALL(init_two_vertices, body_init(POLYGON({0, 0}, {1, 0}), 1.0, RED))
 BAD_CALL(init_empty_shape, body_init(list_init(0, free), 1.0, RED))
 BAD_CALL(init_dart, body_init(POLYGON({0, 0}, {2, 0}, {1, 1}, {2, 2}, {0, 2}), 1.0, RED))
 BAD_CALL(init_line, body_init(POLYGON({0, 0}, {1, 1}, {2, 2}), 1.0, RED))
+BAD_CALL(init_huge_box, body_init(polygon_make_box(VEC_ZERO, 1e200, 1e200), 1.0, RED))
+BAD_CALL(init_straight_angle,
+         body_init(POLYGON({0, 0}, {1, 0}, {2, 0}, {2, 2}, {0, 2}), 1.0, RED))
 BAD_CALL(init_nan_vertex, body_init(POLYGON({0, 0}, {1, NAN}, {0, 1}), 1.0, RED))
 BAD_CALL(init_nan_mass, body_init(polygon_make_box(VEC_ZERO, 1, 1), NAN, RED))
 BAD_CALL(init_zero_mass, body_init(polygon_make_box(VEC_ZERO, 1, 1), 0.0, RED))
@@ -516,6 +553,11 @@ static void bad_input_aborts_with_message(void) {
     CHECK_DIES(init_empty_shape, NULL, "engine error in body_init:", "fewer than 3 vertices");
     CHECK_DIES(init_dart, NULL, "engine error in body_init:", "convex");
     CHECK_DIES(init_line, NULL, "engine error in body_init:", "zero area");
+    CHECK_DIES(init_huge_box, NULL,
+               "engine error in body_init: bad shape: polygon is too large: its area overflows");
+    CHECK_DIES(init_straight_angle, NULL,
+               "engine error in body_init: bad shape: polygon is not strictly convex: three "
+               "consecutive vertices are collinear");
     CHECK_DIES(init_nan_vertex, NULL, "engine error in body_init:", "not finite");
     CHECK_DIES(init_nan_mass, NULL, "engine error in body_init:", "mass", "NaN");
     CHECK_DIES(init_zero_mass, NULL, "engine error in body_init:", "mass", "got 0");
@@ -662,6 +704,8 @@ TEST_SUITE(body, TEST_CASE(init_starts_at_rest_at_the_area_centroid),
            TEST_CASE(reset_clears_force_torque_and_impulses),
            TEST_CASE(infinite_mass_is_immovable_but_can_be_kinematic),
            TEST_CASE(remove_marks_and_is_idempotent), TEST_CASE(inertia_of_a_box),
+           TEST_CASE(init_accepts_a_unit_box_far_from_the_origin),
+           TEST_CASE(init_accepts_a_regular_100000_gon),
            TEST_CASE(impulse_at_a_point_gives_the_right_spin),
            TEST_CASE(force_at_a_point_and_torque),
            TEST_CASE(set_inertia_overrides_and_infinity_stops_turning),

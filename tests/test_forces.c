@@ -509,6 +509,36 @@ static void destroyed_bodies_never_linger_in_the_record(void) {
     scene_free(scene);
 }
 
+static void force_creators_may_name_bodies_before_they_are_added(void) {
+    /* A body in no scene yet may be named; it is then added to that same
+     * scene, which frees it. Bodies already in the scene work as always. */
+    scene_t *scene = scene_init();
+    body_t *a = square(VEC_ZERO, 0.1, 2.0), *b = square((vector_t){3, 4}, 0.1, 5.0);
+    body_t *c = added(scene, square((vector_t){-3, 0}, 0.1, 1.0));
+    create_spring(scene, 10.0, a, b);
+    create_newtonian_gravity(scene, 1.0, a, c);
+    create_drag(scene, 0.5, b);
+    create_physics_collision(scene, b, c, 1.0);
+    scene_add_body(scene, a);
+    scene_add_body(scene, b);
+    create_spring(scene, 1.0, b, c); /* all three in the scene now */
+    const double dt = 0.01;
+    scene_tick(scene, dt);
+    /* a: spring toward b (10 (3, 4)) and gravity toward c (1 * 2 * 1 / 9). */
+    CHECK_VEC(body_get_velocity(a), (30.0 - 2.0 / 9.0) / 2.0 * dt, 40.0 / 2.0 * dt, 1e-14);
+    scene_free(scene);
+
+    /* Named but never added: the caller's again once that scene is freed. */
+    scene_t *first = scene_init(), *second = scene_init();
+    body_t *anchor = added(first, square((vector_t){1, 0}, 0.1, 1.0));
+    body_t *loose = square(VEC_ZERO, 0.1, 1.0);
+    create_spring(first, 1.0, anchor, loose);
+    scene_free(first);
+    scene_add_body(second, loose);
+    scene_free(second);
+    CHECK(test_no_leaks());
+}
+
 /* Programmer errors. */
 
 static body_t *any_body(void) {
@@ -553,6 +583,102 @@ BAD_CALL(handler_negative_elasticity,
          physics_collision_handler(any_body(), any_body(), (vector_t){1, 0}, NULL, -1.0))
 BAD_CALL(handler_null_body, physics_collision_handler(NULL, any_body(), (vector_t){1, 0}, NULL,
                                                       1.0))
+
+/* `mine` is in `scene` (or in none, for NULL); `theirs` in another scene,
+ * freed with it, which a force creator of `scene` would read afterwards. */
+static scene_t *two_scenes(body_t **mine, body_t **theirs) {
+    scene_t *scene = scene_init();
+    *mine = added(scene, any_body());
+    *theirs = added(scene_init(), square((vector_t){2, 0}, 0.5, 1.0));
+    return scene;
+}
+
+static void spring_to_another_scene(void *unused) {
+    (void)unused;
+    body_t *mine, *theirs;
+    scene_t *scene = two_scenes(&mine, &theirs);
+    create_spring(scene, 1.0, mine, theirs);
+}
+static void spring_from_another_scene(void *unused) {
+    (void)unused;
+    body_t *mine, *theirs;
+    scene_t *scene = two_scenes(&mine, &theirs);
+    create_spring(scene, 1.0, theirs, mine);
+}
+static void gravity_to_another_scene(void *unused) {
+    (void)unused;
+    body_t *mine, *theirs;
+    scene_t *scene = two_scenes(&mine, &theirs);
+    create_newtonian_gravity(scene, 1.0, mine, theirs);
+}
+static void drag_on_another_scene(void *unused) {
+    (void)unused;
+    body_t *mine, *theirs;
+    scene_t *scene = two_scenes(&mine, &theirs);
+    create_drag(scene, 1.0, theirs);
+}
+static void collision_with_another_scene(void *unused) {
+    (void)unused;
+    body_t *mine, *theirs;
+    scene_t *scene = two_scenes(&mine, &theirs);
+    create_collision(scene, mine, theirs, logging_handler, NULL, 0.0);
+}
+static void physics_collision_with_another_scene(void *unused) {
+    (void)unused;
+    body_t *mine, *theirs;
+    scene_t *scene = two_scenes(&mine, &theirs);
+    create_physics_collision(scene, mine, theirs, 1.0);
+}
+static void destructive_collision_with_another_scene(void *unused) {
+    (void)unused;
+    body_t *mine, *theirs;
+    scene_t *scene = two_scenes(&mine, &theirs);
+    create_destructive_collision(scene, theirs, mine);
+}
+static void no_force(void *aux) {
+    (void)aux;
+}
+static void bodies_force_creator_with_another_scene(void *unused) {
+    (void)unused;
+    body_t *mine, *theirs;
+    scene_t *scene = two_scenes(&mine, &theirs);
+    list_t *bodies = list_init(2, NULL);
+    list_add(bodies, mine);
+    list_add(bodies, theirs);
+    scene_add_bodies_force_creator(scene, no_force, NULL, bodies, NULL);
+}
+static void named_then_added_elsewhere(void *unused) {
+    /* A body in no scene that a force creator of one scene names is that
+     * scene's: adding it to another is refused. */
+    (void)unused;
+    scene_t *scene = scene_init();
+    body_t *a = added(scene, any_body()), *loose = any_body();
+    create_spring(scene, 1.0, a, loose);
+    scene_add_body(scene_init(), loose);
+}
+
+static void a_force_creator_refuses_a_body_of_another_scene(void) {
+    CHECK_DIES(spring_to_another_scene, NULL,
+               "engine error in create_spring: body2 belongs to another scene");
+    CHECK_DIES(spring_from_another_scene, NULL,
+               "engine error in create_spring: body1 belongs to another scene");
+    CHECK_DIES(gravity_to_another_scene, NULL,
+               "engine error in create_newtonian_gravity: body2 belongs to another scene");
+    CHECK_DIES(drag_on_another_scene, NULL,
+               "engine error in create_drag: body belongs to another scene");
+    CHECK_DIES(collision_with_another_scene, NULL,
+               "engine error in create_collision: body2 belongs to another scene");
+    CHECK_DIES(physics_collision_with_another_scene, NULL,
+               "engine error in create_physics_collision: body2 belongs to another scene");
+    CHECK_DIES(destructive_collision_with_another_scene, NULL,
+               "engine error in create_destructive_collision: body1 belongs to another scene");
+    CHECK_DIES(bodies_force_creator_with_another_scene, NULL,
+               "engine error in scene_add_bodies_force_creator: bodies[1] belongs to another "
+               "scene");
+    CHECK_DIES(named_then_added_elsewhere, NULL,
+               "engine error in scene_add_body: body is used by a force creator of another "
+               "scene");
+}
 
 static void bad_input_aborts_with_message(void) {
     CHECK_DIES(gravity_null_scene, NULL, "engine error in create_newtonian_gravity:",
@@ -611,4 +737,6 @@ TEST_SUITE(forces, TEST_CASE(spring_is_hooke_with_rest_length_zero),
            TEST_CASE(ball_bounces_between_infinite_walls),
            TEST_CASE(seed_collisions_are_in_the_record),
            TEST_CASE(destroyed_bodies_never_linger_in_the_record),
+           TEST_CASE(force_creators_may_name_bodies_before_they_are_added),
+           TEST_CASE(a_force_creator_refuses_a_body_of_another_scene),
            TEST_CASE(bad_input_aborts_with_message));

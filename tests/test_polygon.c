@@ -186,6 +186,54 @@ static void moment_of_inertia_of_known_shapes(void) {
     list_free(square);
 }
 
+/* A 1 m box centred at `center`. */
+static list_t *unit_box_at(vector_t center) {
+    return polygon_make_box(center, 0.5, 0.5);
+}
+
+static void area_and_check_of_a_unit_box_far_from_the_origin(void) {
+    /* A centre off the grid of doubles rounds each corner by up to half the
+     * spacing there, so each side is 1 m within one spacing and the area 1
+     * within about two: 2^-33 ~ 1.2e-10 at 1e6 m, 2^-19 ~ 1.9e-6 at 1e10 m.
+     * At 1e8 m the centre is on the grid: the corners are exact and so must
+     * be the area, to rounding. */
+    const struct {
+        vector_t center;
+        double tolerance;
+    } cases[] = {
+        {{1e6 + 0.3, 1e6 - 0.7}, 1e-9},
+        {{1e8, 1e8}, 1e-9},
+        {{-1e8 + 0.25, 1e8 + 0.125}, 1e-9},
+        {{1e10 + 0.3, -1e10 - 0.7}, 4e-6},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        list_t *box = unit_box_at(cases[i].center);
+        CHECK_NEAR(polygon_area(box), 1.0, cases[i].tolerance);
+        CHECK(polygon_check(box) == NULL);
+        CHECK(polygon_is_counterclockwise(box));
+        reverse(box);
+        CHECK_NEAR(polygon_area(box), -1.0, cases[i].tolerance);
+        CHECK(polygon_check(box) == NULL);
+        list_free(box);
+    }
+    /* A triangle of legs 3 and 4 at 1e8 m (exact corners): area 6. */
+    list_t *triangle = POLYGON({1e8, 1e8}, {1e8 + 3, 1e8}, {1e8, 1e8 + 4});
+    CHECK_RELATIVE(polygon_area(triangle), 6.0, 1e-9);
+    CHECK(polygon_check(triangle) == NULL);
+    list_free(triangle);
+}
+
+static void check_accepts_a_regular_100000_gon(void) {
+    /* Each turn is 2 pi / 1e5 = 6.3e-5 rad between edges 6.3e-5 m long: a
+     * valid convex polygon, if a fine one. Area n/2 sin(2 pi / n). */
+    const size_t n = 100000;
+    list_t *polygon = polygon_make_regular(n, 1.0, (vector_t){3, -4}, 0.1);
+    CHECK(polygon_check(polygon) == NULL);
+    CHECK_RELATIVE(polygon_area(polygon), 0.5 * (double)n * sin(2 * M_PI / (double)n), 1e-12);
+    CHECK_RELATIVE(polygon_moment_of_inertia(polygon, 2.0), 1.0, 1e-8); /* m R^2 / 2 */
+    list_free(polygon);
+}
+
 static void check_accepts_usable_shapes(void) {
     list_t *ccw = POLYGON({0, 0}, {1, 0}, {0, 1});
     list_t *cw = POLYGON({0, 0}, {0, 1}, {1, 0});
@@ -218,8 +266,8 @@ static void check_names_each_problem(void) {
     CHECK(refused_with(NULL, "NULL"));
     CHECK(refused_with(list_init(0, free), "fewer than 3 vertices"));
     CHECK(refused_with(POLYGON({0, 0}, {1, 0}), "fewer than 3 vertices"));
-    list_t *with_null = POLYGON({0, 0}, {1, 0});
-    list_add(with_null, NULL);
+    list_t *with_null = POLYGON({0, 0}, {1, 0}, {0, 1});
+    free(list_set(with_null, 2, NULL)); /* list_add refuses NULL */
     CHECK(refused_with(with_null, "NULL vertex"));
     CHECK(refused_with(POLYGON({0, 0}, {NAN, 0}, {0, 1}), "not finite"));
     CHECK(refused_with(POLYGON({0, 0}, {INFINITY, 0}, {0, 1}), "not finite"));
@@ -246,6 +294,27 @@ static void check_names_each_problem(void) {
         star[i] = (vector_t){cos(a), sin(a)};
     }
     CHECK(refused_with(test_make_polygon(star, 5), "more than once"));
+}
+
+static void check_refuses_a_box_whose_area_overflows(void) {
+    /* 2e200 m wide: its area, 4e400 m^2, is not a double. */
+    CHECK(refused_with(polygon_make_box(VEC_ZERO, 1e200, 1e200),
+                       "polygon is too large: its area overflows"));
+    CHECK(refused_with(POLYGON({-1e300, 0}, {1e300, 0}, {0, 1e300}),
+                       "polygon is too large: its area overflows"));
+}
+
+static void check_tells_a_reflex_vertex_from_a_straight_angle(void) {
+    CHECK(refused_with(POLYGON({0, 0}, {2, 0}, {1, 1}, {2, 2}, {0, 2}),
+                       "polygon is not strictly convex: a vertex turns against the winding"));
+    CHECK(refused_with(POLYGON({0, 0}, {1, 0}, {2, 0}, {2, 2}, {0, 2}),
+                       "polygon is not strictly convex: three consecutive vertices are "
+                       "collinear"));
+    /* Collinear to rounding far from the origin: the middle vertex of the
+     * bottom edge sits on the line through its neighbours. */
+    CHECK(refused_with(POLYGON({1e8, 1e8}, {1e8 + 0.5, 1e8}, {1e8 + 1, 1e8}, {1e8 + 1, 1e8 + 1},
+                               {1e8, 1e8 + 1}),
+                       "collinear"));
 }
 
 static void make_regular(void) {
@@ -314,8 +383,8 @@ static void ccw_of_null(void *unused) {
     polygon_is_counterclockwise(NULL);
 }
 static list_t *with_null_vertex(void) {
-    list_t *polygon = POLYGON({0, 0}, {1, 0});
-    list_add(polygon, NULL);
+    list_t *polygon = POLYGON({0, 0}, {1, 0}, {0, 1});
+    free(list_set(polygon, 2, NULL)); /* list_add refuses NULL */
     return polygon;
 }
 static void area_with_null_vertex(void *unused) {
@@ -443,5 +512,10 @@ TEST_SUITE(polygon, TEST_CASE(area_of_known_shapes), TEST_CASE(area_is_signed_by
            TEST_CASE(centroid_of_degenerate_lists), TEST_CASE(translate_moves_every_vertex),
            TEST_CASE(rotate_about_a_point_counterclockwise),
            TEST_CASE(moment_of_inertia_of_known_shapes), TEST_CASE(check_accepts_usable_shapes),
-           TEST_CASE(check_names_each_problem), TEST_CASE(make_regular), TEST_CASE(make_box),
+           TEST_CASE(area_and_check_of_a_unit_box_far_from_the_origin),
+           TEST_CASE(check_accepts_a_regular_100000_gon),
+           TEST_CASE(check_names_each_problem),
+           TEST_CASE(check_refuses_a_box_whose_area_overflows),
+           TEST_CASE(check_tells_a_reflex_vertex_from_a_straight_angle),
+           TEST_CASE(make_regular), TEST_CASE(make_box),
            TEST_CASE(bad_input_aborts_with_message));

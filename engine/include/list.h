@@ -11,8 +11,9 @@
  * removed element back to the caller, who then owns it.
  *
  * Programmer errors (a NULL list, an index out of range, an initial capacity
- * whose size in bytes overflows a size_t) stop the program with a message on
- * stderr naming the function and the bad value. NULL elements are allowed.
+ * whose size in bytes overflows a size_t, a NULL element given to list_add)
+ * stop the program with a message on stderr naming the function and the bad
+ * value ("engine error in list_add: element is NULL").
  */
 
 typedef struct list list_t;
@@ -36,12 +37,14 @@ void *list_get(list_t *list, size_t index);
  * returns it (the caller now owns it). */
 void *list_remove(list_t *list, size_t index);
 
-/* Appends value at the end, growing the list as needed (amortised O(1)). */
+/* Appends value (not NULL) at the end, growing the list as needed
+ * (amortised O(1)). */
 void list_add(list_t *list, void *value);
 
 /* Additions beyond the seed API. */
 
-/* Replaces the element at index and returns the old one (not freed). */
+/* Replaces the element at index and returns the old one (not freed).
+ * value may be NULL, which blanks the slot; a freer must then accept NULL. */
 void *list_set(list_t *list, size_t index, void *value);
 
 #endif // #ifndef LIST_H

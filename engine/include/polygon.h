@@ -41,13 +41,20 @@ void polygon_rotate(list_t *polygon, double angle, vector_t point);
 double polygon_moment_of_inertia(list_t *polygon, double mass);
 
 /* NULL when the list is a usable body shape: at least 3 vertices, none NULL,
- * all finite, non-zero area, no repeated vertex (consecutive duplicates),
- * strictly convex (three collinear consecutive vertices are refused too) and
- * winding around once; clockwise is usable (bodies reverse it). Otherwise a
- * static message naming the problem, one of: "polygon is NULL", "polygon has
- * fewer than 3 vertices", "polygon has a NULL vertex", "polygon has a vertex
- * that is not finite", "polygon has zero area", "polygon repeats a vertex",
- * "polygon is not strictly convex", "polygon winds around more than once". */
+ * all finite, not so large that its area (or the square of its size)
+ * overflows a double, non-zero area, no repeated vertex (consecutive
+ * duplicates), strictly convex (three collinear consecutive vertices are
+ * refused too) and winding around once; clockwise is usable (bodies reverse
+ * it). Where the polygon lies does not matter: a 1 m box at 1e10 m is usable.
+ * Convexity is judged on the sine of the turn between consecutive edges (at
+ * most 1e-12 counts as a straight angle), so a regular polygon with 100000
+ * sides is usable. Otherwise a static message naming the problem, one of:
+ * "polygon is NULL", "polygon has fewer than 3 vertices", "polygon has a
+ * NULL vertex", "polygon has a vertex that is not finite", "polygon is too
+ * large: its area overflows", "polygon has zero area", "polygon repeats a
+ * vertex", "polygon is not strictly convex: a vertex turns against the
+ * winding", "polygon is not strictly convex: three consecutive vertices are
+ * collinear", "polygon winds around more than once". */
 const char *polygon_check(list_t *polygon);
 
 /* True when the vertices run counter-clockwise (positive signed area). */

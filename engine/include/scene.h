@@ -55,7 +55,8 @@ size_t scene_bodies(scene_t *scene);
 body_t *scene_get_body(scene_t *scene, size_t index);
 
 /* Adds a body; the scene now owns it. A body belongs to one scene, once:
- * adding it again, here or to another scene, is refused. */
+ * adding it again, here or to another scene, is refused, and so is adding a
+ * body that a force creator of another scene names (below). */
 void scene_add_body(scene_t *scene, body_t *body);
 
 /* Deprecated: use body_remove. Marks the body at index for removal. */
@@ -71,11 +72,22 @@ void scene_add_force_creator(scene_t *scene, force_creator_t forcer, void *aux,
  * list never frees the bodies in it, whatever freer it was made with). When
  * any of them is removed, the force creator is dropped and freer(aux) is
  * called (freer may be NULL).
+ *
+ * Every body must be this scene's: a body of another scene is refused
+ * ("bodies[1] belongs to another scene"; the create_* functions of forces.h
+ * say "body2 belongs to another scene"), since that scene would free it
+ * while this one's force creator still reads it. A body in no scene yet is
+ * allowed and becomes this scene's: add it here (adding it to another scene
+ * is refused) or keep it alive yourself; scene_free lets it go again.
  */
 void scene_add_bodies_force_creator(scene_t *scene, force_creator_t forcer, void *aux,
                                     list_t *bodies, free_func_t freer);
 
-/* Advances the scene by dt seconds (finite, > 0): the stages listed above. */
+/* Advances the scene by dt seconds (finite, >= 0): the stages listed above.
+ * dt = 0 runs no force creator, no world contact and no integration: bodies
+ * keep their poses, velocities and accumulated forces and impulses; it only
+ * reaps the bodies marked removed (stage 4) and clears the record. Negative,
+ * NaN or infinite dt stops the program ("dt must be finite and >= 0"). */
 void scene_tick(scene_t *scene, double dt);
 
 /* Additions beyond the seed API. */

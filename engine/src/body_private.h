@@ -54,6 +54,10 @@ struct body {
 
     /* Whether a scene owns the body (a body belongs to one scene, once). */
     bool in_scene;
+    /* The scene that owns the body or whose force creators name it (before
+     * it is added); NULL for neither. A force creator of one scene must not
+     * read a body that another scene frees. */
+    struct scene *scene;
     /* Set by the scene: a number no other body of the scene has had, so
      * contact caches can match pairs across steps even as indices shift. */
     uint32_t id;

@@ -23,6 +23,13 @@ static list_t *bodies_list(body_t *body1, body_t *body2) {
     return bodies;
 }
 
+/* Bodies of another scene are refused: that scene would free them while
+ * this one's force creator still reads them. */
+static void claim_pair(scene_t *scene, body_t *body1, body_t *body2, const char *function) {
+    scene_claim_body(scene, body1, "body1", function);
+    scene_claim_body(scene, body2, "body2", function);
+}
+
 static void add_pair_force_creator(scene_t *scene, force_creator_t forcer, double constant,
                                    body_t *body1, body_t *body2) {
     pair_aux_t *aux = memory_alloc(sizeof(pair_aux_t));
@@ -47,6 +54,7 @@ void create_newtonian_gravity(scene_t *scene, double G, body_t *body1, body_t *b
     REQUIRE_NOT_NULL(body1);
     REQUIRE_NOT_NULL(body2);
     REQUIRE(isfinite(G) && G >= 0.0, "G must be finite and >= 0 (got %g)", G);
+    claim_pair(scene, body1, body2, __func__);
     add_pair_force_creator(scene, newtonian_gravity, G, body1, body2);
 }
 
@@ -63,6 +71,7 @@ void create_spring(scene_t *scene, double k, body_t *body1, body_t *body2) {
     REQUIRE_NOT_NULL(body1);
     REQUIRE_NOT_NULL(body2);
     REQUIRE(isfinite(k) && k >= 0.0, "k must be finite and >= 0 (got %g)", k);
+    claim_pair(scene, body1, body2, __func__);
     add_pair_force_creator(scene, spring, k, body1, body2);
 }
 
@@ -75,6 +84,7 @@ void create_drag(scene_t *scene, double gamma, body_t *body) {
     REQUIRE_NOT_NULL(scene);
     REQUIRE_NOT_NULL(body);
     REQUIRE(isfinite(gamma) && gamma >= 0.0, "gamma must be finite and >= 0 (got %g)", gamma);
+    scene_claim_body(scene, body, "body", __func__);
     add_pair_force_creator(scene, drag, gamma, body, NULL);
 }
 
@@ -139,6 +149,7 @@ void create_collision(scene_t *scene, body_t *body1, body_t *body2,
     REQUIRE_NOT_NULL(body2);
     REQUIRE_NOT_NULL(handler);
     REQUIRE(body1 != body2, "a body cannot collide with itself");
+    claim_pair(scene, body1, body2, __func__);
     collision_aux_t *collision = memory_alloc(sizeof(collision_aux_t));
     *collision = (collision_aux_t){scene, body1, body2, handler, aux, force_const, false};
     scene_add_bodies_force_creator(scene, collision_force_creator, collision,
@@ -157,6 +168,7 @@ void create_destructive_collision(scene_t *scene, body_t *body1, body_t *body2) 
     REQUIRE_NOT_NULL(body1);
     REQUIRE_NOT_NULL(body2);
     REQUIRE(body1 != body2, "a body cannot collide with itself");
+    claim_pair(scene, body1, body2, __func__);
     create_collision(scene, body1, body2, destructive_collision_handler, NULL, 0.0);
 }
 
@@ -193,5 +205,6 @@ void create_physics_collision(scene_t *scene, body_t *body1, body_t *body2, doub
     REQUIRE(body1 != body2, "a body cannot collide with itself");
     REQUIRE(isfinite(elasticity) && elasticity >= 0.0,
             "elasticity must be finite and >= 0 (got %g)", elasticity);
+    claim_pair(scene, body1, body2, __func__);
     create_collision(scene, body1, body2, physics_collision_handler, NULL, elasticity);
 }

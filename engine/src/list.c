@@ -64,6 +64,9 @@ void *list_remove(list_t *list, size_t index) {
 
 void list_add(list_t *list, void *value) {
     REQUIRE_NOT_NULL(list);
+    /* The course's contract: a NULL added is a bug, caught here rather than
+     * where a reader of the list dereferences it. */
+    REQUIRE(value != NULL, "element is NULL");
     if (list->size == list->capacity) {
         list->capacity = list->capacity < 4 ? 4 : list->capacity * 2;
         list->items = memory_realloc(list->items, list->capacity * sizeof(void *));

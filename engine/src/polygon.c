@@ -37,9 +37,15 @@ static void buffer_release(vertex_buffer_t *buffer) {
 }
 
 double polygon_array_signed_area(const vector_t *vertices, size_t count) {
+    if (count < 3) return 0.0;
+    /* A fan from the first vertex: products of absolute coordinates would
+     * bury the area in their rounding far from the origin (a unit box at
+     * 1e8 m came out 0). The two edges at that vertex add nothing. */
+    vector_t origin = vertices[0];
     double twice_area = 0.0;
-    for (size_t i = 0; i < count; i++) {
-        twice_area += vec_cross(vertices[i], vertices[(i + 1) % count]);
+    for (size_t i = 1; i + 1 < count; i++) {
+        twice_area += vec_cross(vec_subtract(vertices[i], origin),
+                                vec_subtract(vertices[i + 1], origin));
     }
     return 0.5 * twice_area;
 }
@@ -61,8 +67,8 @@ vector_t polygon_array_centroid(const vector_t *vertices, size_t count) {
     if (twice_area == 0.0) {
         /* Degenerate: fall back to the vertex mean so callers get a point. */
         vector_t mean = VEC_ZERO;
-        for (size_t i = 0; i < count; i++) mean = vec_add(mean, vertices[i]);
-        return vec_multiply(1.0 / (double)count, mean);
+        for (size_t i = 0; i < count; i++) mean = vec_add(mean, vec_subtract(vertices[i], origin));
+        return vec_add(origin, vec_multiply(1.0 / (double)count, mean));
     }
     return vec_add(origin, vec_multiply(1.0 / (3.0 * twice_area), sum));
 }
@@ -82,15 +88,28 @@ double polygon_array_moment(const vector_t *vertices, size_t count, double mass)
     return mass * numerator / (6.0 * denominator);
 }
 
+/* The least sine of the turn between consecutive edges for a strictly
+ * convex vertex. Edges are differences of two vertices, rounded once, so
+ * their cross product over their lengths is good to ~1e-15 wherever the
+ * polygon is and whatever its size; 1e-12 stays clear of that and still
+ * accepts a regular polygon of millions of sides. */
+static const double MIN_TURN_SINE = 1e-12;
+
 const char *polygon_array_check(const vector_t *vertices, size_t count) {
     if (count < 3) return "polygon has fewer than 3 vertices";
     for (size_t i = 0; i < count; i++) {
         if (!vec_is_finite(vertices[i])) return "polygon has a vertex that is not finite";
     }
     double area = polygon_array_signed_area(vertices, count);
+    /* The squared size, relative to the first vertex like the area. */
     double scale = 0.0;
     for (size_t i = 0; i < count; i++) {
         scale = fmax(scale, vec_get_length_squared(vec_subtract(vertices[i], vertices[0])));
+    }
+    /* Edges reach twice the size, so their products reach 4 scale: past
+     * that the tests below would compare infinities. */
+    if (!isfinite(area) || !isfinite(4.0 * scale)) {
+        return "polygon is too large: its area overflows";
     }
     if (!(fabs(area) > 1e-12 * scale) || scale == 0.0) return "polygon has zero area";
     double sign = area > 0.0 ? 1.0 : -1.0;
@@ -103,11 +122,17 @@ const char *polygon_array_check(const vector_t *vertices, size_t count) {
     for (size_t i = 0; i < count; i++) {
         vector_t edge = vec_subtract(vertices[(i + 1) % count], vertices[i]);
         vector_t next = vec_subtract(vertices[(i + 2) % count], vertices[(i + 1) % count]);
-        /* A turn against the winding, or a straight angle, means the polygon
-         * is not strictly convex; collinear vertices would give zero-length
-         * edge normals trouble in the narrowphase. */
-        double turn = sign * vec_cross(edge, next);
-        if (turn <= 1e-12 * scale) return "polygon is not strictly convex";
+        /* The sine of the turn, not the bare cross product: against the
+         * polygon's size, fine polygons' short edges looked straight. A
+         * straight angle is refused too: its two edges would share a normal
+         * in the narrowphase. */
+        double sine = sign * vec_cross(edge, next) / (vec_get_length(edge) * vec_get_length(next));
+        if (sine < -MIN_TURN_SINE) {
+            return "polygon is not strictly convex: a vertex turns against the winding";
+        }
+        if (!(sine > MIN_TURN_SINE)) {
+            return "polygon is not strictly convex: three consecutive vertices are collinear";
+        }
     }
     /* Every turn has the same sign; the polygon could still wind around more
      * than once (a pentagram). Its turning angles then add up to more than

@@ -59,8 +59,27 @@ static void force_entry_free(force_entry_t *entry) {
     free_body_list(entry->bodies);
 }
 
+/* Whether the body is another scene's, owned or named by its force
+ * creators: this scene's creators must not read it. */
+static bool belongs_elsewhere(const scene_t *scene, const body_t *body) {
+    return body->scene != NULL && body->scene != scene;
+}
+
+/* Bodies that force creators named but that were never added go back to
+ * the caller, free to join another scene now that no creator reads them. */
+static void release_unowned_bodies(scene_t *scene) {
+    for (size_t i = 0; i < scene->force_count; i++) {
+        list_t *bodies = scene->forces[i].bodies;
+        for (size_t j = 0; bodies != NULL && j < list_size(bodies); j++) {
+            body_t *body = list_get(bodies, j);
+            if (!body->in_scene) body->scene = NULL;
+        }
+    }
+}
+
 void scene_free(scene_t *scene) {
     REQUIRE_NOT_NULL(scene);
+    release_unowned_bodies(scene);
     for (size_t i = 0; i < scene->force_count; i++) force_entry_free(&scene->forces[i]);
     for (size_t i = 0; i < scene->body_count; i++) body_free(scene->bodies[i]);
     memory_free(scene->forces);
@@ -86,7 +105,9 @@ void scene_add_body(scene_t *scene, body_t *body) {
     REQUIRE_NOT_NULL(scene);
     REQUIRE_NOT_NULL(body);
     REQUIRE(!body->in_scene, "body already belongs to a scene (added twice?)");
+    REQUIRE(!belongs_elsewhere(scene, body), "body is used by a force creator of another scene");
     body->in_scene = true;
+    body->scene = scene;
     memory_reserve((void **)&scene->bodies, &scene->body_capacity, scene->body_count + 1,
                    sizeof(body_t *));
     body->id = scene->next_body_id++;
@@ -120,10 +141,20 @@ void scene_add_bodies_force_creator(scene_t *scene, force_creator_t forcer, void
     REQUIRE_NOT_NULL(forcer);
     if (bodies != NULL) {
         for (size_t i = 0; i < list_size(bodies); i++) {
-            REQUIRE(list_get(bodies, i) != NULL, "bodies[%zu] is NULL", i);
+            body_t *body = list_get(bodies, i);
+            REQUIRE(body != NULL, "bodies[%zu] is NULL", i);
+            REQUIRE(!belongs_elsewhere(scene, body), "bodies[%zu] belongs to another scene", i);
+        }
+        for (size_t i = 0; i < list_size(bodies); i++) {
+            ((body_t *)list_get(bodies, i))->scene = scene;
         }
     }
     add_force_entry(scene, forcer, aux, bodies, freer);
+}
+
+void scene_claim_body(scene_t *scene, body_t *body, const char *name, const char *function) {
+    if (belongs_elsewhere(scene, body)) engine_fail(function, "%s belongs to another scene", name);
+    body->scene = scene;
 }
 
 void scene_set_gravity(scene_t *scene, vector_t gravity) {
@@ -288,10 +319,16 @@ static void stage_reap(scene_t *scene) {
 
 void scene_tick(scene_t *scene, double dt) {
     REQUIRE_NOT_NULL(scene);
-    REQUIRE(isfinite(dt) && dt > 0.0, "dt must be finite and > 0 (got %g)", dt);
+    REQUIRE(isfinite(dt) && dt >= 0.0, "dt must be finite and >= 0 (got %g)", dt);
     scene->record_count = 0;
     scene->record_needs_world = false;
     scene->stats = (scene_stats_t){0};
+    if (dt == 0.0) {
+        /* No time passes, so nothing may move or collide; the caller only
+         * wants the pending removals applied (a paused game). */
+        stage_reap(scene);
+        return;
+    }
     if (scene->force_count > 0) stage_forces(scene);
     if (scene->world != NULL && scene->body_count > 0) {
         world_step_t step = {dt, scene->gravity, scene->integrator};

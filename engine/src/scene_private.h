@@ -9,4 +9,9 @@
 /* Appends an entry to the record of the tick in progress. */
 void scene_record_contact(scene_t *scene, const contact_t *entry);
 
+/* Lets a force creator of `scene` name `body`: stops the program (naming
+ * `function` and the parameter `name`) when the body belongs to another
+ * scene; a body in no scene yet becomes this scene's, to be added here. */
+void scene_claim_body(scene_t *scene, body_t *body, const char *name, const char *function);
+
 #endif // #ifndef SCENE_PRIVATE_H
