@@ -5,8 +5,13 @@
 
 #include "contact.h"
 #include "scene.h"
+#include "world.h"
 
 /* Appends an entry to the record of the tick in progress. */
 void scene_record_contact(scene_t *scene, const contact_t *entry);
+
+/* The scene's world contact pipeline, NULL while contacts are off. Between
+ * ticks (and in stage 1) it holds the contacts of the last step. */
+world_t *scene_get_world(scene_t *scene);
 
 #endif // #ifndef SCENE_PRIVATE_H
