@@ -539,6 +539,255 @@ static void force_creators_may_name_bodies_before_they_are_added(void) {
     CHECK(test_no_leaks());
 }
 
+/* Collision handlers with world contacts on: the handler follows the world
+ * contact of the pair, one tick after the step in which the pair first
+ * touched (forces.h). */
+
+static const double WORLD_DT = 1.0 / 60.0;
+static const double MEETING_SPEEDS[] = {0.1, 0.3, 1.0, 3.0, 10.0, 30.0, 100.0};
+static const double MEETING_ELASTICITIES[] = {0.0, 0.5, 1.0};
+#define COUNT_OF(array) (sizeof(array) / sizeof((array)[0]))
+
+typedef struct {
+    int calls;
+    body_t *body1, *body2;
+    vector_t axis;
+    /* dot(axis, centroid2 - centroid1) at the call: > 0 when the axis points
+     * from body1 toward body2. */
+    double along;
+} meeting_log_t;
+
+static void meeting_handler(body_t *body1, body_t *body2, vector_t axis, void *aux,
+                            double force_const) {
+    (void)force_const;
+    meeting_log_t *log = aux;
+    log->calls++;
+    log->body1 = body1;
+    log->body2 = body2;
+    log->axis = axis;
+    log->along = vec_dot(axis, vec_subtract(body_get_centroid(body2), body_get_centroid(body1)));
+}
+
+/* Whether the record of the last tick holds a touching world contact of the
+ * pair (in either order). */
+static bool world_contact_touching(scene_t *scene, body_t *a, body_t *b) {
+    for (size_t i = 0; i < scene_contact_count(scene); i++) {
+        const contact_t *c = scene_get_contact(scene, i);
+        if (c->kind != CONTACT_WORLD || !c->touching) continue;
+        if ((c->body1 == a && c->body2 == b) || (c->body1 == b && c->body2 == a)) return true;
+    }
+    return false;
+}
+
+/* The record entry of a handler call of the pair in the last tick, or NULL. */
+static const contact_t *seed_entry(scene_t *scene, body_t *body1, body_t *body2) {
+    for (size_t i = 0; i < scene_contact_count(scene); i++) {
+        const contact_t *c = scene_get_contact(scene, i);
+        if (c->kind == CONTACT_SEED && c->body1 == body1 && c->body2 == body2) return c;
+    }
+    return NULL;
+}
+
+/* A ball (regular octagon of radius 0.5, mass 1) on the x axis, moving at
+ * speed toward a box of half side 0.5 at the origin (static, or of mass 1)
+ * which it reaches after 0.5 s plus phase steps; gravity 0, world contacts
+ * on, both bodies of elasticity e. The box is added first, so the world
+ * orders the pair (box, ball). */
+typedef struct {
+    scene_t *scene;
+    body_t *ball, *box;
+} meeting_t;
+
+static meeting_t meeting(double speed, double e, double box_mass, double phase) {
+    meeting_t m = {scene_init(), NULL, NULL};
+    scene_set_contacts_enabled(m.scene, true);
+    m.box = added(m.scene, square(VEC_ZERO, 0.5, box_mass));
+    double gap = speed * (0.5 + phase * WORLD_DT);
+    m.ball = added(m.scene, body_init(polygon_make_regular(8, 0.5, (vector_t){-1.0 - gap, 0}, 0),
+                                      1.0, BLUE));
+    body_set_velocity(m.ball, (vector_t){speed, 0});
+    body_set_elasticity(m.ball, e);
+    body_set_elasticity(m.box, e);
+    return m;
+}
+
+static void handler_fires_once_per_meeting_at_any_speed_and_elasticity(void) {
+    const double box_masses[] = {INFINITY, 1.0};
+    const double phases[] = {0.0, 0.5};
+    for (size_t s = 0; s < COUNT_OF(MEETING_SPEEDS); s++) {
+        for (size_t k = 0; k < COUNT_OF(MEETING_ELASTICITIES); k++) {
+            for (size_t mass = 0; mass < COUNT_OF(box_masses); mass++) {
+                for (size_t p = 0; p < COUNT_OF(phases); p++) {
+                    for (int reversed = 0; reversed < 2; reversed++) {
+                        double speed = MEETING_SPEEDS[s], e = MEETING_ELASTICITIES[k];
+                        meeting_t m = meeting(speed, e, box_masses[mass], phases[p]);
+                        /* Registered in the world's order of the pair and in
+                         * the other: the handler gets them as registered. */
+                        body_t *body1 = reversed ? m.box : m.ball;
+                        body_t *body2 = reversed ? m.ball : m.box;
+                        meeting_log_t log = {0};
+                        create_collision(m.scene, body1, body2, meeting_handler, &log, 0.0);
+                        int first_touch = -1, fired_at = -1;
+                        for (int tick = 0; tick < 100; tick++) {
+                            int calls = log.calls;
+                            scene_tick(m.scene, WORLD_DT);
+                            if (log.calls > calls && fired_at < 0) {
+                                fired_at = tick;
+                                const contact_t *entry = seed_entry(m.scene, body1, body2);
+                                CHECK(entry != NULL);
+                                if (entry != NULL) {
+                                    CHECK(entry->touching);
+                                    CHECK(entry->point_count == 1 || entry->point_count == 2);
+                                    CHECK_VEC(entry->axis, log.axis.x, log.axis.y, 0);
+                                }
+                            }
+                            if (first_touch < 0 && world_contact_touching(m.scene, m.ball, m.box)) {
+                                first_touch = tick;
+                            }
+                        }
+                        if (log.calls != 1 || fired_at != first_touch + 1) {
+                            printf("    speed %g, e %g, box mass %g, phase %g, %s: %d calls, "
+                                   "first touch at tick %d, fired at %d\n",
+                                   speed, e, box_masses[mass], phases[p],
+                                   reversed ? "(box, ball)" : "(ball, box)", log.calls,
+                                   first_touch, fired_at);
+                        }
+                        CHECK(log.calls == 1);
+                        CHECK(first_touch >= 0);
+                        CHECK(fired_at == first_touch + 1); /* the tick after */
+                        CHECK(log.body1 == body1 && log.body2 == body2);
+                        CHECK(log.along > 0.0);
+                        CHECK_NEAR(vec_get_length(log.axis), 1.0, 1e-12);
+                        CHECK_NEAR(fabs(log.axis.x), 1.0, 1e-9); /* head on */
+                        scene_free(m.scene);
+                    }
+                }
+            }
+        }
+    }
+}
+
+static void resting_pair_fires_once_and_again_after_parting(void) {
+    /* A box resting on a static floor under gravity: touching at every step,
+     * one call. The world has no contact before its first step, so the call
+     * comes at the second tick. */
+    scene_t *scene = scene_init();
+    scene_set_contacts_enabled(scene, true);
+    scene_set_gravity(scene, (vector_t){0, -10});
+    body_t *floor = added(scene, body_init(polygon_make_box((vector_t){0, -0.5}, 10, 0.5),
+                                           INFINITY, BLUE));
+    body_t *box = added(scene, square((vector_t){0, 0.5}, 0.5, 1.0));
+    meeting_log_t log = {0};
+    create_collision(scene, box, floor, meeting_handler, &log, 0.0);
+    scene_tick(scene, WORLD_DT);
+    CHECK(log.calls == 0);
+    scene_tick(scene, WORLD_DT);
+    CHECK(log.calls == 1);
+    CHECK(log.body1 == box && log.body2 == floor);
+    CHECK_VEC(log.axis, 0, -1, 1e-12); /* from the box down to the floor */
+    for (int i = 0; i < 120; i++) {
+        scene_tick(scene, WORLD_DT);
+        CHECK(world_contact_touching(scene, box, floor));
+    }
+    CHECK(log.calls == 1);
+    /* Thrown up 0.45 m, it parts from the floor and lands again: a second
+     * meeting. */
+    body_set_velocity(box, (vector_t){0, 3});
+    int apart_ticks = 0;
+    for (int i = 0; i < 120; i++) {
+        scene_tick(scene, WORLD_DT);
+        apart_ticks += !world_contact_touching(scene, box, floor);
+    }
+    CHECK(apart_ticks > 30);
+    CHECK(log.calls == 2);
+    CHECK(log.along > 0.0);
+    /* Two movable boxes pushed together (gravity 0, inelastic) drift on as
+     * one: one call however long they stay pressed. */
+    scene_set_gravity(scene, VEC_ZERO);
+    body_t *a = added(scene, square((vector_t){0, 5}, 0.5, 1.0));
+    body_t *b = added(scene, square((vector_t){1.2, 5}, 0.5, 2.0));
+    body_set_velocity(a, (vector_t){2, 0});
+    meeting_log_t pair_log = {0};
+    create_collision(scene, a, b, meeting_handler, &pair_log, 0.0);
+    for (int i = 0; i < 200; i++) scene_tick(scene, WORLD_DT);
+    CHECK(pair_log.calls == 1);
+    CHECK(pair_log.along > 0.0);
+    CHECK_NEAR(body_get_velocity(a).x, body_get_velocity(b).x, 1e-9);
+    scene_free(scene);
+}
+
+static void destructive_collision_with_world_contacts_removes_both(void) {
+    /* A ball hits a brick (static, or movable) at every speed: both are
+     * freed at the end of the tick after the step in which they first
+     * touched, and the ball never gets through the brick. */
+    const double brick_masses[] = {INFINITY, 1.0};
+    for (size_t s = 0; s < COUNT_OF(MEETING_SPEEDS); s++) {
+        for (size_t k = 0; k < COUNT_OF(MEETING_ELASTICITIES); k++) {
+            for (size_t mass = 0; mass < COUNT_OF(brick_masses); mass++) {
+                double speed = MEETING_SPEEDS[s];
+                meeting_t m = meeting(speed, MEETING_ELASTICITIES[k], brick_masses[mass], 0.3);
+                body_t *bystander = added(m.scene, square((vector_t){0, 10}, 0.5, 1.0));
+                create_destructive_collision(m.scene, m.ball, m.box);
+                int first_touch = -1, tick = 0;
+                for (; tick < 100 && scene_bodies(m.scene) == 3; tick++) {
+                    CHECK(body_get_centroid(m.ball).x < body_get_centroid(m.box).x);
+                    scene_tick(m.scene, WORLD_DT);
+                    if (scene_bodies(m.scene) == 3 && first_touch < 0 &&
+                        world_contact_touching(m.scene, m.ball, m.box)) {
+                        first_touch = tick;
+                    }
+                }
+                if (scene_bodies(m.scene) != 1 || tick != first_touch + 2) {
+                    printf("    speed %g, e %g, brick mass %g: %zu bodies left after %d ticks, "
+                           "first touch at tick %d\n",
+                           speed, MEETING_ELASTICITIES[k], brick_masses[mass],
+                           scene_bodies(m.scene), tick, first_touch);
+                }
+                CHECK(scene_bodies(m.scene) == 1);
+                CHECK(scene_get_body(m.scene, 0) == bystander);
+                CHECK(first_touch >= 0);
+                CHECK(tick == first_touch + 2); /* reaped in the tick after the touch */
+                scene_free(m.scene);
+            }
+        }
+    }
+}
+
+/* World contacts on, but the pair kept out of them, by its filters (one
+ * group) or by both masses being INFINITY (a kinematic body): the seed's
+ * rule, as with contacts off. a (x in [-0.5, 0.5]) moves at 1 m/s toward b
+ * (x in [1.05, 2.05]), dt = 0.1: they first overlap after 6 integrations
+ * and the 7th tick's handler sees it. */
+static void pair_out_of_world_contacts_keeps_the_seed_rule(void) {
+    for (int kinematic = 0; kinematic < 2; kinematic++) {
+        scene_t *scene = scene_init();
+        scene_set_contacts_enabled(scene, true);
+        double mass = kinematic ? INFINITY : 1.0;
+        body_t *a = added(scene, square(VEC_ZERO, 0.5, mass));
+        body_t *b = added(scene, square((vector_t){1.55, 0}, 0.5, mass));
+        if (!kinematic) {
+            body_set_collision_filter(a, 1, UINT32_MAX, 5);
+            body_set_collision_filter(b, 1, UINT32_MAX, 5);
+        }
+        body_set_velocity(a, (vector_t){1, 0});
+        meeting_log_t log = {0};
+        create_collision(scene, a, b, meeting_handler, &log, 0.0);
+        int tick = 0;
+        while (log.calls == 0 && tick < 20) {
+            bool overlapping = find_collision(a, b).collided;
+            scene_tick(scene, 0.1);
+            tick++;
+            CHECK((log.calls == 1) == overlapping); /* at once, not a step late */
+        }
+        CHECK(tick == 7);
+        CHECK_VEC(log.axis, 1, 0, 1e-15);
+        for (int i = 0; i < 5; i++) scene_tick(scene, 0.1); /* passing through */
+        CHECK(log.calls == 1);
+        CHECK(body_get_centroid(a).x > 1.0); /* the world did not stop them */
+        scene_free(scene);
+    }
+}
+
 /* Programmer errors. */
 
 static body_t *any_body(void) {
@@ -739,4 +988,8 @@ TEST_SUITE(forces, TEST_CASE(spring_is_hooke_with_rest_length_zero),
            TEST_CASE(destroyed_bodies_never_linger_in_the_record),
            TEST_CASE(force_creators_may_name_bodies_before_they_are_added),
            TEST_CASE(a_force_creator_refuses_a_body_of_another_scene),
+           TEST_CASE(handler_fires_once_per_meeting_at_any_speed_and_elasticity),
+           TEST_CASE(resting_pair_fires_once_and_again_after_parting),
+           TEST_CASE(destructive_collision_with_world_contacts_removes_both),
+           TEST_CASE(pair_out_of_world_contacts_keeps_the_seed_rule),
            TEST_CASE(bad_input_aborts_with_message));

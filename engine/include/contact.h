@@ -36,11 +36,17 @@ typedef struct {
     body_t *body2;
     /* Unit collision axis pointing from body1 toward body2. */
     vector_t axis;
-    /* Contact points (world, metres): 0 to 2. A seed collision has 1 or 2. */
+    /* Contact points (world, metres): 0 to 2. A seed collision has 1 or 2:
+     * where find_collision found the overlap or, on a pair that world
+     * contacts resolve, the points of the world contact that started
+     * touching (at the previous step). */
     size_t point_count;
     vector_t points[2];
     /* Signed distance of each point along axis (m): negative when the bodies
-     * overlap, positive for a speculative contact not yet touching. */
+     * overlap, positive for a speculative contact not yet touching. A seed
+     * collision from a world contact keeps that contact's separations, taken
+     * at the start of the step in which it touched: positive when the gap
+     * closed during that step. */
     double separation[2];
     /* Impulse magnitudes (N s) applied at each point this step: along the
      * axis (pushing body2 away from body1, >= 0 for world contacts) and along

@@ -32,19 +32,42 @@ typedef void (*collision_handler_t)(body_t *body1, body_t *body2, vector_t axis,
                                     double force_const);
 
 /*
- * Registers a collision between two distinct bodies: at every tick, if they
- * overlap (find_collision; touching counts) and did not overlap at the
- * previous tick, handler (not NULL) is called once, in stage 1 of
- * scene_tick. It is not called again until they have separated. Bodies that
- * already overlap when the collision is created collide at the first tick.
- * aux stays owned by the caller (the scene never frees it).
+ * Registers a collision between two distinct bodies. handler (not NULL) is
+ * called once when they start colliding, in stage 1 of scene_tick, and not
+ * again until they have parted. aux stays owned by the caller (the scene
+ * never frees it). What colliding means depends on the pair:
+ *
+ * - World contacts off, or the pair kept out of them (its collision filters,
+ *   or both masses INFINITY: scene_set_contacts_enabled), the seed's rule: at
+ *   every tick, if the bodies overlap (find_collision; touching counts) and
+ *   did not at the previous tick, the handler runs with find_collision's
+ *   axis. They have parted when find_collision finds no overlap. Bodies that
+ *   already overlap when the collision is created collide at the first tick.
+ *
+ * - A pair that world contacts resolve: the solver stops fast bodies at the
+ *   surface, so they need never overlap. The handler runs when the world's
+ *   contact of the pair starts touching (contact_t.touching: a point at or
+ *   below zero separation, or an impulse of the solver), with that contact's
+ *   axis turned to point from body1 toward body2. The world finds its
+ *   contacts in stage 2, after the force creators, so the handler runs in
+ *   stage 1 of the tick after the step in which the pair first touched: one
+ *   step late, the world having already stopped or bounced them (the
+ *   velocities the handler sees are those after the impact). The pair has
+ *   parted when it has no world contact, or every point of it is more than
+ *   1 mm apart (bodies moving on together hover within rounding of zero
+ *   separation). A pair already touching when the collision is created
+ *   collides at the first tick whose previous step found it touching (the
+ *   second tick of a new scene).
  */
 void create_collision(scene_t *scene, body_t *body1, body_t *body2,
                       collision_handler_t handler, void *aux, double force_const);
 
-/* Both bodies are marked removed (body_remove) when they start colliding; the
- * scene frees them at the end of that same tick, with every force creator
- * that depends on either. */
+/* Both bodies are marked removed (body_remove) when they start colliding (as
+ * create_collision); the scene frees them at the end of that same tick, with
+ * every force creator that depends on either. With world contacts resolving
+ * the pair, that is the end of the tick after the step in which they first
+ * touched: for one step they bounce off each other (or stop) before they
+ * disappear. */
 void create_destructive_collision(scene_t *scene, body_t *body1, body_t *body2);
 
 /*
@@ -59,7 +82,9 @@ void physics_collision_handler(body_t *body1, body_t *body2, vector_t axis, void
 
 /* A collision with physics_collision_handler: elasticity 0 sticks (common
  * velocity along the axis), 1 is elastic, above 1 adds energy. elasticity
- * >= 0. */
+ * >= 0. Meant for pairs that world contacts leave alone: on a pair they
+ * resolve, the impulse comes a step after the world's response and acts on
+ * the velocities it left (it turns a bounce back toward the other body). */
 void create_physics_collision(scene_t *scene, body_t *body1, body_t *body2, double elasticity);
 
 #endif // #ifndef FORCES_H

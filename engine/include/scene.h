@@ -116,8 +116,11 @@ integrator_t scene_get_integrator(scene_t *scene);
  * one has finite mass collides: rotation, friction (Coulomb, per body, mixed
  * by geometric mean), restitution (per body elasticity, mixed by max),
  * resting contact and stacking. Seed collision force creators keep working
- * alongside; give a pair handled by one of them filters that keep it out of
- * world contacts, or it is resolved twice.
+ * alongside. On a pair that world contacts resolve, a collision handler
+ * (create_collision) runs when the world's contact of the pair starts
+ * touching, one tick after the step in which it did (forces.h); a handler
+ * that itself resolves the collision (create_physics_collision) needs the
+ * pair kept out of world contacts with filters, or it is resolved twice.
  */
 void scene_set_contacts_enabled(scene_t *scene, bool enabled);
 bool scene_get_contacts_enabled(scene_t *scene);

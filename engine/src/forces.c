@@ -128,8 +128,9 @@ static void record_seed_collision(collision_aux_t *aux, collision_info_t info,
     scene_record_contact(aux->scene, &entry);
 }
 
-static void collision_force_creator(void *data) {
-    collision_aux_t *aux = data;
+/* The seed's rule: the handler runs when find_collision starts finding an
+ * overlap. */
+static void seed_collision(collision_aux_t *aux) {
     collision_info_t info = find_collision(aux->body1, aux->body2);
     if (!info.collided) {
         aux->colliding = false;
@@ -140,6 +141,60 @@ static void collision_force_creator(void *data) {
     vector_t body2_impulse_before = aux->body2->impulse;
     aux->handler(aux->body1, aux->body2, info.axis, aux->aux, aux->force_const);
     record_seed_collision(aux, info, body2_impulse_before);
+}
+
+/* With world contacts, a pair counts as parted (its handler may fire again)
+ * once every point of its contact is further apart than this (m), or it has
+ * no contact. Not at any positive separation: bodies that move on together
+ * after a meeting hover at separations of rounding size (1e-16 m) on either
+ * side of zero, which would call the handler again every few steps. 1 mm is
+ * the overlap the solver leaves between resting bodies (its slop): far
+ * above rounding, and bodies parting faster than 6 cm/s open more than that
+ * in one step of 1/60 s. */
+static const double PARTING_DISTANCE = 0.001;
+
+static bool parted(const contact_t *contact) {
+    for (size_t i = 0; i < contact->point_count; i++) {
+        if (contact->separation[i] <= PARTING_DISTANCE) return false;
+    }
+    return true;
+}
+
+/* A pair that world contacts resolve: the solver stops a fast pair at the
+ * surface before it overlaps, so an overlap test would miss the meeting.
+ * The handler runs when the world's contact of the pair starts touching
+ * instead, read from the last step (this is stage 1, before this step's
+ * contacts exist). */
+static void world_collision(collision_aux_t *aux, const world_t *world) {
+    contact_t contact;
+    bool found = world_pair_contact(world, aux->body1, aux->body2, &contact);
+    if (!found || !contact.touching) {
+        /* Apart by no more than PARTING_DISTANCE: still together. */
+        if (!found || parted(&contact)) aux->colliding = false;
+        return;
+    }
+    if (aux->colliding) return;
+    aux->colliding = true;
+    vector_t body2_impulse_before = aux->body2->impulse;
+    aux->handler(aux->body1, aux->body2, contact.axis, aux->aux, aux->force_const);
+    /* Where and how far apart the world found them, with the handler's
+     * impulse in place of the solver's. */
+    vector_t applied = vec_subtract(aux->body2->impulse, body2_impulse_before);
+    contact.kind = CONTACT_SEED;
+    contact.normal_impulse[0] = vec_dot(applied, contact.axis);
+    contact.normal_impulse[1] = 0.0;
+    contact.tangent_impulse[0] = contact.tangent_impulse[1] = 0.0;
+    scene_record_contact(aux->scene, &contact);
+}
+
+static void collision_force_creator(void *data) {
+    collision_aux_t *aux = data;
+    const world_t *world = scene_get_world(aux->scene);
+    if (world != NULL && world_pair_collides(aux->body1, aux->body2)) {
+        world_collision(aux, world);
+    } else {
+        seed_collision(aux);
+    }
 }
 
 void create_collision(scene_t *scene, body_t *body1, body_t *body2,

@@ -248,6 +248,10 @@ void scene_record_contact(scene_t *scene, const contact_t *entry) {
     scene->record[scene->record_count++] = *entry;
 }
 
+world_t *scene_get_world(scene_t *scene) {
+    return scene->world;
+}
+
 /* Stage 1. A force creator may add force creators (they run from the next
  * tick on, since the count is read once) and may remove bodies. */
 static void stage_forces(scene_t *scene) {

@@ -5,6 +5,7 @@
 
 #include "contact.h"
 #include "scene.h"
+#include "world.h"
 
 /* Appends an entry to the record of the tick in progress. */
 void scene_record_contact(scene_t *scene, const contact_t *entry);
@@ -13,5 +14,9 @@ void scene_record_contact(scene_t *scene, const contact_t *entry);
  * `function` and the parameter `name`) when the body belongs to another
  * scene; a body in no scene yet becomes this scene's, to be added here. */
 void scene_claim_body(scene_t *scene, body_t *body, const char *name, const char *function);
+
+/* The scene's world contact pipeline, NULL while contacts are off. Between
+ * ticks (and in stage 1) it holds the contacts of the last step. */
+world_t *scene_get_world(scene_t *scene);
 
 #endif // #ifndef SCENE_PRIVATE_H

@@ -142,6 +142,15 @@ static aabb_t swept_box(aabb_t bounds, double dt, const solver_state_t *state, d
     };
 }
 
+/* What the broadphase's filter reads of a body, removal aside: one rule for
+ * the pairs the world makes and for world_pair_collides. */
+static void set_filter(broadphase_proxy_t *proxy, const body_t *body) {
+    proxy->fixed = body->inverse_mass == 0.0 && body->inverse_inertia == 0.0;
+    proxy->category = body->category;
+    proxy->mask = body->mask;
+    proxy->group = body->group;
+}
+
 /* Loads each body's rows for the solver and its broadphase proxy. */
 static void load_bodies(world_t *world, body_t **bodies, size_t count, const world_step_t *step) {
     reserve_rows(world, count);
@@ -170,10 +179,8 @@ static void load_bodies(world_t *world, body_t **bodies, size_t count, const wor
         world->margins[i] = dt * (speed + spin) + CONTACT_MARGIN;
         broadphase_proxy_t *proxy = &world->proxies[i];
         proxy->box = swept_box(body->bounds, dt, state, dt * spin + CONTACT_MARGIN);
-        proxy->fixed = body->inverse_mass == 0.0 && body->inverse_inertia == 0.0;
-        proxy->category = body->removed ? 0 : body->category;
-        proxy->mask = body->mask;
-        proxy->group = body->group;
+        set_filter(proxy, body);
+        if (body->removed) proxy->category = 0;
     }
 }
 
@@ -375,4 +382,44 @@ contact_t world_get_contact(const world_t *world, size_t index) {
         entry.touching |= c->points[j].separation <= 0.0 || entry.normal_impulse[j] > 0.0;
     }
     return entry;
+}
+
+bool world_pair_collides(const body_t *body1, const body_t *body2) {
+    broadphase_proxy_t proxy1, proxy2;
+    set_filter(&proxy1, body1);
+    set_filter(&proxy2, body2);
+    return broadphase_filters_allow(&proxy1, &proxy2);
+}
+
+/* The last step's contact of the pair with this key, found among the
+ * contacts a had as body a in that step; SIZE_MAX when the pair had none. A
+ * group left from an older step (or an older world) is skipped, and the key
+ * check rejects whatever else lies at its indices now. */
+static size_t find_current(const world_t *world, const body_t *a, uint64_t key) {
+    if (a->contact_step != world->step_number) return SIZE_MAX;
+    size_t end = (size_t)a->contact_first + a->contact_count;
+    if (end > world->contact_count) return SIZE_MAX;
+    for (size_t i = a->contact_first; i < end; i++) {
+        if (world->sources[i].key == key) return i;
+    }
+    return SIZE_MAX;
+}
+
+bool world_pair_contact(const world_t *world, body_t *body1, body_t *body2, contact_t *contact) {
+    size_t index = find_current(world, body1, pair_key(body1, body2));
+    if (index != SIZE_MAX) {
+        *contact = world_get_contact(world, index);
+        return true;
+    }
+    /* The broadphase ordered the pair the other way: the same contact seen
+     * from body1. Normal impulses, separations and points do not depend on
+     * the side; the tangent impulse on body1 along the flipped tangent is
+     * the one on body2 along the original tangent. */
+    index = find_current(world, body2, pair_key(body2, body1));
+    if (index == SIZE_MAX) return false;
+    *contact = world_get_contact(world, index);
+    contact->body1 = body1;
+    contact->body2 = body2;
+    contact->axis = vec_negate(contact->axis);
+    return true;
 }

@@ -13,6 +13,7 @@
  * allocates nothing.
  */
 
+#include <stdbool.h>
 #include <stddef.h>
 #include "body.h"
 #include "scene.h"
@@ -41,5 +42,17 @@ void world_step(world_t *world, body_t **bodies, size_t count, const world_step_
  * body marked removed takes no part in contacts. */
 size_t world_contact_count(const world_t *world);
 contact_t world_get_contact(const world_t *world, size_t index);
+
+/* Whether world contacts resolve the pair when both bodies are in the
+ * world: their collision filters allow it and at least one can move (the
+ * broadphase's rule). Whether a body is marked removed does not enter. */
+bool world_pair_collides(const body_t *body1, const body_t *body2);
+
+/* The pair's contact of the last world_step, as world_get_contact gives it
+ * but with body1 and body2 as asked and the axis from body1 toward body2,
+ * whichever way the world ordered the pair; false when the pair had no
+ * contact (not even a speculative one). The world finds it among body1's or
+ * body2's contacts, a handful, without a search of the step. */
+bool world_pair_contact(const world_t *world, body_t *body1, body_t *body2, contact_t *contact);
 
 #endif // #ifndef WORLD_H
