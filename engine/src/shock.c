@@ -111,7 +111,7 @@ static void stop_upper(const solver_contact_t *c, solver_velocity_t *upper,
 
 /*
  * The upper body moved with the lower one as one rigid body (both points of
- * the contact held, no sliding), when the impulses that takes, added to the
+ * the contact touching and held, no sliding), when the impulses that takes, added to the
  * iterations' at each point, press (>= 0) and stay within the friction
  * cone. Returns false, changing nothing, when they would not: the contact
  * is then opening, tipping or sliding, and only its approach is stopped.
@@ -122,6 +122,9 @@ static bool weld_upper(const solver_contact_t *c, solver_velocity_t *upper,
         return false;
     }
     const solver_point_t *p1 = &c->points[0], *p2 = &c->points[1];
+    /* Only faces in touch: a gap the step may close is no support yet,
+     * and welding across it left a landed box hovering (measured). */
+    if (p1->separation > 0.0 || p2->separation > 0.0) return false;
     bool b_upper = sign > 0.0;
     double rn1 = b_upper ? p1->rn_b : p1->rn_a, rn2 = b_upper ? p2->rn_b : p2->rn_a;
     double rt1 = b_upper ? p1->rt_b : p1->rt_a, rt2 = b_upper ? p2->rt_b : p2->rt_a;
