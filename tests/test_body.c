@@ -602,6 +602,26 @@ static void mass_inertia_or_centroid_that_cannot_work_are_refused(void) {
     body_free(heavy);
 }
 
+static body_t *fast_body(double speed) {
+    body_t *body = ok_body();
+    body_set_velocity(body, (vector_t){speed, 0});
+    return body;
+}
+
+BAD_CALL(tick_overflowing_the_position, body_tick(fast_body(1e308), 10.0))
+BAD_CALL(tick_overflowing_the_velocity, {
+    body_t *body = ok_body();
+    body_add_force(body, (vector_t){0, 1e300});
+    body_tick(body, 1e10);
+})
+
+static void tick_that_overflows_the_state_aborts(void) {
+    CHECK_DIES(tick_overflowing_the_position, NULL, "engine error in body_tick:",
+               "position is not finite", "dt = 10 s", "too large for its velocity (1e+308, 0)");
+    CHECK_DIES(tick_overflowing_the_velocity, NULL, "engine error in body_tick:",
+               "velocity is not finite", "dt = 1e+10 s", "force (0, 1e+300) N");
+}
+
 /* A NULL body, for every function that takes one. */
 BAD_CALL(null_free, body_free(NULL))
 BAD_CALL(null_get_shape, body_get_shape(NULL))
@@ -709,4 +729,5 @@ TEST_SUITE(body, TEST_CASE(init_starts_at_rest_at_the_area_centroid),
            TEST_CASE(point_velocity_adds_spin), TEST_CASE(contains_point), TEST_CASE(bounds),
            TEST_CASE(kinetic_energy), TEST_CASE(bad_input_aborts_with_message),
            TEST_CASE(mass_inertia_or_centroid_that_cannot_work_are_refused),
+           TEST_CASE(tick_that_overflows_the_state_aborts),
            TEST_CASE(null_body_aborts_naming_the_function));

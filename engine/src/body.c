@@ -1,5 +1,6 @@
 #include "body.h"
 #include <math.h>
+#include <stdio.h>
 #include "body_private.h"
 #include "check.h"
 #include "integrator.h"
@@ -261,7 +262,42 @@ vector_t body_get_point_velocity(body_t *body, vector_t point) {
 void body_tick(body_t *body, double dt) {
     REQUIRE_NOT_NULL(body);
     REQUIRE(isfinite(dt) && dt > 0.0, "dt must be finite and > 0 (got %g)", dt);
+    body_motion_t before = body_motion(body);
     integrator_advance(body, dt, VEC_ZERO, INTEGRATOR_SEED);
+    if (!body_motion_is_finite(body)) {
+        char message[512];
+        body_explain_non_finite(body, &before, dt, message, sizeof message);
+        engine_fail(__func__, "%s", message);
+    }
+}
+
+void body_explain_non_finite(const body_t *body, const body_motion_t *before, double dt,
+                             char *message, size_t size) {
+    /* A velocity that overflowed makes the pose overflow too: it is the cause. */
+    if (!vec_is_finite(body->velocity)) {
+        snprintf(message, size,
+                 "velocity is not finite after integrating with dt = %g s; likely cause: the "
+                 "step's velocity change (F / m + g) dt + J / m overflows, with force (%g, %g) N "
+                 "and impulse (%g, %g) N s (contact impulses included) on mass %g kg",
+                 dt, before->force.x, before->force.y, before->impulse.x, before->impulse.y,
+                 body->mass);
+    } else if (!isfinite(body->angular_velocity)) {
+        snprintf(message, size,
+                 "angular velocity is not finite after integrating with dt = %g s; likely cause: "
+                 "the step's change T dt / I + L / I overflows, with torque %g N m and angular "
+                 "impulse %g N m s (contact impulses included) on moment of inertia %g kg m^2",
+                 dt, before->torque, before->angular_impulse, body->inertia);
+    } else if (!vec_is_finite(body->centroid)) {
+        snprintf(message, size,
+                 "position is not finite after integrating with dt = %g s; likely cause: dt is "
+                 "too large for its velocity (%g, %g) m/s: the step's displacement overflows",
+                 dt, body->velocity.x, body->velocity.y);
+    } else {
+        snprintf(message, size,
+                 "angle is not finite after integrating with dt = %g s; likely cause: dt is too "
+                 "large for its angular velocity %g rad/s: the step's turn overflows",
+                 dt, body->angular_velocity);
+    }
 }
 
 void body_reset(body_t *body) {
