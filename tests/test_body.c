@@ -603,6 +603,67 @@ static void bad_input_aborts_with_message(void) {
     CHECK_DIES(set_friction_nan, NULL, "engine error in body_set_friction:", "friction");
 }
 
+/* Masses and moments whose inverse is not finite: 1 / m overflows, so the
+ * first step would make the state NaN. */
+BAD_CALL(init_subnormal_mass, body_init(polygon_make_box(VEC_ZERO, 1, 1), 1e-310, RED))
+BAD_CALL(init_least_subnormal_mass, body_init(polygon_make_box(VEC_ZERO, 1, 1), 5e-324, RED))
+BAD_CALL(init_with_info_subnormal_mass,
+         body_init_with_info(polygon_make_box(VEC_ZERO, 1, 1), 1e-310, RED, NULL, NULL))
+/* I = m (w^2 + h^2) / 12: about 2e-313 kg m^2 for a 1 um square of 1e-300 kg. */
+BAD_CALL(init_subnormal_inertia, body_init(polygon_make_box(VEC_ZERO, 5e-7, 5e-7), 1e-300, RED))
+/* About 1e311 kg m^2 for a 200 m square of 1e307 kg. */
+BAD_CALL(init_infinite_inertia, body_init(polygon_make_box(VEC_ZERO, 100, 100), 1e307, RED))
+BAD_CALL(set_inertia_subnormal, body_set_inertia(ok_body(), 1e-310))
+/* A shape polygon_check accepts whose centroid overflows (its sums grow as
+ * the size cubed); the immovable mass leaves the moment out of it. */
+BAD_CALL(init_huge_shape, body_init(polygon_make_box(VEC_ZERO, 1e110, 1e110), INFINITY, RED))
+
+static void mass_inertia_or_centroid_that_cannot_work_are_refused(void) {
+    CHECK_DIES(init_subnormal_mass, NULL, "engine error in body_init:", "mass 1e-310 kg",
+               "inverse is not finite");
+    CHECK_DIES(init_least_subnormal_mass, NULL, "engine error in body_init:", "mass 4.94066e-324",
+               "inverse is not finite");
+    CHECK_DIES(init_with_info_subnormal_mass, NULL, "engine error in body_init_with_info:",
+               "mass 1e-310 kg", "inverse is not finite");
+    CHECK_DIES(init_subnormal_inertia, NULL, "engine error in body_init:", "moment of inertia",
+               "inverse is not finite");
+    CHECK_DIES(init_infinite_inertia, NULL, "engine error in body_init:", "moment of inertia",
+               "mass 1e+307 kg", "is not finite", "INFINITY");
+    CHECK_DIES(set_inertia_subnormal, NULL, "engine error in body_set_inertia:",
+               "inertia 1e-310", "inverse is not finite");
+    CHECK_DIES(init_huge_shape, NULL, "engine error in body_init:", "bad shape",
+               "centroid is not finite");
+    /* The edges that still work: about the least normal mass on a shape
+     * large enough for a normal moment, and a huge mass on a shape small
+     * enough for a finite one (computed without overflowing on the way). */
+    body_t *light = box_body(VEC_ZERO, 10, 10, 2.3e-308);
+    CHECK(isfinite(body_get_inertia(light)) && body_get_inertia(light) > 0.0);
+    body_free(light);
+    body_t *heavy = box_body(VEC_ZERO, 2e4, 2e4, 1e300); /* I = 1e300 8e8 / 12 */
+    CHECK_RELATIVE(body_get_inertia(heavy), 1e300 * 8e8 / 12, 1e-12);
+    body_free(heavy);
+}
+
+static body_t *fast_body(double speed) {
+    body_t *body = ok_body();
+    body_set_velocity(body, (vector_t){speed, 0});
+    return body;
+}
+
+BAD_CALL(tick_overflowing_the_position, body_tick(fast_body(1e308), 10.0))
+BAD_CALL(tick_overflowing_the_velocity, {
+    body_t *body = ok_body();
+    body_add_force(body, (vector_t){0, 1e300});
+    body_tick(body, 1e10);
+})
+
+static void tick_that_overflows_the_state_aborts(void) {
+    CHECK_DIES(tick_overflowing_the_position, NULL, "engine error in body_tick:",
+               "position is not finite", "dt = 10 s", "too large for its velocity (1e+308, 0)");
+    CHECK_DIES(tick_overflowing_the_velocity, NULL, "engine error in body_tick:",
+               "velocity is not finite", "dt = 1e+10 s", "force (0, 1e+300) N");
+}
+
 /* A NULL body, for every function that takes one. */
 BAD_CALL(null_free, body_free(NULL))
 BAD_CALL(null_get_shape, body_get_shape(NULL))
@@ -711,4 +772,6 @@ TEST_SUITE(body, TEST_CASE(init_starts_at_rest_at_the_area_centroid),
            TEST_CASE(set_inertia_overrides_and_infinity_stops_turning),
            TEST_CASE(point_velocity_adds_spin), TEST_CASE(contains_point), TEST_CASE(bounds),
            TEST_CASE(kinetic_energy), TEST_CASE(bad_input_aborts_with_message),
+           TEST_CASE(mass_inertia_or_centroid_that_cannot_work_are_refused),
+           TEST_CASE(tick_that_overflows_the_state_aborts),
            TEST_CASE(null_body_aborts_naming_the_function));

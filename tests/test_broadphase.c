@@ -82,5 +82,25 @@ static void touching_boxes_pair_and_separate_ones_do_not(void) {
     broadphase_free(broadphase);
 }
 
+/* A box swept by a step whose dt v overflows reaches infinity: it still
+ * pairs with what it overlaps (the grid's mean cell size once became
+ * infinite, every cell index NaN, and the fill never ended). */
+static void an_infinite_box_pairs_with_what_it_overlaps(void) {
+    broadphase_proxy_t proxies[4] = {
+        {{{0.0, 0.0}, {1.0, 1.0}}, false, 1, UINT32_MAX, 0},
+        {{{2.0, 0.0}, {INFINITY, 1.0}}, false, 1, UINT32_MAX, 0},
+        {{{5.0, 5.0}, {6.0, 6.0}}, false, 1, UINT32_MAX, 0},  /* above 1 */
+        {{{1e300, 0.5}, {1e301, 0.7}}, false, 1, UINT32_MAX, 0}, /* inside 1 */
+    };
+    broadphase_t *broadphase = broadphase_init();
+    const broadphase_pair_t *pairs;
+    size_t tests = 0;
+    size_t count = broadphase_find_pairs(broadphase, proxies, 4, &pairs, &tests);
+    CHECK(count == 1);
+    CHECK(count == 1 && pairs[0].a == 1 && pairs[0].b == 3);
+    broadphase_free(broadphase);
+}
+
 TEST_SUITE(broadphase, TEST_CASE(finds_exactly_the_overlapping_pairs),
-           TEST_CASE(touching_boxes_pair_and_separate_ones_do_not));
+           TEST_CASE(touching_boxes_pair_and_separate_ones_do_not),
+           TEST_CASE(an_infinite_box_pairs_with_what_it_overlaps));

@@ -788,6 +788,116 @@ static void pair_out_of_world_contacts_keeps_the_seed_rule(void) {
     }
 }
 
+/* A built-in force that does not fit a double stops the program in
+ * scene_tick, naming the force, its bodies and the likely cause; never
+ * body_add_force, which the user did not call. */
+
+/* An immovable anchor (body 0) and a bob of mass m at (1, 0) (body 1) on a
+ * spring of constant k, ticked at 60 Hz until it blows up. */
+typedef struct {
+    double k, m;
+    integrator_t integrator;
+} spring_case_t;
+
+static void run_spring_until_it_fails(void *data) {
+    const spring_case_t *c = data;
+    scene_t *scene = scene_init();
+    scene_set_integrator(scene, c->integrator);
+    body_t *anchor = added(scene, square(VEC_ZERO, 0.1, INFINITY));
+    body_t *bob = added(scene, square((vector_t){1, 0}, 0.1, c->m));
+    create_spring(scene, c->k, anchor, bob);
+    for (int i = 0; i < 100000; i++) scene_tick(scene, 1.0 / 60.0);
+}
+
+static void far_apart_spring(void *unused) {
+    (void)unused;
+    scene_t *scene = scene_init();
+    scene_set_integrator(scene, INTEGRATOR_SYMPLECTIC_EULER);
+    body_t *a = added(scene, square((vector_t){-1e110, 0}, 1e97, INFINITY));
+    body_t *b = added(scene, square(VEC_ZERO, 0.5, 1.0));
+    create_spring(scene, 1e200, a, b); /* dt below the limit 2 sqrt(m / k) = 2e-100 s */
+    scene_tick(scene, 1e-101);
+}
+
+static void fast_body_with_drag(void *unused) {
+    (void)unused;
+    scene_t *scene = scene_init();
+    added(scene, square(VEC_ZERO, 0.5, 1.0));
+    body_t *body = added(scene, square((vector_t){5, 0}, 0.5, 1.0));
+    body_set_velocity(body, (vector_t){0, 1e300});
+    create_drag(scene, 1e10, body);
+    scene_tick(scene, 1.0 / 60.0);
+}
+
+static void heavy_bodies_too_close(void *unused) {
+    (void)unused;
+    scene_t *scene = scene_init();
+    body_t *a = added(scene, square(VEC_ZERO, 1e-6, 1e200));
+    body_t *b = added(scene, square((vector_t){1e-5, 0}, 1e-6, 1e200));
+    create_newtonian_gravity(scene, 1.0, a, b);
+    scene_tick(scene, 1.0 / 60.0);
+}
+
+static void unstable_forces_abort_naming_the_force_and_the_cause(void) {
+    /* The seed scheme gains energy on any spring; omega = 1000 rad/s. */
+    spring_case_t seed = {1e6, 1.0, INTEGRATOR_SEED};
+    CHECK_DIES(run_spring_until_it_fails, &seed, "engine error in scene_tick:",
+               "spring between body 0 and body 1", "k = 1e+06 N/m", "seed integrator",
+               "dt < 2 sqrt(m/k) = 0.002 s");
+    spring_case_t euler = {1e6, 1.0, INTEGRATOR_EXPLICIT_EULER};
+    CHECK_DIES(run_spring_until_it_fails, &euler, "engine error in scene_tick:",
+               "spring between body 0 and body 1", "explicit Euler integrator",
+               "dt < 2 sqrt(m/k) = 0.002 s");
+    spring_case_t symplectic = {1e6, 1.0, INTEGRATOR_SYMPLECTIC_EULER};
+    CHECK_DIES(run_spring_until_it_fails, &symplectic, "engine error in scene_tick:",
+               "spring between body 0 and body 1", "dt = 0.0166667 s is above",
+               "dt < 2 sqrt(m/k) = 0.002 s");
+    /* A light bob: its velocity overflows before the spring's force does, so
+     * the integrate stage reports it, naming the scene's stiffest spring. */
+    spring_case_t light = {1.0, 1e-200, INTEGRATOR_SEED};
+    CHECK_DIES(run_spring_until_it_fails, &light, "engine error in scene_tick:",
+               "integrate stage", "body 1", "velocity is not finite",
+               "spring between body 0 and body 1", "dt < 2 sqrt(m/k) = 2e-100 s");
+    CHECK_DIES(far_apart_spring, NULL, "engine error in scene_tick:", "force stage",
+               "spring between body 0 and body 1", "force is not finite",
+               "stretch (1e+110, 0) m", "too far apart");
+    CHECK_DIES(fast_body_with_drag, NULL, "engine error in scene_tick:", "force stage",
+               "drag on body 1", "gamma = 1e+10 kg/s", "force is not finite",
+               "dt < 2 m / gamma = 2e-10 s");
+    CHECK_DIES(heavy_bodies_too_close, NULL, "engine error in scene_tick:", "force stage",
+               "newtonian gravity between body 0 and body 1", "force is not finite",
+               "too close");
+}
+
+static void gravity_between_huge_masses_is_applied(void) {
+    /* G m1 m2 overflows a double for two masses of 1e160 kg, but the force,
+     * 6.674e149 N at 1e80 m, does not: each accelerates at 6.674e-11 m/s^2. */
+    const double G = 6.674e-11;
+    scene_t *scene = scene_init();
+    body_t *a = added(scene, square(VEC_ZERO, 1e66, 1e160));
+    body_t *b = added(scene, square((vector_t){1e80, 0}, 1e66, 1e160));
+    create_newtonian_gravity(scene, G, a, b);
+    scene_tick(scene, 1.0);
+    CHECK_RELATIVE(body_get_velocity(a).x, G, 1e-12);
+    CHECK_RELATIVE(body_get_velocity(b).x, -G, 1e-12);
+    scene_free(scene);
+}
+
+static void huge_closing_speed(void *unused) {
+    (void)unused;
+    body_t *a = square(VEC_ZERO, 0.5, 1e200);
+    body_t *b = square((vector_t){0.9, 0}, 0.5, 1e200);
+    body_set_velocity(a, (vector_t){1e110, 0});
+    body_set_velocity(b, (vector_t){-1e110, 0});
+    physics_collision_handler(a, b, (vector_t){1, 0}, NULL, 1.0);
+}
+
+static void physics_handler_refuses_an_impulse_that_overflows(void) {
+    CHECK_DIES(huge_closing_speed, NULL, "engine error in physics_collision_handler:",
+               "impulse is not finite", "reduced mass 5e+199 kg");
+}
+
+
 /* Programmer errors. */
 
 static body_t *any_body(void) {
@@ -992,4 +1102,7 @@ TEST_SUITE(forces, TEST_CASE(spring_is_hooke_with_rest_length_zero),
            TEST_CASE(resting_pair_fires_once_and_again_after_parting),
            TEST_CASE(destructive_collision_with_world_contacts_removes_both),
            TEST_CASE(pair_out_of_world_contacts_keeps_the_seed_rule),
+           TEST_CASE(unstable_forces_abort_naming_the_force_and_the_cause),
+           TEST_CASE(gravity_between_huge_masses_is_applied),
+           TEST_CASE(physics_handler_refuses_an_impulse_that_overflows),
            TEST_CASE(bad_input_aborts_with_message));

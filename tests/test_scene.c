@@ -623,6 +623,76 @@ static void add_to_two_scenes(void) {
 
 BAD_CALL(add_body_to_two_scenes, add_to_two_scenes())
 
+/* A step whose result does not fit a double stops the program in scene_tick,
+ * naming the body, the stage and the likely cause. */
+
+static scene_t *scene_with_moving_body(vector_t velocity, double omega, bool contacts) {
+    scene_t *scene = scene_of_two();
+    scene_set_contacts_enabled(scene, contacts);
+    body_set_velocity(scene_get_body(scene, 1), velocity);
+    body_set_angular_velocity(scene_get_body(scene, 1), omega);
+    return scene;
+}
+
+BAD_CALL(tick_fast_body, scene_tick(scene_with_moving_body((vector_t){1e308, 0}, 0, false), 10))
+BAD_CALL(tick_fast_body_with_contacts,
+         scene_tick(scene_with_moving_body((vector_t){1e308, 0}, 0, true), 10))
+BAD_CALL(tick_fast_spin, scene_tick(scene_with_moving_body(VEC_ZERO, -1e308, false), 10))
+
+static scene_t *scene_under_gravity(bool contacts) {
+    scene_t *scene = scene_of_two();
+    scene_set_contacts_enabled(scene, contacts);
+    scene_set_gravity(scene, (vector_t){0, -9.81});
+    return scene;
+}
+
+BAD_CALL(tick_huge_dt, scene_tick(scene_under_gravity(false), 1e200))
+BAD_CALL(tick_huge_dt_with_contacts, scene_tick(scene_under_gravity(true), 1e200))
+
+/* Two finite forces whose sum overflows. */
+static void push_hard(void *aux) {
+    body_add_force(aux, (vector_t){1e308, 0});
+    body_add_force(aux, (vector_t){1e308, 0});
+}
+
+static void tick_with_overflowing_forces(void) {
+    scene_t *scene = scene_of_two();
+    body_t *body = scene_get_body(scene, 0);
+    scene_add_bodies_force_creator(scene, push_hard, body, bodies_of(body, NULL), NULL);
+    scene_tick(scene, 0.01);
+}
+
+BAD_CALL(tick_overflowing_forces, tick_with_overflowing_forces())
+
+static void add_subnormal_mass_with_contacts(void) {
+    scene_t *scene = scene_of_two();
+    scene_set_contacts_enabled(scene, true);
+    scene_add_body(scene, body_init(polygon_make_box((vector_t){0, 1}, 0.5, 0.5), 1e-310, GREY));
+    scene_tick(scene, 0.01);
+}
+
+BAD_CALL(subnormal_mass_with_contacts, add_subnormal_mass_with_contacts())
+
+static void non_finite_state_after_a_step_aborts_naming_the_body(void) {
+    CHECK_DIES(tick_fast_body, NULL, "engine error in scene_tick:", "integrate stage",
+               "body 1 (centroid (2, 0) before the step)", "position is not finite",
+               "dt = 10 s", "too large for its velocity (1e+308, 0) m/s");
+    CHECK_DIES(tick_fast_body_with_contacts, NULL, "engine error in scene_tick:",
+               "integrate stage", "body 1", "position is not finite", "dt = 10 s",
+               "too large for its velocity (1e+308, 0) m/s");
+    CHECK_DIES(tick_fast_spin, NULL, "engine error in scene_tick:", "integrate stage", "body 1",
+               "angle is not finite", "dt = 10 s", "too large for its angular velocity -1e+308");
+    CHECK_DIES(tick_huge_dt, NULL, "engine error in scene_tick:", "integrate stage", "body 0",
+               "position is not finite", "dt = 1e+200 s",
+               "too large for its velocity (0, -9.81e+200) m/s");
+    CHECK_DIES(tick_huge_dt_with_contacts, NULL, "engine error in scene_tick:",
+               "integrate stage", "body 0", "not finite", "dt = 1e+200 s");
+    CHECK_DIES(tick_overflowing_forces, NULL, "engine error in scene_tick:", "integrate stage",
+               "body 0", "velocity is not finite", "force (inf, 0) N");
+    CHECK_DIES(subnormal_mass_with_contacts, NULL, "engine error in body_init:",
+               "mass 1e-310 kg", "inverse is not finite");
+}
+
 static void bad_input_aborts_with_message(void) {
     CHECK_DIES(free_null, NULL, "engine error in scene_free:", "NULL");
     CHECK_DIES(bodies_null, NULL, "engine error in scene_bodies:", "NULL");
@@ -681,4 +751,5 @@ TEST_SUITE(scene, TEST_CASE(init_is_empty_with_documented_defaults),
            TEST_CASE(gravity_accelerates_finite_masses_only),
            TEST_CASE(integrators_follow_their_formulas),
            TEST_CASE(uniform_circular_motion_from_a_centripetal_force),
-           TEST_CASE(warm_tick_allocates_nothing), TEST_CASE(bad_input_aborts_with_message));
+           TEST_CASE(warm_tick_allocates_nothing), TEST_CASE(bad_input_aborts_with_message),
+           TEST_CASE(non_finite_state_after_a_step_aborts_naming_the_body));

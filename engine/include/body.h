@@ -19,9 +19,17 @@
  * Programmer errors stop the program with a message on stderr that names the
  * function and the problem: a NULL body or shape, a shape that polygon_check
  * refuses (fewer than 3 vertices, non-convex, zero area, NaN), a mass that is
- * NaN, zero or negative, a non-finite position, velocity, angle, force or
- * impulse, a non-finite query point, a dt that is not finite and > 0. A clockwise shape is accepted and
- * reversed to counter-clockwise (documented normalisation).
+ * NaN, zero or negative, a mass, moment of inertia or centroid that a double
+ * cannot carry through a step (below), a non-finite position, velocity,
+ * angle, force or impulse, a non-finite query point, a dt that is not finite
+ * and > 0, a body_tick whose result is not finite. A clockwise shape is
+ * accepted and reversed to counter-clockwise (documented normalisation).
+ *
+ * Every step divides by the mass and the moment of inertia, so both and their
+ * inverses must be finite: a subnormal mass (below about 2.2e-308 kg, where
+ * 1 / m overflows) is refused, and so is a finite mass whose moment of
+ * inertia on the shape is not finite or has no finite inverse (1e307 kg on a
+ * 200 m square; give a body that must not move mass INFINITY instead).
  */
 
 #include <stdbool.h>
@@ -45,7 +53,10 @@ typedef struct body body_t;
  * Its moment of inertia is that of a uniform polygon of that mass; elasticity
  * 0, friction 0.6. A refused shape or mass aborts with a message naming the
  * function called, e.g. "engine error in body_init: bad shape: polygon is not
- * strictly convex" or "engine error in body_init: mass is NaN".
+ * strictly convex", "engine error in body_init: mass is NaN" or "engine error
+ * in body_init: mass 1e-310 kg is too small: its inverse is not finite"; so
+ * does a moment of inertia (of the shape with that mass) that is not finite
+ * or whose inverse is not, and a shape so large that its centroid is not.
  */
 body_t *body_init(list_t *shape, double mass, rgb_color_t color);
 
@@ -91,7 +102,10 @@ void body_add_impulse(body_t *body, vector_t impulse);
  * Advances the body by dt seconds (finite, > 0) with the seed scheme:
  * v' = v + (F / m) dt + J / m and x' = x + dt (v + v') / 2, and likewise for
  * the angle with torque, angular impulse and the moment of inertia; then the
- * accumulated force and impulse are cleared.
+ * accumulated force and impulse are cleared. A result that is not finite
+ * stops the program, naming what overflowed and why, e.g. "engine error in
+ * body_tick: position is not finite after integrating with dt = 10 s; likely
+ * cause: dt is too large for its velocity (1e+308, 0) m/s: ...".
  */
 void body_tick(body_t *body, double dt);
 
@@ -113,7 +127,7 @@ void body_set_angular_velocity(body_t *body, double omega);
 /* Moment of inertia about the centroid (kg m^2); INFINITY for static bodies. */
 double body_get_inertia(body_t *body);
 /* Overrides the moment of inertia (> 0, INFINITY keeps the body from
- * turning). */
+ * turning); one whose inverse is not finite (subnormal) is refused. */
 void body_set_inertia(body_t *body, double inertia);
 
 /* Adds a torque (N m) acting until the next tick. */

@@ -15,14 +15,25 @@
  * toward the other with G m1 m2 / r^2 (N). G >= 0 in N m^2 / kg^2. The force
  * is left out while the centroids are closer than a small distance
  * (1e-9 m) to avoid dividing by zero, and whenever a mass is INFINITY (the
- * pull on the other body would be infinite). */
+ * pull on the other body would be infinite). Huge finite masses are fine as
+ * long as the force itself is finite; when it is not, scene_tick stops,
+ * naming the pair (scene.h). */
 void create_newtonian_gravity(scene_t *scene, double G, body_t *body1, body_t *body2);
 
 /* A Hooke spring of constant k (N/m, >= 0) and rest length 0 between the two
- * centroids: each body is pulled toward the other with k |x2 - x1|. */
+ * centroids: each body is pulled toward the other with k |x2 - x1|. With
+ * m the reduced mass m1 m2 / (m1 + m2) (the finite one against INFINITY) and
+ * omega = sqrt(k / m), the seed and explicit Euler integrators multiply its
+ * energy at every step by 1 + (omega dt)^2 / 2 (more once omega dt > 4) and
+ * 1 + (omega dt)^2; symplectic Euler keeps it bounded for
+ * dt < 2 sqrt(m / k). A force that is no longer finite stops scene_tick,
+ * naming the spring and that limit. */
 void create_spring(scene_t *scene, double k, body_t *body1, body_t *body2);
 
-/* Linear drag -gamma v (gamma in kg/s, >= 0) on body's centroid. */
+/* Linear drag -gamma v (gamma in kg/s, >= 0) on body's centroid. Every
+ * integrator updates the velocity explicitly, v' = v (1 - gamma dt / m),
+ * which oscillates and grows unless dt < 2 m / gamma; a force that is no
+ * longer finite stops scene_tick, naming the drag and that limit. */
 void create_drag(scene_t *scene, double gamma, body_t *body);
 
 /* Called when two bodies start colliding: the bodies in the order they were
@@ -75,7 +86,8 @@ void create_destructive_collision(scene_t *scene, body_t *body1, body_t *body2);
  * reduced_mass * (1 + elasticity) * (u_b - u_a), where u is each body's
  * velocity component along axis and the reduced mass is m_a m_b / (m_a + m_b)
  * (the other body's mass when one is INFINITY); body2 gets the opposite
- * impulse. The elasticity is force_const. aux is unused.
+ * impulse. The elasticity is force_const. aux is unused. An impulse that is
+ * not finite stops the program, naming this function.
  */
 void physics_collision_handler(body_t *body1, body_t *body2, vector_t axis, void *aux,
                                double force_const);

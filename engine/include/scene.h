@@ -87,7 +87,24 @@ void scene_add_bodies_force_creator(scene_t *scene, force_creator_t forcer, void
  * dt = 0 runs no force creator, no world contact and no integration: bodies
  * keep their poses, velocities and accumulated forces and impulses; it only
  * reaps the bodies marked removed (stage 4) and clears the record. Negative,
- * NaN or infinite dt stops the program ("dt must be finite and >= 0"). */
+ * NaN or infinite dt stops the program ("dt must be finite and >= 0").
+ *
+ * A step whose result does not fit a double stops the program rather than
+ * leave NaN or infinity in the scene, with a message naming scene_tick, the
+ * stage, the body or force and the likely cause:
+ *   - stage 1: a spring, Newtonian gravity or drag of forces.h whose force is
+ *     not finite ("force stage: spring between body 0 and body 1 (k = ...):
+ *     force is not finite (stretch ...); likely cause: ...");
+ *   - stage 3: a body whose position, angle, velocity or angular velocity is
+ *     not finite after integrating ("integrate stage: body 1 (centroid (2, 0)
+ *     before the step): position is not finite after integrating with dt =
+ *     10 s; likely cause: dt is too large for its velocity ..."), with the
+ *     scene's stiffest spring and its stability limit when it has springs.
+ * Bodies are named by their index (scene_get_body). The usual cause is a
+ * spring too stiff for dt: the seed and explicit Euler integrators add energy
+ * to every spring at every step, symplectic Euler is stable for
+ * dt < 2 sqrt(m / k) (m the reduced mass of the spring's bodies).
+ */
 void scene_tick(scene_t *scene, double dt);
 
 /* Additions beyond the seed API. */

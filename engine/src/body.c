@@ -1,5 +1,6 @@
 #include "body.h"
 #include <math.h>
+#include <stdio.h>
 #include "body_private.h"
 #include "check.h"
 #include "integrator.h"
@@ -14,6 +15,35 @@ static const double DEFAULT_FRICTION = 0.6;
 static void check_mass(double mass, const char *function) {
     if (isnan(mass)) engine_fail(function, "mass is NaN");
     if (!(mass > 0.0)) engine_fail(function, "mass must be > 0 or INFINITY (got %g)", mass);
+    /* A subnormal mass: the first step would multiply by 1 / m = inf. */
+    if (!isfinite(1.0 / mass)) {
+        engine_fail(function, "mass %g kg is too small: its inverse is not finite", mass);
+    }
+}
+
+/* The moment of inertia of the centred shape with this mass; refused when it
+ * or its inverse is not finite, as a body could not turn correctly. */
+static double shape_moment(const vector_t *vertices, size_t count, double mass,
+                           const char *function) {
+    if (isinf(mass)) return INFINITY;
+    double moment = polygon_array_moment(vertices, count, mass);
+    /* That multiplies the mass into a sum of lengths to the fourth before
+     * dividing by the area, which can overflow or underflow where the moment
+     * itself does not; the per-kilogram moment times the mass cannot. */
+    if (!isnormal(moment)) moment = mass * polygon_array_moment(vertices, count, 1.0);
+    if (!isfinite(moment)) {
+        engine_fail(function,
+                    "the moment of inertia of this shape with mass %g kg is not finite; "
+                    "give a body that must not move mass INFINITY",
+                    mass);
+    }
+    if (!isfinite(1.0 / moment)) {
+        engine_fail(function,
+                    "the moment of inertia of this shape with mass %g kg, %g kg m^2, is too "
+                    "small: its inverse is not finite",
+                    mass, moment);
+    }
+    return moment;
 }
 
 /* Takes the shape list's vertices into an array, counter-clockwise. */
@@ -50,13 +80,18 @@ static body_t *body_create(list_t *shape, double mass, rgb_color_t color, void *
         body->local_vertices[i] = vec_subtract(body->local_vertices[i], body->centroid);
         body->radius = fmax(body->radius, vec_get_length(body->local_vertices[i]));
     }
+    /* The centroid's sums grow as the cube of the size: a shape polygon_check
+     * accepts can still overflow them. */
+    if (!vec_is_finite(body->centroid) || !isfinite(body->radius)) {
+        engine_fail(function, "bad shape: polygon is too large: its centroid is not finite");
+    }
     for (size_t i = 0; i < n; i++) {
         vector_t edge = vec_subtract(body->local_vertices[(i + 1) % n], body->local_vertices[i]);
         body->local_normals[i] = vec_normalize((vector_t){edge.y, -edge.x});
     }
     body->mass = mass;
     body->inverse_mass = isinf(mass) ? 0.0 : 1.0 / mass;
-    body->inertia = isinf(mass) ? INFINITY : polygon_array_moment(body->local_vertices, n, mass);
+    body->inertia = shape_moment(body->local_vertices, n, mass, function);
     body->inverse_inertia = isinf(mass) ? 0.0 : 1.0 / body->inertia;
     body->friction = DEFAULT_FRICTION;
     body->category = 1;
@@ -227,7 +262,42 @@ vector_t body_get_point_velocity(body_t *body, vector_t point) {
 void body_tick(body_t *body, double dt) {
     REQUIRE_NOT_NULL(body);
     REQUIRE(isfinite(dt) && dt > 0.0, "dt must be finite and > 0 (got %g)", dt);
+    body_motion_t before = body_motion(body);
     integrator_advance(body, dt, VEC_ZERO, INTEGRATOR_SEED);
+    if (!body_motion_is_finite(body)) {
+        char message[512];
+        body_explain_non_finite(body, &before, dt, message, sizeof message);
+        engine_fail(__func__, "%s", message);
+    }
+}
+
+void body_explain_non_finite(const body_t *body, const body_motion_t *before, double dt,
+                             char *message, size_t size) {
+    /* A velocity that overflowed makes the pose overflow too: it is the cause. */
+    if (!vec_is_finite(body->velocity)) {
+        snprintf(message, size,
+                 "velocity is not finite after integrating with dt = %g s; likely cause: the "
+                 "step's velocity change (F / m + g) dt + J / m overflows, with force (%g, %g) N "
+                 "and impulse (%g, %g) N s (contact impulses included) on mass %g kg",
+                 dt, before->force.x, before->force.y, before->impulse.x, before->impulse.y,
+                 body->mass);
+    } else if (!isfinite(body->angular_velocity)) {
+        snprintf(message, size,
+                 "angular velocity is not finite after integrating with dt = %g s; likely cause: "
+                 "the step's change T dt / I + L / I overflows, with torque %g N m and angular "
+                 "impulse %g N m s (contact impulses included) on moment of inertia %g kg m^2",
+                 dt, before->torque, before->angular_impulse, body->inertia);
+    } else if (!vec_is_finite(body->centroid)) {
+        snprintf(message, size,
+                 "position is not finite after integrating with dt = %g s; likely cause: dt is "
+                 "too large for its velocity (%g, %g) m/s: the step's displacement overflows",
+                 dt, body->velocity.x, body->velocity.y);
+    } else {
+        snprintf(message, size,
+                 "angle is not finite after integrating with dt = %g s; likely cause: dt is too "
+                 "large for its angular velocity %g rad/s: the step's turn overflows",
+                 dt, body->angular_velocity);
+    }
 }
 
 void body_reset(body_t *body) {
@@ -267,6 +337,8 @@ double body_get_inertia(body_t *body) {
 void body_set_inertia(body_t *body, double inertia) {
     REQUIRE_NOT_NULL(body);
     REQUIRE(inertia > 0.0, "inertia must be > 0 or INFINITY (got %g)", inertia);
+    REQUIRE(isfinite(1.0 / inertia), "inertia %g kg m^2 is too small: its inverse is not finite",
+            inertia);
     body->inertia = inertia;
     body->inverse_inertia = isinf(inertia) ? 0.0 : 1.0 / inertia;
 }

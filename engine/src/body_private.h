@@ -73,6 +73,38 @@ struct body {
 /* Recomputes the world vertices, normals and bounds if the pose changed. */
 void body_update_world(body_t *body);
 
+/* What a step starts from and the integrator clears, kept by whoever
+ * integrates so that a step whose result does not fit a double can be
+ * explained (body_explain_non_finite). The fields the message needs only:
+ * this is copied for every body at every step. */
+typedef struct {
+    vector_t centroid;
+    vector_t force;
+    double torque;
+    vector_t impulse;
+    double angular_impulse;
+} body_motion_t;
+
+static inline body_motion_t body_motion(const body_t *body) {
+    return (body_motion_t){body->centroid, body->force, body->torque, body->impulse,
+                           body->angular_impulse};
+}
+
+/* Whether pose and velocities are finite. 0 x is 0 for finite x and NaN
+ * otherwise, and a sum of zeros cannot overflow: one test for six values in
+ * the per-body path of every step (paired to shorten the chain of adds). */
+static inline bool body_motion_is_finite(const body_t *body) {
+    double zero = (0.0 * body->centroid.x + 0.0 * body->centroid.y) +
+                  (0.0 * body->velocity.x + 0.0 * body->velocity.y) +
+                  (0.0 * body->angle + 0.0 * body->angular_velocity);
+    return zero == 0.0;
+}
+
+/* Writes into message which of the body's pose and velocities is not finite
+ * after a step of dt from `before`, and the likely cause. */
+void body_explain_non_finite(const body_t *body, const body_motion_t *before, double dt,
+                             char *message, size_t size);
+
 /* Frame changes between the body's own frame (relative to its centroid,
  * unrotated) and the world. They use the rotation cached with the world
  * polygon: call body_update_world after the pose changes. */

@@ -70,7 +70,9 @@ static double choose_cell_size(const broadphase_proxy_t *proxies, size_t count) 
         movable++;
     }
     double size = movable > 0 ? 2.0 * sum / (double)movable : 1.0;
-    return size > 1e-6 ? size : 1e-6;
+    /* An infinite size (a box swept by a dt v that overflows, or extents
+     * summing past the largest double) would make every cell index NaN. */
+    return size > 1e-6 ? min_of(size, 1e300) : 1e-6;
 }
 
 static uint32_t hash_cell(int32_t ix, int32_t iy, uint32_t mask) {

@@ -1,8 +1,14 @@
 #include "forces.h"
+#include <float.h>
 #include <math.h>
+#include <stdarg.h>
+#include <stdint.h>
+#include <stdio.h>
 #include "body_private.h"
 #include "check.h"
 #include "collision.h"
+#include "forces_private.h"
+#include "integrator.h"
 #include "memory.h"
 #include "scene_private.h"
 
@@ -14,7 +20,40 @@ typedef struct {
     double constant;
     body_t *body1;
     body_t *body2;
+    /* For the message when the force does not fit a double. */
+    scene_t *scene;
 } pair_aux_t;
+
+/* A force that does not fit a double stops the tick here rather than in
+ * body_add_force, which the user did not call: scene_tick is named, with the
+ * force and the likely cause. */
+#if defined(__GNUC__)
+__attribute__((noreturn, cold, format(printf, 1, 2)))
+#endif
+static void fail_force(const char *format, ...) {
+    char message[1024];
+    va_list args;
+    va_start(args, format);
+    vsnprintf(message, sizeof message, format, args);
+    va_end(args);
+    engine_fail("scene_tick", "force stage: %s", message);
+}
+
+/* "body 3", by the body's index in the scene. */
+typedef struct {
+    char text[40];
+} body_name_t;
+
+static body_name_t body_name(const scene_t *scene, const body_t *body) {
+    body_name_t name;
+    size_t index = scene_body_index(scene, body);
+    if (index == SIZE_MAX) {
+        snprintf(name.text, sizeof name.text, "a body not in the scene");
+    } else {
+        snprintf(name.text, sizeof name.text, "body %zu", index);
+    }
+    return name;
+}
 
 static list_t *bodies_list(body_t *body1, body_t *body2) {
     list_t *bodies = list_init(2, NULL);
@@ -33,7 +72,7 @@ static void claim_pair(scene_t *scene, body_t *body1, body_t *body2, const char 
 static void add_pair_force_creator(scene_t *scene, force_creator_t forcer, double constant,
                                    body_t *body1, body_t *body2) {
     pair_aux_t *aux = memory_alloc(sizeof(pair_aux_t));
-    *aux = (pair_aux_t){constant, body1, body2};
+    *aux = (pair_aux_t){constant, body1, body2, scene};
     scene_add_bodies_force_creator(scene, forcer, aux, bodies_list(body1, body2), memory_free);
 }
 
@@ -42,9 +81,22 @@ static void newtonian_gravity(void *data) {
     vector_t r = vec_subtract(aux->body2->centroid, aux->body1->centroid);
     double distance = vec_get_length(r);
     if (distance < GRAVITY_MIN_DISTANCE) return;
-    double magnitude = aux->constant * aux->body1->mass * aux->body2->mass / (distance * distance);
-    if (!isfinite(magnitude)) return; /* two infinite masses: neither can move */
+    double m1 = aux->body1->mass, m2 = aux->body2->mass;
+    if (isinf(m1) || isinf(m2)) return; /* the pull would be infinite (documented) */
+    double magnitude = aux->constant * m1 * m2 / (distance * distance);
     vector_t force = vec_multiply(magnitude / distance, r);
+    if (!vec_is_finite(force)) {
+        /* G m1 m2 overflows long before the force does for huge masses. */
+        double scaled = aux->constant * (m1 / distance) * (m2 / distance);
+        force = vec_multiply(scaled, vec_multiply(1.0 / distance, r));
+    }
+    if (!vec_is_finite(force)) {
+        fail_force("newtonian gravity between %s and %s (G = %g N m^2/kg^2): force is not "
+                   "finite (masses %g kg and %g kg, distance %g m); likely cause: the bodies "
+                   "came too close for their masses: G m1 m2 / r^2 exceeds the largest double",
+                   body_name(aux->scene, aux->body1).text,
+                   body_name(aux->scene, aux->body2).text, aux->constant, m1, m2, distance);
+    }
     body_add_force(aux->body1, force);
     body_add_force(aux->body2, vec_negate(force));
 }
@@ -58,10 +110,130 @@ void create_newtonian_gravity(scene_t *scene, double G, body_t *body1, body_t *b
     add_pair_force_creator(scene, newtonian_gravity, G, body1, body2);
 }
 
+/* m1 m2 / (m1 + m2), or the finite mass when the other is INFINITY. */
+static double reduced_mass(const body_t *body1, const body_t *body2) {
+    if (isinf(body1->mass)) return body2->mass;
+    if (isinf(body2->mass)) return body1->mass;
+    /* Not m1 m2 / (m1 + m2): that product overflows long before the reduced
+     * mass does. */
+    return body1->mass * (body2->mass / (body1->mass + body2->mass));
+}
+
+static const char *integrator_name(integrator_t integrator) {
+    switch (integrator) {
+    case INTEGRATOR_SEED: return "seed";
+    case INTEGRATOR_EXPLICIT_EULER: return "explicit Euler";
+    case INTEGRATOR_SYMPLECTIC_EULER: return "symplectic Euler";
+    }
+    return "unknown";
+}
+
+/*
+ * The factor by which an undamped oscillator's energy grows per step of dt:
+ * with w the integrator's position weight and s = (omega dt)^2, a step maps
+ * (x, v / omega) by [[1 - w s, omega dt], [-omega dt, 1]], whose spectral
+ * radius squared is the growth. It is det = 1 + (1 - w) s for complex
+ * eigenvalues: any dt gains energy unless w = 1, which is stable for
+ * omega dt < 2.
+ */
+static double oscillator_energy_growth(double omega, double dt, integrator_t integrator) {
+    double w = integrator_position_weight(integrator);
+    double s = (omega * dt) * (omega * dt);
+    double trace = 2.0 - w * s, det = 1.0 + (1.0 - w) * s;
+    double discriminant = trace * trace - 4.0 * det;
+    if (!isfinite(discriminant)) return INFINITY;
+    if (discriminant < 0.0) return det;
+    double radius = (fabs(trace) + sqrt(discriminant)) / 2.0;
+    return radius * radius;
+}
+
+/* Writes the spring's stability at the tick's dt; returns whether it gains
+ * energy there. */
+static bool explain_spring_stability(const pair_aux_t *aux, char *message, size_t size) {
+    double mass = reduced_mass(aux->body1, aux->body2);
+    double omega = sqrt(aux->constant / mass);
+    double dt = scene_step_dt(aux->scene);
+    integrator_t integrator = scene_get_integrator(aux->scene);
+    double limit = 2.0 / omega;
+    if (!(omega > 0.0)) {
+        snprintf(message, size, "neither of its bodies can move");
+        return false;
+    }
+    char growth[32];
+    double factor = oscillator_energy_growth(omega, dt, integrator);
+    if (isfinite(factor)) {
+        snprintf(growth, sizeof growth, "%.3g", factor);
+    } else {
+        snprintf(growth, sizeof growth, "more than %g", DBL_MAX);
+    }
+    if (integrator != INTEGRATOR_SYMPLECTIC_EULER) {
+        snprintf(message, size,
+                 "with the %s integrator a spring gains energy at any dt, this one by a factor "
+                 "of %s per step at dt = %g s (m = %g kg, omega = sqrt(k/m) = %g rad/s); "
+                 "INTEGRATOR_SYMPLECTIC_EULER keeps it bounded for dt < 2 sqrt(m/k) = %g s",
+                 integrator_name(integrator), growth, dt, mass, omega, limit);
+        return true;
+    }
+    if (omega * dt >= 2.0) {
+        snprintf(message, size,
+                 "dt = %g s is above the stability limit of the symplectic Euler integrator for "
+                 "it, dt < 2 sqrt(m/k) = %g s (m = %g kg): its energy grows by a factor of %s "
+                 "per step",
+                 dt, limit, mass, growth);
+        return true;
+    }
+    snprintf(message, size,
+             "dt = %g s is within the symplectic Euler integrator's limit for it alone, "
+             "dt < 2 sqrt(m/k) = %g s (m = %g kg), which springs sharing a body lower",
+             dt, limit, mass);
+    return false;
+}
+
+static int describe_spring(const pair_aux_t *aux, char *message, size_t size) {
+    return snprintf(message, size, "spring between %s and %s (k = %g N/m)",
+                    body_name(aux->scene, aux->body1).text,
+                    body_name(aux->scene, aux->body2).text, aux->constant);
+}
+
+static void spring(void *data);
+
+double forces_spring_omega(force_creator_t forcer, const void *data) {
+    if (forcer != spring) return 0.0;
+    const pair_aux_t *aux = data;
+    if (isinf(aux->body1->mass) && isinf(aux->body2->mass)) return 0.0;
+    return sqrt(aux->constant / reduced_mass(aux->body1, aux->body2));
+}
+
+void forces_explain_spring(const void *data, char *message, size_t size) {
+    const pair_aux_t *aux = data;
+    int written = describe_spring(aux, message, size);
+    if (written < 0 || (size_t)written + 2 >= size) return;
+    message[written] = ':';
+    message[written + 1] = ' ';
+    explain_spring_stability(aux, message + written + 2, size - (size_t)written - 2);
+}
+
+#if defined(__GNUC__)
+__attribute__((noreturn, cold))
+#endif
+static void fail_spring(const pair_aux_t *aux, vector_t stretch) {
+    char spring_text[128], stability[512];
+    describe_spring(aux, spring_text, sizeof spring_text);
+    if (explain_spring_stability(aux, stability, sizeof stability)) {
+        fail_force("%s: force is not finite (stretch (%g, %g) m); likely cause: the spring is "
+                   "unstable: %s",
+                   spring_text, stretch.x, stretch.y, stability);
+    }
+    fail_force("%s: force is not finite (stretch (%g, %g) m); likely cause: the bodies are too "
+               "far apart for k: k |stretch| exceeds the largest double (%s)",
+               spring_text, stretch.x, stretch.y, stability);
+}
+
 static void spring(void *data) {
     pair_aux_t *aux = data;
     vector_t stretch = vec_subtract(aux->body2->centroid, aux->body1->centroid);
     vector_t force = vec_multiply(aux->constant, stretch);
+    if (!vec_is_finite(force)) fail_spring(aux, stretch);
     body_add_force(aux->body1, force);
     body_add_force(aux->body2, vec_negate(force));
 }
@@ -75,9 +247,34 @@ void create_spring(scene_t *scene, double k, body_t *body1, body_t *body2) {
     add_pair_force_creator(scene, spring, k, body1, body2);
 }
 
+#if defined(__GNUC__)
+__attribute__((noreturn, cold))
+#endif
+static void fail_drag(const pair_aux_t *aux) {
+    const body_t *body = aux->body1;
+    double dt = scene_step_dt(aux->scene);
+    double factor = 1.0 - aux->constant * dt / body->mass;
+    char cause[256];
+    /* The velocity update is explicit in every integrator: v' = v (1 - gamma dt / m). */
+    if (factor < -1.0) {
+        snprintf(cause, sizeof cause,
+                 "the drag is unstable at dt = %g s: each step multiplies the velocity by "
+                 "1 - gamma dt / m = %g, which needs dt < 2 m / gamma = %g s (m = %g kg)",
+                 dt, factor, 2.0 * body->mass / aux->constant, body->mass);
+    } else {
+        snprintf(cause, sizeof cause, "the velocity is too large for gamma");
+    }
+    fail_force("drag on %s (gamma = %g kg/s): force is not finite (velocity (%g, %g) m/s); "
+               "likely cause: %s",
+               body_name(aux->scene, body).text, aux->constant, body->velocity.x,
+               body->velocity.y, cause);
+}
+
 static void drag(void *data) {
     pair_aux_t *aux = data;
-    body_add_force(aux->body1, vec_multiply(-aux->constant, aux->body1->velocity));
+    vector_t force = vec_multiply(-aux->constant, aux->body1->velocity);
+    if (!vec_is_finite(force)) fail_drag(aux);
+    body_add_force(aux->body1, force);
 }
 
 void create_drag(scene_t *scene, double gamma, body_t *body) {
@@ -234,21 +431,16 @@ void physics_collision_handler(body_t *body1, body_t *body2, vector_t axis, void
     REQUIRE_NOT_NULL(body2);
     REQUIRE(isfinite(force_const) && force_const >= 0.0,
             "elasticity must be finite and >= 0 (got %g)", force_const);
-    double m1 = body1->mass, m2 = body2->mass;
-    double reduced_mass;
-    if (isinf(m1) && isinf(m2)) return; /* neither can move */
-    if (isinf(m1)) {
-        reduced_mass = m2;
-    } else if (isinf(m2)) {
-        reduced_mass = m1;
-    } else {
-        /* Not m1 m2 / (m1 + m2): that product overflows long before the
-         * reduced mass does. */
-        reduced_mass = m1 * (m2 / (m1 + m2));
-    }
+    if (isinf(body1->mass) && isinf(body2->mass)) return; /* neither can move */
+    double mu = reduced_mass(body1, body2);
     double u1 = vec_dot(body1->velocity, axis);
     double u2 = vec_dot(body2->velocity, axis);
-    vector_t impulse = vec_multiply(reduced_mass * (1.0 + force_const) * (u2 - u1), axis);
+    vector_t impulse = vec_multiply(mu * (1.0 + force_const) * (u2 - u1), axis);
+    /* Checked here so that the message names this function, not
+     * body_add_impulse. */
+    REQUIRE(vec_is_finite(impulse),
+            "impulse is not finite (reduced mass %g kg, closing speed %g m/s, elasticity %g)",
+            mu, u1 - u2, force_const);
     body_add_impulse(body1, impulse);
     body_add_impulse(body2, vec_negate(impulse));
 }

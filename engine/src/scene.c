@@ -1,7 +1,10 @@
 #include "scene.h"
 #include <math.h>
+#include <stdint.h>
+#include <stdio.h>
 #include "body_private.h"
 #include "check.h"
+#include "forces_private.h"
 #include "integrator.h"
 #include "memory.h"
 #include "scene_private.h"
@@ -25,6 +28,8 @@ struct scene {
 
     vector_t gravity;
     integrator_t integrator;
+    /* The dt of the tick in progress, for the message of one that fails. */
+    double dt;
 
     /* The world contact pipeline; NULL while contacts are off. */
     world_t *world;
@@ -252,11 +257,49 @@ world_t *scene_get_world(scene_t *scene) {
     return scene->world;
 }
 
+size_t scene_body_index(const scene_t *scene, const body_t *body) {
+    for (size_t i = 0; i < scene->body_count; i++) {
+        if (scene->bodies[i] == body) return i;
+    }
+    return SIZE_MAX;
+}
+
+double scene_step_dt(const scene_t *scene) {
+    return scene->dt;
+}
+
 /* Stage 1. A force creator may add force creators (they run from the next
  * tick on, since the count is read once) and may remove bodies. */
 static void stage_forces(scene_t *scene) {
     size_t count = scene->force_count;
     for (size_t i = 0; i < count; i++) scene->forces[i].forcer(scene->forces[i].aux);
+}
+
+/* A body whose pose or velocity no longer fits a double stops the tick:
+ * every later stage would spread its NaN. The springs are the usual cause
+ * (they bound the stable dt), so the stiffest is named. */
+#if defined(__GNUC__)
+__attribute__((noreturn, cold))
+#endif
+static void fail_integrate(const scene_t *scene, size_t index, const body_motion_t *before) {
+    char what[512], springs[768] = "";
+    body_explain_non_finite(scene->bodies[index], before, scene->dt, what, sizeof what);
+    double stiffest = 0.0;
+    size_t spring = SIZE_MAX;
+    for (size_t i = 0; i < scene->force_count; i++) {
+        double omega = forces_spring_omega(scene->forces[i].forcer, scene->forces[i].aux);
+        if (omega > stiffest) {
+            stiffest = omega;
+            spring = i;
+        }
+    }
+    if (spring != SIZE_MAX) {
+        char explanation[700];
+        forces_explain_spring(scene->forces[spring].aux, explanation, sizeof explanation);
+        snprintf(springs, sizeof springs, "; the scene's stiffest %s", explanation);
+    }
+    engine_fail("scene_tick", "integrate stage: body %zu (centroid (%g, %g) before the step): %s%s",
+                index, before->centroid.x, before->centroid.y, what, springs);
 }
 
 /* Stage 3. Returns whether any body is marked removed (those are not
@@ -269,7 +312,9 @@ static bool stage_integrate(scene_t *scene, double dt) {
             removed = true;
             continue;
         }
+        body_motion_t before = body_motion(body);
         integrator_advance(body, dt, scene->gravity, scene->integrator);
+        if (!body_motion_is_finite(body)) fail_integrate(scene, i, &before);
     }
     return removed;
 }
@@ -327,6 +372,7 @@ void scene_tick(scene_t *scene, double dt) {
     scene->record_count = 0;
     scene->record_needs_world = false;
     scene->stats = (scene_stats_t){0};
+    scene->dt = dt;
     if (dt == 0.0) {
         /* No time passes, so nothing may move or collide; the caller only
          * wants the pending removals applied (a paused game). */

@@ -19,4 +19,9 @@ void scene_claim_body(scene_t *scene, body_t *body, const char *name, const char
  * ticks (and in stage 1) it holds the contacts of the last step. */
 world_t *scene_get_world(scene_t *scene);
 
+/* For the message of a tick that fails: the body's index in the scene
+ * (SIZE_MAX when it is not in it) and the dt of the tick in progress. */
+size_t scene_body_index(const scene_t *scene, const body_t *body);
+double scene_step_dt(const scene_t *scene);
+
 #endif // #ifndef SCENE_PRIVATE_H

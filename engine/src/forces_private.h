@@ -1,0 +1,19 @@
+#ifndef FORCES_PRIVATE_H
+#define FORCES_PRIVATE_H
+
+/* What the scene needs from forces.c to explain a tick whose integration
+ * overflowed: the springs, which bound the stable dt. */
+
+#include <stddef.h>
+#include "scene.h"
+
+/* sqrt(k / m) (rad/s) of a spring made by create_spring, m the reduced mass
+ * of its bodies; 0 for any other force creator, or a spring between two
+ * INFINITY masses. */
+double forces_spring_omega(force_creator_t forcer, const void *aux);
+
+/* Writes into message the spring of this aux (a spring's, as above), its
+ * bodies and its stability at the tick's dt with the scene's integrator. */
+void forces_explain_spring(const void *aux, char *message, size_t size);
+
+#endif // #ifndef FORCES_PRIVATE_H
