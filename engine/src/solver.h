@@ -52,7 +52,8 @@ typedef struct {
     vector_t acceleration;   /* (force / mass) + gravity: for times of impact */
     vector_t dx_advanced;    /* dx before the position correction */
     double dtheta_advanced;
-    double impact_time;      /* of an impact against a static body (s), < 0 for none */
+    double impact_time;      /* of the body's earliest impact this step (s), < 0 for none */
+    uint32_t impact_partner; /* the other body's row when it can move, else UINT32_MAX */
     int pushing_contacts;    /* contacts with a normal impulse this step */
 } solver_state_t;
 
