@@ -54,6 +54,10 @@ typedef struct {
     double dtheta_advanced;
     double impact_time;      /* of the body's earliest impact this step (s), < 0 for none */
     uint32_t impact_partner; /* the other body's row when it can move, else UINT32_MAX */
+    /* When that impact lands the body on a static one: the gap to close (m)
+     * along landing_direction; < 0 otherwise. */
+    double landing_gap;
+    vector_t landing_direction;
     int pushing_contacts;    /* contacts with a normal impulse this step */
 } solver_state_t;
 
@@ -85,6 +89,7 @@ typedef struct {
     double restitution_tangent_impulse; /* friction of the collision pass (N s) */
     uint32_t id;
     bool touched;            /* touching, or an impact that has bounced this step */
+    bool lands;              /* an impact after which the point rests on the surface */
 } solver_point_t;
 
 /* The lever arms of a contact's points (world, m), used only to prepare. */
