@@ -3,10 +3,12 @@
 
 /*
  * The contact solver: a collision pass for restitution (Guendelman et al.
- * 2003), then sequential impulses with accumulated-impulse clamping (Catto),
- * warm starting, Coulomb friction, a two-point block solve for the normal
- * impulses (so a box lands and leaves flat), impacts timed within the step,
- * and non-linear Gauss-Seidel position correction.
+ * 2003) with Poisson's impulse and friction, then sequential impulses with
+ * accumulated-impulse clamping (Catto), warm starting, Coulomb friction, a
+ * two-point block solve for the normal impulses (so a box lands and leaves
+ * flat), shock propagation before the last iteration (shock.h), impacts
+ * timed within the step, landings, and non-linear Gauss-Seidel position
+ * correction. docs/design.md says why each is there.
  *
  * It works on plain arrays (solver_bodies_t's rows, solver_contact_t
  * constraints) that world.c fills from the bodies and writes back; it knows
