@@ -103,7 +103,7 @@ static void plank_with_more_contacts_than_colours_rests(void) {
     scene_free(scene);
 }
 
-/* The pyramid of ../shared/bench/SCENES.md with base B. */
+/* The pyramid of docs/bench-scenes.md with base B. */
 static body_t *build_pyramid(scene_t *scene, int base) {
     add_ground(scene, 100.0);
     body_t *top = NULL;
@@ -273,7 +273,7 @@ static void record_names_bodies_axis_and_impulses(void) {
 
 static scene_t *build_pile(size_t count);
 
-/* cradle(5) of ../shared/bench/SCENES.md with world contacts: the collision
+/* cradle(5) of docs/bench-scenes.md with world contacts: the collision
  * pass carries the impact down the row of touching boxes, so the last one
  * leaves at 2 m/s and the others stop, as with the seed's pair collisions. */
 static void newtons_cradle_passes_momentum_along(void) {
@@ -411,7 +411,7 @@ static void removing_a_body_in_contact_is_safe(void) {
     scene_free(scene);
 }
 
-/* The pile of ../shared/bench/SCENES.md, its random generator drawn in order. */
+/* The pile of docs/bench-scenes.md, its random generator drawn in order. */
 static unsigned long pile_state;
 
 static double pile_random(void) {
@@ -482,7 +482,7 @@ static void broadphase_work_grows_no_faster_than_n_log_n(void) {
     CHECK((double)work[1] / (double)work[0] <= 10.0 * log(10000.0) / log(1000.0));
 }
 
-/* tunnel(v) of ../shared/bench/SCENES.md: a 0.2 m bullet at v against a
+/* tunnel(v) of docs/bench-scenes.md: a 0.2 m bullet at v against a
  * 0.1 m wall, 16 start phases each: a speculative contact found a step ahead
  * (the bullet's box is enlarged by v dt) stops it at the wall, and with
  * elasticity 0 it does not come back. */

@@ -1,4 +1,4 @@
-# Benchmarks of the canonical scenes (/work/shared/bench/SCENES.md, docs/bench.md).
+# Benchmarks of the canonical scenes (docs/bench-scenes.md, docs/bench.md).
 # Included by the top-level Makefile; nothing here is part of `make check`.
 #
 #   make bench          builds build/bench/bench_engine and runs the benchmark set

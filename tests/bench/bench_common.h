@@ -4,7 +4,7 @@
 /*
  * Shared by the three benchmark programs (bench_engine.c, bench_chipmunk.c,
  * bench_box2d.cpp): the constants of the canonical scenes of
- * /work/shared/bench/SCENES.md, their random generator, a monotonic timer,
+ * docs/bench-scenes.md, their random generator, a monotonic timer,
  * median and mean, the printing of one result line, and the small interface
  * (bench_ops_t) through which bench_scenes.h builds and runs every scene the
  * same way on every engine.

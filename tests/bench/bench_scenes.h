@@ -2,7 +2,7 @@
 #define BENCH_SCENES_H
 
 /*
- * The canonical scenes of /work/shared/bench/SCENES.md written once against
+ * The canonical scenes of docs/bench-scenes.md written once against
  * bench_ops_t (bench_common.h), and the command line shared by the three
  * benchmark programs. Each program defines its engine variants and calls
  * bench_main. Plain C that also compiles as C++.
