@@ -331,21 +331,21 @@ void solver_wide_iterate(solver_wide_t *wide, solver_velocity_t *rows) {
 
 /* The bodies' displacements in a batch, lane by lane. */
 typedef struct {
-    lane_t dx, dy, dtheta, unused;
+    lane_t dx, dy, dtheta, radius; /* radius: carried through unchanged */
 } lane_displacement_t;
 
 LANE_INLINE lane_displacement_t gather_displacements(const solver_displacement_t *rows,
                                                      const uint32_t index[LANES]) {
     lane_quad_t columns = load_columns(rows, sizeof *rows, index);
     return (lane_displacement_t){.dx = columns.v0, .dy = columns.v1, .dtheta = columns.v2,
-                                 .unused = columns.v3};
+                                 .radius = columns.v3};
 }
 
 LANE_INLINE void scatter_displacements(solver_displacement_t *rows, const uint32_t index[LANES],
                                        int lanes, const lane_displacement_t *moved) {
     if (lanes == LANES) {
         store_columns(rows, sizeof *rows, index,
-                      (lane_quad_t){moved->dx, moved->dy, moved->dtheta, moved->unused});
+                      (lane_quad_t){moved->dx, moved->dy, moved->dtheta, moved->radius});
         return;
     }
     for (int l = 0; l < lanes; l++) {

@@ -167,6 +167,7 @@ static void load_bodies(world_t *world, body_t **bodies, size_t count, const wor
         state->acceleration = integrator_acceleration(body, step->gravity);
         state->impact_time = -1.0;
         state->pushing_contacts = 0;
+        world->displacements[i].radius = body->radius;
         velocity->v = state->v_free;
         velocity->w = state->w_free;
         velocity->inverse_mass = body->inverse_mass;
