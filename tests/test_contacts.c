@@ -647,6 +647,64 @@ static void long_steps_push_at_most_the_step_bound(void) {
     }
 }
 
+/*
+ * Boxes of side `size` dropped from a quarter of their size above the floor
+ * and above each other, turned by +-`tilt` in turn and every other one
+ * shifted by a tenth of its size; after `seconds` they rest flat. Returns
+ * the deepest overlap of the last step (m) and the fastest box over the
+ * last second (m/s).
+ */
+static void drop_and_settle(double size, int count, double tilt, double seconds,
+                            double *deepest, double *fastest) {
+    scene_t *scene = contact_scene();
+    add_box(scene, 0.0, -size, 100.0 * size, size, INFINITY);
+    body_t *boxes[3];
+    double half = size / 2.0;
+    for (int j = 0; j < count; j++) {
+        double y = half + j * size + (j + 1) * 0.25 * size;
+        boxes[j] = add_box(scene, 0.1 * size * (j % 2), y, half, half, size * size);
+        body_set_rotation(boxes[j], j % 2 == 0 ? tilt : -tilt);
+    }
+    int steps = (int)lround(seconds / DT), last_second = (int)lround(1.0 / DT);
+    *fastest = 0.0;
+    for (int step = 0; step < steps; step++) {
+        scene_tick(scene, DT);
+        if (step < steps - last_second) continue;
+        for (int j = 0; j < count; j++) {
+            *fastest = fmax(*fastest, vec_get_length(body_get_velocity(boxes[j])));
+        }
+    }
+    *deepest = max_penetration(scene);
+    for (int j = 0; j < count; j++) CHECK_NEAR(body_get_rotation(boxes[j]), 0.0, 1e-3);
+    scene_free(scene);
+}
+
+/* A 1 cm box, and a stack of three, rest less than 2% of their size deep
+ * (0.2 mm): the allowed overlap scales with the smaller body below 10 cm of
+ * radius (solver_contact_slop). With a fixed 1 mm they rested up to a tenth
+ * of their size deep. */
+static void centimetre_boxes_rest_shallow(void) {
+    for (int count = 1; count <= 3; count += 2) {
+        double deepest, fastest;
+        drop_and_settle(0.01, count, 0.3, 3.0, &deepest, &fastest);
+        CHECK(deepest < 0.02 * 0.01);
+        CHECK(fastest < 1e-4);
+    }
+}
+
+/* 100 m boxes, alone and three high, rest with the full 1 mm slop: overlap
+ * under 2e-5 of their size (twice the slop) and no jitter. Their time
+ * scale is ten times a 1 m box's (the stack of three rocks for 14 s), hence
+ * 30 s. */
+static void hundred_metre_boxes_rest_still(void) {
+    for (int count = 1; count <= 3; count += 2) {
+        double deepest, fastest;
+        drop_and_settle(100.0, count, 0.1, 30.0, &deepest, &fastest);
+        CHECK(deepest < 2e-5 * 100.0);
+        CHECK(fastest < 1e-3);
+    }
+}
+
 static void set_iterations(void *scene) {
     scene_set_solver_iterations(scene, 0, 3);
 }
@@ -674,4 +732,5 @@ TEST_SUITE(contacts, TEST_CASE(box_comes_to_rest_on_floor), TEST_CASE(column_of_
            TEST_CASE(fast_bullet_does_not_tunnel), TEST_CASE(distant_approach_is_not_an_impact), TEST_CASE(every_integrator_rests_a_stack),
            TEST_CASE(overlaps_are_pushed_apart_no_faster_than_the_push_speed),
            TEST_CASE(long_steps_push_at_most_the_step_bound),
+           TEST_CASE(centimetre_boxes_rest_shallow), TEST_CASE(hundred_metre_boxes_rest_still),
            TEST_CASE(bad_solver_settings_abort));

@@ -6,11 +6,10 @@
 
 const double SOLVER_RESTITUTION_THRESHOLD = 1.0;
 const double SOLVER_LINEAR_SLOP = 0.001;
-/* Fraction of the overlap beyond the slop removed per position iteration,
- * and the most removed at once (m). 0.2 is Box2D's; 0.4 collapses a
- * 40-row pyramid (measured). */
-static const double POSITION_CORRECTION_RATE = 0.2;
-static const double STATIC_POSITION_CORRECTION_RATE = 0.5;
+const double SOLVER_SLOP_FRACTION = 0.01;
+/* 0.2 is Box2D's; 0.4 collapses a 40-row pyramid (measured). */
+const double SOLVER_POSITION_RATE = 0.2;
+const double SOLVER_STATIC_POSITION_RATE = 0.5;
 const double SOLVER_MAX_POSITION_CORRECTION = 0.2;
 const double SOLVER_MAX_PUSH_SPEED = 4.0;
 const double SOLVER_MAX_PUSH = 0.2;
@@ -155,9 +154,6 @@ static void prepare(solver_contact_t *c, const solver_anchor_t *anchor,
                    &states[c->b], s);
     }
     if (c->point_count == 2) same_impact_moment(c);
-    bool against_static = solver_row_is_static(a) || solver_row_is_static(b);
-    c->position_rate =
-        against_static ? STATIC_POSITION_CORRECTION_RATE : POSITION_CORRECTION_RATE;
     c->block = false;
     if (c->point_count == 2) {
         const solver_point_t *p1 = &c->points[0], *p2 = &c->points[1];
@@ -468,20 +464,22 @@ static void advance(const solver_bodies_t *bodies, const solver_settings_t *s) {
  * One non-linear Gauss-Seidel pass over positions. The separation is
  * re-estimated from the displacements so far, to first order in the
  * rotation (a step turns a body by a small angle), and pushed back toward
- * -slop by a fraction of the overlap. Only positions move: no energy is
- * added. solver_wide.c does the same four contacts at a time.
+ * minus the contact's slop by a fraction of the overlap. Only positions
+ * move: no energy is added. solver_wide.c does the same four contacts at a
+ * time.
  */
 static void solve_position(const solver_contact_t *c, const solver_velocity_t *velocities,
                            solver_displacement_t *displacements) {
     solver_displacement_t *a = &displacements[c->a], *b = &displacements[c->b];
     double ma = velocities[c->a].inverse_mass, ia = velocities[c->a].inverse_inertia;
     double mb = velocities[c->b].inverse_mass, ib = velocities[c->b].inverse_inertia;
+    double rate = solver_position_rate(&velocities[c->a], &velocities[c->b]);
     for (int i = 0; i < c->point_count; i++) {
         const solver_point_t *p = &c->points[i];
         double separation = p->separation + vec_dot(c->normal, vec_subtract(b->dx, a->dx)) +
                             b->dtheta * p->rn_b - a->dtheta * p->rn_a;
         double error = max_of(-SOLVER_MAX_POSITION_CORRECTION,
-                              min_of(c->position_rate * (separation + SOLVER_LINEAR_SLOP), 0.0));
+                              min_of(rate * (separation + c->slop), 0.0));
         double lambda = -error * p->normal_mass;
         a->dx = vec_subtract(a->dx, vec_multiply(ma * lambda, c->normal));
         a->dtheta -= ia * lambda * p->rn_a;

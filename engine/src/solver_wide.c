@@ -68,7 +68,7 @@ struct solver_batch {
  * follow in wide->position_points. */
 struct solver_position_batch {
     lane_vector_t normal;
-    lane_t ma, mb, ia, ib, rate;
+    lane_t ma, mb, ia, ib, rate, slop;
     uint32_t a[LANES], b[LANES];
     uint8_t lanes, point_count;
 };
@@ -361,7 +361,6 @@ LANE_INLINE void correct_batch(const solver_position_batch_t *batch,
                                const solver_position_point_t *points, lane_displacement_t *a,
                                lane_displacement_t *b) {
     const lane_t zero = {0.0, 0.0, 0.0, 0.0};
-    const lane_t slop = zero + SOLVER_LINEAR_SLOP;
     const lane_t most = zero - SOLVER_MAX_POSITION_CORRECTION;
     const lane_vector_t *n = &batch->normal;
     for (int i = 0; i < batch->point_count; i++) {
@@ -369,7 +368,7 @@ LANE_INLINE void correct_batch(const solver_position_batch_t *batch,
         lane_t separation = points[i].separation +
                             (n->x * (b->dx - a->dx) + n->y * (b->dy - a->dy)) +
                             b->dtheta * rn->b - a->dtheta * rn->a;
-        lane_t wanted = batch->rate * (separation + slop);
+        lane_t wanted = batch->rate * (separation + batch->slop);
         lane_t capped = min_lane(wanted, zero);
         lane_t error = max_lane(most, capped);
         lane_t lambda = -error * points[i].normal_mass;
@@ -427,7 +426,8 @@ static void pack_lane(solver_wide_t *wide, const solver_contact_t *c, uint32_t i
     position->mb[l] = rows[c->b].inverse_mass;
     position->ia[l] = rows[c->a].inverse_inertia;
     position->ib[l] = rows[c->b].inverse_inertia;
-    position->rate[l] = c->position_rate;
+    position->rate[l] = solver_position_rate(&rows[c->a], &rows[c->b]);
+    position->slop[l] = c->slop;
     if (batch->kind == BATCH_BLOCK) {
         lane_block_t *k = &wide->blocks[wide->block_count];
         k->k11[l] = c->k11;
