@@ -4,6 +4,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include "engine.h"
+#include "solver.h"
 #include "test.h"
 
 static const double DT = 1.0 / 60.0;
@@ -548,6 +549,162 @@ static void every_integrator_rests_a_stack(void) {
     }
 }
 
+/* The overlap scene of ../shared/bench/SCENES.md: a pyramid of base 4 of
+ * 1 m boxes whose centres are 0.75 m apart, a quarter of each box inside
+ * its neighbours. Returns the boxes, bottom row first. */
+static void build_overlapping_pyramid(scene_t *scene, body_t *boxes[10]) {
+    add_box(scene, 0.0, -0.5, 20.0, 0.5, INFINITY);
+    int count = 0;
+    for (int j = 0; j < 4; j++) {
+        for (int k = 0; k < 4 - j; k++) {
+            boxes[count++] = add_box(scene, (k - (4 - j - 1) / 2.0) * 0.75, 0.5 + j * 0.75, 0.5,
+                                     0.5, 1.0);
+        }
+    }
+}
+
+/*
+ * Overlaps are pushed apart no faster than SOLVER_MAX_PUSH_SPEED, however
+ * deep: before the cap was a speed, the first step moved a box 0.19 m
+ * (11.4 m/s) while the velocities read under 0.01 m/s. The position change
+ * of every box over every step, divided by dt, stays within the push speed
+ * plus 0.05 m/s for what gravity and the contacts give the velocity (the
+ * boxes move at under 0.01 m/s here); beyond what the velocity explains,
+ * the change is within SOLVER_MAX_PUSH_SPEED dt, and the turn moves a
+ * corner (0.71 m from the centre) no further, to rounding. The pyramid
+ * still comes apart in place.
+ */
+static void overlaps_are_pushed_apart_no_faster_than_the_push_speed(void) {
+    scene_t *scene = contact_scene();
+    body_t *boxes[10];
+    build_overlapping_pyramid(scene, boxes);
+    double fastest = 0.0, most_pushed = 0.0, most_turned = 0.0;
+    bool in_bounds = true;
+    for (int step = 0; step < 300; step++) {
+        vector_t x0[10], v0[10];
+        double angle0[10], w0[10];
+        for (int i = 0; i < 10; i++) {
+            x0[i] = body_get_centroid(boxes[i]);
+            v0[i] = body_get_velocity(boxes[i]);
+            angle0[i] = body_get_rotation(boxes[i]);
+            w0[i] = body_get_angular_velocity(boxes[i]);
+        }
+        scene_tick(scene, DT);
+        for (int i = 0; i < 10; i++) {
+            vector_t x = body_get_centroid(boxes[i]), moved = vec_subtract(x, x0[i]);
+            fastest = fmax(fastest, vec_get_length(moved) / DT);
+            /* The seed integrator moves a body by the mean of its velocities. */
+            vector_t drift = vec_multiply(DT / 2.0, vec_add(v0[i], body_get_velocity(boxes[i])));
+            most_pushed = fmax(most_pushed, vec_get_length(vec_subtract(moved, drift)));
+            double turn = body_get_rotation(boxes[i]) - angle0[i] -
+                          DT / 2.0 * (w0[i] + body_get_angular_velocity(boxes[i]));
+            most_turned = fmax(most_turned, fabs(turn));
+            in_bounds &= x.x >= -20.0 && x.x <= 20.0 && x.y >= 0.0;
+        }
+    }
+    CHECK(fastest <= SOLVER_MAX_PUSH_SPEED + 0.05);
+    CHECK(most_pushed <= SOLVER_MAX_PUSH_SPEED * DT * (1.0 + 1e-9));
+    CHECK(most_turned * sqrt(0.5) <= SOLVER_MAX_PUSH_SPEED * DT * (1.0 + 1e-9));
+    CHECK(in_bounds);
+    CHECK(max_penetration(scene) < 0.01);
+    for (int i = 0; i < 10; i++) CHECK(vec_get_length(body_get_velocity(boxes[i])) < 1e-3);
+    scene_free(scene);
+}
+
+/* However long the step, the position correction moves a body at most
+ * SOLVER_MAX_PUSH (the push speed times a 1 s step would be 4 m, through
+ * any wall): the overlap scene at dt = 0.25 s and 1 s. Without gravity,
+ * so that no impact is timed within the step (apply_impact_time moves a
+ * body too) and all that moves a body beyond its velocity is the position
+ * correction. */
+static void long_steps_push_at_most_the_step_bound(void) {
+    const double steps[] = {0.25, 1.0};
+    for (size_t k = 0; k < sizeof steps / sizeof steps[0]; k++) {
+        double dt = steps[k];
+        scene_t *scene = contact_scene();
+        scene_set_gravity(scene, VEC_ZERO);
+        body_t *boxes[10];
+        build_overlapping_pyramid(scene, boxes);
+        double most_pushed = 0.0;
+        for (int step = 0; step < 20; step++) {
+            vector_t x0[10], v0[10];
+            for (int i = 0; i < 10; i++) {
+                x0[i] = body_get_centroid(boxes[i]);
+                v0[i] = body_get_velocity(boxes[i]);
+            }
+            scene_tick(scene, dt);
+            for (int i = 0; i < 10; i++) {
+                vector_t moved = vec_subtract(body_get_centroid(boxes[i]), x0[i]);
+                vector_t drift =
+                    vec_multiply(dt / 2.0, vec_add(v0[i], body_get_velocity(boxes[i])));
+                most_pushed = fmax(most_pushed, vec_get_length(vec_subtract(moved, drift)));
+            }
+        }
+        CHECK(most_pushed > 0.5 * SOLVER_MAX_PUSH); /* the bound is what held it */
+        CHECK(most_pushed <= SOLVER_MAX_PUSH * (1.0 + 1e-9));
+        CHECK(max_penetration(scene) < 0.01);
+        scene_free(scene);
+    }
+}
+
+/*
+ * Boxes of side `size` dropped from a quarter of their size above the floor
+ * and above each other, turned by +-`tilt` in turn and every other one
+ * shifted by a tenth of its size; after `seconds` they rest flat. Returns
+ * the deepest overlap of the last step (m) and the fastest box over the
+ * last second (m/s).
+ */
+static void drop_and_settle(double size, int count, double tilt, double seconds,
+                            double *deepest, double *fastest) {
+    scene_t *scene = contact_scene();
+    add_box(scene, 0.0, -size, 100.0 * size, size, INFINITY);
+    body_t *boxes[3];
+    double half = size / 2.0;
+    for (int j = 0; j < count; j++) {
+        double y = half + j * size + (j + 1) * 0.25 * size;
+        boxes[j] = add_box(scene, 0.1 * size * (j % 2), y, half, half, size * size);
+        body_set_rotation(boxes[j], j % 2 == 0 ? tilt : -tilt);
+    }
+    int steps = (int)lround(seconds / DT), last_second = (int)lround(1.0 / DT);
+    *fastest = 0.0;
+    for (int step = 0; step < steps; step++) {
+        scene_tick(scene, DT);
+        if (step < steps - last_second) continue;
+        for (int j = 0; j < count; j++) {
+            *fastest = fmax(*fastest, vec_get_length(body_get_velocity(boxes[j])));
+        }
+    }
+    *deepest = max_penetration(scene);
+    for (int j = 0; j < count; j++) CHECK_NEAR(body_get_rotation(boxes[j]), 0.0, 1e-3);
+    scene_free(scene);
+}
+
+/* A 1 cm box, and a stack of three, rest less than 2% of their size deep
+ * (0.2 mm): the allowed overlap scales with the smaller body below 10 cm of
+ * radius (solver_contact_slop). With a fixed 1 mm they rested up to a tenth
+ * of their size deep. */
+static void centimetre_boxes_rest_shallow(void) {
+    for (int count = 1; count <= 3; count += 2) {
+        double deepest, fastest;
+        drop_and_settle(0.01, count, 0.3, 3.0, &deepest, &fastest);
+        CHECK(deepest < 0.02 * 0.01);
+        CHECK(fastest < 1e-4);
+    }
+}
+
+/* 100 m boxes, alone and three high, rest with the full 1 mm slop: overlap
+ * under 2e-5 of their size (twice the slop) and no jitter. Their time
+ * scale is ten times a 1 m box's (the stack of three rocks for 14 s), hence
+ * 30 s. */
+static void hundred_metre_boxes_rest_still(void) {
+    for (int count = 1; count <= 3; count += 2) {
+        double deepest, fastest;
+        drop_and_settle(100.0, count, 0.1, 30.0, &deepest, &fastest);
+        CHECK(deepest < 2e-5 * 100.0);
+        CHECK(fastest < 1e-3);
+    }
+}
+
 static void set_iterations(void *scene) {
     scene_set_solver_iterations(scene, 0, 3);
 }
@@ -573,4 +730,7 @@ TEST_SUITE(contacts, TEST_CASE(box_comes_to_rest_on_floor), TEST_CASE(column_of_
            TEST_CASE(warm_step_allocates_nothing),
            TEST_CASE(broadphase_work_grows_no_faster_than_n_log_n),
            TEST_CASE(fast_bullet_does_not_tunnel), TEST_CASE(distant_approach_is_not_an_impact), TEST_CASE(every_integrator_rests_a_stack),
+           TEST_CASE(overlaps_are_pushed_apart_no_faster_than_the_push_speed),
+           TEST_CASE(long_steps_push_at_most_the_step_bound),
+           TEST_CASE(centimetre_boxes_rest_shallow), TEST_CASE(hundred_metre_boxes_rest_still),
            TEST_CASE(bad_solver_settings_abort));

@@ -274,10 +274,11 @@ static double moved_separation(const solver_contact_t *c, const solver_point_t *
 
 /*
  * Five one-point contacts on distinct bodies, overlapping by different
- * amounts, one of them apart. One position iteration takes each overlap
- * beyond the slop down by the contact's rate, at most
- * SOLVER_MAX_POSITION_CORRECTION, and leaves the one apart alone, whichever
- * way the batches are swept.
+ * amounts, one of them apart, with slops of their own, every other one
+ * against a body that cannot move. One position iteration takes each
+ * overlap beyond the contact's slop down by the contact's rate (the static
+ * one against the immovable body), at most SOLVER_MAX_POSITION_CORRECTION,
+ * and leaves the one apart alone, whichever way the batches are swept.
  */
 static void batches_correct_overlaps_by_their_rate(void) {
     enum { CONTACTS = 5, BODIES = 2 * CONTACTS };
@@ -290,6 +291,11 @@ static void batches_correct_overlaps_by_their_rate(void) {
             rows[i] = (solver_velocity_t){{0.0, 0.0}, 0.0, 1.0 / (1.0 + i), 0.5 / (1.0 + i)};
             moved[i] = (solver_displacement_t){{0.01 * i, -0.02 * i}, 0.001 * i, 0.0};
         }
+        /* Every other contact against a body that cannot move: the static rate. */
+        for (int i = 1; i < CONTACTS; i += 2) {
+            rows[2 * i] = (solver_velocity_t){{0.0, 0.0}, 0.0, 0.0, 0.0};
+            moved[2 * i] = (solver_displacement_t){{0.0, 0.0}, 0.0, 0.0};
+        }
         for (int i = 0; i < CONTACTS; i++) {
             solver_contact_t *c = &contacts[i];
             memset(c, 0, sizeof *c);
@@ -298,7 +304,7 @@ static void batches_correct_overlaps_by_their_rate(void) {
             double angle = 1.0 + i;
             c->normal = (vector_t){cos(angle), sin(angle)};
             c->point_count = 1;
-            c->position_rate = i % 2 == 0 ? 0.2 : 0.5;
+            c->slop = i < 2 ? SOLVER_LINEAR_SLOP : 0.0001 * i;
             c->points[0] = make_point((vector_t){0.3, 0.1}, (vector_t){-0.2, 0.4}, c->normal,
                                       &rows[c->a], &rows[c->b], 0.0, 0);
             /* The separation at the start of the step, chosen so that the
@@ -311,7 +317,9 @@ static void batches_correct_overlaps_by_their_rate(void) {
         solver_wide_correct_positions(&wide, moved, backward);
         for (int i = 0; i < CONTACTS; i++) {
             double before = -overlaps[i];
-            double wanted = contacts[i].position_rate * (before + SOLVER_LINEAR_SLOP);
+            double rate = i % 2 == 0 ? SOLVER_POSITION_RATE : SOLVER_STATIC_POSITION_RATE;
+            CHECK(solver_position_rate(&rows[2 * i], &rows[2 * i + 1]) == rate);
+            double wanted = rate * (before + contacts[i].slop);
             double removed = fmax(-SOLVER_MAX_POSITION_CORRECTION, fmin(wanted, 0.0));
             double after = moved_separation(&contacts[i], &contacts[i].points[0], moved);
             CHECK_NEAR(after, before - removed, 1e-12);

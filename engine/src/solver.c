@@ -6,19 +6,14 @@
 
 const double SOLVER_RESTITUTION_THRESHOLD = 1.0;
 const double SOLVER_LINEAR_SLOP = 0.001;
-/* Fraction of the overlap beyond the slop removed per position iteration,
- * and the most removed at once (m). 0.2 is Box2D's; 0.4 collapses a
- * 40-row pyramid (measured). */
-static const double POSITION_CORRECTION_RATE = 0.2;
-static const double STATIC_POSITION_CORRECTION_RATE = 0.5;
+const double SOLVER_SLOP_FRACTION = 0.01;
+/* 0.2 is Box2D's; 0.4 collapses a 40-row pyramid (measured). */
+const double SOLVER_POSITION_RATE = 0.2;
+const double SOLVER_STATIC_POSITION_RATE = 0.5;
 const double SOLVER_MAX_POSITION_CORRECTION = 0.2;
-/* The most the position correction may move one body in one step (m, rad),
- * over all its contacts and iterations. A body squeezed by many deep
- * contacts was otherwise shoved 1.4 m in a step, through a 1 m wall, in the
- * 10000-body pile (measured); the rest of an overlap is removed in the
- * following steps. */
-static const double MAX_BODY_CORRECTION = 0.2;
-static const double MAX_BODY_ROTATION_CORRECTION = 0.2;
+const double SOLVER_MAX_PUSH_SPEED = 4.0;
+const double SOLVER_MAX_PUSH = 0.2;
+const double SOLVER_MAX_TURN = 0.2;
 /* The block solve needs a well-conditioned 2x2 matrix; beyond this
  * condition number the two points are solved one at a time. */
 static const double MAX_CONDITION_NUMBER = 1000.0;
@@ -163,9 +158,6 @@ static void prepare(solver_contact_t *c, const solver_anchor_t *anchor,
                    &states[c->b], s);
     }
     if (c->point_count == 2) same_impact_moment(c);
-    bool against_static = solver_row_is_static(a) || solver_row_is_static(b);
-    c->position_rate =
-        against_static ? STATIC_POSITION_CORRECTION_RATE : POSITION_CORRECTION_RATE;
     c->block = false;
     if (c->point_count == 2) {
         const solver_point_t *p1 = &c->points[0], *p2 = &c->points[1];
@@ -507,7 +499,6 @@ static void advance(const solver_bodies_t *bodies, const solver_settings_t *s) {
         moved->dx = vec_multiply(s->dt, vec_add(vec_multiply(1.0 - w, state->v_start),
                                                 vec_multiply(w, velocity->v)));
         moved->dtheta = s->dt * ((1.0 - w) * state->w_start + w * velocity->w);
-        moved->unused = 0.0;
         apply_impact_time(bodies, i, s);
         state->dx_advanced = moved->dx;
         state->dtheta_advanced = moved->dtheta;
@@ -518,20 +509,22 @@ static void advance(const solver_bodies_t *bodies, const solver_settings_t *s) {
  * One non-linear Gauss-Seidel pass over positions. The separation is
  * re-estimated from the displacements so far, to first order in the
  * rotation (a step turns a body by a small angle), and pushed back toward
- * -slop by a fraction of the overlap. Only positions move: no energy is
- * added. solver_wide.c does the same four contacts at a time.
+ * minus the contact's slop by a fraction of the overlap. Only positions
+ * move: no energy is added. solver_wide.c does the same four contacts at a
+ * time.
  */
 static void solve_position(const solver_contact_t *c, const solver_velocity_t *velocities,
                            solver_displacement_t *displacements) {
     solver_displacement_t *a = &displacements[c->a], *b = &displacements[c->b];
     double ma = velocities[c->a].inverse_mass, ia = velocities[c->a].inverse_inertia;
     double mb = velocities[c->b].inverse_mass, ib = velocities[c->b].inverse_inertia;
+    double rate = solver_position_rate(&velocities[c->a], &velocities[c->b]);
     for (int i = 0; i < c->point_count; i++) {
         const solver_point_t *p = &c->points[i];
         double separation = p->separation + vec_dot(c->normal, vec_subtract(b->dx, a->dx)) +
                             b->dtheta * p->rn_b - a->dtheta * p->rn_a;
         double error = max_of(-SOLVER_MAX_POSITION_CORRECTION,
-                              min_of(c->position_rate * (separation + SOLVER_LINEAR_SLOP), 0.0));
+                              min_of(rate * (separation + c->slop), 0.0));
         double lambda = -error * p->normal_mass;
         a->dx = vec_subtract(a->dx, vec_multiply(ma * lambda, c->normal));
         a->dtheta -= ia * lambda * p->rn_a;
@@ -540,21 +533,29 @@ static void solve_position(const solver_contact_t *c, const solver_velocity_t *v
     }
 }
 
-/* Caps what the position pass moved each body (MAX_BODY_CORRECTION). */
-static void limit_corrections(const solver_bodies_t *bodies) {
+/* The most the position pass may turn a body in this step (rad): as far
+ * as moves its farthest vertex `most` (m), at most SOLVER_MAX_TURN. */
+static double turn_limit(double radius, double most) {
+    return radius * SOLVER_MAX_TURN > most ? most / radius : SOLVER_MAX_TURN;
+}
+
+/* Caps what the position pass moved each body in this step (solver.h:
+ * SOLVER_MAX_PUSH_SPEED). */
+static void limit_corrections(const solver_bodies_t *bodies, double dt) {
+    double most = min_of(SOLVER_MAX_PUSH_SPEED * dt, SOLVER_MAX_PUSH);
     for (size_t i = 0; i < bodies->body_count; i++) {
         const solver_state_t *state = &bodies->states[i];
         solver_displacement_t *moved = &bodies->displacements[i];
         vector_t corrected = vec_subtract(moved->dx, state->dx_advanced);
         double squared = vec_dot(corrected, corrected);
-        if (squared > MAX_BODY_CORRECTION * MAX_BODY_CORRECTION) { /* rare: no sqrt otherwise */
+        if (squared > most * most) { /* rare: no sqrt otherwise */
             double length = sqrt(squared);
-            moved->dx = vec_add(state->dx_advanced,
-                                vec_multiply(MAX_BODY_CORRECTION / length, corrected));
+            moved->dx = vec_add(state->dx_advanced, vec_multiply(most / length, corrected));
         }
-        double turned = moved->dtheta - state->dtheta_advanced;
-        if (fabs(turned) > MAX_BODY_ROTATION_CORRECTION) {
-            moved->dtheta = state->dtheta_advanced + copysign(MAX_BODY_ROTATION_CORRECTION, turned);
+        double turned = moved->dtheta - state->dtheta_advanced, angle = fabs(turned);
+        if (angle * moved->radius > most || angle > SOLVER_MAX_TURN) { /* rare: no division */
+            moved->dtheta =
+                state->dtheta_advanced + copysign(turn_limit(moved->radius, most), turned);
         }
     }
 }
@@ -604,5 +605,5 @@ void solver_solve(solver_wide_t *wide, shock_t *shock, solver_contact_t *contact
             solve_position(&contacts[wide->loose[i]], velocities, bodies->displacements);
         }
     }
-    limit_corrections(bodies);
+    limit_corrections(bodies, settings->dt);
 }

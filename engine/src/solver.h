@@ -68,7 +68,13 @@ typedef struct {
 typedef struct {
     vector_t dx;
     double dtheta;
-    double unused; /* pads a row to the four doubles solver_wide.c loads at once */
+    /* Centroid to farthest vertex (m): how far a turn moves the body, for
+     * the cap on the correction (SOLVER_MAX_PUSH_SPEED). Here because the
+     * row is padded to the four doubles solver_wide.c loads at once anyway,
+     * and the cap reads the row; a field in solver_state_t made that row
+     * 112 bytes and every access to it by index dearer (0.15% more
+     * instructions in pile(1000), measured). */
+    double radius;
 } solver_displacement_t;
 
 /* One contact point, as the iterations see it. The lever arms r (from each
@@ -105,7 +111,7 @@ typedef struct {
     bool block;
     vector_t normal;         /* unit, from a toward b; the tangent is perp(normal) */
     double friction, restitution;
-    double position_rate;    /* fraction of an overlap the position pass removes per iteration */
+    double slop;             /* overlap the position pass leaves alone (m): solver_contact_slop */
     /* The 2x2 normal effective-mass matrix K and its inverse (block solve). */
     double k11, k12, k22;
     double m11, m12, m22;
@@ -122,11 +128,72 @@ typedef struct {
 /* Below this approach speed (m/s) contacts are inelastic: a resting body
  * must not bounce on the speed gravity gives it in one step. */
 extern const double SOLVER_RESTITUTION_THRESHOLD;
-/* Overlap the position correction leaves alone (m), so resting contacts
- * persist from step to step instead of flickering. */
+/*
+ * Overlap the position correction leaves alone (m), so resting contacts
+ * persist from step to step instead of flickering: SOLVER_LINEAR_SLOP
+ * between bodies of ordinary size, SOLVER_SLOP_FRACTION of the smaller
+ * body's radius (centroid to farthest vertex) when that is less. Bodies of
+ * 10 cm radius or more get the full 1 mm, so piles and pyramids of 1 m
+ * bodies are unchanged; a 1 cm box gets 0.07 mm where the fixed 1 mm let it
+ * rest a tenth of its size deep in the floor (measured). See
+ * solver_contact_slop.
+ */
 extern const double SOLVER_LINEAR_SLOP;
-/* The most one point's position correction removes at once (m). */
+extern const double SOLVER_SLOP_FRACTION;
+/* Fraction of an overlap beyond the slop that one position iteration
+ * removes: between two movable bodies, and against a body that cannot move
+ * (only one side moves, so a larger share does not overshoot); see
+ * solver_position_rate. And the most one point's correction removes at
+ * once (m). */
+extern const double SOLVER_POSITION_RATE;
+extern const double SOLVER_STATIC_POSITION_RATE;
 extern const double SOLVER_MAX_POSITION_CORRECTION;
+/*
+ * The fastest the position correction moves a body (m/s): in a step of dt
+ * it moves a body's centroid at most SOLVER_MAX_PUSH_SPEED dt beyond what
+ * the body's velocity does, and turns it at most as far as moves its
+ * farthest vertex (the radius) SOLVER_MAX_PUSH_SPEED dt, however many
+ * contacts push it; and never more than SOLVER_MAX_PUSH (m) and
+ * SOLVER_MAX_TURN (rad) in one step, however long the step. The rest of an
+ * overlap is removed in the following steps.
+ *
+ * Why a speed: bodies created overlapping were pushed apart in one jump
+ * (the overlap scene: 0.19 m in the first step, 11.4 m/s of position change
+ * while the reported velocity stayed under 0.01 m/s); Chipmunk2D moves them
+ * at 4.2 m/s at most, Box2D at 9.0 m/s. At 4 m/s that scene's overlaps are
+ * under 1 cm after 20 steps instead of 17, with the same end state; 3 m/s
+ * takes 22, 2 m/s 28. The turn is bounded through the radius so that one
+ * speed rules both at any size: a flat figure in rad/s would swing the rim
+ * of a 100 m box at hundreds of m/s. At 60 Hz it lets a 1 m box turn at
+ * 5.7 rad/s, more than the overlap scene needed before (4.75); a flat
+ * 2 rad/s left pile(1000) deeper (docs/design.md has the measurements). Why
+ * a bound per step as well: a speed times a long step is a long way (4 m
+ * in a 1 s step), and a body squeezed by many deep contacts was shoved
+ * through a 1 m wall in the 10000-body pile before any cap; 0.2 m and
+ * 0.2 rad were the cap then, and the first binds now only for steps longer
+ * than 1/20 s.
+ */
+extern const double SOLVER_MAX_PUSH_SPEED;
+extern const double SOLVER_MAX_PUSH;
+extern const double SOLVER_MAX_TURN;
+
+/* The position rate of a contact between bodies with these rows. Derived
+ * where it is used rather than kept in solver_contact_t beside the slop:
+ * that made the contact 352 bytes instead of 344, and pile(1000) ran 0.7%
+ * more instructions than this (measured): address arithmetic in every loop
+ * over the contacts, and prepare setting the field. */
+static inline double solver_position_rate(const solver_velocity_t *a, const solver_velocity_t *b) {
+    bool against_static = solver_row_is_static(a) || solver_row_is_static(b);
+    return against_static ? SOLVER_STATIC_POSITION_RATE : SOLVER_POSITION_RATE;
+}
+
+/* The slop of a contact between bodies of these radii (m): the smaller
+ * body sets it, so a small body on a large floor rests as shallow as on
+ * another small body. */
+static inline double solver_contact_slop(double radius_a, double radius_b) {
+    double scaled = SOLVER_SLOP_FRACTION * (radius_a < radius_b ? radius_a : radius_b);
+    return scaled < SOLVER_LINEAR_SLOP ? scaled : SOLVER_LINEAR_SLOP;
+}
 
 typedef struct solver_wide solver_wide_t;
 typedef struct shock shock_t;

@@ -68,7 +68,7 @@ struct solver_batch {
  * follow in wide->position_points. */
 struct solver_position_batch {
     lane_vector_t normal;
-    lane_t ma, mb, ia, ib, rate;
+    lane_t ma, mb, ia, ib, rate, slop;
     uint32_t a[LANES], b[LANES];
     uint8_t lanes, point_count;
 };
@@ -331,21 +331,21 @@ void solver_wide_iterate(solver_wide_t *wide, solver_velocity_t *rows) {
 
 /* The bodies' displacements in a batch, lane by lane. */
 typedef struct {
-    lane_t dx, dy, dtheta, unused;
+    lane_t dx, dy, dtheta, radius; /* radius: carried through unchanged */
 } lane_displacement_t;
 
 LANE_INLINE lane_displacement_t gather_displacements(const solver_displacement_t *rows,
                                                      const uint32_t index[LANES]) {
     lane_quad_t columns = load_columns(rows, sizeof *rows, index);
     return (lane_displacement_t){.dx = columns.v0, .dy = columns.v1, .dtheta = columns.v2,
-                                 .unused = columns.v3};
+                                 .radius = columns.v3};
 }
 
 LANE_INLINE void scatter_displacements(solver_displacement_t *rows, const uint32_t index[LANES],
                                        int lanes, const lane_displacement_t *moved) {
     if (lanes == LANES) {
         store_columns(rows, sizeof *rows, index,
-                      (lane_quad_t){moved->dx, moved->dy, moved->dtheta, moved->unused});
+                      (lane_quad_t){moved->dx, moved->dy, moved->dtheta, moved->radius});
         return;
     }
     for (int l = 0; l < lanes; l++) {
@@ -361,7 +361,6 @@ LANE_INLINE void correct_batch(const solver_position_batch_t *batch,
                                const solver_position_point_t *points, lane_displacement_t *a,
                                lane_displacement_t *b) {
     const lane_t zero = {0.0, 0.0, 0.0, 0.0};
-    const lane_t slop = zero + SOLVER_LINEAR_SLOP;
     const lane_t most = zero - SOLVER_MAX_POSITION_CORRECTION;
     const lane_vector_t *n = &batch->normal;
     for (int i = 0; i < batch->point_count; i++) {
@@ -369,7 +368,7 @@ LANE_INLINE void correct_batch(const solver_position_batch_t *batch,
         lane_t separation = points[i].separation +
                             (n->x * (b->dx - a->dx) + n->y * (b->dy - a->dy)) +
                             b->dtheta * rn->b - a->dtheta * rn->a;
-        lane_t wanted = batch->rate * (separation + slop);
+        lane_t wanted = batch->rate * (separation + batch->slop);
         lane_t capped = min_lane(wanted, zero);
         lane_t error = max_lane(most, capped);
         lane_t lambda = -error * points[i].normal_mass;
@@ -427,7 +426,8 @@ static void pack_lane(solver_wide_t *wide, const solver_contact_t *c, uint32_t i
     position->mb[l] = rows[c->b].inverse_mass;
     position->ia[l] = rows[c->a].inverse_inertia;
     position->ib[l] = rows[c->b].inverse_inertia;
-    position->rate[l] = c->position_rate;
+    position->rate[l] = solver_position_rate(&rows[c->a], &rows[c->b]);
+    position->slop[l] = c->slop;
     if (batch->kind == BATCH_BLOCK) {
         lane_block_t *k = &wide->blocks[wide->block_count];
         k->k11[l] = c->k11;

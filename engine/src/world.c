@@ -167,6 +167,7 @@ static void load_bodies(world_t *world, body_t **bodies, size_t count, const wor
         state->acceleration = integrator_acceleration(body, step->gravity);
         state->impact_time = -1.0;
         state->pushing_contacts = 0;
+        world->displacements[i].radius = body->radius;
         velocity->v = state->v_free;
         velocity->w = state->w_free;
         velocity->inverse_mass = body->inverse_mass;
@@ -224,12 +225,13 @@ static void add_contact(world_t *world, body_t *a, body_t *b, uint64_t key,
     solver_contact_t *contact = &world->contacts[n];
     solver_anchor_t *anchor = &world->anchors[n];
     contact_source_t *source = &world->sources[n];
-    /* The solver's fields are all set by its prepare step. */
+    /* The solver's other fields are all set by its prepare step. */
     contact->a = a->solver_index;
     contact->b = b->solver_index;
     contact->normal = manifold->normal;
     contact->friction = sqrt(a->friction * b->friction);
     contact->restitution = max_of(a->elasticity, b->elasticity);
+    contact->slop = solver_contact_slop(a->radius, b->radius);
     contact->point_count = manifold->point_count;
     for (int i = 0; i < manifold->point_count; i++) {
         solver_point_t *point = &contact->points[i];
