@@ -4,123 +4,131 @@
 #include "memory.h"
 
 static const uint32_t UNREACHED = UINT32_MAX;
+static const uint32_t NO_SIDE = UINT32_MAX;
+/* The sign of a side, -1 seen from a and +1 from b: looked up, since
+ * which one it is is random and a branch on it mispredicted. */
+static const double SIGN[2] = {-1.0, 1.0};
 
 void shock_free(shock_t *shock) {
     memory_free(shock->level);
     memory_free(shock->first);
-    memory_free(shock->neighbours);
+    memory_free(shock->sides);
     memory_free(shock->queue);
-    memory_free(shock->loaded);
+    memory_free(shock->held);
     memset(shock, 0, sizeof *shock);
 }
 
+/* A contact has one or two points. The second is read only when the first
+ * carries nothing: it lies on another cache line. */
 static bool carries_load(const solver_contact_t *c) {
-    for (int i = 0; i < c->point_count; i++) {
-        if (c->points[i].normal_impulse > 0.0) return true;
-    }
-    return false;
+    return c->points[0].normal_impulse > 0.0 ||
+           (c->point_count == 2 && c->points[1].normal_impulse > 0.0);
 }
 
-/* Lists the load-bearing contacts in shock->loaded and groups them by body
- * (counting sort); returns how many there are. */
-static size_t link_bodies(shock_t *shock, const solver_contact_t *contacts, size_t count,
-                          size_t body_count) {
+/*
+ * Lists each body's load-bearing contacts, one pass over the contacts:
+ * contact i's sides are 2i (seen from a) and 2i + 1 (from b), each pushed
+ * on its body's list. Walking the contacts from the last makes every list
+ * come out in contact order, the order the supports are solved in. Returns
+ * whether any contact carries load.
+ */
+static bool link_bodies(shock_t *shock, const solver_contact_t *contacts, size_t count,
+                        size_t body_count) {
     uint32_t *first = shock->first;
-    memset(first, 0, (body_count + 1) * sizeof(uint32_t));
-    size_t loaded = 0;
-    for (size_t i = 0; i < count; i++) {
-        if (!carries_load(&contacts[i])) continue;
-        shock->loaded[loaded++] = (uint32_t)i;
-        first[contacts[i].a + 1]++;
-        first[contacts[i].b + 1]++;
+    shock_side_t *sides = shock->sides;
+    memset(first, 0xff, body_count * sizeof(uint32_t)); /* NO_SIDE */
+    bool any = false;
+    for (size_t i = count; i-- > 0;) {
+        const solver_contact_t *c = &contacts[i];
+        if (!carries_load(c)) continue;
+        uint32_t side = 2 * (uint32_t)i; /* fits: 2^31 contacts would not fit in memory */
+        sides[side] = (shock_side_t){first[c->a], c->b};
+        first[c->a] = side;
+        sides[side + 1] = (shock_side_t){first[c->b], c->a};
+        first[c->b] = side + 1;
+        any = true;
     }
-    for (size_t k = 0; k < body_count; k++) first[k + 1] += first[k];
-    memory_reserve((void **)&shock->neighbours, &shock->neighbour_capacity, first[body_count],
-                   sizeof(shock_link_t));
-    /* queue doubles as the fill cursor until the levels need it */
-    uint32_t *next = shock->queue;
-    memcpy(next, first, body_count * sizeof(uint32_t));
-    for (size_t j = 0; j < loaded; j++) {
-        const solver_contact_t *c = &contacts[shock->loaded[j]];
-        shock->neighbours[next[c->a]++] = (shock_link_t){shock->loaded[j], c->b};
-        shock->neighbours[next[c->b]++] = (shock_link_t){shock->loaded[j], c->a};
-    }
-    return loaded;
+    return any;
 }
 
-/* Breadth first from every static body: shock->queue lists the reached
- * bodies by level; returns how many there are. */
-static size_t assign_levels(shock_t *shock, const solver_velocity_t *velocities,
-                            size_t body_count) {
-    uint32_t *level = shock->level, *queue = shock->queue;
-    size_t head = 0, tail = 0;
-    for (size_t k = 0; k < body_count; k++) {
-        level[k] = solver_row_is_static(&velocities[k]) ? 0 : UNREACHED;
-        if (level[k] == 0) queue[tail++] = (uint32_t)k;
-    }
-    while (head < tail) {
-        uint32_t body = queue[head++];
-        for (uint32_t j = shock->first[body]; j < shock->first[body + 1]; j++) {
-            uint32_t other = shock->neighbours[j].other;
-            if (level[other] != UNREACHED) continue;
-            level[other] = level[body] + 1;
-            queue[tail++] = other;
-        }
-    }
-    return tail;
+/* The relative normal velocity of b over a at point p, less its target:
+ * below zero, the point approaches. Measured from a and b, not from the
+ * upper body and the sign: negating a difference is exact (but for the
+ * sign of a zero, which no test or sum below tells apart), and a choice
+ * of lever terms by the sign was a branch that mispredicted. */
+static double approach(const solver_contact_t *c, const solver_point_t *p,
+                       const solver_velocity_t *a, const solver_velocity_t *b) {
+    double at_b = vec_dot(c->normal, b->v) + b->w * p->rn_b;
+    double at_a = vec_dot(c->normal, a->v) + a->w * p->rn_a;
+    return (at_b - at_a) - p->target;
 }
 
-/* The impulses along the normal that stop the upper body's approach at the
- * contact's points, the lower body held still: the same LCP as the
- * iterations' block solve, from zero. sign is +1 when the upper body is b. */
-static void stop_upper(const solver_contact_t *c, solver_velocity_t *upper,
-                       const solver_velocity_t *lower, double sign) {
+/* The upper body's lever term along the normal at p, picked by address:
+ * a pick of the value was a branch. */
+static double upper_rn(const solver_point_t *p, bool upper_is_b) {
+    const double *rn = upper_is_b ? &p->rn_b : &p->rn_a;
+    return *rn;
+}
+
+/* Normal impulses x1, x2 at the points, lever terms rn1, rn2 of the upper
+ * body, applied to it. */
+static void push_upper(const solver_contact_t *c, solver_velocity_t *upper, bool upper_is_b,
+                       double x1, double x2, double rn1, double rn2) {
+    double sign = SIGN[upper_is_b], total = x1 + x2;
+    upper->v = vec_add(upper->v, vec_multiply(sign * upper->inverse_mass * total, c->normal));
+    upper->w += sign * upper->inverse_inertia * (x1 * rn1 + x2 * rn2);
+}
+
+/* The impulse along the normal that stops the upper body's approach at a
+ * one-point contact, the lower body (the other of a, b) held still. */
+static void stop_one(const solver_contact_t *c, solver_velocity_t *a, solver_velocity_t *b,
+                     bool upper_is_b) {
+    const solver_point_t *p = &c->points[0];
+    double gap = approach(c, p, a, b);
+    if (gap >= 0.0) return;
+    solver_velocity_t *upper = upper_is_b ? b : a;
+    double rn = upper_rn(p, upper_is_b);
+    double k = upper->inverse_mass + upper->inverse_inertia * rn * rn;
+    double x = gap < 0.0 && k > 0.0 ? -gap / k : 0.0;
+    push_upper(c, upper, upper_is_b, x, 0.0, rn, 0.0);
+}
+
+/* The impulses along the normal that stop the upper body's approach at a
+ * two-point contact, the lower body held still: the same LCP as the
+ * iterations' block solve, from zero. */
+static void stop_two(const solver_contact_t *c, solver_velocity_t *a, solver_velocity_t *b,
+                     bool upper_is_b) {
+    const solver_point_t *p1 = &c->points[0], *p2 = &c->points[1];
+    double gap1 = approach(c, p1, a, b), gap2 = approach(c, p2, a, b);
+    if (gap1 >= 0.0 && gap2 >= 0.0) return;
+    solver_velocity_t *upper = upper_is_b ? b : a;
     double m = upper->inverse_mass, ii = upper->inverse_inertia;
-    double rn[2] = {0.0, 0.0}, gap[2] = {0.0, 0.0};
-    for (int i = 0; i < c->point_count; i++) {
-        const solver_point_t *p = &c->points[i];
-        rn[i] = sign > 0.0 ? p->rn_b : p->rn_a;
-        double lower_rn = sign > 0.0 ? p->rn_a : p->rn_b;
-        /* relative normal velocity of b over a, less the target */
-        double up = vec_dot(c->normal, upper->v) + upper->w * rn[i];
-        double low = vec_dot(c->normal, lower->v) + lower->w * lower_rn;
-        gap[i] = sign * (up - low) - p->target;
-    }
-    if (gap[0] >= 0.0 && (c->point_count == 1 || gap[1] >= 0.0)) return;
-    double x[2] = {0.0, 0.0};
-    double k11 = m + ii * rn[0] * rn[0];
-    if (c->point_count == 1) {
-        if (gap[0] < 0.0 && k11 > 0.0) x[0] = -gap[0] / k11;
+    double rn1 = upper_rn(p1, upper_is_b), rn2 = upper_rn(p2, upper_is_b);
+    double k11 = m + ii * rn1 * rn1, k22 = m + ii * rn2 * rn2, k12 = m + ii * rn1 * rn2;
+    double det = k11 * k22 - k12 * k12;
+    double x1 = det > 1e-12 * k11 * k22 ? (k12 * gap2 - k22 * gap1) / det : -1.0;
+    double x2 = det > 1e-12 * k11 * k22 ? (k12 * gap1 - k11 * gap2) / det : -1.0;
+    if (x1 >= 0.0 && x2 >= 0.0) {
+        push_upper(c, upper, upper_is_b, x1, x2, rn1, rn2);
+    } else if (gap1 < 0.0 && k11 > 0.0 && gap2 - k12 * gap1 / k11 >= 0.0) {
+        push_upper(c, upper, upper_is_b, -gap1 / k11, 0.0, rn1, rn2);
+    } else if (gap2 < 0.0 && k22 > 0.0 && gap1 - k12 * gap2 / k22 >= 0.0) {
+        push_upper(c, upper, upper_is_b, 0.0, -gap2 / k22, rn1, rn2);
     } else {
-        double k22 = m + ii * rn[1] * rn[1], k12 = m + ii * rn[0] * rn[1];
-        double det = k11 * k22 - k12 * k12;
-        double x1 = det > 1e-12 * k11 * k22 ? (k12 * gap[1] - k22 * gap[0]) / det : -1.0;
-        double x2 = det > 1e-12 * k11 * k22 ? (k12 * gap[0] - k11 * gap[1]) / det : -1.0;
-        if (x1 >= 0.0 && x2 >= 0.0) {
-            x[0] = x1, x[1] = x2;
-        } else if (gap[0] < 0.0 && k11 > 0.0 && gap[1] - k12 * gap[0] / k11 >= 0.0) {
-            x[0] = -gap[0] / k11;
-        } else if (gap[1] < 0.0 && k22 > 0.0 && gap[0] - k12 * gap[1] / k22 >= 0.0) {
-            x[1] = -gap[1] / k22;
-        }
+        push_upper(c, upper, upper_is_b, 0.0, 0.0, rn1, rn2);
     }
-    double total = x[0] + x[1];
-    upper->v = vec_add(upper->v, vec_multiply(sign * m * total, c->normal));
-    upper->w += sign * ii * (x[0] * rn[0] + x[1] * rn[1]);
 }
 
 /*
  * The upper body moved with the lower one as one rigid body (both points of
- * the contact touching and held, no sliding), when the impulses that takes, added to the
+ * a two-point contact touching and held, no sliding), when the impulses that takes, added to the
  * iterations' at each point, press (>= 0) and stay within the friction
  * cone. Returns false, changing nothing, when they would not: the contact
  * is then opening, tipping or sliding, and only its approach is stopped.
  */
 static bool weld_upper(const solver_contact_t *c, solver_velocity_t *upper,
                        const solver_velocity_t *lower, double sign) {
-    if (c->point_count != 2 || upper->inverse_mass <= 0.0 || upper->inverse_inertia <= 0.0) {
-        return false;
-    }
+    if (upper->inverse_mass <= 0.0 || upper->inverse_inertia <= 0.0) return false;
     const solver_point_t *p1 = &c->points[0], *p2 = &c->points[1];
     /* Only faces in touch: a gap the step may close is no support yet,
      * and welding across it left a landed box hovering (measured). */
@@ -153,24 +161,72 @@ static bool weld_upper(const solver_contact_t *c, solver_velocity_t *upper,
     return true;
 }
 
-/* Body's contacts with the level below, each solved with the lower body
- * held still; welded when it is the only one (a column), since a body
- * held by two is pulled two ways. */
+/* body's contacts with the level below (its sides held[0 .. count)), each
+ * solved with the lower body held still; welded when it is the only one
+ * (a column), since a body held by two is pulled two ways. */
 static void hold_up(const shock_t *shock, const solver_contact_t *contacts, uint32_t body,
-                    solver_velocity_t *velocities) {
-    const uint32_t *level = shock->level;
-    const shock_link_t *links = shock->neighbours + shock->first[body];
-    uint32_t count = shock->first[body + 1] - shock->first[body];
-    int supports = 0;
-    for (uint32_t j = 0; j < count; j++) supports += level[links[j].other] < level[body];
-    for (uint32_t j = 0; j < count; j++) {
-        uint32_t other = links[j].other;
-        if (level[other] >= level[body]) continue;
-        const solver_contact_t *c = &contacts[links[j].contact];
-        double sign = c->b == body ? 1.0 : -1.0;
-        if (supports != 1 || !weld_upper(c, &velocities[body], &velocities[other], sign)) {
-            stop_upper(c, &velocities[body], &velocities[other], sign);
+                    const uint32_t *held, uint32_t count, solver_velocity_t *velocities) {
+    for (uint32_t k = 0; k < count; k++) {
+        uint32_t side = held[k];
+        const solver_contact_t *c = &contacts[side / 2];
+        bool upper_is_b = side % 2 == 1; /* the odd side is b's */
+        solver_velocity_t *upper = &velocities[body];
+        solver_velocity_t *lower = &velocities[shock->sides[side].other];
+        solver_velocity_t *a = upper_is_b ? lower : upper, *b = upper_is_b ? upper : lower;
+        if (c->point_count == 1) {
+            stop_one(c, a, b, upper_is_b);
+        } else if (count != 1 || !weld_upper(c, upper, lower, SIGN[upper_is_b])) {
+            stop_two(c, a, b, upper_is_b);
         }
+    }
+}
+
+/*
+ * Breadth first from every static body; each body is held up by its
+ * supports as it leaves the queue. That is level by level from the ground
+ * up: the bodies of the level below all left the queue before it, so their
+ * velocities are final, and they were all reached (given their levels)
+ * while the level below them left it, so the supports are known too.
+ *
+ * The walk over a body's sides has no branch but the loop's: whether a
+ * neighbour is below, level or unreached is random in a pile, and
+ * mispredicting it cost more than the stores done regardless.
+ */
+static void propagate(shock_t *shock, const solver_contact_t *contacts,
+                      solver_velocity_t *velocities, size_t body_count) {
+    uint32_t *level = shock->level, *queue = shock->queue, *held = shock->held;
+    const shock_side_t *sides = shock->sides;
+    size_t head = 0, tail = 0;
+    for (size_t k = 0; k < body_count; k++) {
+        level[k] = solver_row_is_static(&velocities[k]) ? 0 : UNREACHED;
+        if (level[k] == 0) queue[tail++] = (uint32_t)k;
+    }
+    while (head < tail) {
+        uint32_t body = queue[head++], here = level[body];
+        uint32_t supports = 0;
+        for (uint32_t side = shock->first[body]; side != NO_SIDE; side = sides[side].next) {
+            uint32_t other = sides[side].other, there = level[other];
+            /* The lines of the contact hold_up reads. A body's supports
+             * are seen a level before it is held up, as the bodies below
+             * leave the queue; a pile of 4000 bodies has more contacts
+             * than the cache holds, and fetching them now took a tenth
+             * off the pass (measured). Written out here: GCC deems a
+             * function of prefetches alone const and drops its calls. */
+            const char *c = (const char *)&contacts[side / 2];
+            __builtin_prefetch(c + offsetof(solver_contact_t, point_count));
+            __builtin_prefetch(c + offsetof(solver_contact_t, points[0].rn_a));
+            __builtin_prefetch(c + offsetof(solver_contact_t, points[0].separation));
+            __builtin_prefetch(c + offsetof(solver_contact_t, points[1].rn_a));
+            __builtin_prefetch(c + offsetof(solver_contact_t, points[1].separation));
+            held[supports] = side; /* kept when it is a support */
+            supports += there < here;
+            /* Neighbours differ by a level at most, so this reaches the
+             * unreached and leaves the rest. */
+            level[other] = there < here + 1 ? there : here + 1;
+            queue[tail] = other; /* kept when it was unreached */
+            tail += there >> 31; /* only UNREACHED has the top bit: levels < bodies */
+        }
+        if (supports > 0) hold_up(shock, contacts, body, held, supports, velocities);
     }
 }
 
@@ -178,14 +234,13 @@ void shock_propagate(shock_t *shock, const solver_contact_t *contacts, size_t co
                      solver_velocity_t *velocities, size_t body_count) {
     if (count == 0) return;
     memory_reserve((void **)&shock->level, &shock->level_capacity, body_count, sizeof(uint32_t));
-    memory_reserve((void **)&shock->first, &shock->first_capacity, body_count + 1,
+    memory_reserve((void **)&shock->first, &shock->first_capacity, body_count, sizeof(uint32_t));
+    memory_reserve((void **)&shock->sides, &shock->side_capacity, 2 * count,
+                   sizeof(shock_side_t));
+    /* One more than can be kept, for the stores done regardless. */
+    memory_reserve((void **)&shock->queue, &shock->queue_capacity, body_count + 1,
                    sizeof(uint32_t));
-    memory_reserve((void **)&shock->queue, &shock->queue_capacity, body_count, sizeof(uint32_t));
-    memory_reserve((void **)&shock->loaded, &shock->loaded_capacity, count, sizeof(uint32_t));
-    if (link_bodies(shock, contacts, count, body_count) == 0) return;
-    size_t reached = assign_levels(shock, velocities, body_count);
-    for (size_t k = 0; k < reached; k++) {
-        uint32_t body = shock->queue[k];
-        if (shock->level[body] > 0) hold_up(shock, contacts, body, velocities);
-    }
+    memory_reserve((void **)&shock->held, &shock->held_capacity, count + 1, sizeof(uint32_t));
+    if (!link_bodies(shock, contacts, count, body_count)) return;
+    propagate(shock, contacts, velocities, body_count);
 }

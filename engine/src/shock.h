@@ -22,18 +22,19 @@
 #include <stdint.h>
 #include "solver.h"
 
-/* A body's load-bearing contact and the body at its other end. */
+/* One end of a load-bearing contact, in its body's list. */
 typedef struct {
-    uint32_t contact, other;
-} shock_link_t;
+    uint32_t next;           /* the body's next side, UINT32_MAX after its last */
+    uint32_t other;          /* the body at the other end */
+} shock_side_t;
 
 struct shock {
     uint32_t *level;         /* per body; UINT32_MAX when no load path reaches it */
-    uint32_t *first;         /* per body + 1: where its contacts start in neighbours */
-    shock_link_t *neighbours; /* grouped by body */
+    uint32_t *first;         /* per body: its first side, UINT32_MAX when it has none */
+    shock_side_t *sides;     /* 2i and 2i + 1: contact i from its a and its b, if it carries load */
     uint32_t *queue;         /* bodies in the order the levels reached them */
-    uint32_t *loaded;        /* the contacts that carry load */
-    size_t level_capacity, first_capacity, queue_capacity, neighbour_capacity, loaded_capacity;
+    uint32_t *held;          /* scratch: the sides by which one body is held up */
+    size_t level_capacity, first_capacity, side_capacity, queue_capacity, held_capacity;
 };
 
 void shock_free(shock_t *shock);
