@@ -15,14 +15,14 @@ void shock_free(shock_t *shock) {
     memory_free(shock->sides);
     memory_free(shock->queue);
     memory_free(shock->held);
+    memory_free(shock->impulses);
     memset(shock, 0, sizeof *shock);
 }
 
 /* A contact has one or two points. The second is read only when the first
  * carries nothing: it lies on another cache line. */
-static bool carries_load(const solver_contact_t *c) {
-    return c->points[0].normal_impulse > 0.0 ||
-           (c->point_count == 2 && c->points[1].normal_impulse > 0.0);
+static bool carries_load(const solver_impulses_t *c) {
+    return (c->normal_impulse[0] > 0.0) | (c->normal_impulse[1] > 0.0);
 }
 
 /*
@@ -32,14 +32,14 @@ static bool carries_load(const solver_contact_t *c) {
  * come out in contact order, the order the supports are solved in. Returns
  * whether any contact carries load.
  */
-static bool link_bodies(shock_t *shock, const solver_contact_t *contacts, size_t count,
+static bool link_bodies(shock_t *shock, const solver_impulses_t *contacts, size_t count,
                         size_t body_count) {
     uint32_t *first = shock->first;
     shock_side_t *sides = shock->sides;
     memset(first, 0xff, body_count * sizeof(uint32_t)); /* NO_SIDE */
     bool any = false;
     for (size_t i = count; i-- > 0;) {
-        const solver_contact_t *c = &contacts[i];
+        const solver_impulses_t *c = &contacts[i];
         if (!carries_load(c)) continue;
         uint32_t side = 2 * (uint32_t)i; /* fits: 2^31 contacts would not fit in memory */
         sides[side] = (shock_side_t){first[c->a], c->b};
@@ -126,7 +126,8 @@ static void stop_two(const solver_contact_t *c, solver_velocity_t *a, solver_vel
  * cone. Returns false, changing nothing, when they would not: the contact
  * is then opening, tipping or sliding, and only its approach is stopped.
  */
-static bool weld_upper(const solver_contact_t *c, solver_velocity_t *upper,
+static bool weld_upper(const solver_contact_t *c, const solver_impulses_t *imp,
+                       solver_velocity_t *upper,
                        const solver_velocity_t *lower, double sign) {
     if (upper->inverse_mass <= 0.0 || upper->inverse_inertia <= 0.0) return false;
     const solver_point_t *p1 = &c->points[0], *p2 = &c->points[1];
@@ -152,10 +153,10 @@ static bool weld_upper(const solver_contact_t *c, solver_velocity_t *upper,
     double jn = sign * vec_dot(impulse, n), jt = sign * vec_dot(impulse, t);
     double turn = sign * moment - 0.5 * jt * (rt1 + rt2);
     double n1 = (turn - rn2 * jn) / (rn1 - rn2), n2 = jn - n1;
-    double pressed1 = p1->normal_impulse + n1, pressed2 = p2->normal_impulse + n2;
+    double pressed1 = imp->normal_impulse[0] + n1, pressed2 = imp->normal_impulse[1] + n2;
     if (!(pressed1 >= 0.0 && pressed2 >= 0.0)) return false;
-    if (fabs(p1->tangent_impulse + 0.5 * jt) > c->friction * pressed1) return false;
-    if (fabs(p2->tangent_impulse + 0.5 * jt) > c->friction * pressed2) return false;
+    if (fabs(imp->tangent_impulse[0] + 0.5 * jt) > c->friction * pressed1) return false;
+    if (fabs(imp->tangent_impulse[1] + 0.5 * jt) > c->friction * pressed2) return false;
     upper->v = target_v;
     upper->w = lower->w;
     return true;
@@ -175,7 +176,8 @@ static void hold_up(const shock_t *shock, const solver_contact_t *contacts, uint
         solver_velocity_t *a = upper_is_b ? lower : upper, *b = upper_is_b ? upper : lower;
         if (c->point_count == 1) {
             stop_one(c, a, b, upper_is_b);
-        } else if (count != 1 || !weld_upper(c, upper, lower, SIGN[upper_is_b])) {
+        } else if (count != 1 ||
+                   !weld_upper(c, &shock->impulses[side / 2], upper, lower, SIGN[upper_is_b])) {
             stop_two(c, a, b, upper_is_b);
         }
     }
@@ -230,9 +232,23 @@ static void propagate(shock_t *shock, const solver_contact_t *contacts,
     }
 }
 
-void shock_propagate(shock_t *shock, const solver_contact_t *contacts, size_t count,
+void shock_propagate(shock_t *shock, const solver_wide_t *wide, const solver_contact_t *contacts,
+                     size_t count,
                      solver_velocity_t *velocities, size_t body_count) {
     if (count == 0) return;
+    memory_reserve((void **)&shock->impulses, &shock->impulse_capacity, count,
+                   sizeof(solver_impulses_t));
+    solver_wide_gather_impulses(wide, shock->impulses);
+    for (size_t k = 0; k < wide->loose_count; k++) {
+        const solver_contact_t *c = &contacts[wide->loose[k]];
+        solver_impulses_t *out = &shock->impulses[wide->loose[k]];
+        out->a = c->a;
+        out->b = c->b;
+        out->normal_impulse[0] = c->points[0].normal_impulse;
+        out->tangent_impulse[0] = c->points[0].tangent_impulse;
+        out->normal_impulse[1] = c->point_count == 2 ? c->points[1].normal_impulse : 0.0;
+        out->tangent_impulse[1] = c->point_count == 2 ? c->points[1].tangent_impulse : 0.0;
+    }
     memory_reserve((void **)&shock->level, &shock->level_capacity, body_count, sizeof(uint32_t));
     memory_reserve((void **)&shock->first, &shock->first_capacity, body_count, sizeof(uint32_t));
     memory_reserve((void **)&shock->sides, &shock->side_capacity, 2 * count,
@@ -241,6 +257,6 @@ void shock_propagate(shock_t *shock, const solver_contact_t *contacts, size_t co
     memory_reserve((void **)&shock->queue, &shock->queue_capacity, body_count + 1,
                    sizeof(uint32_t));
     memory_reserve((void **)&shock->held, &shock->held_capacity, count + 1, sizeof(uint32_t));
-    if (!link_bodies(shock, contacts, count, body_count)) return;
+    if (!link_bodies(shock, shock->impulses, count, body_count)) return;
     propagate(shock, contacts, velocities, body_count);
 }

@@ -21,6 +21,7 @@
 #include <stddef.h>
 #include <stdint.h>
 #include "solver.h"
+#include "solver_wide.h"
 
 /* One end of a load-bearing contact, in its body's list. */
 typedef struct {
@@ -33,6 +34,7 @@ struct shock {
     uint32_t *first;         /* per body: its first side, UINT32_MAX when it has none */
     shock_side_t *sides;     /* 2i and 2i + 1: contact i from its a and its b, if it carries load */
     uint32_t *queue;         /* bodies in the order the levels reached them */
+    solver_impulses_t *impulses; size_t impulse_capacity;
     uint32_t *held;          /* scratch: the sides by which one body is held up */
     size_t level_capacity, first_capacity, side_capacity, queue_capacity, held_capacity;
 };
@@ -40,8 +42,9 @@ struct shock {
 void shock_free(shock_t *shock);
 
 /* The pass over contacts[0 .. count) and the velocity rows of body_count
- * bodies; contacts must hold this step's accumulated normal impulses. */
-void shock_propagate(shock_t *shock, const solver_contact_t *contacts, size_t count,
-                     solver_velocity_t *velocities, size_t body_count);
+ * bodies. The accumulated impulses so far are read from the colour batches
+ * of wide (and from the contacts for the loose ones), not stored back. */
+void shock_propagate(shock_t *shock, const solver_wide_t *wide, const solver_contact_t *contacts,
+                     size_t count, solver_velocity_t *velocities, size_t body_count);
 
 #endif // #ifndef SHOCK_H

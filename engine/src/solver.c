@@ -401,7 +401,8 @@ static void collision_pass(solver_contact_t *contacts, size_t count, solver_velo
 
 static bool pushes(const solver_contact_t *c) {
     for (int i = 0; i < c->point_count; i++) {
-        if (c->points[i].normal_impulse > 0.0 || c->points[i].restitution_impulse > 0.0) return true;
+        const solver_point_t *p = &c->points[i];
+        if (p->normal_impulse > 0.0 || p->restitution_impulse > 0.0) return true;
     }
     return false;
 }
@@ -560,9 +561,9 @@ static void limit_corrections(const solver_bodies_t *bodies, double dt) {
     }
 }
 
-void solver_solve(solver_wide_t *wide, shock_t *shock, solver_contact_t *contacts, const solver_anchor_t *anchors,
-                  size_t contact_count, const solver_bodies_t *bodies,
-                  const solver_settings_t *settings) {
+void solver_solve(solver_wide_t *wide, shock_t *shock, solver_contact_t *contacts,
+                  const solver_anchor_t *anchors, size_t contact_count,
+                  const solver_bodies_t *bodies, const solver_settings_t *settings) {
     solver_velocity_t *velocities = bodies->velocities;
     /* A step pays for the collision pass only with an elastic contact, and
      * for timing impacts only with an impact. */
@@ -590,8 +591,7 @@ void solver_solve(solver_wide_t *wide, shock_t *shock, solver_contact_t *contact
             solve_velocity(&contacts[wide->loose[i]], velocities);
         }
         if (iteration == shock_after) {
-            solver_wide_store(wide, contacts);
-            shock_propagate(shock, contacts, contact_count, velocities, bodies->body_count);
+            shock_propagate(shock, wide, contacts, contact_count, velocities, bodies->body_count);
         }
     }
     solver_wide_store(wide, contacts);

@@ -211,8 +211,8 @@ typedef struct {
  * whose arrays live in wide), advance. On entry each body's v, w are its
  * free velocities; on return they are its new velocities, and its
  * displacement is the one of the step. */
-void solver_solve(solver_wide_t *wide, shock_t *shock, solver_contact_t *contacts, const solver_anchor_t *anchors,
-                  size_t contact_count, const solver_bodies_t *bodies,
-                  const solver_settings_t *settings);
+void solver_solve(solver_wide_t *wide, shock_t *shock, solver_contact_t *contacts,
+                  const solver_anchor_t *anchors, size_t contact_count,
+                  const solver_bodies_t *bodies, const solver_settings_t *settings);
 
 #endif // #ifndef SOLVER_H

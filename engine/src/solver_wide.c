@@ -560,6 +560,24 @@ void solver_wide_store(const solver_wide_t *wide, solver_contact_t *contacts) {
     }
 }
 
+void solver_wide_gather_impulses(const solver_wide_t *wide, solver_impulses_t *impulses) {
+    const lane_point_t *points = wide->points;
+    for (size_t i = 0; i < wide->batch_count; i++) {
+        const solver_batch_t *batch = &wide->batches[i];
+        int count = kind_points((batch_kind_t)batch->kind);
+        for (int l = 0; l < batch->lanes; l++) {
+            solver_impulses_t *out = &impulses[batch->contact[l]];
+            out->a = batch->a[l];
+            out->b = batch->b[l];
+            out->normal_impulse[0] = points[0].normal_impulse[l];
+            out->tangent_impulse[0] = points[0].tangent_impulse[l];
+            out->normal_impulse[1] = count == 2 ? points[1].normal_impulse[l] : 0.0;
+            out->tangent_impulse[1] = count == 2 ? points[1].tangent_impulse[l] : 0.0;
+        }
+        points += count;
+    }
+}
+
 void solver_wide_free(solver_wide_t *wide) {
     coloring_free(&wide->coloring);
     memory_free(wide->colors);

@@ -79,6 +79,17 @@ void solver_wide_iterate(solver_wide_t *wide, solver_velocity_t *rows);
 void solver_wide_correct_positions(solver_wide_t *wide, solver_displacement_t *displacements,
                                    bool backward);
 
+/* A contact's bodies and its points' accumulated impulses (zero for a
+ * second point it does not have). */
+typedef struct {
+    uint32_t a, b;
+    double normal_impulse[2], tangent_impulse[2];
+} solver_impulses_t;
+
+/* Writes each batched contact's bodies and impulses to impulses[contact];
+ * the loose contacts' are left alone. */
+void solver_wide_gather_impulses(const solver_wide_t *wide, solver_impulses_t *impulses);
+
 /* Writes the batches' accumulated impulses back to their contacts. */
 void solver_wide_store(const solver_wide_t *wide, solver_contact_t *contacts);
 

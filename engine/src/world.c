@@ -355,8 +355,8 @@ void world_step(world_t *world, body_t **bodies, size_t count, const world_step_
     solver_settings_t settings = {step->dt, integrator_position_weight(step->integrator),
                                   world->velocity_iterations, world->position_iterations};
     solver_bodies_t rows = {world->velocities, world->displacements, world->states, count};
-    solver_solve(&world->wide, &world->shock, world->contacts, world->anchors, world->contact_count, &rows,
-                 &settings);
+    solver_solve(&world->wide, &world->shock, world->contacts, world->anchors,
+                 world->contact_count, &rows, &settings);
     write_back(world, bodies, count, step);
 
     stats->broadphase_pairs += pair_count;
