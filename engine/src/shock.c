@@ -232,10 +232,10 @@ static void propagate(shock_t *shock, const solver_contact_t *contacts,
     }
 }
 
-void shock_propagate(shock_t *shock, const solver_wide_t *wide, const solver_contact_t *contacts,
-                     size_t count,
-                     solver_velocity_t *velocities, size_t body_count) {
-    if (count == 0) return;
+/* Every contact's bodies and impulses so far in one compact array: the
+ * batches' from their lanes, the loose contacts' from the contacts. */
+static void gather_impulses(shock_t *shock, const solver_wide_t *wide,
+                            const solver_contact_t *contacts, size_t count) {
     memory_reserve((void **)&shock->impulses, &shock->impulse_capacity, count,
                    sizeof(solver_impulses_t));
     solver_wide_gather_impulses(wide, shock->impulses);
@@ -249,6 +249,12 @@ void shock_propagate(shock_t *shock, const solver_wide_t *wide, const solver_con
         out->normal_impulse[1] = c->point_count == 2 ? c->points[1].normal_impulse : 0.0;
         out->tangent_impulse[1] = c->point_count == 2 ? c->points[1].tangent_impulse : 0.0;
     }
+}
+
+void shock_propagate(shock_t *shock, const solver_wide_t *wide, const solver_contact_t *contacts,
+                     size_t count, solver_velocity_t *velocities, size_t body_count) {
+    if (count == 0) return;
+    gather_impulses(shock, wide, contacts, count);
     memory_reserve((void **)&shock->level, &shock->level_capacity, body_count, sizeof(uint32_t));
     memory_reserve((void **)&shock->first, &shock->first_capacity, body_count, sizeof(uint32_t));
     memory_reserve((void **)&shock->sides, &shock->side_capacity, 2 * count,
