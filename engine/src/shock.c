@@ -19,8 +19,8 @@ void shock_free(shock_t *shock) {
     memset(shock, 0, sizeof *shock);
 }
 
-/* A contact has one or two points. The second is read only when the first
- * carries nothing: it lies on another cache line. */
+/* Whether the iterations pressed either point (a one-point contact's
+ * second impulse is 0 in the compact array). */
 static bool carries_load(const solver_impulses_t *c) {
     return (c->normal_impulse[0] > 0.0) | (c->normal_impulse[1] > 0.0);
 }
@@ -89,7 +89,7 @@ static void stop_one(const solver_contact_t *c, solver_velocity_t *a, solver_vel
     solver_velocity_t *upper = upper_is_b ? b : a;
     double rn = upper_rn(p, upper_is_b);
     double k = upper->inverse_mass + upper->inverse_inertia * rn * rn;
-    double x = gap < 0.0 && k > 0.0 ? -gap / k : 0.0;
+    double x = k > 0.0 ? -gap / k : 0.0;
     push_upper(c, upper, upper_is_b, x, 0.0, rn, 0.0);
 }
 
@@ -120,10 +120,10 @@ static void stop_two(const solver_contact_t *c, solver_velocity_t *a, solver_vel
 }
 
 /*
- * The upper body moved with the lower one as one rigid body (both points of
- * a two-point contact touching and held, no sliding), when the impulses that takes, added to the
- * iterations' at each point, press (>= 0) and stay within the friction
- * cone. Returns false, changing nothing, when they would not: the contact
+ * The upper body moved with the lower one as one rigid body (both points
+ * of a two-point contact touching and held, no sliding), when the impulses
+ * that takes, added to the iterations' at each point, press (>= 0) and stay
+ * within the friction cone. Returns false, changing nothing, when they would not: the contact
  * is then opening, tipping or sliding, and only its approach is stopped.
  */
 static bool weld_upper(const solver_contact_t *c, const solver_impulses_t *imp,

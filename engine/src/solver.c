@@ -407,8 +407,6 @@ static bool pushes(const solver_contact_t *c) {
     return false;
 }
 
-/* Counts each body's contacts that pushed this step, and marks the movable
- * body of each impact against a static body with that impact's time. */
 static const uint32_t NO_PARTNER = UINT32_MAX;
 
 /* Marks a body's impact at tau if it is its earliest; toward is the
@@ -422,6 +420,9 @@ static void mark_earliest(solver_state_t *state, const solver_point_t *p, uint32
     state->landing_direction = toward;
 }
 
+/* Counts each body's contacts that pushed this step, and marks each movable
+ * body of an impact with its earliest impact: the time, the other body when
+ * it can move, and for a landing on a static body the gap to close. */
 static void mark_impacts(const solver_contact_t *c, const solver_velocity_t *velocities,
                          solver_state_t *states) {
     if (!pushes(c)) return;
@@ -439,21 +440,6 @@ static void mark_impacts(const solver_contact_t *c, const solver_velocity_t *vel
 }
 
 /*
- * The integrator moves a body by w dt of its velocity change, as if the
- * change happened at (1 - w) dt into the step. A body whose only push this
- * step was an impact at time tau, against a static body or a movable one
- * that had no other push either, is moved by (dt - tau - w dt) times its
- * velocity change instead, as if the change happened at tau: the exact
- * motion under constant acceleration, so bounces come out exact at any dt,
- * and the same impulse at another time, so momentum is kept. Without it a
- * scheme that moves a body by its start velocity (w < 1) carries a fast one
- * through a movable wall (the seed scheme from 50 m/s against a 0.1 m wall).
- * Where a body is also pressed by others its change is not that impact's
- * alone; timing it so pushed bodies of the 10000-body pile through its floor
- * and walls, and tilted a settling column (measured), so the integrator's
- * own timing is kept there.
- */
-/*
  * A landing on a static body: after the impact the body rests, pressed by
  * the acceleration that brought it, so its velocity changes partly at the
  * impact and partly in a continuous push to the end of the step, and no
@@ -469,6 +455,21 @@ static void land(const solver_state_t *state, solver_displacement_t *moved) {
                         vec_multiply(state->landing_gap - closed, state->landing_direction));
 }
 
+/*
+ * The integrator moves a body by w dt of its velocity change, as if the
+ * change happened at (1 - w) dt into the step. A body whose only push this
+ * step was an impact at time tau, against a static body or a movable one
+ * that had no other push either, is moved by (dt - tau - w dt) times its
+ * velocity change instead, as if the change happened at tau: the exact
+ * motion under constant acceleration, so bounces come out exact at any dt,
+ * and the same impulse at another time, so momentum is kept. Without it a
+ * scheme that moves a body by its start velocity (w < 1) carries a fast one
+ * through a movable wall (the seed scheme from 50 m/s against a 0.1 m wall).
+ * Where a body is also pressed by others its change is not that impact's
+ * alone; timing it so pushed bodies of the 10000-body pile through its floor
+ * and walls, and tilted a settling column (measured), so the integrator's
+ * own timing is kept there. A landing is placed instead (land).
+ */
 static void apply_impact_time(const solver_bodies_t *bodies, size_t i,
                               const solver_settings_t *s) {
     const solver_state_t *state = &bodies->states[i];
