@@ -185,16 +185,24 @@ static void load_bodies(world_t *world, body_t **bodies, size_t count, const wor
     }
 }
 
-/* Last step's contact of the pair with this key, found among the contacts
- * body a had as body a then; NULL when the pair had none. */
-static size_t find_old(const world_t *world, const body_t *a, uint64_t key) {
-    if (a->contact_step + 1 != world->step_number) return SIZE_MAX;
+/* The contact of the pair with this key among the contacts body a had as
+ * body a in step `step`, whose buffer is sources[0 .. count); SIZE_MAX when
+ * the pair had none. A group left from another step (or an older world) is
+ * skipped, and the key check rejects whatever else lies at its indices. */
+static size_t find_in_step(const contact_source_t *sources, size_t count, uint64_t step,
+                           const body_t *a, uint64_t key) {
+    if (a->contact_step != step) return SIZE_MAX;
     size_t end = (size_t)a->contact_first + a->contact_count;
-    if (end > world->old_count) return SIZE_MAX;
+    if (end > count) return SIZE_MAX;
     for (size_t i = a->contact_first; i < end; i++) {
-        if (world->old_sources[i].key == key) return i;
+        if (sources[i].key == key) return i;
     }
     return SIZE_MAX;
+}
+
+/* Last step's contact of the pair, while this step's are being found. */
+static size_t find_old(const world_t *world, const body_t *a, uint64_t key) {
+    return find_in_step(world->old_sources, world->old_count, world->step_number - 1, a, key);
 }
 
 /* Copies last step's impulses to the points that are the same features. */
@@ -393,18 +401,9 @@ bool world_pair_collides(const body_t *body1, const body_t *body2) {
     return broadphase_filters_allow(&proxy1, &proxy2);
 }
 
-/* The last step's contact of the pair with this key, found among the
- * contacts a had as body a in that step; SIZE_MAX when the pair had none. A
- * group left from an older step (or an older world) is skipped, and the key
- * check rejects whatever else lies at its indices now. */
+/* The last completed step's contact of the pair, between steps. */
 static size_t find_current(const world_t *world, const body_t *a, uint64_t key) {
-    if (a->contact_step != world->step_number) return SIZE_MAX;
-    size_t end = (size_t)a->contact_first + a->contact_count;
-    if (end > world->contact_count) return SIZE_MAX;
-    for (size_t i = a->contact_first; i < end; i++) {
-        if (world->sources[i].key == key) return i;
-    }
-    return SIZE_MAX;
+    return find_in_step(world->sources, world->contact_count, world->step_number, a, key);
 }
 
 bool world_pair_contact(const world_t *world, body_t *body1, body_t *body2, contact_t *contact) {
