@@ -14,7 +14,7 @@ ENGINE_HDR := $(wildcard engine/include/*.h engine/src/*.h)
 ENGINE_OBJ := $(patsubst engine/src/%.c,build/engine/%.o,$(ENGINE_SRC))
 ENGINE_SAN_OBJ := $(patsubst engine/src/%.c,build/engine-san/%.o,$(ENGINE_SRC))
 
-TEST_SRC := $(wildcard tests/test_*.c) tests/test.c tests/main.c
+TEST_SRC := $(wildcard tests/test_*.c) tests/test.c tests/main.c tests/reference.c
 TEST_SAN_OBJ := $(patsubst tests/%.c,build/tests/%.o,$(TEST_SRC))
 
 .PHONY: all check clean
@@ -34,7 +34,7 @@ build/engine-san/%.o: engine/src/%.c $(ENGINE_HDR)
 build/libengine-san.a: $(ENGINE_SAN_OBJ)
 	ar rcs $@ $^
 
-build/tests/%.o: tests/%.c tests/test.h tests/suites.h $(ENGINE_HDR)
+build/tests/%.o: tests/%.c tests/test.h tests/suites.h tests/reference.h $(ENGINE_HDR)
 	@mkdir -p $(dir $@)
 	$(CC) $(CSTD) $(WARN) -O1 -g $(SAN) -Iengine/include -Iengine/src -Itests -c $< -o $@
 

@@ -188,8 +188,9 @@ static void off_centre_hit_spins_and_conserves_angular_momentum(void) {
 
 /* Bottom-face height at each apex, from the ballistic parabola through the
  * state of the last step that still rises: h = y + vy^2 / (2 g). */
-static void bounce_apexes(double dt, double heights[5]) {
+static void bounce_apexes(double dt, integrator_t integrator, double heights[5]) {
     scene_t *scene = contact_scene();
+    scene_set_integrator(scene, integrator);
     body_t *floor = add_ground(scene, 50.0);
     body_t *box = add_box(scene, 0.0, 10.5, 0.5, 0.5, 1.0);
     body_set_elasticity(box, 0.8);
@@ -211,16 +212,33 @@ static void bounce_apexes(double dt, double heights[5]) {
     scene_free(scene);
 }
 
+/* The schemes that follow constant gravity exactly (seed, Verlet, RK4,
+ * symplectic4) bounce to the exact apexes at any step, the impacts timed
+ * within the step; the Euler schemes are first order in flight (measured
+ * 2% apex error at 600 Hz, 0.2% at 6000 Hz: tests/reference.c). */
+static double bounce_tolerance(integrator_t integrator, double dt) {
+    if (integrator == INTEGRATOR_EXPLICIT_EULER || integrator == INTEGRATOR_SYMPLECTIC_EULER) {
+        return 15.0 * dt;
+    }
+    return 1e-12;
+}
+
+static void check_bounce_apexes(double dt) {
+    for (int i = 0; i < INTEGRATOR_COUNT; i++) {
+        double heights[5] = {0};
+        bounce_apexes(dt, (integrator_t)i, heights);
+        for (int n = 1; n <= 5; n++) {
+            CHECK_RELATIVE(heights[n - 1], 10.0 * pow(0.8, 2 * n), bounce_tolerance(i, dt));
+        }
+    }
+}
+
 static void bounce_apex_heights_at_60_hz(void) {
-    double heights[5] = {0};
-    bounce_apexes(1.0 / 60.0, heights);
-    for (int n = 1; n <= 5; n++) CHECK_RELATIVE(heights[n - 1], 10.0 * pow(0.8, 2 * n), 0.005);
+    check_bounce_apexes(1.0 / 60.0);
 }
 
 static void bounce_apex_heights_at_600_hz(void) {
-    double heights[5] = {0};
-    bounce_apexes(1.0 / 600.0, heights);
-    for (int n = 1; n <= 5; n++) CHECK_RELATIVE(heights[n - 1], 10.0 * pow(0.8, 2 * n), 0.001);
+    check_bounce_apexes(1.0 / 600.0);
 }
 
 static void elasticity_combines_by_max_and_zero_sticks(void) {
@@ -532,11 +550,9 @@ static void distant_approach_is_not_an_impact(void) {
  * use speculative contacts (its end velocity does not move the body this
  * step) and relies on the position pass alone. */
 static void every_integrator_rests_a_stack(void) {
-    integrator_t integrators[] = {INTEGRATOR_SEED, INTEGRATOR_SYMPLECTIC_EULER,
-                                  INTEGRATOR_EXPLICIT_EULER};
-    for (size_t i = 0; i < sizeof integrators / sizeof integrators[0]; i++) {
+    for (int i = 0; i < INTEGRATOR_COUNT; i++) {
         scene_t *scene = contact_scene();
-        scene_set_integrator(scene, integrators[i]);
+        scene_set_integrator(scene, (integrator_t)i);
         add_ground(scene, 50.0);
         body_t *lower = add_box(scene, 0.0, 3.0, 0.5, 0.5, 1.0);
         body_t *upper = add_box(scene, 0.2, 4.2, 0.5, 0.5, 1.0);

@@ -8,9 +8,12 @@
  *
  * One scene_tick runs these stages in order, each skipped when the scene has
  * nothing for it (docs/design.md has the picture):
- *   1. force creators, in the order they were added;
- *   2. world contacts, when enabled: broadphase, narrowphase, solver;
- *   3. integrate every body (the scene's integrator);
+ *   1. forces: the force creators, in the order they were added (again at
+ *      each later stage of a multi-stage integrator), and from them each
+ *      body's free motion over the step;
+ *   2. world contacts, when enabled: broadphase, narrowphase, solver, which
+ *      change those motions;
+ *   3. integrate: move every body by its motion;
  *   4. reap the bodies marked removed and their force creators (below);
  *   5. the step's record (contacts, collisions) is published for reading.
  *
@@ -37,8 +40,9 @@
 
 typedef struct scene scene_t;
 
-/* A force creator: called once per tick (more for multi-stage integrators)
- * with its aux; it adds forces and impulses to bodies. */
+/* A force creator: called once per tick with its aux (once per stage with
+ * a multi-stage integrator, see integrator_t); it adds forces and impulses
+ * to bodies. */
 typedef void (*force_creator_t)(void *aux);
 
 /* A new empty scene: no gravity, world contacts off, seed integrator. */
@@ -115,17 +119,75 @@ void scene_tick(scene_t *scene, double dt);
 void scene_set_gravity(scene_t *scene, vector_t gravity);
 vector_t scene_get_gravity(scene_t *scene);
 
-/* How scene_tick advances bodies. SEED is body_tick's scheme (velocity by
- * force and impulse, position by the mean of old and new velocity); it is
- * exact for constant forces and is the default. */
+/*
+ * How scene_tick advances bodies; docs/accuracy.md measures each one's
+ * error against its cost. For x'' = a(x, v) at step h, with omega the
+ * highest frequency of a spring (sqrt(k / m)):
+ *   SEED              v' = v + h a, x' = x + h (v + v') / 2: body_tick's
+ *                     scheme, the default. Order 1, exact for constant
+ *                     forces (gravity, projectiles); unstable with springs:
+ *                     energy grows by 1 + (omega h)^2 / 2 every step.
+ *   EXPLICIT_EULER    v' = v + h a, x' = x + h v. Order 1; energy grows by
+ *                     1 + (omega h)^2 every step.
+ *   SYMPLECTIC_EULER  v' = v + h a, x' = x + h v'. Order 1, symplectic:
+ *                     energy bounded and orbits closed for omega h < 2.
+ *   VELOCITY_VERLET   half kick, drift, half kick. Order 2, symplectic,
+ *                     stable for omega h < 2; forces evaluated twice a step.
+ *   RK4               classical Runge-Kutta. Order 4, slowly damps
+ *                     oscillations and orbits, stable for omega h < 2.83;
+ *                     forces evaluated four times a step.
+ *   SYMPLECTIC4       Yoshida's composition of three Verlet steps. Order 4,
+ *                     symplectic, stable for omega h < 1.57; forces
+ *                     evaluated four times a step.
+ * Pick SYMPLECTIC_EULER or VELOCITY_VERLET for springs and orbits; the
+ * fourth-order schemes when accuracy matters more than cost.
+ *
+ * The multi-stage schemes (VELOCITY_VERLET, RK4, SYMPLECTIC4) call the force
+ * creators once per stage, with the bodies moved to the stage's trial pose
+ * and velocities (scene_get_stage tells which call it is). The first call,
+ * stage 0, is at the start of the step and is the only one at which
+ * impulses count, bodies may be added, and the collision creators of
+ * forces.h run (collisions are events of the step, not forces). A force
+ * set on a body between ticks acts at every stage.
+ *
+ * With world contacts, the contact solver runs once per step on the
+ * scheme's free motion (its velocities and displacement without contacts),
+ * and contacts act as a constant force over the step would under the
+ * scheme: a velocity change dv from contacts moves the body by dt dv / 2
+ * (SEED and the multi-stage schemes), dt dv (SYMPLECTIC_EULER) or not
+ * until the next step (EXPLICIT_EULER). Impacts are timed within the step
+ * under every scheme, so a bounce is exact under the schemes that follow
+ * gravity exactly (all but the Euler ones).
+ */
 typedef enum {
     INTEGRATOR_SEED = 0,
     INTEGRATOR_EXPLICIT_EULER,
     INTEGRATOR_SYMPLECTIC_EULER,
+    INTEGRATOR_VELOCITY_VERLET,
+    INTEGRATOR_RK4,
+    INTEGRATOR_SYMPLECTIC4,
 } integrator_t;
+
+/* The number of integrators; every value below it is one. */
+#define INTEGRATOR_COUNT 6
+
+/* The integrator's name as the docs write it ("seed", "explicit Euler",
+ * "symplectic Euler", "velocity Verlet", "RK4", "symplectic4"). */
+const char *integrator_get_name(integrator_t integrator);
+
+/* The stability limit of omega h on an undamped spring, omega = sqrt(k / m)
+ * (2 for symplectic Euler); 0 for a scheme that adds energy at every h. */
+double integrator_get_stability_limit(integrator_t integrator);
 
 void scene_set_integrator(scene_t *scene, integrator_t integrator);
 integrator_t scene_get_integrator(scene_t *scene);
+
+/* Inside a force creator: which call of the tick this is, 0 at the start of
+ * the step, 1 .. integrator stages - 1 at the later stages of a multi-stage
+ * integrator; 0 outside a tick. A creator with effects beyond forces (one
+ * that adds impulses or bodies, removes bodies or counts events) acts at
+ * stage 0 only. */
+int scene_get_stage(const scene_t *scene);
 
 /*
  * World contacts: when enabled (default off), every pair of bodies that the

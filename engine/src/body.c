@@ -263,7 +263,11 @@ void body_tick(body_t *body, double dt) {
     REQUIRE_NOT_NULL(body);
     REQUIRE(isfinite(dt) && dt > 0.0, "dt must be finite and > 0 (got %g)", dt);
     body_motion_t before = body_motion(body);
-    integrator_advance(body, dt, VEC_ZERO, INTEGRATOR_SEED);
+    integrator_step_t step = {INTEGRATOR_SEED, dt, VEC_ZERO, NULL, NULL};
+    integrator_motion_t motion;
+    integrator_stages_t *no_stages = NULL;
+    integrator_predict(&step, &body, 1, &motion, &no_stages);
+    integrator_apply(body, &motion);
     if (!body_motion_is_finite(body)) {
         char message[512];
         body_explain_non_finite(body, &before, dt, message, sizeof message);

@@ -37,11 +37,6 @@ struct body {
     double torque;
     vector_t impulse;
     double angular_impulse;
-    /* Position and angle corrections from the contact solver, added by the
-     * integrator after it advances the pose (they move without changing the
-     * velocity). */
-    vector_t position_correction;
-    double angle_correction;
 
     double elasticity;
     double friction;

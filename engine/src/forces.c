@@ -119,34 +119,6 @@ static double reduced_mass(const body_t *body1, const body_t *body2) {
     return body1->mass * (body2->mass / (body1->mass + body2->mass));
 }
 
-static const char *integrator_name(integrator_t integrator) {
-    switch (integrator) {
-    case INTEGRATOR_SEED: return "seed";
-    case INTEGRATOR_EXPLICIT_EULER: return "explicit Euler";
-    case INTEGRATOR_SYMPLECTIC_EULER: return "symplectic Euler";
-    }
-    return "unknown";
-}
-
-/*
- * The factor by which an undamped oscillator's energy grows per step of dt:
- * with w the integrator's position weight and s = (omega dt)^2, a step maps
- * (x, v / omega) by [[1 - w s, omega dt], [-omega dt, 1]], whose spectral
- * radius squared is the growth. It is det = 1 + (1 - w) s for complex
- * eigenvalues: any dt gains energy unless w = 1, which is stable for
- * omega dt < 2.
- */
-static double oscillator_energy_growth(double omega, double dt, integrator_t integrator) {
-    double w = integrator_position_weight(integrator);
-    double s = (omega * dt) * (omega * dt);
-    double trace = 2.0 - w * s, det = 1.0 + (1.0 - w) * s;
-    double discriminant = trace * trace - 4.0 * det;
-    if (!isfinite(discriminant)) return INFINITY;
-    if (discriminant < 0.0) return det;
-    double radius = (fabs(trace) + sqrt(discriminant)) / 2.0;
-    return radius * radius;
-}
-
 /* Writes the spring's stability at the tick's dt; returns whether it gains
  * energy there. */
 static bool explain_spring_stability(const pair_aux_t *aux, char *message, size_t size) {
@@ -160,32 +132,35 @@ static bool explain_spring_stability(const pair_aux_t *aux, char *message, size_
         return false;
     }
     char growth[32];
-    double factor = oscillator_energy_growth(omega, dt, integrator);
+    double factor = integrator_oscillator_growth(integrator, omega * dt);
     if (isfinite(factor)) {
         snprintf(growth, sizeof growth, "%.3g", factor);
     } else {
         snprintf(growth, sizeof growth, "more than %g", DBL_MAX);
     }
-    if (integrator != INTEGRATOR_SYMPLECTIC_EULER) {
+    const char *name = integrator_get_name(integrator);
+    double theta_limit = integrator_get_stability_limit(integrator);
+    if (theta_limit == 0.0) {
         snprintf(message, size,
                  "with the %s integrator a spring gains energy at any dt, this one by a factor "
                  "of %s per step at dt = %g s (m = %g kg, omega = sqrt(k/m) = %g rad/s); "
                  "INTEGRATOR_SYMPLECTIC_EULER keeps it bounded for dt < 2 sqrt(m/k) = %g s",
-                 integrator_name(integrator), growth, dt, mass, omega, limit);
+                 name, growth, dt, mass, omega, limit);
         return true;
     }
-    if (omega * dt >= 2.0) {
+    limit = theta_limit / omega;
+    if (omega * dt >= theta_limit) {
         snprintf(message, size,
-                 "dt = %g s is above the stability limit of the symplectic Euler integrator for "
-                 "it, dt < 2 sqrt(m/k) = %g s (m = %g kg): its energy grows by a factor of %s "
+                 "dt = %g s is above the stability limit of the %s integrator for it, "
+                 "dt < %.4g sqrt(m/k) = %g s (m = %g kg): its energy grows by a factor of %s "
                  "per step",
-                 dt, limit, mass, growth);
+                 dt, name, theta_limit, limit, mass, growth);
         return true;
     }
     snprintf(message, size,
-             "dt = %g s is within the symplectic Euler integrator's limit for it alone, "
-             "dt < 2 sqrt(m/k) = %g s (m = %g kg), which springs sharing a body lower",
-             dt, limit, mass);
+             "dt = %g s is within the %s integrator's limit for it alone, "
+             "dt < %.4g sqrt(m/k) = %g s (m = %g kg), which springs sharing a body lower",
+             dt, name, theta_limit, limit, mass);
     return false;
 }
 
@@ -196,6 +171,12 @@ static int describe_spring(const pair_aux_t *aux, char *message, size_t size) {
 }
 
 static void spring(void *data);
+
+static void collision_force_creator(void *data);
+
+bool forces_is_event(force_creator_t forcer) {
+    return forcer == collision_force_creator;
+}
 
 double forces_spring_omega(force_creator_t forcer, const void *data) {
     if (forcer != spring) return 0.0;

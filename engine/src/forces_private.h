@@ -4,8 +4,14 @@
 /* What the scene needs from forces.c to explain a tick whose integration
  * overflowed: the springs, which bound the stable dt. */
 
+#include <stdbool.h>
 #include <stddef.h>
 #include "scene.h"
+
+/* Whether the force creator is an event of the step (a collision of
+ * create_collision and its kin) rather than a force: a multi-stage
+ * integrator calls it at the first stage only. */
+bool forces_is_event(force_creator_t forcer);
 
 /* sqrt(k / m) (rad/s) of a spring made by create_spring, m the reduced mass
  * of its bodies; 0 for any other force creator, or a spring between two

@@ -1,30 +1,112 @@
 #ifndef INTEGRATOR_H
 #define INTEGRATOR_H
 
-/* Advancing one body by one step with a chosen scheme; body_tick and
- * scene_tick both come here, so each scheme is written once. */
+/*
+ * How bodies move: the one place that turns forces into motion. A step of
+ * scene_tick goes through it twice:
+ *   - integrator_predict, the force stage: calls the force creators (once,
+ *     or at every stage of a multi-stage scheme) and writes each body's free
+ *     motion, what the step would do to it if no contact acted;
+ *   - the world's contact solver may then change each motion's velocities
+ *     and displacement (a velocity change dv moves the body by
+ *     weight * dt * dv, the scheme's integrator_position_weight: contacts
+ *     act on the body as a constant force over the step would);
+ *   - integrator_apply, the integrate stage: moves the body by its motion.
+ * body_tick does both for one body with the seed scheme.
+ *
+ * The schemes, for x'' = a(x, v) at step h (omega the highest frequency of
+ * a spring, for the stability limits on omega h):
+ *   seed              v' = v + h a, x' = x + h (v + v') / 2. Order 1 (2 for
+ *                     constant a, which it follows exactly); adds energy to
+ *                     every oscillator: by 1 + (omega h)^2 / 2 a step (no
+ *                     stable h).
+ *   explicit Euler    v' = v + h a, x' = x + h v. Order 1; energy times
+ *                     1 + (omega h)^2 a step (no stable h).
+ *   symplectic Euler  v' = v + h a, x' = x + h v'. Order 1, symplectic;
+ *                     stable for omega h < 2.
+ *   velocity Verlet   kick h/2, drift h, kick h/2; 2 force evaluations.
+ *                     Order 2, symplectic; stable for omega h < 2.
+ *   RK4               classical Runge-Kutta; 4 evaluations. Order 4, not
+ *                     symplectic (damps oscillators slowly); stable for
+ *                     omega h < 2 sqrt(2).
+ *   symplectic4       Yoshida's composition of three Verlet steps of
+ *                     h / (2 - 2^(1/3)), -2^(1/3) h / (2 - 2^(1/3)),
+ *                     h / (2 - 2^(1/3)); 4 evaluations. Order 4, symplectic;
+ *                     stable for omega h < 1.573.
+ * Every scheme sees the force creators' forces and torques at its stages;
+ * impulses act at the start of the step.
+ */
 
+#include <stdbool.h>
 #include "body.h"
 #include "scene.h"
 
-/*
- * The weight w of the new velocity in the position update of a scheme:
- * x' = x + dt ((1 - w) v + w v'). The contact solver uses it to predict where
- * a velocity it chooses will put the bodies at the end of the step.
- */
+/* One body's motion over one step. */
+typedef struct {
+    vector_t velocity;     /* at the end of the step (m/s) */
+    double angular_velocity;
+    vector_t displacement; /* of the centroid over the step (m) */
+    double rotation;       /* rad */
+    /* The displacement due to the velocity at the start and to the forces,
+     * beside the end velocity's share: displacement = dt (drift + weight
+     * velocity) for the free motion. */
+    vector_t drift;
+    double spin_drift;
+    /* The mean acceleration of the free motion (m/s^2), for times of impact. */
+    vector_t acceleration;
+} integrator_motion_t;
+
+/* The weight w of a contact's velocity change in the position update of a
+ * scheme: a change dv moves the body by w dt dv, as a constant force does
+ * under the scheme (1/2 in the seed scheme and those exact for constant
+ * forces, 1 in symplectic Euler, 0 in explicit Euler). The contact solver
+ * predicts with it where a velocity it chooses will put the bodies. */
 double integrator_position_weight(integrator_t integrator);
 
-/* The body's linear acceleration from its force and gravity (m/s^2). */
-vector_t integrator_acceleration(const body_t *body, vector_t gravity);
+/* The factor by which a step of the scheme multiplies the energy of an
+ * undamped oscillator at theta = omega h (its amplification matrix's
+ * spectral radius squared): 1 where it is stable and symplectic. */
+double integrator_oscillator_growth(integrator_t integrator, double theta);
 
-/* The velocity and angular velocity the body would end the step with if
- * nothing but its accumulated force, torque and impulses acted. */
-void integrator_free_velocity(const body_t *body, double dt, vector_t gravity, vector_t *velocity,
-                              double *angular_velocity);
+/* The number of force evaluations a step of the scheme makes. */
+int integrator_stage_count(integrator_t integrator);
 
-/* Advances body by dt with gravity (m/s^2, ignored for infinite mass), its
- * accumulated force, torque, impulses and contact corrections; then clears
- * those accumulators. */
-void integrator_advance(body_t *body, double dt, vector_t gravity, integrator_t integrator);
+/* Calls the force creators again with the bodies at a later stage's trial
+ * pose and velocities (scene.h says which creators run there). */
+typedef void (*integrator_evaluate_t)(void *context);
+
+/* Per-body storage for the multi-stage schemes, kept across steps so that
+ * a warm scene allocates nothing. */
+typedef struct integrator_stages integrator_stages_t;
+void integrator_stages_free(integrator_stages_t *stages);
+
+/* Before the first evaluation of a step: a multi-stage scheme keeps the
+ * forces set on the bodies since their last step, which act at every
+ * stage. */
+void integrator_begin(integrator_t integrator, body_t **bodies, size_t count,
+                      integrator_stages_t **stages);
+
+typedef struct {
+    integrator_t integrator;
+    double dt;
+    vector_t gravity;          /* for every body of finite mass */
+    integrator_evaluate_t evaluate; /* later stages; NULL: no force creators */
+    void *context;
+} integrator_step_t;
+
+/*
+ * The force stage, after the first evaluation of the forces (the bodies
+ * hold the force, torque and impulses of the start of the step): a
+ * multi-stage scheme evaluates them at its later stages; then motions[i]
+ * is written for bodies[i]. The bodies are left at their start pose and
+ * velocity, with the forces and impulses of the first evaluation (cleared
+ * by integrator_apply). *stages is made or grown as needed.
+ */
+void integrator_predict(const integrator_step_t *step, body_t **bodies, size_t count,
+                        integrator_motion_t *motions, integrator_stages_t **stages);
+
+/* The integrate stage for one body: moves it by motion and gives it the
+ * motion's velocities; clears its accumulated force, torque and impulses. */
+void integrator_apply(body_t *body, const integrator_motion_t *motion);
 
 #endif // #ifndef INTEGRATOR_H

@@ -28,6 +28,15 @@ struct scene {
 
     vector_t gravity;
     integrator_t integrator;
+    /* Each body's motion over the step in progress (integrator.h), and the
+     * multi-stage schemes' storage; reused from step to step. */
+    integrator_motion_t *motions;
+    size_t motion_capacity;
+    integrator_stages_t *stages;
+    /* The stage of the step whose force creators are running (0 outside a
+     * tick) and how many creators the first one ran. */
+    int stage;
+    size_t stage_force_count;
     /* The dt of the tick in progress, for the message of one that fails. */
     double dt;
 
@@ -90,6 +99,8 @@ void scene_free(scene_t *scene) {
     memory_free(scene->forces);
     memory_free(scene->bodies);
     memory_free(scene->record);
+    memory_free(scene->motions);
+    integrator_stages_free(scene->stages);
     if (scene->world != NULL) world_free(scene->world);
     memory_free(scene);
 }
@@ -111,6 +122,10 @@ void scene_add_body(scene_t *scene, body_t *body) {
     REQUIRE_NOT_NULL(body);
     REQUIRE(!body->in_scene, "body already belongs to a scene (added twice?)");
     REQUIRE(!belongs_elsewhere(scene, body), "body is used by a force creator of another scene");
+    REQUIRE(scene->stage == 0,
+            "a force creator added a body at stage %d of the %s integrator; add bodies at "
+            "stage 0 (scene_get_stage)",
+            scene->stage, integrator_get_name(scene->integrator));
     body->in_scene = true;
     body->scene = scene;
     memory_reserve((void **)&scene->bodies, &scene->body_capacity, scene->body_count + 1,
@@ -175,15 +190,18 @@ vector_t scene_get_gravity(scene_t *scene) {
 
 void scene_set_integrator(scene_t *scene, integrator_t integrator) {
     REQUIRE_NOT_NULL(scene);
-    REQUIRE(integrator == INTEGRATOR_SEED || integrator == INTEGRATOR_EXPLICIT_EULER ||
-                integrator == INTEGRATOR_SYMPLECTIC_EULER,
-            "unknown integrator %d", (int)integrator);
+    REQUIRE((unsigned)integrator < INTEGRATOR_COUNT, "unknown integrator %d", (int)integrator);
     scene->integrator = integrator;
 }
 
 integrator_t scene_get_integrator(scene_t *scene) {
     REQUIRE_NOT_NULL(scene);
     return scene->integrator;
+}
+
+int scene_get_stage(const scene_t *scene) {
+    REQUIRE_NOT_NULL(scene);
+    return scene->stage;
 }
 
 void scene_set_contacts_enabled(scene_t *scene, bool enabled) {
@@ -268,11 +286,36 @@ double scene_step_dt(const scene_t *scene) {
     return scene->dt;
 }
 
-/* Stage 1. A force creator may add force creators (they run from the next
- * tick on, since the count is read once) and may remove bodies. */
+/* Stage 1 at the start of the step. A force creator may add force creators
+ * (they run from the next tick on, since the count is read once) and may
+ * remove bodies. */
 static void stage_forces(scene_t *scene) {
     size_t count = scene->force_count;
+    scene->stage_force_count = count;
     for (size_t i = 0; i < count; i++) scene->forces[i].forcer(scene->forces[i].aux);
+}
+
+/* Stage 1 at a later stage of a multi-stage integrator: the creators of the
+ * first call again, but for the collisions, which are events of the step. */
+static void stage_forces_again(void *context) {
+    scene_t *scene = context;
+    scene->stage++;
+    for (size_t i = 0; i < scene->stage_force_count; i++) {
+        const force_entry_t *entry = &scene->forces[i];
+        if (!forces_is_event(entry->forcer)) entry->forcer(entry->aux);
+    }
+}
+
+/* Stage 1: the forces, and from them each body's free motion. */
+static void stage_motion(scene_t *scene, double dt) {
+    integrator_begin(scene->integrator, scene->bodies, scene->body_count, &scene->stages);
+    if (scene->force_count > 0) stage_forces(scene);
+    memory_reserve((void **)&scene->motions, &scene->motion_capacity, scene->body_count,
+                   sizeof(integrator_motion_t));
+    integrator_step_t step = {scene->integrator, dt, scene->gravity,
+                              scene->stage_force_count > 0 ? stage_forces_again : NULL, scene};
+    integrator_predict(&step, scene->bodies, scene->body_count, scene->motions, &scene->stages);
+    scene->stage = 0;
 }
 
 /* A body whose pose or velocity no longer fits a double stops the tick:
@@ -304,7 +347,7 @@ static void fail_integrate(const scene_t *scene, size_t index, const body_motion
 
 /* Stage 3. Returns whether any body is marked removed (those are not
  * advanced: they are freed next). */
-static bool stage_integrate(scene_t *scene, double dt) {
+static bool stage_integrate(scene_t *scene) {
     bool removed = false;
     for (size_t i = 0; i < scene->body_count; i++) {
         body_t *body = scene->bodies[i];
@@ -313,7 +356,7 @@ static bool stage_integrate(scene_t *scene, double dt) {
             continue;
         }
         body_motion_t before = body_motion(body);
-        integrator_advance(body, dt, scene->gravity, scene->integrator);
+        integrator_apply(body, &scene->motions[i]);
         if (!body_motion_is_finite(body)) fail_integrate(scene, i, &before);
     }
     return removed;
@@ -379,11 +422,13 @@ void scene_tick(scene_t *scene, double dt) {
         stage_reap(scene);
         return;
     }
-    if (scene->force_count > 0) stage_forces(scene);
+    scene->stage_force_count = 0;
+    stage_motion(scene, dt);
     if (scene->world != NULL && scene->body_count > 0) {
-        world_step_t step = {dt, scene->gravity, scene->integrator};
-        world_step(scene->world, scene->bodies, scene->body_count, &step, &scene->stats);
+        world_step_t step = {dt, integrator_position_weight(scene->integrator)};
+        world_step(scene->world, scene->bodies, scene->motions, scene->body_count, &step,
+                   &scene->stats);
         scene->record_needs_world = true;
     }
-    if (stage_integrate(scene, dt)) stage_reap(scene);
+    if (stage_integrate(scene)) stage_reap(scene);
 }

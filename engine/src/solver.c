@@ -70,8 +70,9 @@ static double time_of_impact(double s, double v, double a, double dt) {
  *
  * Touching or overlapping: no approach (0); a fast approach bounces in the
  * collision pass. Apart by s > 0: the approach may close at most s by the
- * end of the step; with the integrator's position weight w that bounds the
- * end velocity by (-s / dt - (1 - w) vn_start) / w, never above 0 (a slow
+ * end of the step; the step moves the point by dt (drift + w v_end), w the
+ * integrator's position weight, which bounds the end velocity by
+ * (-s / dt - drift_n) / w, never above 0 (a slow
  * approach is not turned into a rebound; the position pass removes the
  * little overlap left).
  *
@@ -91,6 +92,8 @@ static void set_target(solver_point_t *p, vector_t r_a, vector_t r_b, vector_t n
     double dt = settings->dt, w = settings->position_weight;
     vector_t start = vec_subtract(point_velocity(sb->v_start, sb->w_start, r_b),
                                   point_velocity(sa->v_start, sa->w_start, r_a));
+    vector_t drift = vec_subtract(point_velocity(sb->drift, sb->spin_drift, r_b),
+                                  point_velocity(sa->drift, sa->spin_drift, r_a));
     double vn_start = vec_dot(normal, start);
     p->impact_time = -1.0;
     p->impact_offset = NAN;
@@ -108,7 +111,7 @@ static void set_target(solver_point_t *p, vector_t r_a, vector_t r_b, vector_t n
     /* With w = 0 the end velocity does not move the body this step; only an
      * impact, timed, does. */
     double closing =
-        w > 0.0 ? min_of((-p->separation / dt - (1.0 - w) * vn_start) / w, 0.0) : -INFINITY;
+        w > 0.0 ? min_of((-p->separation / dt - vec_dot(normal, drift)) / w, 0.0) : -INFINITY;
     if (tau >= 0.0 && vi < -SOLVER_RESTITUTION_THRESHOLD) {
         p->impact_time = tau;
         double after = an * (dt - tau);
@@ -498,9 +501,8 @@ static void advance(const solver_bodies_t *bodies, const solver_settings_t *s) {
         solver_state_t *state = &bodies->states[i];
         const solver_velocity_t *velocity = &bodies->velocities[i];
         solver_displacement_t *moved = &bodies->displacements[i];
-        moved->dx = vec_multiply(s->dt, vec_add(vec_multiply(1.0 - w, state->v_start),
-                                                vec_multiply(w, velocity->v)));
-        moved->dtheta = s->dt * ((1.0 - w) * state->w_start + w * velocity->w);
+        moved->dx = vec_multiply(s->dt, vec_add(state->drift, vec_multiply(w, velocity->v)));
+        moved->dtheta = s->dt * (state->spin_drift + w * velocity->w);
         apply_impact_time(bodies, i, s);
         state->dx_advanced = moved->dx;
         state->dtheta_advanced = moved->dtheta;

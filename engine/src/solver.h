@@ -51,7 +51,11 @@ typedef struct {
     double w_start;
     vector_t v_free;         /* at the end of the step if no contact acted */
     double w_free;
-    vector_t acceleration;   /* (force / mass) + gravity: for times of impact */
+    /* The step moves the body by dt (drift + position_weight v) for end
+     * velocity v (integrator.h). */
+    vector_t drift;
+    double spin_drift;
+    vector_t acceleration;   /* of the free motion: for times of impact */
     vector_t dx_advanced;    /* dx before the position correction */
     double dtheta_advanced;
     double impact_time;      /* of the body's earliest impact this step (s), < 0 for none */

@@ -152,7 +152,8 @@ static void set_filter(broadphase_proxy_t *proxy, const body_t *body) {
 }
 
 /* Loads each body's rows for the solver and its broadphase proxy. */
-static void load_bodies(world_t *world, body_t **bodies, size_t count, const world_step_t *step) {
+static void load_bodies(world_t *world, body_t **bodies, const integrator_motion_t *motions,
+                        size_t count, const world_step_t *step) {
     reserve_rows(world, count);
     double dt = step->dt;
     for (size_t i = 0; i < count; i++) {
@@ -161,10 +162,14 @@ static void load_bodies(world_t *world, body_t **bodies, size_t count, const wor
         body_update_world(body);
         solver_state_t *state = &world->states[i];
         solver_velocity_t *velocity = &world->velocities[i];
+        const integrator_motion_t *motion = &motions[i];
         state->v_start = body->velocity;
         state->w_start = body->angular_velocity;
-        integrator_free_velocity(body, dt, step->gravity, &state->v_free, &state->w_free);
-        state->acceleration = integrator_acceleration(body, step->gravity);
+        state->v_free = motion->velocity;
+        state->w_free = motion->angular_velocity;
+        state->drift = motion->drift;
+        state->spin_drift = motion->spin_drift;
+        state->acceleration = motion->acceleration;
         state->impact_time = -1.0;
         state->pushing_contacts = 0;
         world->displacements[i].radius = body->radius;
@@ -328,44 +333,33 @@ static void narrowphase(world_t *world, body_t **bodies, const broadphase_pair_t
     }
 }
 
-/* Hands the solver's results to the bodies: the change of velocity as an
- * impulse, and the displacement beyond what the integrator will make of the
- * new velocity as a position correction. */
-static void write_back(world_t *world, body_t **bodies, size_t count, const world_step_t *step) {
-    double w = integrator_position_weight(step->integrator);
+/* Hands the solver's results to the bodies' motions: the velocities it
+ * chose and the displacements it moved them by. */
+static void write_back(const world_t *world, integrator_motion_t *motions, size_t count) {
     for (size_t i = 0; i < count; i++) {
         const solver_velocity_t *velocity = &world->velocities[i];
-        const solver_state_t *state = &world->states[i];
         const solver_displacement_t *moved = &world->displacements[i];
-        body_t *body = bodies[i];
-        if (body->inverse_mass > 0.0) {
-            vector_t change = vec_subtract(velocity->v, state->v_free);
-            body->impulse = vec_add(body->impulse, vec_multiply(body->mass, change));
-        }
-        if (body->inverse_inertia > 0.0) {
-            body->angular_impulse += body->inertia * (velocity->w - state->w_free);
-        }
-        vector_t drift = vec_multiply(step->dt, vec_add(vec_multiply(1.0 - w, state->v_start),
-                                                        vec_multiply(w, velocity->v)));
-        body->position_correction = vec_subtract(moved->dx, drift);
-        body->angle_correction =
-            moved->dtheta - step->dt * ((1.0 - w) * state->w_start + w * velocity->w);
+        integrator_motion_t *motion = &motions[i];
+        motion->velocity = velocity->v;
+        motion->angular_velocity = velocity->w;
+        motion->displacement = moved->dx;
+        motion->rotation = moved->dtheta;
     }
 }
 
-void world_step(world_t *world, body_t **bodies, size_t count, const world_step_t *step,
-                scene_stats_t *stats) {
-    load_bodies(world, bodies, count, step);
+void world_step(world_t *world, body_t **bodies, integrator_motion_t *motions, size_t count,
+                const world_step_t *step, scene_stats_t *stats) {
+    load_bodies(world, bodies, motions, count, step);
     const broadphase_pair_t *pairs;
     size_t pair_count = broadphase_find_pairs(world->broadphase, world->proxies, count, &pairs,
                                               &stats->broadphase_tests);
     narrowphase(world, bodies, pairs, pair_count);
-    solver_settings_t settings = {step->dt, integrator_position_weight(step->integrator),
-                                  world->velocity_iterations, world->position_iterations};
+    solver_settings_t settings = {step->dt, step->position_weight, world->velocity_iterations,
+                                  world->position_iterations};
     solver_bodies_t rows = {world->velocities, world->displacements, world->states, count};
     solver_solve(&world->wide, &world->shock, world->contacts, world->anchors,
                  world->contact_count, &rows, &settings);
-    write_back(world, bodies, count, step);
+    write_back(world, motions, count);
 
     stats->broadphase_pairs += pair_count;
     stats->contacts += world->contact_count;

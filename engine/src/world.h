@@ -3,9 +3,9 @@
 
 /*
  * The world contact pipeline of a scene (stage 2 of scene_tick): bounding
- * boxes -> broadphase pairs -> narrowphase manifolds -> solver, then the
- * solver's impulses and position corrections are handed to the bodies'
- * accumulators for the integrator (stage 3) to apply. The step's contacts
+ * boxes -> broadphase pairs -> narrowphase manifolds -> solver, from the
+ * bodies' free motions (integrator.h), which it changes into the motions
+ * the integrator applies in stage 3. The step's contacts
  * stay readable until the next step.
  *
  * It keeps last step's contacts, keyed by the pair's body ids, to warm-start
@@ -16,6 +16,7 @@
 #include <stdbool.h>
 #include <stddef.h>
 #include "body.h"
+#include "integrator.h"
 #include "scene.h"
 
 typedef struct world world_t;
@@ -27,15 +28,15 @@ void world_set_iterations(world_t *world, size_t velocity_iterations, size_t pos
 
 typedef struct {
     double dt;
-    vector_t gravity;
-    integrator_t integrator;
+    /* integrator_position_weight of the scene's integrator */
+    double position_weight;
 } world_step_t;
 
-/* Runs the pipeline over bodies[0..count) (removed bodies take no part),
- * writes impulses and corrections into the bodies and adds to the counters
- * of stats. */
-void world_step(world_t *world, body_t **bodies, size_t count, const world_step_t *step,
-                scene_stats_t *stats);
+/* Runs the pipeline over bodies[0..count) (removed bodies take no part):
+ * motions[i] holds body i's free motion on entry and the motion with its
+ * contacts on return. Adds to the counters of stats. */
+void world_step(world_t *world, body_t **bodies, integrator_motion_t *motions, size_t count,
+                const world_step_t *step, scene_stats_t *stats);
 
 /* The contacts of the last world_step, for the scene's record (built only
  * when someone reads it). Their bodies are alive until the next step: a
