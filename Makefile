@@ -2,6 +2,7 @@
 # make check      builds and runs every test (sanitized, warnings are errors)
 # make run        installs the sandbox's Debian packages when it can, builds and starts it
 # make bench      the benchmark scenes (docs/bench.md)
+# make report     numerical error against run time (docs/accuracy.md)
 
 CC ?= cc
 CSTD := -std=c11 -D_POSIX_C_SOURCE=200809L -D_DEFAULT_SOURCE
@@ -44,12 +45,13 @@ build/tests/engine_tests: $(TEST_SAN_OBJ) build/libengine-san.a
 # Programs `make check` runs; app/app.mk adds the sandbox's smoke tests.
 # check_examples.sh builds tests/examples/ (and the README's example) against
 # the release library with the public headers only.
-CHECK_PROGRAMS := build/tests/engine_tests tests/check_examples.sh
+CHECK_PROGRAMS := build/tests/engine_tests tests/check_examples.sh tests/report/check_report.sh
 
 -include app/app.mk
 -include tests/bench/bench.mk
+-include tests/report/report.mk
 
-check: $(CHECK_PROGRAMS) build/libengine.a
+check: $(CHECK_PROGRAMS) build/libengine.a build/report/accuracy
 	@tests/run_all.sh $(CHECK_PROGRAMS)
 
 clean:

@@ -163,7 +163,7 @@ void b2_step(void *world, double dt) {
         a->ApplyForceToCenter(force, true);
         b->ApplyForceToCenter(-force, true);
     }
-    w->world.Step((float)dt, 8, 3);
+    w->world.Step((float)dt, bench_iterations > 0 ? bench_iterations : 8, 3);
 }
 
 void b2_get_state(void *world, int body, bench_state_t *out) {

@@ -88,6 +88,7 @@ static void *cp_world_new(double gy, int contacts, int capacity) {
     w->space = cp_space_new_quiet();
     cpSpaceSetGravity(w->space, cpv(0.0, gy));
     cpSpaceSetCollisionSlop(w->space, 0.005);
+    if (bench_iterations > 0) cpSpaceSetIterations(w->space, bench_iterations);
     w->capacity = capacity > 0 ? capacity : 4;
     w->bodies = (cpBody **)malloc(sizeof(cpBody *) * (size_t)w->capacity);
     return w;

@@ -39,6 +39,10 @@
 #define BENCH_FRICTION 0.6
 #define BENCH_DEFAULT_RUNS 5
 
+/* --iterations: the solver's velocity iterations for every world made
+ * after it is set; 0 keeps each engine's default. */
+static int bench_iterations = 0;
+
 /* pile(N) */
 #define PILE_STEPS 600
 #define PILE_SETTLED_FIRST 301 /* settled figures: steps 301..600 (1-based) */

@@ -66,6 +66,7 @@ static void *ours_world_new_common(double gy, int contacts, int capacity, int se
     w->seed = seed;
     w->symplectic = symplectic;
     if (symplectic) scene_set_integrator(w->scene, INTEGRATOR_SYMPLECTIC_EULER);
+    if (bench_iterations > 0) scene_set_solver_iterations(w->scene, (size_t)bench_iterations, 4);
     w->capacity = capacity > 0 ? capacity : 4;
     w->bodies = (body_t **)malloc(sizeof(body_t *) * (size_t)w->capacity);
     w->angle0 = (double *)malloc(sizeof(double) * (size_t)w->capacity);

@@ -541,9 +541,12 @@ static inline int bench_parse_list(const char *text, double *list, int *count) {
 static inline void bench_usage(FILE *out, const char *program) {
     fprintf(out,
             "usage: %s [--scene NAME[,NAME]] [--size X[,X]] [--dt X[,X]] [--runs R] [--quick]\n"
-            "  scenes: pile pyramid bounce cradle orbit stack2 tunnel overlap all\n"
+            "          [--iterations N]\n"
+            "  scenes: pile pyramid bounce cradle orbit stack2 tunnel overlap column all\n"
             "  no --scene: pile 1000,4000,10000; pyramid 20,40; bounce 0.8 at dt 1/60,1/600;\n"
-            "  cradle 5. --size and --dt apply to every scene given (--dt: bounce, orbit).\n",
+            "  cradle 5. --size and --dt apply to every scene given (--dt: bounce, orbit).\n"
+            "  --iterations N: the solver's velocity iterations (each engine's own default\n"
+            "  otherwise; position iterations keep theirs).\n",
             program);
 }
 
@@ -624,6 +627,13 @@ static inline int bench_main(int argc, char **argv, const bench_ops_t *const *op
             int is_size = arg[2] == 's';
             if (!bench_parse_list(value, is_size ? sizes : dts, is_size ? &nsizes : &ndts)) {
                 fprintf(stderr, "%s: bad %s value: %s\n", argv[0], arg, value);
+                return 2;
+            }
+            i++;
+        } else if (strcmp(arg, "--iterations") == 0) {
+            bench_iterations = atoi(value);
+            if (bench_iterations < 1 || bench_iterations > 1000) {
+                fprintf(stderr, "%s: --iterations must be in 1..1000\n", argv[0]);
                 return 2;
             }
             i++;

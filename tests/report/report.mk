@@ -1,0 +1,27 @@
+# make report: numerical error against run time (docs/accuracy.md), by
+# tests/report/report.sh. Included by the top-level Makefile.
+
+REPORT_DIR := build/report
+
+$(REPORT_DIR)/accuracy: tests/report/accuracy.c tests/reference.c tests/reference.h build/libengine.a
+	@mkdir -p $(dir $@)
+	$(CC) $(CSTD) $(WARN) -O2 -Iengine/include -Itests tests/report/accuracy.c tests/reference.c \
+		build/libengine.a -lm -o $@
+
+.PHONY: report report-deps
+# gnuplot (Debian gnuplot-nox) and the peers' headers, installed as root when
+# missing; otherwise the command to run is printed and the report stops.
+report-deps:
+	@command -v gnuplot >/dev/null 2>&1 || { \
+		if [ "$$(id -u)" -eq 0 ] && command -v apt-get >/dev/null 2>&1; then \
+			echo "report: installing gnuplot-nox"; \
+			DEBIAN_FRONTEND=noninteractive apt-get install -y gnuplot-nox || \
+			{ apt-get update && DEBIAN_FRONTEND=noninteractive apt-get install -y gnuplot-nox; }; \
+		else \
+			echo "report: gnuplot is missing; run: sudo apt-get install -y gnuplot-nox" >&2; exit 1; \
+		fi; }
+	@CC="$(CC)" CXX="$(CXX)" sh tests/bench/deps.sh
+
+report: report-deps build/libengine.a $(REPORT_DIR)/accuracy
+	@$(MAKE) --no-print-directory bench-build
+	@sh tests/report/report.sh
