@@ -32,5 +32,22 @@ else
     echo "$missing" | sed 's/^/    /'
     failed=$((failed + 1))
 fi
+# A program of bodies, forces and seed collisions links none of the world
+# contact pipeline (scene_contacts.c is its only door); one that enables
+# world contacts does, which shows the check can see them.
+contact_symbols='broadphase_|manifold_|coloring_|solver_|shock_|world_step'
+linked() {
+    nm "$1" 2>/dev/null | grep -E " [TtDdRrBb] ($contact_symbols)" | head -n 3
+}
+if [ -x build/examples/seed_api ] && [ -x build/examples/falling_hexagon ] &&
+    [ -z "$(linked build/examples/seed_api)" ] && [ -n "$(linked build/examples/falling_hexagon)" ]; then
+    echo "    sizes (text+data+bss, bytes): seed_api $(size build/examples/seed_api | awk 'NR==2 {print $4}'), falling_hexagon $(size build/examples/falling_hexagon | awk 'NR==2 {print $4}')"
+    echo "PASS examples.forces_only_program_links_no_contact_code"
+    passed=$((passed + 1))
+else
+    echo "FAIL examples.forces_only_program_links_no_contact_code: seed_api links:"
+    linked build/examples/seed_api | sed 's/^/    /'
+    failed=$((failed + 1))
+fi
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -343,9 +343,9 @@ static bool parted(const contact_t *contact) {
  * The handler runs when the world's contact of the pair starts touching
  * instead, read from the last step (this is stage 1, before this step's
  * contacts exist). */
-static void world_collision(collision_aux_t *aux, const world_t *world) {
+static void world_collision(collision_aux_t *aux) {
     contact_t contact;
-    bool found = world_pair_contact(world, aux->body1, aux->body2, &contact);
+    bool found = scene_world_pair_contact(aux->scene, aux->body1, aux->body2, &contact);
     if (!found || !contact.touching) {
         /* Apart by no more than PARTING_DISTANCE: still together. */
         if (!found || parted(&contact)) aux->colliding = false;
@@ -367,9 +367,8 @@ static void world_collision(collision_aux_t *aux, const world_t *world) {
 
 static void collision_force_creator(void *data) {
     collision_aux_t *aux = data;
-    const world_t *world = scene_get_world(aux->scene);
-    if (world != NULL && world_pair_collides(aux->body1, aux->body2)) {
-        world_collision(aux, world);
+    if (scene_world_resolves(aux->scene, aux->body1, aux->body2)) {
+        world_collision(aux);
     } else {
         seed_collision(aux);
     }

@@ -40,8 +40,10 @@ struct scene {
     /* The dt of the tick in progress, for the message of one that fails. */
     double dt;
 
-    /* The world contact pipeline; NULL while contacts are off. */
+    /* The world contact pipeline and its functions; NULL while contacts
+     * are off. */
     world_t *world;
+    const world_ops_t *world_ops;
     size_t velocity_iterations, position_iterations;
 
     /* Seed collisions are recorded as they happen; world contacts are
@@ -101,7 +103,7 @@ void scene_free(scene_t *scene) {
     memory_free(scene->record);
     memory_free(scene->motions);
     integrator_stages_free(scene->stages);
-    if (scene->world != NULL) world_free(scene->world);
+    scene_install_world(scene, NULL, NULL);
     memory_free(scene);
 }
 
@@ -204,14 +206,16 @@ int scene_get_stage(const scene_t *scene) {
     return scene->stage;
 }
 
-void scene_set_contacts_enabled(scene_t *scene, bool enabled) {
-    REQUIRE_NOT_NULL(scene);
-    if (enabled && scene->world == NULL) {
-        scene->world = world_init(scene->velocity_iterations, scene->position_iterations);
-    } else if (!enabled && scene->world != NULL) {
-        world_free(scene->world);
-        scene->world = NULL;
-    }
+void scene_install_world(scene_t *scene, world_t *world, const world_ops_t *ops) {
+    if (scene->world != NULL) scene->world_ops->free(scene->world);
+    scene->world = world;
+    scene->world_ops = ops;
+}
+
+void scene_get_iterations(const scene_t *scene, size_t *velocity_iterations,
+                          size_t *position_iterations) {
+    *velocity_iterations = scene->velocity_iterations;
+    *position_iterations = scene->position_iterations;
 }
 
 bool scene_get_contacts_enabled(scene_t *scene) {
@@ -229,7 +233,7 @@ void scene_set_solver_iterations(scene_t *scene, size_t velocity_iterations,
     scene->velocity_iterations = velocity_iterations;
     scene->position_iterations = position_iterations;
     if (scene->world != NULL) {
-        world_set_iterations(scene->world, velocity_iterations, position_iterations);
+        scene->world_ops->set_iterations(scene->world, velocity_iterations, position_iterations);
     }
 }
 
@@ -238,11 +242,11 @@ static void publish_world_record(scene_t *scene) {
     if (!scene->record_needs_world) return;
     scene->record_needs_world = false;
     if (scene->world == NULL) return;
-    size_t count = world_contact_count(scene->world);
+    size_t count = scene->world_ops->contact_count(scene->world);
     memory_reserve((void **)&scene->record, &scene->record_capacity, scene->record_count + count,
                    sizeof(contact_t));
     for (size_t i = 0; i < count; i++) {
-        scene->record[scene->record_count++] = world_get_contact(scene->world, i);
+        scene->record[scene->record_count++] = scene->world_ops->get_contact(scene->world, i);
     }
 }
 
@@ -271,8 +275,14 @@ void scene_record_contact(scene_t *scene, const contact_t *entry) {
     scene->record[scene->record_count++] = *entry;
 }
 
-world_t *scene_get_world(scene_t *scene) {
-    return scene->world;
+bool scene_world_resolves(const scene_t *scene, const body_t *body1, const body_t *body2) {
+    return scene->world != NULL && scene->world_ops->pair_collides(body1, body2);
+}
+
+bool scene_world_pair_contact(const scene_t *scene, body_t *body1, body_t *body2,
+                              contact_t *contact) {
+    return scene->world != NULL &&
+           scene->world_ops->pair_contact(scene->world, body1, body2, contact);
 }
 
 size_t scene_body_index(const scene_t *scene, const body_t *body) {
@@ -426,8 +436,8 @@ void scene_tick(scene_t *scene, double dt) {
     stage_motion(scene, dt);
     if (scene->world != NULL && scene->body_count > 0) {
         world_step_t step = {dt, integrator_position_weight(scene->integrator)};
-        world_step(scene->world, scene->bodies, scene->motions, scene->body_count, &step,
-                   &scene->stats);
+        scene->world_ops->step(scene->world, scene->bodies, scene->motions, scene->body_count,
+                               &step, &scene->stats);
         scene->record_needs_world = true;
     }
     if (stage_integrate(scene)) stage_reap(scene);

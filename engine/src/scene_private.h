@@ -15,9 +15,38 @@ void scene_record_contact(scene_t *scene, const contact_t *entry);
  * scene; a body in no scene yet becomes this scene's, to be added here. */
 void scene_claim_body(scene_t *scene, body_t *body, const char *name, const char *function);
 
-/* The scene's world contact pipeline, NULL while contacts are off. Between
- * ticks (and in stage 1) it holds the contacts of the last step. */
-world_t *scene_get_world(scene_t *scene);
+/*
+ * The world contact pipeline as the scene calls it. scene_contacts.c
+ * installs it when contacts are enabled, so a program that never enables
+ * them links none of the broadphase, narrowphase, colouring or solver
+ * (make check asserts it with nm).
+ */
+typedef struct {
+    void (*free)(world_t *world);
+    void (*set_iterations)(world_t *world, size_t velocity_iterations,
+                           size_t position_iterations);
+    void (*step)(world_t *world, body_t **bodies, integrator_motion_t *motions, size_t count,
+                 const world_step_t *step, scene_stats_t *stats);
+    size_t (*contact_count)(const world_t *world);
+    contact_t (*get_contact)(const world_t *world, size_t index);
+    bool (*pair_collides)(const body_t *body1, const body_t *body2);
+    bool (*pair_contact)(const world_t *world, body_t *body1, body_t *body2, contact_t *contact);
+} world_ops_t;
+
+/* Hands the scene a world (NULL with ops NULL: contacts off), freeing the
+ * one it had. */
+void scene_install_world(scene_t *scene, world_t *world, const world_ops_t *ops);
+
+/* The solver iterations the scene keeps for its world. */
+void scene_get_iterations(const scene_t *scene, size_t *velocity_iterations,
+                          size_t *position_iterations);
+
+/* Whether world contacts resolve the pair (contacts on and the world's
+ * filters allow it), and the pair's contact of the last step (false when
+ * it had none): between ticks and in stage 1. */
+bool scene_world_resolves(const scene_t *scene, const body_t *body1, const body_t *body2);
+bool scene_world_pair_contact(const scene_t *scene, body_t *body1, body_t *body2,
+                              contact_t *contact);
 
 /* For the message of a tick that fails: the body's index in the scene
  * (SIZE_MAX when it is not in it) and the dt of the tick in progress. */

@@ -1,0 +1,22 @@
+/* scene_set_contacts_enabled: the one place that links the world contact
+ * pipeline into a program (scene_private.h says why). */
+#include "check.h"
+#include "scene_private.h"
+#include "world.h"
+
+static const world_ops_t WORLD_OPS = {
+    world_free,         world_set_iterations, world_step,         world_contact_count,
+    world_get_contact,  world_pair_collides,  world_pair_contact,
+};
+
+void scene_set_contacts_enabled(scene_t *scene, bool enabled) {
+    REQUIRE_NOT_NULL(scene);
+    if (enabled == scene_get_contacts_enabled(scene)) return;
+    if (!enabled) {
+        scene_install_world(scene, NULL, NULL);
+        return;
+    }
+    size_t velocity_iterations, position_iterations;
+    scene_get_iterations(scene, &velocity_iterations, &position_iterations);
+    scene_install_world(scene, world_init(velocity_iterations, position_iterations), &WORLD_OPS);
+}
