@@ -670,9 +670,11 @@ static void handler_fires_once_per_meeting_at_any_speed_and_elasticity(void) {
 static void resting_pair_fires_once_and_again_after_parting(void) {
     /* A box resting on a static floor under gravity: touching at every step,
      * one call. The world has no contact before its first step, so the call
-     * comes at the second tick. */
+     * comes at the second tick. Sleeping off: the test reads the resting
+     * contact at every step (sleeping_pair_does_not_fire_again covers it). */
     scene_t *scene = scene_init();
     scene_set_contacts_enabled(scene, true);
+    scene_set_sleeping(scene, false);
     scene_set_gravity(scene, (vector_t){0, -10});
     body_t *floor = added(scene, body_init(polygon_make_box((vector_t){0, -0.5}, 10, 0.5),
                                            INFINITY, BLUE));

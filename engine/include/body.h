@@ -95,6 +95,12 @@ void body_set_color(body_t *body, rgb_color_t color);
 /* Adds a force (N) through the centroid, acting until the next tick. */
 void body_add_force(body_t *body, vector_t force);
 
+/* Whether the scene's world contacts have put the body to sleep
+ * (scene_set_sleeping): it rests and takes no part in steps until touched
+ * by a moving body, or until a pose, velocity, nonzero force, torque or
+ * impulse is set on it, or a body of its resting group is removed. */
+bool body_is_sleeping(body_t *body);
+
 /* Adds an impulse (N s) through the centroid, applied at the next tick. */
 void body_add_impulse(body_t *body, vector_t impulse);
 

@@ -204,6 +204,21 @@ int scene_get_stage(const scene_t *scene);
 void scene_set_contacts_enabled(scene_t *scene, bool enabled);
 bool scene_get_contacts_enabled(scene_t *scene);
 
+/*
+ * Sleeping (default on; it acts only while world contacts are on): an
+ * island of touching bodies whose every body has moved slower than 0.01 m/s
+ * and 2 degrees/s for 0.5 s, and that rests on a body of infinite mass (or
+ * feels no force and no gravity), is taken out of the step: no integration,
+ * no contacts, no solving, its velocities 0 (body_is_sleeping). It wakes
+ * when a moving body comes within a step of it, when a pose, velocity,
+ * nonzero force, torque or impulse is set on one of its bodies, or when one
+ * of them is removed. A sleeping pair's contacts are not in the record, and
+ * its collision handler neither fires nor re-arms while it sleeps.
+ * Switching sleeping (or world contacts) off wakes every body.
+ */
+void scene_set_sleeping(scene_t *scene, bool enabled);
+bool scene_get_sleeping(scene_t *scene);
+
 /* Contact solver iterations per step: velocity (default 8) and position
  * (default 4); each in [1, 1000]. More iterations: stiffer stacks, slower
  * steps (a 40-row pyramid sinks 0.12 m in 10 s with 3 position iterations,

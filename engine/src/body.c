@@ -113,6 +113,7 @@ body_t *body_init(list_t *shape, double mass, rgb_color_t color) {
 
 void body_free(body_t *body) {
     REQUIRE_NOT_NULL(body);
+    body_wake(body);
     if (body->info_freer != NULL) body->info_freer(body->info);
     memory_free(body->local_vertices);
     memory_free(body->local_normals);
@@ -193,17 +194,35 @@ void *body_get_info(body_t *body) {
     return body->info;
 }
 
+void body_wake(body_t *body) {
+    body_t *member = body;
+    do {
+        body_t *next = member->sleep_next;
+        member->asleep = false;
+        member->sleep_time = 0.0;
+        member->sleep_next = NULL;
+        member = next;
+    } while (member != NULL && member != body);
+}
+
+bool body_is_sleeping(body_t *body) {
+    REQUIRE_NOT_NULL(body);
+    return body->asleep;
+}
+
 void body_set_centroid(body_t *body, vector_t x) {
     REQUIRE_NOT_NULL(body);
     REQUIRE_FINITE_VECTOR(x);
     body->centroid = x;
     body->world_valid = false;
+    body_wake(body);
 }
 
 void body_set_velocity(body_t *body, vector_t v) {
     REQUIRE_NOT_NULL(body);
     REQUIRE_FINITE_VECTOR(v);
     body->velocity = v;
+    body_wake(body);
 }
 
 void body_set_rotation(body_t *body, double angle) {
@@ -211,6 +230,7 @@ void body_set_rotation(body_t *body, double angle) {
     REQUIRE_FINITE(angle);
     body->angle = angle;
     body->world_valid = false;
+    body_wake(body);
 }
 
 void body_set_color(body_t *body, rgb_color_t color) {
@@ -222,18 +242,21 @@ void body_add_force(body_t *body, vector_t force) {
     REQUIRE_NOT_NULL(body);
     REQUIRE_FINITE_VECTOR(force);
     body->force = vec_add(body->force, force);
+    if (force.x != 0.0 || force.y != 0.0) body_wake(body);
 }
 
 void body_add_impulse(body_t *body, vector_t impulse) {
     REQUIRE_NOT_NULL(body);
     REQUIRE_FINITE_VECTOR(impulse);
     body->impulse = vec_add(body->impulse, impulse);
+    if (impulse.x != 0.0 || impulse.y != 0.0) body_wake(body);
 }
 
 void body_add_torque(body_t *body, double torque) {
     REQUIRE_NOT_NULL(body);
     REQUIRE_FINITE(torque);
     body->torque += torque;
+    if (torque != 0.0) body_wake(body);
 }
 
 void body_add_force_at(body_t *body, vector_t force, vector_t point) {
@@ -242,6 +265,7 @@ void body_add_force_at(body_t *body, vector_t force, vector_t point) {
     REQUIRE_FINITE_VECTOR(point);
     body->force = vec_add(body->force, force);
     body->torque += vec_cross(vec_subtract(point, body->centroid), force);
+    if (force.x != 0.0 || force.y != 0.0) body_wake(body);
 }
 
 void body_add_impulse_at(body_t *body, vector_t impulse, vector_t point) {
@@ -250,6 +274,7 @@ void body_add_impulse_at(body_t *body, vector_t impulse, vector_t point) {
     REQUIRE_FINITE_VECTOR(point);
     body->impulse = vec_add(body->impulse, impulse);
     body->angular_impulse += vec_cross(vec_subtract(point, body->centroid), impulse);
+    if (impulse.x != 0.0 || impulse.y != 0.0) body_wake(body);
 }
 
 vector_t body_get_point_velocity(body_t *body, vector_t point) {
@@ -315,6 +340,7 @@ void body_reset(body_t *body) {
 void body_remove(body_t *body) {
     REQUIRE_NOT_NULL(body);
     body->removed = true;
+    body_wake(body);
 }
 
 bool body_is_removed(body_t *body) {
@@ -331,6 +357,7 @@ void body_set_angular_velocity(body_t *body, double omega) {
     REQUIRE_NOT_NULL(body);
     REQUIRE_FINITE(omega);
     body->angular_velocity = omega;
+    body_wake(body);
 }
 
 double body_get_inertia(body_t *body) {
@@ -345,6 +372,7 @@ void body_set_inertia(body_t *body, double inertia) {
             inertia);
     body->inertia = inertia;
     body->inverse_inertia = isinf(inertia) ? 0.0 : 1.0 / inertia;
+    body_wake(body);
 }
 
 double body_get_elasticity(body_t *body) {
@@ -376,6 +404,7 @@ void body_set_collision_filter(body_t *body, uint32_t category, uint32_t mask, u
     body->category = category;
     body->mask = mask;
     body->group = group;
+    body_wake(body);
 }
 
 bool body_contains_point(body_t *body, vector_t point) {

@@ -58,12 +58,26 @@ struct body {
     uint32_t id;
     /* Set by the scene each step: the body's row in the solver's arrays. */
     uint32_t solver_index;
+    /* Sleeping (sleep.c): asleep bodies are left out of the step; the
+     * bodies of one sleeping island are linked in a circle by sleep_next
+     * (NULL when awake); sleep_time is how long the body has been slow (s). */
+    bool asleep;
+    double sleep_time;
+    struct body *sleep_next;
     /* Set by the contact pipeline: the contacts this body had as body a in
      * step contact_step of its world, at [contact_first, contact_first +
      * contact_count) of that step's contact buffer (world.c). */
     uint32_t contact_first, contact_count;
     uint64_t contact_step;
 };
+
+/* Wakes the body and every body of its sleeping island. */
+void body_wake(body_t *body);
+
+/* Whether the body can be moved by contacts (finite mass or inertia). */
+static inline bool body_is_movable(const body_t *body) {
+    return body->inverse_mass > 0.0 || body->inverse_inertia > 0.0;
+}
 
 /* Recomputes the world vertices, normals and bounds if the pose changed. */
 void body_update_world(body_t *body);

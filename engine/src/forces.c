@@ -274,6 +274,8 @@ typedef struct {
     void *aux;
     double force_const;
     bool colliding;
+    /* The pair slept at the last step, which computed no contact for it. */
+    bool slept;
 } collision_aux_t;
 
 /* The vertex of `body` deepest along -axis: where body2 reaches furthest into
@@ -344,8 +346,18 @@ static bool parted(const contact_t *contact) {
  * instead, read from the last step (this is stage 1, before this step's
  * contacts exist). */
 static void world_collision(collision_aux_t *aux) {
+    /* A sleeping pair keeps its state: no contact is computed for it, nor
+     * in the step it slept through when it wakes. */
+    if (aux->body1->asleep || aux->body2->asleep) {
+        aux->slept = true;
+        return;
+    }
     contact_t contact;
     bool found = scene_world_pair_contact(aux->scene, aux->body1, aux->body2, &contact);
+    if (aux->slept) {
+        aux->slept = false;
+        if (!found) return;
+    }
     if (!found || !contact.touching) {
         /* Apart by no more than PARTING_DISTANCE: still together. */
         if (!found || parted(&contact)) aux->colliding = false;
@@ -383,7 +395,7 @@ void create_collision(scene_t *scene, body_t *body1, body_t *body2,
     REQUIRE(body1 != body2, "a body cannot collide with itself");
     claim_pair(scene, body1, body2, __func__);
     collision_aux_t *collision = memory_alloc(sizeof(collision_aux_t));
-    *collision = (collision_aux_t){scene, body1, body2, handler, aux, force_const, false};
+    *collision = (collision_aux_t){scene, body1, body2, handler, aux, force_const, false, false};
     scene_add_bodies_force_creator(scene, collision_force_creator, collision,
                                    bodies_list(body1, body2), memory_free);
 }

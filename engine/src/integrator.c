@@ -160,14 +160,21 @@ void integrator_begin(integrator_t integrator, body_t **bodies, size_t count,
     (*stages)->begun = count;
 }
 
-/* The accelerations of a body under its accumulated force and torque. */
-static dof_t acceleration_of(const body_t *body, vector_t gravity) {
-    dof_t a = {0.0, 0.0, body->inverse_inertia * body->torque};
+/* The accelerations of a body under a force and torque and gravity; none
+ * for a sleeping body, which rests on what holds it. */
+static dof_t acceleration_under(const body_t *body, vector_t force, double torque,
+                                vector_t gravity) {
+    dof_t a = {0.0, 0.0, body->inverse_inertia * torque};
+    if (body->asleep) return (dof_t){0.0, 0.0, 0.0};
     if (body->inverse_mass != 0.0) {
-        a.x = body->inverse_mass * body->force.x + gravity.x;
-        a.y = body->inverse_mass * body->force.y + gravity.y;
+        a.x = body->inverse_mass * force.x + gravity.x;
+        a.y = body->inverse_mass * force.y + gravity.y;
     }
     return a;
+}
+
+static dof_t acceleration_of(const body_t *body, vector_t gravity) {
+    return acceleration_under(body, body->force, body->torque, gravity);
 }
 
 /* The free motion of the one-stage schemes: the velocity changes by the
@@ -217,14 +224,9 @@ static void evaluate_stage(const integrator_step_t *step, body_t **bodies, stage
                            size_t count) {
     if (step->evaluate == NULL) {
         for (size_t i = 0; i < count; i++) {
-            const body_t *body = bodies[i];
             const dof_t *f = &rows[i].external;
-            dof_t a = {0.0, 0.0, body->inverse_inertia * f->angle};
-            if (body->inverse_mass != 0.0) {
-                a.x = body->inverse_mass * f->x + step->gravity.x;
-                a.y = body->inverse_mass * f->y + step->gravity.y;
-            }
-            rows[i].a = a;
+            rows[i].a = acceleration_under(bodies[i], (vector_t){f->x, f->y}, f->angle,
+                                           step->gravity);
         }
         return;
     }

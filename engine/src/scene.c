@@ -28,6 +28,8 @@ struct scene {
 
     vector_t gravity;
     integrator_t integrator;
+    /* Whether slow islands sleep while world contacts are on. */
+    bool sleeping;
     /* Each body's motion over the step in progress (integrator.h), and the
      * multi-stage schemes' storage; reused from step to step. */
     integrator_motion_t *motions;
@@ -57,6 +59,7 @@ struct scene {
 scene_t *scene_init(void) {
     scene_t *scene = memory_calloc(1, sizeof(scene_t));
     scene->integrator = INTEGRATOR_SEED;
+    scene->sleeping = true;
     scene->velocity_iterations = 8;
     scene->position_iterations = 4;
     return scene;
@@ -95,6 +98,7 @@ static void release_unowned_bodies(scene_t *scene) {
 
 void scene_free(scene_t *scene) {
     REQUIRE_NOT_NULL(scene);
+    scene_install_world(scene, NULL, NULL);
     release_unowned_bodies(scene);
     for (size_t i = 0; i < scene->force_count; i++) force_entry_free(&scene->forces[i]);
     for (size_t i = 0; i < scene->body_count; i++) body_free(scene->bodies[i]);
@@ -103,7 +107,6 @@ void scene_free(scene_t *scene) {
     memory_free(scene->record);
     memory_free(scene->motions);
     integrator_stages_free(scene->stages);
-    scene_install_world(scene, NULL, NULL);
     memory_free(scene);
 }
 
@@ -206,8 +209,26 @@ int scene_get_stage(const scene_t *scene) {
     return scene->stage;
 }
 
+static void wake_all(scene_t *scene) {
+    for (size_t i = 0; i < scene->body_count; i++) {
+        if (scene->bodies[i]->asleep) body_wake(scene->bodies[i]);
+    }
+}
+
+void scene_set_sleeping(scene_t *scene, bool enabled) {
+    REQUIRE_NOT_NULL(scene);
+    scene->sleeping = enabled;
+    if (!enabled) wake_all(scene);
+}
+
+bool scene_get_sleeping(scene_t *scene) {
+    REQUIRE_NOT_NULL(scene);
+    return scene->sleeping;
+}
+
 void scene_install_world(scene_t *scene, world_t *world, const world_ops_t *ops) {
     if (scene->world != NULL) scene->world_ops->free(scene->world);
+    if (world == NULL) wake_all(scene);
     scene->world = world;
     scene->world_ops = ops;
 }
@@ -435,7 +456,7 @@ void scene_tick(scene_t *scene, double dt) {
     scene->stage_force_count = 0;
     stage_motion(scene, dt);
     if (scene->world != NULL && scene->body_count > 0) {
-        world_step_t step = {dt, integrator_position_weight(scene->integrator)};
+        world_step_t step = {dt, integrator_position_weight(scene->integrator), scene->sleeping};
         scene->world_ops->step(scene->world, scene->bodies, scene->motions, scene->body_count,
                                &step, &scene->stats);
         scene->record_needs_world = true;

@@ -10,6 +10,7 @@
 #include "scene_private.h"
 #include "solver.h"
 #include "shock.h"
+#include "sleep.h"
 #include "solver_wide.h"
 
 /* Every body's box is enlarged by how far it can move in a step plus this
@@ -81,6 +82,19 @@ struct world {
     solver_wide_t wide;
     shock_t shock;
     int velocity_iterations, position_iterations;
+
+    /* Sleeping: the awake bodies of the step, their motions and where
+     * those came from; each body's reach over the next step; the touching
+     * contacts that join islands. */
+    sleep_t sleep;
+    body_t **active;
+    integrator_motion_t *active_motions;
+    size_t *active_index;
+    size_t active_capacity, active_motion_capacity, active_index_capacity;
+    aabb_t *reach;
+    size_t reach_capacity;
+    sleep_link_t *links;
+    size_t link_capacity;
 };
 
 world_t *world_init(size_t velocity_iterations, size_t position_iterations) {
@@ -104,6 +118,12 @@ void world_free(world_t *world) {
     memory_free(world->old_sources);
     solver_wide_free(&world->wide);
     shock_free(&world->shock);
+    sleep_free(&world->sleep);
+    memory_free(world->active);
+    memory_free(world->active_motions);
+    memory_free(world->active_index);
+    memory_free(world->reach);
+    memory_free(world->links);
     memory_free(world);
 }
 
@@ -347,8 +367,56 @@ static void write_back(const world_t *world, integrator_motion_t *motions, size_
     }
 }
 
-void world_step(world_t *world, body_t **bodies, integrator_motion_t *motions, size_t count,
-                const world_step_t *step, scene_stats_t *stats) {
+/* Whether a contact holds its bodies together this step. */
+static bool is_touching(const solver_contact_t *c) {
+    for (int j = 0; j < c->point_count; j++) {
+        const solver_point_t *p = &c->points[j];
+        if (p->separation <= 0.0 || p->normal_impulse + p->restitution_impulse > 0.0) return true;
+    }
+    return false;
+}
+
+/* Overlap the position pass is still pushing out: deeper than half again
+ * its slop. */
+static bool is_settled(const solver_contact_t *c) {
+    for (int j = 0; j < c->point_count; j++) {
+        if (c->points[j].separation < -1.5 * c->slop) return false;
+    }
+    return true;
+}
+
+/* Hands the step to sleep.c: the touching contacts and each body's reach
+ * (its box over this step, grown by what its end velocities cover in the
+ * next). */
+static void update_sleep(world_t *world, body_t **bodies, size_t count, double dt,
+                         body_t **all_bodies, size_t all_count) {
+    memory_reserve((void **)&world->reach, &world->reach_capacity, count, sizeof(aabb_t));
+    memory_reserve((void **)&world->links, &world->link_capacity, world->contact_count,
+                   sizeof(sleep_link_t));
+    for (size_t i = 0; i < count; i++) {
+        const solver_velocity_t *row = &world->velocities[i];
+        double grow = dt * (vec_get_length(row->v) + fabs(row->w) * bodies[i]->radius) +
+                      CONTACT_MARGIN;
+        aabb_t box = world->proxies[i].box;
+        world->reach[i] = (aabb_t){{box.min.x - grow, box.min.y - grow},
+                                   {box.max.x + grow, box.max.y + grow}};
+    }
+    size_t link_count = 0;
+    for (size_t i = 0; i < world->contact_count; i++) {
+        const solver_contact_t *c = &world->contacts[i];
+        if (is_touching(c)) world->links[link_count++] = (sleep_link_t){c->a, c->b, is_settled(c)};
+    }
+    sleep_step_t step = {bodies,       world->velocities, world->displacements,
+                         world->states, world->reach,      count,
+                         dt};
+    sleep_update(&world->sleep, &step, world->links, link_count, all_bodies, all_count);
+}
+
+/* The pipeline over bodies[0 .. count), which are all the scene's bodies
+ * or, with sleeping, its awake ones. */
+static void run_pipeline(world_t *world, body_t **bodies, integrator_motion_t *motions,
+                         size_t count, const world_step_t *step, scene_stats_t *stats,
+                         body_t **all_bodies, size_t all_count) {
     load_bodies(world, bodies, motions, count, step);
     const broadphase_pair_t *pairs;
     size_t pair_count = broadphase_find_pairs(world->broadphase, world->proxies, count, &pairs,
@@ -359,6 +427,7 @@ void world_step(world_t *world, body_t **bodies, integrator_motion_t *motions, s
     solver_bodies_t rows = {world->velocities, world->displacements, world->states, count};
     solver_solve(&world->wide, &world->shock, world->contacts, world->anchors,
                  world->contact_count, &rows, &settings);
+    if (step->sleeping) update_sleep(world, bodies, count, step->dt, all_bodies, all_count);
     write_back(world, motions, count);
 
     stats->broadphase_pairs += pair_count;
@@ -366,6 +435,35 @@ void world_step(world_t *world, body_t **bodies, integrator_motion_t *motions, s
     for (size_t i = 0; i < world->contact_count; i++) {
         stats->contact_points += (size_t)world->contacts[i].point_count;
     }
+}
+
+/* The awake bodies and copies of their motions; returns how many. */
+static size_t gather_awake(world_t *world, body_t **bodies, const integrator_motion_t *motions,
+                           size_t count) {
+    memory_reserve((void **)&world->active, &world->active_capacity, count, sizeof(body_t *));
+    memory_reserve((void **)&world->active_motions, &world->active_motion_capacity, count,
+                   sizeof(integrator_motion_t));
+    memory_reserve((void **)&world->active_index, &world->active_index_capacity, count,
+                   sizeof(size_t));
+    size_t active = 0;
+    for (size_t i = 0; i < count; i++) {
+        if (bodies[i]->asleep) continue;
+        world->active[active] = bodies[i];
+        world->active_motions[active] = motions[i];
+        world->active_index[active++] = i;
+    }
+    return active;
+}
+
+void world_step(world_t *world, body_t **bodies, integrator_motion_t *motions, size_t count,
+                const world_step_t *step, scene_stats_t *stats) {
+    if (!step->sleeping) {
+        run_pipeline(world, bodies, motions, count, step, stats, bodies, count);
+        return;
+    }
+    size_t active = gather_awake(world, bodies, motions, count);
+    run_pipeline(world, world->active, world->active_motions, active, step, stats, bodies, count);
+    for (size_t k = 0; k < active; k++) motions[world->active_index[k]] = world->active_motions[k];
 }
 
 size_t world_contact_count(const world_t *world) {

@@ -30,6 +30,8 @@ typedef struct {
     double dt;
     /* integrator_position_weight of the scene's integrator */
     double position_weight;
+    /* Whether slow islands sleep (sleep.h): asleep bodies take no part. */
+    bool sleeping;
 } world_step_t;
 
 /* Runs the pipeline over bodies[0..count) (removed bodies take no part):

@@ -1,0 +1,201 @@
+#include "sleep.h"
+#include <math.h>
+#include <stdlib.h>
+#include "body_private.h"
+#include "memory.h"
+
+/* Box2D's tolerances (0.01 m/s, 2 degrees/s, half a second). */
+const double SLEEP_LINEAR_SPEED = 0.01;
+const double SLEEP_ANGULAR_SPEED = 2.0 * M_PI / 180.0;
+const double SLEEP_TIME = 0.5;
+/* The linear tolerance is at most this many body radii per second. */
+static const double SLEEP_SIZE_RATE = 0.02;
+
+struct sleep_entry {
+    double min_x;
+    body_t *body;
+};
+
+/* Per island root: whether every body is ready, and whether the island may
+ * sleep where it is (resting on something immovable, or pushed by
+ * nothing); its bodies are chained from first to last through sleep_next
+ * while it is built. */
+struct sleep_island {
+    bool ready, supported, pushed;
+    body_t *first, *last;
+};
+
+void sleep_free(sleep_t *sleep) {
+    memory_free(sleep->entries);
+    memory_free(sleep->parent);
+    memory_free(sleep->islands);
+}
+
+static uint32_t find_root(uint32_t *parent, uint32_t i) {
+    while (parent[i] != i) {
+        parent[i] = parent[parent[i]];
+        i = parent[i];
+    }
+    return i;
+}
+
+/* Slow: its velocities and its displacement over the step (which holds
+ * the position correction, a motion without velocity) within the
+ * tolerances, the linear one shrunk for small bodies (a centimetre box
+ * at 0.01 m/s would still be settling). */
+static bool is_slow(const solver_velocity_t *row, const solver_displacement_t *moved, double dt,
+                    body_t *body) {
+    double linear = fmin(SLEEP_LINEAR_SPEED, SLEEP_SIZE_RATE * body->radius);
+    double speed2 = fmax(vec_get_length_squared(row->v),
+                         vec_get_length_squared(moved->dx) / (dt * dt));
+    double spin = fmax(fabs(row->w), fabs(moved->dtheta) / dt);
+    bool slow = speed2 <= linear * linear && spin <= SLEEP_ANGULAR_SPEED;
+    body->sleep_time = slow ? body->sleep_time + dt : 0.0;
+    return body->sleep_time >= SLEEP_TIME;
+}
+
+/* Joins the rows into islands over the touching links; an island is ready
+ * when every body has been slow for SLEEP_TIME. */
+static void build_islands(sleep_t *sleep, const sleep_step_t *step, const sleep_link_t *links,
+                          size_t link_count) {
+    memory_reserve((void **)&sleep->parent, &sleep->parent_capacity, step->count,
+                   sizeof(uint32_t));
+    memory_reserve((void **)&sleep->islands, &sleep->island_capacity, step->count,
+                   sizeof(struct sleep_island));
+    for (size_t i = 0; i < step->count; i++) {
+        sleep->parent[i] = (uint32_t)i;
+        sleep->islands[i] = (struct sleep_island){true, false, false, NULL, NULL};
+    }
+    for (size_t k = 0; k < link_count; k++) {
+        body_t *a = step->bodies[links[k].a], *b = step->bodies[links[k].b];
+        bool movable_a = body_is_movable(a), movable_b = body_is_movable(b);
+        if (movable_a && movable_b) {
+            uint32_t ra = find_root(sleep->parent, links[k].a);
+            uint32_t rb = find_root(sleep->parent, links[k].b);
+            if (ra != rb) sleep->parent[ra] = rb;
+        }
+    }
+    for (size_t k = 0; k < link_count; k++) {
+        body_t *a = step->bodies[links[k].a], *b = step->bodies[links[k].b];
+        if (!links[k].settled) {
+            sleep->islands[find_root(sleep->parent, links[k].a)].ready = false;
+            sleep->islands[find_root(sleep->parent, links[k].b)].ready = false;
+        }
+        /* Resting on a body that does not move (a floor, a wall). */
+        if (body_is_movable(a) && !body_is_movable(b)) {
+            sleep->islands[find_root(sleep->parent, links[k].a)].supported = true;
+        } else if (body_is_movable(b) && !body_is_movable(a)) {
+            sleep->islands[find_root(sleep->parent, links[k].b)].supported = true;
+        }
+    }
+    for (size_t i = 0; i < step->count; i++) {
+        body_t *body = step->bodies[i];
+        struct sleep_island *island = &sleep->islands[find_root(sleep->parent, (uint32_t)i)];
+        if (!body_is_movable(body) || body->removed) {
+            if (body_is_movable(body)) island->ready = false;
+            continue;
+        }
+        if (!is_slow(&step->velocities[i], &step->displacements[i], step->dt, body)) {
+            island->ready = false;
+        }
+        vector_t a = step->states[i].acceleration;
+        if (a.x != 0.0 || a.y != 0.0) island->pushed = true;
+    }
+}
+
+/* Puts the ready islands to sleep, each body's velocities to 0 and its
+ * island linked in a circle; returns how many bodies fell asleep. */
+static size_t sleep_islands(sleep_t *sleep, const sleep_step_t *step) {
+    size_t slept = 0;
+    for (size_t i = 0; i < step->count; i++) {
+        body_t *body = step->bodies[i];
+        if (!body_is_movable(body) || body->removed) continue;
+        struct sleep_island *island = &sleep->islands[find_root(sleep->parent, (uint32_t)i)];
+        if (!island->ready || (island->pushed && !island->supported)) continue;
+        body->asleep = true;
+        step->velocities[i].v = VEC_ZERO;
+        step->velocities[i].w = 0.0;
+        if (island->first == NULL) {
+            island->first = body;
+        } else {
+            island->last->sleep_next = body;
+        }
+        island->last = body;
+        slept++;
+    }
+    for (size_t i = 0; i < step->count; i++) {
+        struct sleep_island *island = &sleep->islands[i];
+        if (island->first != NULL) island->last->sleep_next = island->first;
+    }
+    return slept;
+}
+
+static int compare_entries(const void *a, const void *b) {
+    double x = ((const struct sleep_entry *)a)->min_x, y = ((const struct sleep_entry *)b)->min_x;
+    return (x > y) - (x < y);
+}
+
+static size_t count_asleep(body_t **bodies, size_t count) {
+    size_t asleep = 0;
+    for (size_t i = 0; i < count; i++) asleep += bodies[i]->asleep;
+    return asleep;
+}
+
+/* The index of the sleeping bodies, sorted by the left edges of their
+ * boxes. */
+static void rebuild_index(sleep_t *sleep, body_t **bodies, size_t count, size_t asleep) {
+    memory_reserve((void **)&sleep->entries, &sleep->capacity, asleep,
+                   sizeof(struct sleep_entry));
+    sleep->count = 0;
+    sleep->widest = 0.0;
+    for (size_t i = 0; i < count; i++) {
+        body_t *body = bodies[i];
+        if (!body->asleep) continue;
+        body_update_world(body);
+        sleep->entries[sleep->count++] = (struct sleep_entry){body->bounds.min.x, body};
+        sleep->widest = fmax(sleep->widest, body->bounds.max.x - body->bounds.min.x);
+    }
+    qsort(sleep->entries, sleep->count, sizeof(struct sleep_entry), compare_entries);
+}
+
+static bool boxes_overlap(aabb_t a, aabb_t b) {
+    return a.min.x <= b.max.x && b.min.x <= a.max.x && a.min.y <= b.max.y && b.min.y <= a.max.y;
+}
+
+/* Wakes every sleeping island whose box the reach overlaps. */
+static void wake_within(const sleep_t *sleep, aabb_t reach) {
+    /* The first entry whose left edge may lie within reach. */
+    double from = reach.min.x - sleep->widest;
+    size_t low = 0, high = sleep->count;
+    while (low < high) {
+        size_t middle = (low + high) / 2;
+        if (sleep->entries[middle].min_x < from) {
+            low = middle + 1;
+        } else {
+            high = middle;
+        }
+    }
+    for (size_t k = low; k < sleep->count && sleep->entries[k].min_x <= reach.max.x; k++) {
+        body_t *body = sleep->entries[k].body;
+        if (body->asleep && boxes_overlap(reach, body->bounds)) body_wake(body);
+    }
+}
+
+void sleep_update(sleep_t *sleep, const sleep_step_t *step, const sleep_link_t *links,
+                  size_t link_count, body_t **all_bodies, size_t all_count) {
+    build_islands(sleep, step, links, link_count);
+    size_t slept = sleep_islands(sleep, step);
+    size_t asleep = count_asleep(all_bodies, all_count);
+    if (slept > 0 || asleep != sleep->count) rebuild_index(sleep, all_bodies, all_count, asleep);
+    if (sleep->count == 0) return;
+    /* A body wakes others when it moved faster than the sleep tolerances
+     * this step (its timer restarted), not when it creeps: a pile's last
+     * settling body would otherwise wake its sleeping neighbours forever. */
+    for (size_t i = 0; i < step->count; i++) {
+        const body_t *body = step->bodies[i];
+        const solver_velocity_t *row = &step->velocities[i];
+        bool moving = (row->v.x != 0.0 || row->v.y != 0.0 || row->w != 0.0) &&
+                      body->sleep_time == 0.0;
+        if (!body->asleep && !body->removed && moving) wake_within(sleep, step->reach[i]);
+    }
+}

@@ -1,0 +1,212 @@
+/* Sleeping (scene_set_sleeping): resting islands leave the step and wake
+ * when touched, pushed, moved or undermined; nothing sleeps in mid-air. */
+#include <math.h>
+#include "engine.h"
+#include "test.h"
+
+static const double DT = 1.0 / 60.0;
+static const rgb_color_t GREY = {0.5, 0.5, 0.5};
+
+static scene_t *sleep_scene(void) {
+    scene_t *scene = scene_init();
+    scene_set_gravity(scene, (vector_t){0.0, -10.0});
+    scene_set_contacts_enabled(scene, true);
+    scene_add_body(scene, body_init(polygon_make_box((vector_t){0, -0.5}, 40, 0.5), INFINITY,
+                                    GREY));
+    return scene;
+}
+
+static body_t *add_box(scene_t *scene, double x, double y) {
+    body_t *box = body_init(polygon_make_box((vector_t){x, y}, 0.5, 0.5), 1.0, GREY);
+    scene_add_body(scene, box);
+    return box;
+}
+
+static void run(scene_t *scene, int steps) {
+    for (int i = 0; i < steps; i++) scene_tick(scene, DT);
+}
+
+/* A stack of `count` boxes standing at x. */
+static void add_stack(scene_t *scene, double x, body_t **boxes, int count) {
+    for (int j = 0; j < count; j++) boxes[j] = add_box(scene, x, 0.5 + j);
+}
+
+static int count_asleep(body_t **bodies, int count) {
+    int asleep = 0;
+    for (int i = 0; i < count; i++) asleep += body_is_sleeping(bodies[i]);
+    return asleep;
+}
+
+/* Thirty polygons dropped on the floor settle and all fall asleep; then a
+ * step computes no contact, and nothing moves. */
+static void settled_pile_falls_asleep(void) {
+    scene_t *scene = sleep_scene();
+    body_t *bodies[30];
+    for (int i = 0; i < 30; i++) {
+        list_t *shape = polygon_make_regular((size_t)(3 + i % 5), 0.5,
+                                             (vector_t){(i % 10) * 1.2 - 6.0, 1.0 + (i / 10) * 1.2},
+                                             0.3 * i);
+        bodies[i] = body_init(shape, 1.0, GREY);
+        scene_add_body(scene, bodies[i]);
+    }
+    run(scene, 20);
+    CHECK(count_asleep(bodies, 30) == 0); /* still falling */
+    run(scene, 1200);
+    CHECK(count_asleep(bodies, 30) == 30);
+    vector_t where[30];
+    for (int i = 0; i < 30; i++) where[i] = body_get_centroid(bodies[i]);
+    run(scene, 60);
+    scene_stats_t stats = scene_get_stats(scene);
+    CHECK(stats.contacts == 0);
+    CHECK(stats.broadphase_pairs == 0);
+    for (int i = 0; i < 30; i++) {
+        CHECK(body_get_centroid(bodies[i]).x == where[i].x);
+        CHECK(body_get_centroid(bodies[i]).y == where[i].y);
+        CHECK(body_get_velocity(bodies[i]).y == 0.0);
+    }
+    scene_free(scene);
+}
+
+/* Two stacks 20 m apart sleep; a box dropped on one wakes that one alone,
+ * which goes back to sleep once the box rests on it. */
+static void a_dropped_body_wakes_its_island_only(void) {
+    scene_t *scene = sleep_scene();
+    body_t *left[3], *right[3];
+    add_stack(scene, -10.0, left, 3);
+    add_stack(scene, 10.0, right, 3);
+    run(scene, 120);
+    CHECK(count_asleep(left, 3) == 3 && count_asleep(right, 3) == 3);
+    body_t *dropped = add_box(scene, -10.0, 6.0);
+    bool left_woke = false;
+    for (int i = 0; i < 600; i++) {
+        scene_tick(scene, DT);
+        left_woke |= count_asleep(left, 3) == 0;
+        CHECK(count_asleep(right, 3) == 3);
+    }
+    CHECK(left_woke);
+    CHECK(count_asleep(left, 3) == 3 && body_is_sleeping(dropped));
+    CHECK_NEAR(body_get_centroid(dropped).y, 3.5, 0.01);
+    scene_free(scene);
+}
+
+/* Removing the bottom box of a sleeping stack wakes the two above, which
+ * fall onto the floor's height. */
+static void removing_a_support_wakes_what_rested_on_it(void) {
+    scene_t *scene = sleep_scene();
+    body_t *boxes[3];
+    add_stack(scene, 0.0, boxes, 3);
+    run(scene, 120);
+    CHECK(count_asleep(boxes, 3) == 3);
+    body_remove(boxes[0]);
+    CHECK(!body_is_sleeping(boxes[1]) && !body_is_sleeping(boxes[2]));
+    run(scene, 180);
+    CHECK_NEAR(body_get_centroid(boxes[1]).y, 0.5, 0.01);
+    CHECK_NEAR(body_get_centroid(boxes[2]).y, 1.5, 0.02);
+    scene_free(scene);
+}
+
+/* A box thrown straight up stops for an instant at its apex, slower than
+ * the sleep speed for a step or two, and must not sleep there: only resting
+ * on something immovable does. It sleeps once it has landed. */
+static void no_body_sleeps_in_mid_air(void) {
+    scene_t *scene = sleep_scene();
+    body_t *box = add_box(scene, 0.0, 0.5);
+    body_set_velocity(box, (vector_t){0.0, 5.0});
+    for (int i = 0; i < 70; i++) {
+        scene_tick(scene, DT);
+        if (body_get_centroid(box).y > 0.51) CHECK(!body_is_sleeping(box));
+    }
+    run(scene, 120);
+    CHECK(body_is_sleeping(box));
+    /* Without gravity a body alone feels nothing and may sleep where it is;
+     * with a spring pulling it, never. */
+    scene_t *space = scene_init();
+    scene_set_contacts_enabled(space, true);
+    body_t *still = add_box(space, 0.0, 10.0);
+    body_t *anchor = body_init(polygon_make_box((vector_t){5, 10}, 0.1, 0.1), INFINITY, GREY);
+    scene_add_body(space, anchor);
+    body_t *pulled = add_box(space, 3.0, 10.0);
+    create_spring(space, 1.0, anchor, pulled);
+    for (int i = 0; i < 120; i++) {
+        scene_tick(space, DT);
+        CHECK(!body_is_sleeping(pulled));
+    }
+    CHECK(body_is_sleeping(still));
+    scene_free(space);
+    scene_free(scene);
+}
+
+/* Setting a velocity, a pose, a nonzero force or impulse wakes the island;
+ * a zero force (drag on a body at rest) does not. */
+static void setters_wake_the_island(void) {
+    scene_t *scene = sleep_scene();
+    body_t *boxes[2];
+    add_stack(scene, 0.0, boxes, 2);
+    run(scene, 120);
+    CHECK(count_asleep(boxes, 2) == 2);
+    body_add_force(boxes[1], VEC_ZERO);
+    body_add_impulse(boxes[1], VEC_ZERO);
+    CHECK(count_asleep(boxes, 2) == 2);
+    body_add_force(boxes[1], (vector_t){0.0, 1.0});
+    CHECK(count_asleep(boxes, 2) == 0);
+    run(scene, 120);
+    CHECK(count_asleep(boxes, 2) == 2);
+    body_set_velocity(boxes[0], (vector_t){0.5, 0.0});
+    CHECK(count_asleep(boxes, 2) == 0);
+    run(scene, 240);
+    CHECK(count_asleep(boxes, 2) == 2);
+    body_add_impulse(boxes[0], (vector_t){0.1, 0.0});
+    CHECK(count_asleep(boxes, 2) == 0);
+    scene_free(scene);
+}
+
+/* With sleeping off nothing sleeps, and switching it off wakes all. */
+static void switching_sleeping_off_wakes_everything(void) {
+    scene_t *scene = sleep_scene();
+    CHECK(scene_get_sleeping(scene));
+    body_t *boxes[2];
+    add_stack(scene, 0.0, boxes, 2);
+    run(scene, 120);
+    CHECK(count_asleep(boxes, 2) == 2);
+    scene_set_sleeping(scene, false);
+    CHECK(!scene_get_sleeping(scene));
+    CHECK(count_asleep(boxes, 2) == 0);
+    run(scene, 240);
+    CHECK(count_asleep(boxes, 2) == 0);
+    scene_set_sleeping(scene, true);
+    run(scene, 60);
+    CHECK(count_asleep(boxes, 2) == 2);
+    scene_set_contacts_enabled(scene, false);
+    CHECK(count_asleep(boxes, 2) == 0);
+    scene_free(scene);
+}
+
+static void count_calls(body_t *body1, body_t *body2, vector_t axis, void *aux,
+                        double force_const) {
+    (void)body1, (void)body2, (void)axis, (void)force_const;
+    (*(int *)aux)++;
+}
+
+/* A box resting on another fires its handler once; sleeping and waking
+ * while it still rests there does not fire it again. */
+static void a_sleeping_pair_does_not_fire_again(void) {
+    scene_t *scene = sleep_scene();
+    body_t *boxes[2];
+    add_stack(scene, 0.0, boxes, 2);
+    int calls = 0;
+    create_collision(scene, boxes[0], boxes[1], count_calls, &calls, 0.0);
+    run(scene, 120);
+    CHECK(count_asleep(boxes, 2) == 2);
+    CHECK(calls == 1);
+    body_add_force(boxes[1], (vector_t){0.0, 1.0});
+    run(scene, 120);
+    CHECK(calls == 1);
+    scene_free(scene);
+}
+
+TEST_SUITE(sleep, TEST_CASE(settled_pile_falls_asleep),
+           TEST_CASE(a_dropped_body_wakes_its_island_only),
+           TEST_CASE(removing_a_support_wakes_what_rested_on_it),
+           TEST_CASE(no_body_sleeps_in_mid_air), TEST_CASE(setters_wake_the_island),
+           TEST_CASE(switching_sleeping_off_wakes_everything),
+           TEST_CASE(a_sleeping_pair_does_not_fire_again));
