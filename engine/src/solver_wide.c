@@ -59,6 +59,10 @@ typedef enum { BATCH_BLOCK, BATCH_PAIR, BATCH_SINGLE, BATCH_KINDS } batch_kind_t
 struct solver_batch {
     lane_vector_t normal;
     lane_t friction;
+    /* The bodies' inverse inertias, lane by lane: loaded with the batch
+     * rather than gathered from four rows each time (the rest of a row is
+     * one vector load, this was four scalar loads and their shuffles). */
+    lane_t ia, ib;
     uint32_t a[LANES], b[LANES];
     uint32_t contact[LANES];
     uint8_t lanes, kind;
@@ -154,16 +158,17 @@ LANE_INLINE void store_columns(void *rows, size_t stride, const uint32_t index[L
     memcpy(base + index[3] * stride, &stored.v3, sizeof(lane_t));
 }
 
-/* A velocity row begins with v.x, v.y, w and inverse_mass (solver.h). */
-LANE_INLINE lane_body_t gather(const solver_velocity_t *rows, const uint32_t index[LANES]) {
+/* A velocity row begins with v.x, v.y, w and inverse_mass (solver.h); the
+ * inverse inertias come from the batch. */
+LANE_INLINE lane_body_t gather(const solver_velocity_t *rows, const uint32_t index[LANES],
+                               const lane_t *inverse_inertia) {
     lane_quad_t columns = load_columns(rows, sizeof *rows, index);
     return (lane_body_t){
         .vx = columns.v0,
         .vy = columns.v1,
         .w = columns.v2,
         .inverse_mass = columns.v3,
-        .inverse_inertia = {rows[index[0]].inverse_inertia, rows[index[1]].inverse_inertia,
-                            rows[index[2]].inverse_inertia, rows[index[3]].inverse_inertia},
+        .inverse_inertia = *inverse_inertia,
     };
 }
 
@@ -288,7 +293,7 @@ void solver_wide_warm_start(solver_wide_t *wide, solver_velocity_t *rows) {
     const lane_point_t *points = wide->points;
     for (size_t i = 0; i < wide->batch_count; i++) {
         const solver_batch_t *batch = &wide->batches[i];
-        lane_body_t a = gather(rows, batch->a), b = gather(rows, batch->b);
+        lane_body_t a = gather(rows, batch->a, &batch->ia), b = gather(rows, batch->b, &batch->ib);
         lane_vector_t tangent = {-batch->normal.y, batch->normal.x};
         int count = kind_points((batch_kind_t)batch->kind);
         for (int k = 0; k < count; k++, points++) {
@@ -306,7 +311,7 @@ void solver_wide_iterate(solver_wide_t *wide, solver_velocity_t *rows) {
     const lane_block_t *blocks = wide->blocks;
     for (size_t i = 0; i < wide->batch_count; i++) {
         const solver_batch_t *batch = &wide->batches[i];
-        lane_body_t a = gather(rows, batch->a), b = gather(rows, batch->b);
+        lane_body_t a = gather(rows, batch->a, &batch->ia), b = gather(rows, batch->b, &batch->ib);
         switch (batch->kind) {
         case BATCH_BLOCK:
             solve_friction(batch, points, 2, &a, &b);
@@ -424,8 +429,8 @@ static void pack_lane(solver_wide_t *wide, const solver_contact_t *c, uint32_t i
     batch->friction[l] = c->friction;
     position->ma[l] = rows[c->a].inverse_mass;
     position->mb[l] = rows[c->b].inverse_mass;
-    position->ia[l] = rows[c->a].inverse_inertia;
-    position->ib[l] = rows[c->b].inverse_inertia;
+    batch->ia[l] = position->ia[l] = rows[c->a].inverse_inertia;
+    batch->ib[l] = position->ib[l] = rows[c->b].inverse_inertia;
     position->rate[l] = solver_position_rate(&rows[c->a], &rows[c->b]);
     position->slop[l] = c->slop;
     if (batch->kind == BATCH_BLOCK) {
