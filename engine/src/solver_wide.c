@@ -565,21 +565,52 @@ void solver_wide_store(const solver_wide_t *wide, solver_contact_t *contacts) {
     }
 }
 
-void solver_wide_gather_impulses(const solver_wide_t *wide, solver_impulses_t *impulses) {
+/* Pushes both ends of contact batch->contact[l] onto its bodies' lists. */
+LANE_INLINE void link_lane(const solver_batch_t *batch, int l, solver_slot_t slot, uint32_t *first,
+                      solver_side_t *sides, solver_slot_t *slots) {
+    uint32_t a = batch->a[l], b = batch->b[l], side = 2 * batch->contact[l];
+    sides[side] = (solver_side_t){first[a], b};
+    first[a] = side;
+    sides[side + 1] = (solver_side_t){first[b], a};
+    first[b] = side + 1;
+    slots[batch->contact[l]] = slot + (solver_slot_t)l;
+}
+
+bool solver_wide_link_loaded(const solver_wide_t *wide, uint32_t *first, solver_side_t *sides,
+                             solver_slot_t *slots) {
     const lane_point_t *points = wide->points;
+    bool any = false;
     for (size_t i = 0; i < wide->batch_count; i++) {
         const solver_batch_t *batch = &wide->batches[i];
-        int count = kind_points((batch_kind_t)batch->kind);
-        for (int l = 0; l < batch->lanes; l++) {
-            solver_impulses_t *out = &impulses[batch->contact[l]];
-            out->a = batch->a[l];
-            out->b = batch->b[l];
-            out->normal_impulse[0] = points[0].normal_impulse[l];
-            out->tangent_impulse[0] = points[0].tangent_impulse[l];
-            out->normal_impulse[1] = count == 2 ? points[1].normal_impulse[l] : 0.0;
-            out->tangent_impulse[1] = count == 2 ? points[1].tangent_impulse[l] : 0.0;
+        solver_slot_t slot = (solver_slot_t)((size_t)(points - wide->points) * LANES);
+        const lane_t *first_impulse = &points[0].normal_impulse;
+        if (batch->kind == BATCH_SINGLE) {
+            for (int l = 0; l < batch->lanes; l++) {
+                if (!((*first_impulse)[l] > 0.0)) continue;
+                link_lane(batch, l, slot, first, sides, slots);
+                any = true;
+            }
+            points += 1;
+            continue;
         }
-        points += count;
+        const lane_t *second_impulse = &points[1].normal_impulse;
+        for (int l = 0; l < batch->lanes; l++) {
+            if (!((*first_impulse)[l] > 0.0 || (*second_impulse)[l] > 0.0)) continue;
+            link_lane(batch, l, slot, first, sides, slots);
+            any = true;
+        }
+        points += 2;
+    }
+    return any;
+}
+
+void solver_wide_impulses(const solver_wide_t *wide, solver_slot_t slot, int point_count,
+                          double normal[2], double tangent[2]) {
+    const lane_point_t *p = &wide->points[slot / LANES];
+    int l = (int)(slot % LANES);
+    for (int k = 0; k < point_count; k++) {
+        normal[k] = p[k].normal_impulse[l];
+        tangent[k] = p[k].tangent_impulse[l];
     }
 }
 
