@@ -12,6 +12,7 @@ typedef struct {
     int32_t ix, iy;     /* this cell */
     int32_t min_x, min_y; /* the cell of box.min */
     uint32_t proxy;
+    uint32_t bucket;    /* hash of (ix, iy), set by sort_entries; in what was padding */
 } cell_entry_t;
 
 struct broadphase {
@@ -49,7 +50,7 @@ bool broadphase_filters_allow(const broadphase_proxy_t *a, const broadphase_prox
     return a->group == 0 || a->group != b->group;
 }
 
-static void add_pair(broadphase_t *broadphase, uint32_t a, uint32_t b) {
+static inline void add_pair(broadphase_t *broadphase, uint32_t a, uint32_t b) {
     if (broadphase->pair_count == broadphase->pair_capacity) {
         memory_reserve((void **)&broadphase->pairs, &broadphase->pair_capacity,
                        broadphase->pair_count + 1, sizeof(broadphase_pair_t));
@@ -109,11 +110,13 @@ static size_t fill_entries(broadphase_t *broadphase, const broadphase_proxy_t *p
             broadphase->large[(*large_count)++] = (uint32_t)i;
             continue;
         }
-        memory_reserve((void **)&broadphase->entries, &broadphase->entry_capacity,
-                       n + (size_t)cells, sizeof(cell_entry_t));
+        if (n + (size_t)cells > broadphase->entry_capacity) { /* a call per body cost 2% */
+            memory_reserve((void **)&broadphase->entries, &broadphase->entry_capacity,
+                           n + (size_t)cells, sizeof(cell_entry_t));
+        }
         for (int32_t iy = y0; iy <= y1; iy++) {
             for (int32_t ix = x0; ix <= x1; ix++) {
-                broadphase->entries[n++] = (cell_entry_t){box, ix, iy, x0, y0, (uint32_t)i};
+                broadphase->entries[n++] = (cell_entry_t){box, ix, iy, x0, y0, (uint32_t)i, 0};
             }
         }
     }
@@ -132,12 +135,14 @@ static size_t sort_entries(broadphase_t *broadphase, size_t n) {
     uint32_t *start = broadphase->bucket_start;
     memset(start, 0, (buckets + 1) * sizeof(uint32_t));
     for (size_t i = 0; i < n; i++) {
-        start[hash_cell(broadphase->entries[i].ix, broadphase->entries[i].iy, mask) + 1]++;
+        cell_entry_t *entry = &broadphase->entries[i];
+        entry->bucket = hash_cell(entry->ix, entry->iy, mask);
+        start[entry->bucket + 1]++;
     }
     for (size_t b = 0; b < buckets; b++) start[b + 1] += start[b];
     for (size_t i = 0; i < n; i++) {
         const cell_entry_t *entry = &broadphase->entries[i];
-        broadphase->sorted[start[hash_cell(entry->ix, entry->iy, mask)]++] = *entry;
+        broadphase->sorted[start[entry->bucket]++] = *entry;
     }
     /* The fill advanced each start to the next bucket's; shift back. */
     for (size_t b = buckets; b > 0; b--) start[b] = start[b - 1];
