@@ -168,8 +168,8 @@ static bool weld_upper(const solver_contact_t *c, const double normal_impulse[2]
     return true;
 }
 
-/* The accumulated impulses so far of the contact of side: in the batches,
- * or in the contact for a loose one. */
+/* The accumulated impulses so far of the two-point contact of side: in the
+ * batches, or in the contact for a loose one. */
 static void impulses_of(const shock_t *shock, const solver_wide_t *wide,
                         const solver_contact_t *c, uint32_t side, double normal[2],
                         double tangent[2]) {

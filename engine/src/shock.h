@@ -27,7 +27,7 @@ struct shock {
     uint32_t *level;         /* per body; UINT32_MAX when no load path reaches it */
     uint32_t *first;         /* per body: its first side, SOLVER_NO_SIDE when it has none */
     solver_side_t *sides;    /* 2i and 2i + 1: contact i from its a and its b, if it carries load */
-    solver_slot_t *slots;    /* per contact that carries load: where the batches hold its impulses */
+    solver_slot_t *slots;    /* per two-point contact that carries load: where its impulses are */
     uint32_t *queue;         /* bodies in the order the levels reached them */
     uint32_t *held;          /* the sides by which the bodies are held up, in queue order */
     uint32_t *support_end;   /* per queue place: where its body's supports end in held */

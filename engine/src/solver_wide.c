@@ -566,40 +566,43 @@ void solver_wide_store(const solver_wide_t *wide, solver_contact_t *contacts) {
 }
 
 /* Pushes both ends of contact batch->contact[l] onto its bodies' lists. */
-LANE_INLINE void link_lane(const solver_batch_t *batch, int l, solver_slot_t slot, uint32_t *first,
-                      solver_side_t *sides, solver_slot_t *slots) {
+LANE_INLINE void link_lane(const solver_batch_t *batch, int l, uint32_t *first,
+                           solver_side_t *sides) {
     uint32_t a = batch->a[l], b = batch->b[l], side = 2 * batch->contact[l];
     sides[side] = (solver_side_t){first[a], b};
     first[a] = side;
     sides[side + 1] = (solver_side_t){first[b], a};
     first[b] = side + 1;
-    slots[batch->contact[l]] = slot + (solver_slot_t)l;
 }
 
 bool solver_wide_link_loaded(const solver_wide_t *wide, uint32_t *first, solver_side_t *sides,
                              solver_slot_t *slots) {
     const lane_point_t *points = wide->points;
+    solver_slot_t slot = 0; /* LANES times the index of the batch's first point */
     bool any = false;
     for (size_t i = 0; i < wide->batch_count; i++) {
         const solver_batch_t *batch = &wide->batches[i];
-        solver_slot_t slot = (solver_slot_t)((size_t)(points - wide->points) * LANES);
         const lane_t *first_impulse = &points[0].normal_impulse;
         if (batch->kind == BATCH_SINGLE) {
+            /* No slot: only a two-point contact's impulses are asked for. */
             for (int l = 0; l < batch->lanes; l++) {
                 if (!((*first_impulse)[l] > 0.0)) continue;
-                link_lane(batch, l, slot, first, sides, slots);
+                link_lane(batch, l, first, sides);
                 any = true;
             }
             points += 1;
+            slot += LANES;
             continue;
         }
         const lane_t *second_impulse = &points[1].normal_impulse;
         for (int l = 0; l < batch->lanes; l++) {
             if (!((*first_impulse)[l] > 0.0 || (*second_impulse)[l] > 0.0)) continue;
-            link_lane(batch, l, slot, first, sides, slots);
+            link_lane(batch, l, first, sides);
+            slots[batch->contact[l]] = slot + (solver_slot_t)l;
             any = true;
         }
         points += 2;
+        slot += 2 * LANES;
     }
     return any;
 }

@@ -94,15 +94,15 @@ typedef uint32_t solver_slot_t;
 /* Pushes both ends of every batched contact that carries load (either
  * point's accumulated normal impulse > 0) onto its bodies' lists: first[body]
  * is a body's first end (the caller sets them all to SOLVER_NO_SIDE before),
- * sides[end] its next and the body at the other end, and slots[i] where
- * contact i's impulses lie. The lists come out in no particular order.
+ * sides[end] its next and the body at the other end, and for a two-point
+ * contact i, slots[i] where its impulses lie. The lists come out in no particular order.
  * Reads the impulses in the batches, so nothing is stored back first.
  * Returns whether any contact carries load. */
 bool solver_wide_link_loaded(const solver_wide_t *wide, uint32_t *first, solver_side_t *sides,
                              solver_slot_t *slots);
 
-/* The accumulated impulses of the batched contact at slot: normal and
- * tangent at each of its point_count points. */
+/* The accumulated impulses of the batched two-point contact at slot:
+ * normal and tangent at each of its point_count points. */
 void solver_wide_impulses(const solver_wide_t *wide, solver_slot_t slot, int point_count,
                           double normal[2], double tangent[2]);
 
