@@ -9,7 +9,7 @@
  * through instead of looking each box up. */
 typedef struct {
     aabb_t box;
-    int32_t ix, iy;     /* this cell */
+    int32_t ix, iy;     /* this cell (adjacent: cell_key reads them as one) */
     int32_t min_x, min_y; /* the cell of box.min */
     uint32_t proxy;
     uint32_t bucket;    /* hash of (ix, iy), set by sort_entries; in what was padding */
@@ -150,8 +150,50 @@ static size_t sort_entries(broadphase_t *broadphase, size_t n) {
     return buckets;
 }
 
-/* Pairs that share a cell; a pair sharing several cells is reported only in
- * the cell holding the lower-left corner of the boxes' intersection. */
+#if defined(__SSE2__)
+#include <emmintrin.h>
+/* A box as two pairs of doubles, x and y side by side. */
+typedef struct {
+    __m128d min, max;
+} box_lanes_t;
+static inline box_lanes_t box_lanes(const aabb_t *box) {
+    return (box_lanes_t){_mm_loadu_pd(&box->min.x), _mm_loadu_pd(&box->max.x)};
+}
+/* aabb_overlaps, its four comparisons two at a time and one answer. */
+static inline bool boxes_overlap(box_lanes_t a, const aabb_t *b) {
+    box_lanes_t c = box_lanes(b);
+    __m128d both = _mm_and_pd(_mm_cmple_pd(a.min, c.max), _mm_cmple_pd(c.min, a.max));
+    return _mm_movemask_pd(both) == 3;
+}
+#else
+typedef aabb_t box_lanes_t;
+static inline box_lanes_t box_lanes(const aabb_t *box) {
+    return *box;
+}
+static inline bool boxes_overlap(box_lanes_t a, const aabb_t *b) {
+    return aabb_overlaps(a, *b);
+}
+#endif
+
+/* An entry's cell (ix, iy) as one number. */
+static inline uint64_t cell_key(const cell_entry_t *entry) {
+    uint64_t key;
+    memcpy(&key, &entry->ix, sizeof key);
+    return key;
+}
+
+/*
+ * Pairs that share a cell; a pair sharing several cells is reported only in
+ * the cell holding the lower-left corner of the boxes' intersection.
+ *
+ * Whether the next entry of a bucket is in the same cell, and whether its
+ * box overlaps, is random: the two are tested with a branch each, the box
+ * test's four comparisons two at a time with no short cut (a branch per
+ * comparison mispredicted: 19.0 million of pile(1000)'s branches against
+ * 16.7 million now, cachegrind's model; one branch for both tests, 15.7
+ * million, cost 0.8% more instructions), and what the tests read of the
+ * first entry is read once.
+ */
 static void pairs_in_buckets(broadphase_t *broadphase, const broadphase_proxy_t *proxies,
                              size_t buckets) {
     const cell_entry_t *sorted = broadphase->sorted;
@@ -161,9 +203,11 @@ static void pairs_in_buckets(broadphase_t *broadphase, const broadphase_proxy_t 
         for (uint32_t p = begin; p + 1 < end; p++) {
             const cell_entry_t *a = &sorted[p];
             tests += end - p - 1;
+            uint64_t cell = cell_key(a);
+            box_lanes_t box = box_lanes(&a->box);
             for (uint32_t q = p + 1; q < end; q++) {
                 const cell_entry_t *c = &sorted[q];
-                if (c->ix != a->ix || c->iy != a->iy || !aabb_overlaps(a->box, c->box)) continue;
+                if (cell_key(c) != cell || !boxes_overlap(box, &c->box)) continue;
                 /* cell_index is monotonic: the corner's cell is the larger
                  * of the two boxes' lower-left cells. */
                 int32_t corner_x = a->min_x > c->min_x ? a->min_x : c->min_x;
