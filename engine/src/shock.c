@@ -4,7 +4,8 @@
 #include "memory.h"
 
 static const uint32_t UNREACHED = UINT32_MAX;
-static const uint32_t NO_SIDE = UINT32_MAX;
+/* The slot of a loose contact: its impulses are in the contact. */
+static const solver_slot_t IN_CONTACT = UINT32_MAX;
 /* The sign of a side, -1 seen from a and +1 from b: looked up, since
  * which one it is is random and a branch on it mispredicted. */
 static const double SIGN[2] = {-1.0, 1.0};
@@ -13,39 +14,44 @@ void shock_free(shock_t *shock) {
     memory_free(shock->level);
     memory_free(shock->first);
     memory_free(shock->sides);
+    memory_free(shock->slots);
     memory_free(shock->queue);
     memory_free(shock->held);
-    memory_free(shock->impulses);
+    memory_free(shock->support_end);
     memset(shock, 0, sizeof *shock);
 }
 
-/* Whether the iterations pressed either point (a one-point contact's
- * second impulse is 0 in the compact array). */
-static bool carries_load(const solver_impulses_t *c) {
-    return (c->normal_impulse[0] > 0.0) | (c->normal_impulse[1] > 0.0);
+/* Whether the iterations pressed either point of a contact solved on its
+ * own (not in a batch). */
+static bool carries_load(const solver_contact_t *c) {
+    return c->points[0].normal_impulse > 0.0 ||
+           (c->point_count == 2 && c->points[1].normal_impulse > 0.0);
 }
 
 /*
- * Lists each body's load-bearing contacts, one pass over the contacts:
- * contact i's sides are 2i (seen from a) and 2i + 1 (from b), each pushed
- * on its body's list. Walking the contacts from the last makes every list
- * come out in contact order, the order the supports are solved in. Returns
- * whether any contact carries load.
+ * Lists each body's load-bearing contacts: contact i's sides are 2i (seen
+ * from a) and 2i + 1 (from b), each pushed on its body's list, the batched
+ * contacts' straight from the batches' impulses (solver_wide_link_loaded),
+ * then the loose ones'. The lists are in no particular order; hold_up puts
+ * a body's supports in contact order. Returns whether any contact carries
+ * load.
  */
-static bool link_bodies(shock_t *shock, const solver_impulses_t *contacts, size_t count,
-                        size_t body_count) {
+static bool link_bodies(shock_t *shock, const solver_wide_t *wide,
+                        const solver_contact_t *contacts, size_t body_count) {
     uint32_t *first = shock->first;
-    shock_side_t *sides = shock->sides;
-    memset(first, 0xff, body_count * sizeof(uint32_t)); /* NO_SIDE */
-    bool any = false;
-    for (size_t i = count; i-- > 0;) {
-        const solver_impulses_t *c = &contacts[i];
+    solver_side_t *sides = shock->sides;
+    memset(first, 0xff, body_count * sizeof(uint32_t)); /* SOLVER_NO_SIDE */
+    bool any = solver_wide_link_loaded(wide, first, sides, shock->slots);
+    for (size_t k = 0; k < wide->loose_count; k++) {
+        uint32_t i = wide->loose[k];
+        const solver_contact_t *c = &contacts[i];
         if (!carries_load(c)) continue;
-        uint32_t side = 2 * (uint32_t)i; /* fits: 2^31 contacts would not fit in memory */
-        sides[side] = (shock_side_t){first[c->a], c->b};
+        uint32_t side = 2 * i; /* fits: 2^31 contacts would not fit in memory */
+        sides[side] = (solver_side_t){first[c->a], c->b};
         first[c->a] = side;
-        sides[side + 1] = (shock_side_t){first[c->b], c->a};
+        sides[side + 1] = (solver_side_t){first[c->b], c->a};
         first[c->b] = side + 1;
+        shock->slots[i] = IN_CONTACT;
         any = true;
     }
     return any;
@@ -126,8 +132,8 @@ static void stop_two(const solver_contact_t *c, solver_velocity_t *a, solver_vel
  * within the friction cone. Returns false, changing nothing, when they would not: the contact
  * is then opening, tipping or sliding, and only its approach is stopped.
  */
-static bool weld_upper(const solver_contact_t *c, const solver_impulses_t *imp,
-                       solver_velocity_t *upper,
+static bool weld_upper(const solver_contact_t *c, const double normal_impulse[2],
+                       const double tangent_impulse[2], solver_velocity_t *upper,
                        const solver_velocity_t *lower, double sign) {
     if (upper->inverse_mass <= 0.0 || upper->inverse_inertia <= 0.0) return false;
     const solver_point_t *p1 = &c->points[0], *p2 = &c->points[1];
@@ -153,22 +159,67 @@ static bool weld_upper(const solver_contact_t *c, const solver_impulses_t *imp,
     double jn = sign * vec_dot(impulse, n), jt = sign * vec_dot(impulse, t);
     double turn = sign * moment - 0.5 * jt * (rt1 + rt2);
     double n1 = (turn - rn2 * jn) / (rn1 - rn2), n2 = jn - n1;
-    double pressed1 = imp->normal_impulse[0] + n1, pressed2 = imp->normal_impulse[1] + n2;
+    double pressed1 = normal_impulse[0] + n1, pressed2 = normal_impulse[1] + n2;
     if (!(pressed1 >= 0.0 && pressed2 >= 0.0)) return false;
-    if (fabs(imp->tangent_impulse[0] + 0.5 * jt) > c->friction * pressed1) return false;
-    if (fabs(imp->tangent_impulse[1] + 0.5 * jt) > c->friction * pressed2) return false;
+    if (fabs(tangent_impulse[0] + 0.5 * jt) > c->friction * pressed1) return false;
+    if (fabs(tangent_impulse[1] + 0.5 * jt) > c->friction * pressed2) return false;
     upper->v = target_v;
     upper->w = lower->w;
     return true;
 }
 
+/* The accumulated impulses so far of the two-point contact of side: in the
+ * batches, or in the contact for a loose one. */
+static void impulses_of(const shock_t *shock, const solver_wide_t *wide,
+                        const solver_contact_t *c, uint32_t side, double normal[2],
+                        double tangent[2]) {
+    solver_slot_t slot = shock->slots[side / 2];
+    if (slot != IN_CONTACT) {
+        solver_wide_impulses(wide, slot, c->point_count, normal, tangent);
+        return;
+    }
+    for (int k = 0; k < c->point_count; k++) {
+        normal[k] = c->points[k].normal_impulse;
+        tangent[k] = c->points[k].tangent_impulse;
+    }
+}
+
+/* Sides in increasing order, which is contact order (a body has one side
+ * per contact): insertion sort, as a body has a handful of supports. */
+static void sort_sides(uint32_t *held, uint32_t count) {
+    for (uint32_t k = 1; k < count; k++) {
+        uint32_t side = held[k], j = k;
+        for (; j > 0 && held[j - 1] > side; j--) held[j] = held[j - 1];
+        held[j] = side;
+    }
+}
+
+/* The lines of the contact that hold_up reads. Written out here: GCC
+ * deems a function of prefetches alone const and drops its calls. */
+#define PREFETCH_CONTACT(c)                                                          \
+    do {                                                                             \
+        const char *line_ = (const char *)(c);                                       \
+        __builtin_prefetch(line_ + offsetof(solver_contact_t, point_count));         \
+        __builtin_prefetch(line_ + offsetof(solver_contact_t, points[0].rn_a));      \
+        __builtin_prefetch(line_ + offsetof(solver_contact_t, points[0].separation)); \
+        __builtin_prefetch(line_ + offsetof(solver_contact_t, points[1].rn_a));      \
+        __builtin_prefetch(line_ + offsetof(solver_contact_t, points[1].separation)); \
+    } while (0)
+
+/* How many supports ahead hold_up's contacts are fetched: a pile of 4000
+ * bodies has more contacts than the cache holds. */
+enum { PREFETCH_AHEAD = 8 };
+
 /* body's contacts with the level below (its sides held[0 .. count)), each
- * solved with the lower body held still; welded when it is the only one
- * (a column), since a body held by two is pulled two ways. */
-static void hold_up(const shock_t *shock, const solver_contact_t *contacts, uint32_t body,
-                    const uint32_t *held, uint32_t count, solver_velocity_t *velocities) {
+ * solved with the lower body held still, in contact order; welded when it
+ * is the only one (a column), since a body held by two is pulled two ways. */
+static void hold_up(const shock_t *shock, const solver_wide_t *wide,
+                    const solver_contact_t *contacts, uint32_t body, uint32_t *held,
+                    uint32_t count, solver_velocity_t *velocities) {
+    if (count > 1) sort_sides(held, count);
     for (uint32_t k = 0; k < count; k++) {
         uint32_t side = held[k];
+        PREFETCH_CONTACT(&contacts[held[k + PREFETCH_AHEAD] / 2]);
         const solver_contact_t *c = &contacts[side / 2];
         bool upper_is_b = side % 2 == 1; /* the odd side is b's */
         solver_velocity_t *upper = &velocities[body];
@@ -176,50 +227,43 @@ static void hold_up(const shock_t *shock, const solver_contact_t *contacts, uint
         solver_velocity_t *a = upper_is_b ? lower : upper, *b = upper_is_b ? upper : lower;
         if (c->point_count == 1) {
             stop_one(c, a, b, upper_is_b);
-        } else if (count != 1 ||
-                   !weld_upper(c, &shock->impulses[side / 2], upper, lower, SIGN[upper_is_b])) {
-            stop_two(c, a, b, upper_is_b);
+            continue;
         }
+        if (count == 1) {
+            double normal[2], tangent[2];
+            impulses_of(shock, wide, c, side, normal, tangent);
+            if (weld_upper(c, normal, tangent, upper, lower, SIGN[upper_is_b])) continue;
+        }
+        stop_two(c, a, b, upper_is_b);
     }
 }
 
 /*
- * Breadth first from every static body; each body is held up by its
- * supports as it leaves the queue. That is level by level from the ground
- * up: the bodies of the level below all left the queue before it, so their
- * velocities are final, and they were all reached (given their levels)
- * while the level below them left it, so the supports are known too.
+ * Breadth first from every static body: each body's level, and its
+ * supports (its sides to the level below) in held, those of queue[q] at
+ * held[support_end[q - 1] .. support_end[q]). Returns how many bodies the
+ * queue holds.
  *
  * The walk over a body's sides has no branch but the loop's: whether a
  * neighbour is below, level or unreached is random in a pile, and
  * mispredicting it cost more than the stores done regardless.
  */
-static void propagate(shock_t *shock, const solver_contact_t *contacts,
-                      solver_velocity_t *velocities, size_t body_count) {
+static size_t find_levels(shock_t *shock, const solver_velocity_t *velocities,
+                          size_t body_count) {
     uint32_t *level = shock->level, *queue = shock->queue, *held = shock->held;
-    const shock_side_t *sides = shock->sides;
+    uint32_t *support_end = shock->support_end;
+    const uint32_t *first = shock->first;
+    const solver_side_t *sides = shock->sides;
     size_t head = 0, tail = 0;
     for (size_t k = 0; k < body_count; k++) {
         level[k] = solver_row_is_static(&velocities[k]) ? 0 : UNREACHED;
         if (level[k] == 0) queue[tail++] = (uint32_t)k;
     }
-    while (head < tail) {
-        uint32_t body = queue[head++], here = level[body];
-        uint32_t supports = 0;
-        for (uint32_t side = shock->first[body]; side != NO_SIDE; side = sides[side].next) {
+    uint32_t supports = 0;
+    for (; head < tail; head++) {
+        uint32_t body = queue[head], here = level[body];
+        for (uint32_t side = first[body]; side != SOLVER_NO_SIDE; side = sides[side].next) {
             uint32_t other = sides[side].other, there = level[other];
-            /* The lines of the contact hold_up reads. A body's supports
-             * are seen a level before it is held up, as the bodies below
-             * leave the queue; a pile of 4000 bodies has more contacts
-             * than the cache holds, and fetching them now took a tenth
-             * off the pass (measured). Written out here: GCC deems a
-             * function of prefetches alone const and drops its calls. */
-            const char *c = (const char *)&contacts[side / 2];
-            __builtin_prefetch(c + offsetof(solver_contact_t, point_count));
-            __builtin_prefetch(c + offsetof(solver_contact_t, points[0].rn_a));
-            __builtin_prefetch(c + offsetof(solver_contact_t, points[0].separation));
-            __builtin_prefetch(c + offsetof(solver_contact_t, points[1].rn_a));
-            __builtin_prefetch(c + offsetof(solver_contact_t, points[1].separation));
             held[supports] = side; /* kept when it is a support */
             supports += there < here;
             /* Neighbours differ by a level at most, so this reaches the
@@ -228,41 +272,50 @@ static void propagate(shock_t *shock, const solver_contact_t *contacts,
             queue[tail] = other; /* kept when it was unreached */
             tail += there >> 31; /* only UNREACHED has the top bit: levels < bodies */
         }
-        if (supports > 0) hold_up(shock, contacts, body, held, supports, velocities);
+        support_end[head] = supports;
     }
+    /* What hold_up fetches ahead past the last support: a contact it has. */
+    for (uint32_t k = 0; k < PREFETCH_AHEAD; k++) held[supports + k] = supports > 0 ? held[0] : 0;
+    return tail;
 }
 
-/* Every contact's bodies and impulses so far in one compact array: the
- * batches' from their lanes, the loose contacts' from the contacts. */
-static void gather_impulses(shock_t *shock, const solver_wide_t *wide,
-                            const solver_contact_t *contacts, size_t count) {
-    memory_reserve((void **)&shock->impulses, &shock->impulse_capacity, count,
-                   sizeof(solver_impulses_t));
-    solver_wide_gather_impulses(wide, shock->impulses);
-    for (size_t k = 0; k < wide->loose_count; k++) {
-        const solver_contact_t *c = &contacts[wide->loose[k]];
-        solver_impulses_t *out = &shock->impulses[wide->loose[k]];
-        out->a = c->a;
-        out->b = c->b;
-        out->normal_impulse[0] = c->points[0].normal_impulse;
-        out->tangent_impulse[0] = c->points[0].tangent_impulse;
-        out->normal_impulse[1] = c->point_count == 2 ? c->points[1].normal_impulse : 0.0;
-        out->tangent_impulse[1] = c->point_count == 2 ? c->points[1].tangent_impulse : 0.0;
+/*
+ * Each body held up by its supports, in the order the levels reached the
+ * bodies, which is level by level from the ground up: a body's supports
+ * are all of the level below, held up before it, so their velocities are
+ * final.
+ */
+static void propagate(shock_t *shock, const solver_wide_t *wide,
+                      const solver_contact_t *contacts, solver_velocity_t *velocities,
+                      size_t body_count) {
+    size_t reached = find_levels(shock, velocities, body_count);
+    uint32_t start = 0;
+    for (size_t q = 0; q < reached; q++) {
+        uint32_t end = shock->support_end[q];
+        if (end == start) continue;
+        hold_up(shock, wide, contacts, shock->queue[q], shock->held + start, end - start,
+                velocities);
+        start = end;
     }
 }
 
 void shock_propagate(shock_t *shock, const solver_wide_t *wide, const solver_contact_t *contacts,
                      size_t count, solver_velocity_t *velocities, size_t body_count) {
     if (count == 0) return;
-    gather_impulses(shock, wide, contacts, count);
     memory_reserve((void **)&shock->level, &shock->level_capacity, body_count, sizeof(uint32_t));
     memory_reserve((void **)&shock->first, &shock->first_capacity, body_count, sizeof(uint32_t));
     memory_reserve((void **)&shock->sides, &shock->side_capacity, 2 * count,
-                   sizeof(shock_side_t));
+                   sizeof(solver_side_t));
+    memory_reserve((void **)&shock->slots, &shock->slot_capacity, count, sizeof(solver_slot_t));
     /* One more than can be kept, for the stores done regardless. */
     memory_reserve((void **)&shock->queue, &shock->queue_capacity, body_count + 1,
                    sizeof(uint32_t));
-    memory_reserve((void **)&shock->held, &shock->held_capacity, count + 1, sizeof(uint32_t));
-    if (!link_bodies(shock, shock->impulses, count, body_count)) return;
-    propagate(shock, contacts, velocities, body_count);
+    memory_reserve((void **)&shock->support_end, &shock->support_end_capacity, body_count,
+                   sizeof(uint32_t));
+    /* One more than can be kept, for the store done regardless, and what
+     * hold_up fetches ahead. */
+    memory_reserve((void **)&shock->held, &shock->held_capacity, count + 1 + PREFETCH_AHEAD,
+                   sizeof(uint32_t));
+    if (!link_bodies(shock, wide, contacts, body_count)) return;
+    propagate(shock, wide, contacts, velocities, body_count);
 }

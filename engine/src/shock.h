@@ -23,20 +23,16 @@
 #include "solver.h"
 #include "solver_wide.h"
 
-/* One end of a load-bearing contact, in its body's list. */
-typedef struct {
-    uint32_t next;           /* the body's next side, UINT32_MAX after its last */
-    uint32_t other;          /* the body at the other end */
-} shock_side_t;
-
 struct shock {
     uint32_t *level;         /* per body; UINT32_MAX when no load path reaches it */
-    uint32_t *first;         /* per body: its first side, UINT32_MAX when it has none */
-    shock_side_t *sides;     /* 2i and 2i + 1: contact i from its a and its b, if it carries load */
+    uint32_t *first;         /* per body: its first side, SOLVER_NO_SIDE when it has none */
+    solver_side_t *sides;    /* 2i and 2i + 1: contact i from its a and its b, if it carries load */
+    solver_slot_t *slots;    /* per two-point contact that carries load: where its impulses are */
     uint32_t *queue;         /* bodies in the order the levels reached them */
-    solver_impulses_t *impulses; size_t impulse_capacity;
-    uint32_t *held;          /* scratch: the sides by which one body is held up */
-    size_t level_capacity, first_capacity, side_capacity, queue_capacity, held_capacity;
+    uint32_t *held;          /* the sides by which the bodies are held up, in queue order */
+    uint32_t *support_end;   /* per queue place: where its body's supports end in held */
+    size_t level_capacity, first_capacity, side_capacity, slot_capacity, queue_capacity,
+        held_capacity, support_end_capacity;
 };
 
 void shock_free(shock_t *shock);

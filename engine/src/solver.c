@@ -84,9 +84,10 @@ static double time_of_impact(double s, double v, double a, double dt) {
  * body whose only push was such an impact on a static body,
  * apply_impact_time then moves it as if the impulse had acted at tau.
  * Bounce heights come out exact to rounding at any dt
- * (tests/test_contacts.c).
+ * (tests/test_contacts.c). Returns whether the point has such an impact
+ * (impact_time >= 0).
  */
-static void set_target(solver_point_t *p, vector_t r_a, vector_t r_b, vector_t normal,
+static bool set_target(solver_point_t *p, vector_t r_a, vector_t r_b, vector_t normal,
                        double restitution, const solver_state_t *sa, const solver_state_t *sb,
                        const solver_settings_t *settings) {
     double dt = settings->dt, w = settings->position_weight;
@@ -103,7 +104,7 @@ static void set_target(solver_point_t *p, vector_t r_a, vector_t r_b, vector_t n
     p->touched = p->separation <= 0.0;
     if (p->separation <= 0.0) {
         p->target = 0.0;
-        return;
+        return false;
     }
     double an = vec_dot(normal, vec_subtract(sb->acceleration, sa->acceleration));
     double tau = time_of_impact(p->separation, vn_start, an, dt);
@@ -124,9 +125,10 @@ static void set_target(solver_point_t *p, vector_t r_a, vector_t r_b, vector_t n
             p->target = max_of(after, 0.0);
             p->lands = after < 0.0;
         }
-        return;
+        return true;
     }
     p->target = closing;
+    return false;
 }
 
 /* Two points of one manifold that both hit within the step bounce from the
@@ -140,13 +142,15 @@ static void same_impact_moment(solver_contact_t *c) {
     p1->impact_offset = p2->impact_offset = first;
 }
 
-static void prepare(solver_contact_t *c, const solver_anchor_t *anchor,
+/* Returns whether a point of c has an impact within the step. */
+static bool prepare(solver_contact_t *c, const solver_anchor_t *anchor,
                     const solver_velocity_t *velocities, const solver_state_t *states,
                     const solver_settings_t *s) {
     const solver_velocity_t *a = &velocities[c->a], *b = &velocities[c->b];
     vector_t tangent = tangent_of(c->normal);
     double ma = a->inverse_mass, mb = b->inverse_mass;
     double ia = a->inverse_inertia, ib = b->inverse_inertia;
+    bool impact = false;
     for (int i = 0; i < c->point_count; i++) {
         solver_point_t *p = &c->points[i];
         p->rn_a = vec_cross(anchor->r_a[i], c->normal);
@@ -157,8 +161,8 @@ static void prepare(solver_contact_t *c, const solver_anchor_t *anchor,
         p->normal_mass = k_normal > 0.0 ? 1.0 / k_normal : 0.0;
         double k_tangent = ma + mb + ia * p->rt_a * p->rt_a + ib * p->rt_b * p->rt_b;
         p->tangent_mass = k_tangent > 0.0 ? 1.0 / k_tangent : 0.0;
-        set_target(p, anchor->r_a[i], anchor->r_b[i], c->normal, c->restitution, &states[c->a],
-                   &states[c->b], s);
+        impact |= set_target(p, anchor->r_a[i], anchor->r_b[i], c->normal, c->restitution,
+                             &states[c->a], &states[c->b], s);
     }
     if (c->point_count == 2) same_impact_moment(c);
     c->block = false;
@@ -176,6 +180,7 @@ static void prepare(solver_contact_t *c, const solver_anchor_t *anchor,
             c->m22 = inv * c->k11;
         }
     }
+    return impact;
 }
 
 static void warm_start(const solver_contact_t *c, solver_velocity_t *velocities) {
@@ -573,9 +578,8 @@ void solver_solve(solver_wide_t *wide, shock_t *shock, solver_contact_t *contact
     bool any_elastic = false, any_impact = false;
     for (size_t i = 0; i < contact_count; i++) {
         solver_contact_t *c = &contacts[i];
-        prepare(c, &anchors[i], velocities, bodies->states, settings);
+        any_impact |= prepare(c, &anchors[i], velocities, bodies->states, settings);
         any_elastic |= c->restitution > 0.0;
-        for (int k = 0; k < c->point_count; k++) any_impact |= c->points[k].impact_time >= 0.0;
     }
     solver_wide_load(wide, contacts, contact_count, velocities, bodies->body_count);
     solver_wide_warm_start(wide, velocities);

@@ -59,6 +59,10 @@ typedef enum { BATCH_BLOCK, BATCH_PAIR, BATCH_SINGLE, BATCH_KINDS } batch_kind_t
 struct solver_batch {
     lane_vector_t normal;
     lane_t friction;
+    /* The bodies' inverse inertias, lane by lane: loaded with the batch
+     * rather than gathered from four rows each time (the rest of a row is
+     * one vector load, this was four scalar loads and their shuffles). */
+    lane_t ia, ib;
     uint32_t a[LANES], b[LANES];
     uint32_t contact[LANES];
     uint8_t lanes, kind;
@@ -154,16 +158,17 @@ LANE_INLINE void store_columns(void *rows, size_t stride, const uint32_t index[L
     memcpy(base + index[3] * stride, &stored.v3, sizeof(lane_t));
 }
 
-/* A velocity row begins with v.x, v.y, w and inverse_mass (solver.h). */
-LANE_INLINE lane_body_t gather(const solver_velocity_t *rows, const uint32_t index[LANES]) {
+/* A velocity row begins with v.x, v.y, w and inverse_mass (solver.h); the
+ * inverse inertias come from the batch. */
+LANE_INLINE lane_body_t gather(const solver_velocity_t *rows, const uint32_t index[LANES],
+                               const lane_t *inverse_inertia) {
     lane_quad_t columns = load_columns(rows, sizeof *rows, index);
     return (lane_body_t){
         .vx = columns.v0,
         .vy = columns.v1,
         .w = columns.v2,
         .inverse_mass = columns.v3,
-        .inverse_inertia = {rows[index[0]].inverse_inertia, rows[index[1]].inverse_inertia,
-                            rows[index[2]].inverse_inertia, rows[index[3]].inverse_inertia},
+        .inverse_inertia = *inverse_inertia,
     };
 }
 
@@ -288,7 +293,7 @@ void solver_wide_warm_start(solver_wide_t *wide, solver_velocity_t *rows) {
     const lane_point_t *points = wide->points;
     for (size_t i = 0; i < wide->batch_count; i++) {
         const solver_batch_t *batch = &wide->batches[i];
-        lane_body_t a = gather(rows, batch->a), b = gather(rows, batch->b);
+        lane_body_t a = gather(rows, batch->a, &batch->ia), b = gather(rows, batch->b, &batch->ib);
         lane_vector_t tangent = {-batch->normal.y, batch->normal.x};
         int count = kind_points((batch_kind_t)batch->kind);
         for (int k = 0; k < count; k++, points++) {
@@ -306,7 +311,7 @@ void solver_wide_iterate(solver_wide_t *wide, solver_velocity_t *rows) {
     const lane_block_t *blocks = wide->blocks;
     for (size_t i = 0; i < wide->batch_count; i++) {
         const solver_batch_t *batch = &wide->batches[i];
-        lane_body_t a = gather(rows, batch->a), b = gather(rows, batch->b);
+        lane_body_t a = gather(rows, batch->a, &batch->ia), b = gather(rows, batch->b, &batch->ib);
         switch (batch->kind) {
         case BATCH_BLOCK:
             solve_friction(batch, points, 2, &a, &b);
@@ -424,8 +429,8 @@ static void pack_lane(solver_wide_t *wide, const solver_contact_t *c, uint32_t i
     batch->friction[l] = c->friction;
     position->ma[l] = rows[c->a].inverse_mass;
     position->mb[l] = rows[c->b].inverse_mass;
-    position->ia[l] = rows[c->a].inverse_inertia;
-    position->ib[l] = rows[c->b].inverse_inertia;
+    batch->ia[l] = position->ia[l] = rows[c->a].inverse_inertia;
+    batch->ib[l] = position->ib[l] = rows[c->b].inverse_inertia;
     position->rate[l] = solver_position_rate(&rows[c->a], &rows[c->b]);
     position->slop[l] = c->slop;
     if (batch->kind == BATCH_BLOCK) {
@@ -560,21 +565,55 @@ void solver_wide_store(const solver_wide_t *wide, solver_contact_t *contacts) {
     }
 }
 
-void solver_wide_gather_impulses(const solver_wide_t *wide, solver_impulses_t *impulses) {
+/* Pushes both ends of contact batch->contact[l] onto its bodies' lists. */
+LANE_INLINE void link_lane(const solver_batch_t *batch, int l, uint32_t *first,
+                           solver_side_t *sides) {
+    uint32_t a = batch->a[l], b = batch->b[l], side = 2 * batch->contact[l];
+    sides[side] = (solver_side_t){first[a], b};
+    first[a] = side;
+    sides[side + 1] = (solver_side_t){first[b], a};
+    first[b] = side + 1;
+}
+
+bool solver_wide_link_loaded(const solver_wide_t *wide, uint32_t *first, solver_side_t *sides,
+                             solver_slot_t *slots) {
     const lane_point_t *points = wide->points;
+    solver_slot_t slot = 0; /* LANES times the index of the batch's first point */
+    bool any = false;
     for (size_t i = 0; i < wide->batch_count; i++) {
         const solver_batch_t *batch = &wide->batches[i];
-        int count = kind_points((batch_kind_t)batch->kind);
-        for (int l = 0; l < batch->lanes; l++) {
-            solver_impulses_t *out = &impulses[batch->contact[l]];
-            out->a = batch->a[l];
-            out->b = batch->b[l];
-            out->normal_impulse[0] = points[0].normal_impulse[l];
-            out->tangent_impulse[0] = points[0].tangent_impulse[l];
-            out->normal_impulse[1] = count == 2 ? points[1].normal_impulse[l] : 0.0;
-            out->tangent_impulse[1] = count == 2 ? points[1].tangent_impulse[l] : 0.0;
+        const lane_t *first_impulse = &points[0].normal_impulse;
+        if (batch->kind == BATCH_SINGLE) {
+            /* No slot: only a two-point contact's impulses are asked for. */
+            for (int l = 0; l < batch->lanes; l++) {
+                if (!((*first_impulse)[l] > 0.0)) continue;
+                link_lane(batch, l, first, sides);
+                any = true;
+            }
+            points += 1;
+            slot += LANES;
+            continue;
         }
-        points += count;
+        const lane_t *second_impulse = &points[1].normal_impulse;
+        for (int l = 0; l < batch->lanes; l++) {
+            if (!((*first_impulse)[l] > 0.0 || (*second_impulse)[l] > 0.0)) continue;
+            link_lane(batch, l, first, sides);
+            slots[batch->contact[l]] = slot + (solver_slot_t)l;
+            any = true;
+        }
+        points += 2;
+        slot += 2 * LANES;
+    }
+    return any;
+}
+
+void solver_wide_impulses(const solver_wide_t *wide, solver_slot_t slot, int point_count,
+                          double normal[2], double tangent[2]) {
+    const lane_point_t *p = &wide->points[slot / LANES];
+    int l = (int)(slot % LANES);
+    for (int k = 0; k < point_count; k++) {
+        normal[k] = p[k].normal_impulse[l];
+        tangent[k] = p[k].tangent_impulse[l];
     }
 }
 

@@ -79,16 +79,32 @@ void solver_wide_iterate(solver_wide_t *wide, solver_velocity_t *rows);
 void solver_wide_correct_positions(solver_wide_t *wide, solver_displacement_t *displacements,
                                    bool backward);
 
-/* A contact's bodies and its points' accumulated impulses (zero for a
- * second point it does not have). */
+/* One end of a contact in its body's list of contacts (shock.h): contact
+ * i's ends are 2i (seen from a) and 2i + 1 (from b). */
 typedef struct {
-    uint32_t a, b;
-    double normal_impulse[2], tangent_impulse[2];
-} solver_impulses_t;
+    uint32_t next;           /* the body's next end, SOLVER_NO_SIDE after its last */
+    uint32_t other;          /* the body at the other end */
+} solver_side_t;
+enum { SOLVER_NO_SIDE = UINT32_MAX };
 
-/* Writes each batched contact's bodies and impulses to impulses[contact];
- * the loose contacts' are left alone. */
-void solver_wide_gather_impulses(const solver_wide_t *wide, solver_impulses_t *impulses);
+/* Where a batched contact's accumulated impulses lie in the batches: for
+ * solver_wide_impulses. */
+typedef uint32_t solver_slot_t;
+
+/* Pushes both ends of every batched contact that carries load (either
+ * point's accumulated normal impulse > 0) onto its bodies' lists: first[body]
+ * is a body's first end (the caller sets them all to SOLVER_NO_SIDE before),
+ * sides[end] its next and the body at the other end, and for a two-point
+ * contact i, slots[i] where its impulses lie. The lists come out in no particular order.
+ * Reads the impulses in the batches, so nothing is stored back first.
+ * Returns whether any contact carries load. */
+bool solver_wide_link_loaded(const solver_wide_t *wide, uint32_t *first, solver_side_t *sides,
+                             solver_slot_t *slots);
+
+/* The accumulated impulses of the batched two-point contact at slot:
+ * normal and tangent at each of its point_count points. */
+void solver_wide_impulses(const solver_wide_t *wide, solver_slot_t slot, int point_count,
+                          double normal[2], double tangent[2]);
 
 /* Writes the batches' accumulated impulses back to their contacts. */
 void solver_wide_store(const solver_wide_t *wide, solver_contact_t *contacts);
