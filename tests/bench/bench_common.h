@@ -42,6 +42,8 @@
 /* --iterations: the solver's velocity iterations for every world made
  * after it is set; 0 keeps each engine's default. */
 static int bench_iterations = 0;
+/* --variant: run only the variant of this name; NULL runs them all. */
+static const char *bench_variant = NULL;
 
 /* pile(N) */
 #define PILE_STEPS 600

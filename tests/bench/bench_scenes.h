@@ -541,12 +541,13 @@ static inline int bench_parse_list(const char *text, double *list, int *count) {
 static inline void bench_usage(FILE *out, const char *program) {
     fprintf(out,
             "usage: %s [--scene NAME[,NAME]] [--size X[,X]] [--dt X[,X]] [--runs R] [--quick]\n"
-            "          [--iterations N]\n"
+            "          [--iterations N] [--variant NAME]\n"
             "  scenes: pile pyramid bounce cradle orbit stack2 tunnel overlap column all\n"
             "  no --scene: pile 1000,4000,10000; pyramid 20,40; bounce 0.8 at dt 1/60,1/600;\n"
             "  cradle 5. --size and --dt apply to every scene given (--dt: bounce, orbit).\n"
             "  --iterations N: the solver's velocity iterations (each engine's own default\n"
-            "  otherwise; position iterations keep theirs).\n",
+            "  otherwise; position iterations keep theirs). --variant NAME: only that\n"
+            "  variant of the program (e.g. ours, ours-sleeping).\n",
             program);
 }
 
@@ -630,6 +631,9 @@ static inline int bench_main(int argc, char **argv, const bench_ops_t *const *op
                 return 2;
             }
             i++;
+        } else if (strcmp(arg, "--variant") == 0) {
+            bench_variant = value;
+            i++;
         } else if (strcmp(arg, "--iterations") == 0) {
             bench_iterations = atoi(value);
             if (bench_iterations < 1 || bench_iterations > 1000) {
@@ -702,6 +706,7 @@ static inline int bench_main(int argc, char **argv, const bench_ops_t *const *op
         }
         for (int k = 0; k < ops_count; k++) {
             if (!bench_ops_runs(ops[k], scene)) continue;
+            if (bench_variant != NULL && strcmp(bench_variant, ops[k]->name) != 0) continue;
             int found = 0;
             double first_v = 0.0, back = 0.0;
             for (int s = 0; s < ncase_sizes; s++) {
