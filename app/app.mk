@@ -1,10 +1,11 @@
-# The SDL2 + SDL2_gfx sandbox (app/) and its smoke tests (tests/app_smoke.c).
-# Included by the top Makefile. `make` builds ./sandbox when pkg-config finds
-# both libraries; without them `make` still builds the engine, and the smoke
-# tests build without SDL and report themselves skipped.
+# The SDL2 + SDL2_gfx + SDL2_image sandbox (app/) and its smoke tests
+# (tests/app_smoke.c). Included by the top Makefile. `make` builds ./sandbox
+# when pkg-config finds the three libraries; without them `make` still builds
+# the engine, and the smoke tests build without SDL and report themselves
+# skipped. SDL2_image writes the PNG screenshots (IMG_SavePNG).
 
-SANDBOX_PKGS := sdl2 SDL2_gfx
-SANDBOX_APT := libsdl2-dev libsdl2-gfx-dev pkg-config
+SANDBOX_PKGS := sdl2 SDL2_gfx SDL2_image
+SANDBOX_APT := libsdl2-dev libsdl2-gfx-dev libsdl2-image-dev pkg-config
 SANDBOX_HAVE_SDL := $(shell pkg-config --exists $(SANDBOX_PKGS) 2>/dev/null && echo yes)
 
 APP_SRC := $(wildcard app/*.c)
@@ -31,7 +32,7 @@ APP_SMOKE_DEPS := sandbox
 APP_SMOKE_DEFS := -DAPP_SMOKE_HAVE_SDL=1
 else
 sandbox:
-	@echo "sandbox: SDL2 and SDL2_gfx were not found by pkg-config ($(SANDBOX_PKGS))."
+	@echo "sandbox: SDL2, SDL2_gfx or SDL2_image was not found by pkg-config ($(SANDBOX_PKGS))."
 	@echo "Install them with: sudo apt-get install -y $(SANDBOX_APT)   (or run: make run)"
 	@exit 1
 
@@ -55,7 +56,7 @@ sandbox-deps:
 	        echo "Installing $(SANDBOX_APT)"; \
 	        apt-get update && apt-get install -y $(SANDBOX_APT) || exit 1; \
 	    else \
-	        echo "The sandbox needs SDL2 and SDL2_gfx. Install them with:"; \
+	        echo "The sandbox needs SDL2, SDL2_gfx and SDL2_image. Install them with:"; \
 	        echo "    sudo apt-get install -y $(SANDBOX_APT)"; \
 	        echo "then run 'make run' again."; \
 	        exit 1; \
