@@ -79,7 +79,7 @@ void app_init(app_t *app, int width, int height, uint64_t seed) {
     app->shape = (shape_choice_t){SHAPE_REGULAR, 6, 0.5};
     app->elasticity = 0.5;
     app->time_scale = 1.0;
-    app->impulse_scale = 0.1;
+    app->impulse_scale = 0.2;
     app->overlays[OVERLAY_AXES] = true;
     app->overlays[OVERLAY_IMPULSES] = true;
     app->mouse = (vector_t){0.5 * app->layout.view.w, 0.5 * app->layout.view.h};

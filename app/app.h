@@ -78,7 +78,7 @@ typedef struct {
     bool show_help;
     bool quit;
     double time_scale; /* simulated seconds per displayed second, 0.1 to 1 */
-    double impulse_scale; /* impulse arrow length (m) per N s, 0.1 to start */
+    double impulse_scale; /* impulse arrow length (m) per N s, 0.2 to start */
 
     /* Input state. */
     double now;          /* app clock (s): real time, or frames / 60 headless */

@@ -79,7 +79,7 @@ static void usage(FILE *out) {
             SCRIPT_HELP);
     fprintf(out, "Keys and mouse in the app (H or F1 shows them there too):\n");
     for (size_t i = 0; i < INPUT_CONTROL_COUNT; i++) {
-        fprintf(out, "  %-36s %s\n", INPUT_CONTROLS[i].keys, INPUT_CONTROLS[i].action);
+        fprintf(out, "  %-36s  %s\n", INPUT_CONTROLS[i].keys, INPUT_CONTROLS[i].action);
     }
 }
 

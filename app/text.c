@@ -8,15 +8,19 @@ void text_number(char *out, size_t n, double value, int decimals, size_t max_cha
         snprintf(out, n, "%s", isnan(value) ? "nan" : value > 0 ? "inf" : "-inf");
         return;
     }
-    /* A value that rounds to zero at this precision is shown unsigned. */
-    if (fabs(value) < 0.5 * pow(10.0, -decimals)) value = 0.0;
     snprintf(out, n, "%.*f", decimals, value);
+    /* A value that rounds to zero at this precision is shown unsigned. */
+    if (out[0] == '-' && strspn(out + 1, "0.") == strlen(out + 1)) {
+        value = 0.0;
+        snprintf(out, n, "%.*f", decimals, value);
+    }
     /* Too long: thousands (k), millions (M), ... with as many decimals as fit. */
     static const char *const SUFFIXES[] = {"k", "M", "G", "T", "P"};
     double scaled = value;
     for (size_t s = 0; s < sizeof(SUFFIXES) / sizeof(SUFFIXES[0]); s++) {
         if (strlen(out) <= max_chars) return;
         scaled /= 1000.0;
+        if (fabs(scaled) >= 999.5) continue; /* the next suffix reads better */
         for (int d = decimals; d >= 0; d--) {
             snprintf(out, n, "%.*f%s", d, scaled, SUFFIXES[s]);
             if (strlen(out) <= max_chars) return;
