@@ -904,6 +904,19 @@ static void test_help_lists_every_readme_key(void) {
         }
     }
     EXPECT(checked >= 30, "only %zu keys found in the README's table", checked);
+    /* docs/sandbox.md lists the same keys, word for word. */
+    char *doc = read_text_file("docs/sandbox.md");
+    if (table != NULL && doc != NULL) {
+        const char *end = strstr(table, "\n\n");
+        size_t length = end != NULL ? (size_t)(end - table) : strlen(table);
+        char *copy = malloc(length + 1);
+        memcpy(copy, table, length);
+        copy[length] = '\0';
+        EXPECT(strstr(doc, copy) != NULL,
+               "docs/sandbox.md's table of keys differs from the README's");
+        free(copy);
+    }
+    free(doc);
     free(readme);
     image_t image;
     if (run_script("help", "key h\nmove px 5 5\n", NULL, &run) && load_shot("help", &image)) {
