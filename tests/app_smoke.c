@@ -472,13 +472,16 @@ static void test_default_view_shows_the_container_and_every_panel(void) {
     check_layout("1280x720", 1280, 720);
 }
 
-/* Clicks all over the side bar act on its panels only; clicks inside the
- * floor, the walls, below the floor and outside the container are refused
- * with a message: no body anywhere, the side bar counts none. */
+/* Clicks all over the side bar act on its panels only, even with the
+ * container panned behind it; clicks inside the floor, the walls, below the
+ * floor and outside the container are refused with a message: no body
+ * anywhere, the side bar counts none. */
 static void test_panel_and_wall_clicks_drop_nothing(void) {
     layout_t layout = layout_800();
-    char script[16384] = "";
-    size_t used = 0;
+    /* Five presses of Left pan the world 300 px right: the container's right
+     * half is then behind the side bar, where a click must not reach. */
+    char script[16384] = "key left\nkey left\nkey left\nkey left\nkey left\n";
+    size_t used = strlen(script);
     const int columns[3] = {layout.sidebar.x + 3, layout.sidebar.x + 130, WIDTH - 4};
     for (int y = 3; y < HEIGHT; y += 12) {
         for (int c = 0; c < 3; c++) {
@@ -488,7 +491,7 @@ static void test_panel_and_wall_clicks_drop_nothing(void) {
     }
     used += (size_t)snprintf(script + used, sizeof script - used,
                              "throw px %d 300 %d 300 5\n" /* a throw inside the side bar */
-                             "click 0 -0.5\nscreenshot " TMP_DIR "/refused_floor.bmp\n"
+                             "key 0\nclick 0 -0.5\nscreenshot " TMP_DIR "/refused_floor.bmp\n"
                              "click -14.5 10\nscreenshot " TMP_DIR "/refused_wall.bmp\n"
                              "click 0 31\nscreenshot " TMP_DIR "/refused_outside.bmp\n"
                              "click -10 -0.9\nclick 14.5 25\nclick 15.3 5\nclick 0 -1.4\n"
@@ -716,12 +719,13 @@ static void test_text_fits_and_shows_no_negative_zero(void) {
     run_t run;
     image_t image;
     const char *flags[] = {"--elasticity", "0", NULL};
-    if (run_script("resting", "click 3 1\nwait 4s\nmove px 5 5\n", flags, &run) &&
+    /* A resting triangle: its momentum's y is a hair below zero. */
+    if (run_script("resting", "key 3\nclick 3 1\nwait 5s\nmove px 5 5\n", flags, &run) &&
         load_shot("resting", &image)) {
         char momentum[40];
         EXPECT(read_line_after(&image, "momentum ", momentum, 30) &&
                    strcmp(momentum, "(0.00, 0.00) N s") == 0,
-               "a resting body's momentum reads '%s'", momentum);
+               "a resting triangle's momentum reads '%s'", momentum);
         EXPECT(!shows(&image, "-0.0", true), "'-0.0' on screen");
         image_free(&image);
     }
@@ -970,9 +974,10 @@ static char *doc_heredoc(const char *doc, const char *name) {
 
 /* Runs the documented command with `marker` (its script file, if given,
  * replaced by `script`, its screenshot by one of ours) and compares the
- * picture with the committed one. Up to 0.5% of the pixels may differ by
- * more than 48 in a channel, for machines whose floating point differs;
- * on this machine the pictures are identical. */
+ * picture with the committed one. Up to 0.1% of the pixels may differ by
+ * more than 48 in a channel, for machines whose floating point differs; on
+ * this machine the pictures are identical. (Grabbing the hexagon next to
+ * the demo's triangle instead changes 0.46% of docs/sandbox.png.) */
 static void check_doc_picture(const char *doc, const char *marker, const char *doc_script,
                               const char *script, const char *picture) {
     char *words[32];
@@ -1017,7 +1022,7 @@ static void check_doc_picture(const char *doc, const char *marker, const char *d
     }
     if (image_read(shot, &fresh, why, sizeof why)) {
         long differ = image_diff(&fresh, &committed, 48, diff);
-        long allowed = (long)fresh.width * fresh.height / 200;
+        long allowed = (long)fresh.width * fresh.height / 1000;
         EXPECT(differ >= 0 && differ <= allowed,
                "%s: the documented command draws a different picture (%ld pixels differ, %ld "
                "allowed; %s shows them in red). If the change is meant, redraw the pictures "
