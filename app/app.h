@@ -115,10 +115,10 @@ void app_resize(app_t *app, int width, int height);
 /* Whether a window pixel is in the view area (the world), not the side bar. */
 bool app_in_view(const app_t *app, vector_t pixel);
 
-/* The physics for a frame of frame_dt seconds of display time: adds frame_dt
- * times the time scale to the accumulator and takes the whole APP_STEP steps
- * it holds (none while paused, but a requested single step); ages the impulse
- * trail. Returns how many steps to run. */
+/* The physics for a frame of frame_dt seconds of display time: the step
+ * clock is owed frame_dt times the time scale and gives the steps to run now
+ * (step_clock.h; none while paused, but a requested single step); ages the
+ * impulse trail. Returns how many steps to run. */
 int app_plan_steps(app_t *app, double frame_dt);
 
 /* Runs that many steps, recording their impulses into the trail. Touches

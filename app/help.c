@@ -23,7 +23,7 @@ void help_draw(SDL_Renderer *renderer, app_t *app) {
                   draw_coord(y + h - 1), PALETTE_ACCENT.r, PALETTE_ACCENT.g, PALETTE_ACCENT.b, 255);
     int ty = y + LAYOUT_PAD;
     draw_text(renderer, x + LAYOUT_PAD, ty, PALETTE_ACCENT,
-              "SANDBOX CONTROLS   (H, F1 or Esc closes)");
+              "SANDBOX CONTROLS   (H, F1, Esc or a click closes)");
     ty += 2 * row_h;
     int action_x = x + LAYOUT_PAD + (KEY_CHARS + 2) * DRAW_CHAR_W;
     for (size_t i = 0; i < INPUT_CONTROL_COUNT; i++) {

@@ -41,7 +41,7 @@ const input_control_t INPUT_CONTROLS[] = {
     {"Left / Right, Ctrl + Up / Down", "pan the view"},
     {"F", "frame every body"},
     {"0, Home", "the default view: the whole container"},
-    {"H, F1", "this help"},
+    {"H, F1", "this help (a click closes it too)"},
     {"Esc, Q", "quit (Esc first closes the help)"},
 };
 const size_t INPUT_CONTROL_COUNT = sizeof(INPUT_CONTROLS) / sizeof(INPUT_CONTROLS[0]);
@@ -356,6 +356,11 @@ static void on_button_down(app_t *app, const SDL_MouseButtonEvent *button) {
     app->mouse = (vector_t){button->x, button->y};
     app->mouse_inside = true;
     if (app->drag != DRAG_NONE) return;
+    /* The help covers the view: a click there closes it and drops nothing. */
+    if (app->show_help) {
+        app->show_help = false;
+        return;
+    }
     /* The side bar's panels take their own clicks; nothing reaches the world. */
     if (!app_in_view(app, app->mouse)) {
         if (button->button == SDL_BUTTON_LEFT) app->drag = ui_press(app, app->mouse);

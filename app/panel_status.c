@@ -20,7 +20,7 @@ static void draw_status(SDL_Renderer *renderer, app_t *app, body_t *hovered, SDL
     rectangleRGBA(renderer, draw_coord(r.x - 4), draw_coord(r.y - 2), draw_coord(r.x + r.w + 3),
                   draw_coord(r.y + r.h + 1), color.r, color.g, color.b, 255);
     char lines[STATUS_LINES][LAYOUT_LINE_CHARS + 1];
-    int count = text_wrap(app->status, LAYOUT_LINE_CHARS - 1, &lines[0][0], sizeof(lines[0]),
+    int count = text_wrap(app->status, LAYOUT_LINE_CHARS, &lines[0][0], sizeof(lines[0]),
                           STATUS_LINES);
     for (int i = 0; i < count; i++) {
         draw_text(renderer, r.x, r.y + 2 + i * DRAW_LINE_H, color, "%s", lines[i]);
