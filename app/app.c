@@ -21,12 +21,34 @@ const char *app_overlay_key(overlay_t overlay) {
     return overlay < OVERLAY_COUNT ? OVERLAY_KEYS[overlay] : "?";
 }
 
+static void set_status(app_t *app, bool warning, const char *format, va_list args) {
+    vsnprintf(app->status, sizeof(app->status), format, args);
+    app->status_time = app->now;
+    app->status_warning = warning;
+}
+
 void app_status(app_t *app, const char *format, ...) {
     va_list args;
     va_start(args, format);
-    vsnprintf(app->status, sizeof(app->status), format, args);
+    set_status(app, false, format, args);
     va_end(args);
-    app->status_time = app->now;
+}
+
+void app_warn(app_t *app, const char *format, ...) {
+    va_list args;
+    va_start(args, format);
+    set_status(app, true, format, args);
+    va_end(args);
+}
+
+bool app_status_showing(const app_t *app) {
+    return app->status[0] != '\0' && app->now - app->status_time <= APP_STATUS_SECONDS;
+}
+
+void app_toggle_overlay(app_t *app, overlay_t overlay) {
+    if (overlay >= OVERLAY_COUNT) return;
+    app->overlays[overlay] = !app->overlays[overlay];
+    app_status(app, "%s %s", app_overlay_name(overlay), app->overlays[overlay] ? "on" : "off");
 }
 
 void app_set_elasticity(app_t *app, double elasticity) {
@@ -49,15 +71,28 @@ void app_new_shape(app_t *app) {
 void app_init(app_t *app, int width, int height, uint64_t seed) {
     memset(app, 0, sizeof(*app));
     sandbox_init(&app->sandbox, seed);
-    camera_init(&app->camera, width, height);
+    app->layout = layout_of(width, height);
+    aabb_t home = app->sandbox.extent;
+    vector_t margin = {APP_VIEW_MARGIN, APP_VIEW_MARGIN};
+    camera_init(&app->camera, app->layout.view.w, app->layout.view.h,
+                vec_subtract(home.min, margin), vec_add(home.max, margin));
     app->shape = (shape_choice_t){SHAPE_REGULAR, 6, 0.5};
     app->elasticity = 0.5;
     app->time_scale = 1.0;
-    app->impulse_scale = 0.1;
+    app->impulse_scale = 0.2;
     app->overlays[OVERLAY_AXES] = true;
     app->overlays[OVERLAY_IMPULSES] = true;
-    app->mouse = (vector_t){0.5 * width, 0.5 * height};
+    app->mouse = (vector_t){0.5 * app->layout.view.w, 0.5 * app->layout.view.h};
     app_new_shape(app);
+}
+
+void app_resize(app_t *app, int width, int height) {
+    app->layout = layout_of(width, height);
+    camera_resize(&app->camera, app->layout.view.w, app->layout.view.h);
+}
+
+bool app_in_view(const app_t *app, vector_t pixel) {
+    return layout_contains(app->layout.view, pixel.x, pixel.y);
 }
 
 void app_free(app_t *app) {
@@ -87,19 +122,13 @@ int app_plan_steps(app_t *app, double frame_dt) {
     int steps = 0;
     if (!app->paused) {
         impulse_trail_age(&app->trail, frame_dt);
-        app->accumulator += frame_dt * app->time_scale;
-        while (app->accumulator >= APP_STEP && steps < APP_MAX_STEPS_PER_FRAME) {
-            app->accumulator -= APP_STEP;
-            steps++;
-        }
-        /* A stall: forget the backlog rather than run ever more steps. */
-        if (steps == APP_MAX_STEPS_PER_FRAME && app->accumulator > APP_STEP) {
-            app->accumulator = 0.0;
-        }
+        app->requested_time += frame_dt * app->time_scale;
+        steps = step_clock_advance(&app->clock, frame_dt * app->time_scale);
     }
     if (app->step_once) {
         app->step_once = false;
         impulse_trail_age(&app->trail, APP_STEP);
+        app->clock.simulated += APP_STEP;
         steps++;
     }
     return steps;

@@ -11,12 +11,15 @@
 #include <stdint.h>
 #include "camera.h"
 #include "impulse_trail.h"
+#include "layout.h"
 #include "sandbox_scene.h"
+#include "step_clock.h"
 
-/* The fixed physics step (s) and the most steps one frame may run: beyond
- * that the simulation slows down rather than spiralling after a stall. */
-#define APP_STEP (1.0 / 120.0)
-#define APP_MAX_STEPS_PER_FRAME 4
+/* The fixed physics step (s); step_clock.h says how frames pay for steps. */
+#define APP_STEP STEP_CLOCK_STEP
+/* The default view shows the container, its floor and walls, and this much
+ * around them (m). */
+#define APP_VIEW_MARGIN 0.5
 /* The frame time in --headless mode, where no clock is read (s). */
 #define APP_HEADLESS_FRAME (1.0 / 60.0)
 
@@ -60,7 +63,9 @@ typedef struct {
 
 typedef struct {
     sandbox_t sandbox;
-    camera_t camera;
+    layout_t layout;  /* the view area and the side bar */
+    camera_t camera;  /* the world in the view area */
+    bool headless;    /* no clock: the side bar shows no wall-clock timings */
 
     /* What a click drops, and the elasticity of new bodies. */
     shape_choice_t shape;
@@ -73,7 +78,7 @@ typedef struct {
     bool show_help;
     bool quit;
     double time_scale; /* simulated seconds per displayed second, 0.1 to 1 */
-    double impulse_scale; /* impulse arrow length (m) per N s, 0.1 to start */
+    double impulse_scale; /* impulse arrow length (m) per N s, 0.2 to start */
 
     /* Input state. */
     double now;          /* app clock (s): real time, or frames / 60 headless */
@@ -87,21 +92,33 @@ typedef struct {
 
     impulse_trail_t trail;
     app_timing_t timing;
-    double accumulator;  /* simulated time owed to the physics (s) */
+    step_clock_t clock;
+    double requested_time; /* simulated seconds the frames asked for (for --stats) */
 
-    /* A short status line ("elasticity of body set to 0.80"), shown a while. */
+    /* A short status line ("elasticity of body set to 0.80"), shown a while;
+     * a warning (a refused drop) stands out. */
     char status[160];
     double status_time;
+    bool status_warning;
 } app_t;
+
+/* How long a status line shows (s). */
+#define APP_STATUS_SECONDS 2.5
 
 /* The default scene and settings for a window of width x height pixels. */
 void app_init(app_t *app, int width, int height, uint64_t seed);
 void app_free(app_t *app);
 
-/* The physics for a frame of frame_dt seconds of display time: adds frame_dt
- * times the time scale to the accumulator and takes the whole APP_STEP steps
- * it holds (none while paused, but a requested single step); ages the impulse
- * trail. Returns how many steps to run. */
+/* The window is now width x height pixels: the layout and the view follow. */
+void app_resize(app_t *app, int width, int height);
+
+/* Whether a window pixel is in the view area (the world), not the side bar. */
+bool app_in_view(const app_t *app, vector_t pixel);
+
+/* The physics for a frame of frame_dt seconds of display time: the step
+ * clock is owed frame_dt times the time scale and gives the steps to run now
+ * (step_clock.h; none while paused, but a requested single step); ages the
+ * impulse trail. Returns how many steps to run. */
 int app_plan_steps(app_t *app, double frame_dt);
 
 /* Runs that many steps, recording their impulses into the trail. Touches
@@ -116,9 +133,22 @@ void app_status(app_t *app, const char *format, ...)
 #endif
     ;
 
+/* The same, as a warning: something asked for was refused. */
+void app_warn(app_t *app, const char *format, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 2, 3)))
+#endif
+    ;
+
+/* Whether the status line is still showing. */
+bool app_status_showing(const app_t *app);
+
 /* The overlay's display name and its toggle key's label. */
 const char *app_overlay_name(overlay_t overlay);
 const char *app_overlay_key(overlay_t overlay);
+
+/* Turns an overlay on or off, and says so on the status line. */
+void app_toggle_overlay(app_t *app, overlay_t overlay);
 
 /* Clamps and sets the global elasticity (new bodies). */
 void app_set_elasticity(app_t *app, double elasticity);

@@ -1,10 +1,11 @@
-# The SDL2 + SDL2_gfx sandbox (app/) and its smoke tests (tests/app_smoke.c).
-# Included by the top Makefile. `make` builds ./sandbox when pkg-config finds
-# both libraries; without them `make` still builds the engine, and the smoke
-# tests build without SDL and report themselves skipped.
+# The SDL2 + SDL2_gfx + SDL2_image sandbox (app/) and its smoke tests
+# (tests/app_smoke.c). Included by the top Makefile. `make` builds ./sandbox
+# when pkg-config finds the three libraries; without them `make` still builds
+# the engine, and the smoke tests build without SDL and report themselves
+# skipped. SDL2_image writes the PNG screenshots (IMG_SavePNG).
 
-SANDBOX_PKGS := sdl2 SDL2_gfx
-SANDBOX_APT := libsdl2-dev libsdl2-gfx-dev pkg-config
+SANDBOX_PKGS := sdl2 SDL2_gfx SDL2_image
+SANDBOX_APT := libsdl2-dev libsdl2-gfx-dev libsdl2-image-dev pkg-config
 SANDBOX_HAVE_SDL := $(shell pkg-config --exists $(SANDBOX_PKGS) 2>/dev/null && echo yes)
 
 APP_SRC := $(wildcard app/*.c)
@@ -28,24 +29,39 @@ sandbox: $(APP_OBJ) build/libengine.a
 	$(CC) $(APP_OBJ) build/libengine.a $(SANDBOX_LIBS) -lm -o $@
 
 APP_SMOKE_DEPS := sandbox
-APP_SMOKE_DEFS := -DAPP_SMOKE_HAVE_SDL=1
+# The smoke tests read the app's 8x8 font (SDL2_gfx's header) to find text in
+# screenshots, and PNG files with libpng (a dependency of libsdl2-image-dev).
+APP_SMOKE_DEFS := -DAPP_SMOKE_HAVE_SDL=1 \
+    $(patsubst -I%,-isystem %,$(shell pkg-config --cflags SDL2_gfx libpng))
+APP_SMOKE_LIBS := $(shell pkg-config --libs libpng)
 else
 sandbox:
-	@echo "sandbox: SDL2 and SDL2_gfx were not found by pkg-config ($(SANDBOX_PKGS))."
+	@echo "sandbox: SDL2, SDL2_gfx or SDL2_image was not found by pkg-config ($(SANDBOX_PKGS))."
 	@echo "Install them with: sudo apt-get install -y $(SANDBOX_APT)   (or run: make run)"
 	@exit 1
 
 APP_SMOKE_DEPS :=
 APP_SMOKE_DEFS := -DAPP_SMOKE_HAVE_SDL=0
+APP_SMOKE_LIBS :=
 endif
 
-# The smoke tests drive ./sandbox from outside and read its BMP screenshots,
-# so they need no SDL themselves.
-build/tests/app_smoke: tests/app_smoke.c app/palette.h app/app.mk $(APP_SMOKE_DEPS)
+# The app's plain-C parts (no SDL: text, the side bar's lines, the step
+# clock, the layout), tested directly; they build and run without SDL.
+APP_UNIT_SRC := tests/app_units.c app/text.c app/stats_text.c app/step_clock.c app/layout.c
+build/tests/app_units: $(APP_UNIT_SRC) $(wildcard app/*.h) app/app.mk
 	@mkdir -p $(dir $@)
-	$(CC) $(CSTD) $(WARN) -O1 -g $(SAN) $(APP_SMOKE_DEFS) -Iapp tests/app_smoke.c -o $@
+	$(CC) $(CSTD) $(WARN) -O1 -g $(SAN) -Iapp $(APP_UNIT_SRC) -lm -o $@
 
-CHECK_PROGRAMS += build/tests/app_smoke
+# The smoke tests drive ./sandbox from outside and read its screenshots; they
+# link no SDL.
+APP_SMOKE_SRC := tests/app_smoke.c tests/app_image.c app/layout.c
+build/tests/app_smoke: $(APP_SMOKE_SRC) tests/app_image.h app/palette.h app/layout.h app/app.mk \
+                       $(APP_SMOKE_DEPS)
+	@mkdir -p $(dir $@)
+	$(CC) $(CSTD) $(WARN) -O1 -g $(SAN) $(APP_SMOKE_DEFS) -Iapp -Itests $(APP_SMOKE_SRC) \
+	    $(APP_SMOKE_LIBS) -lm -o $@
+
+CHECK_PROGRAMS += build/tests/app_units build/tests/app_smoke
 
 # Installs the Debian packages when they are missing (as root; otherwise it
 # prints the command), then builds and starts the sandbox.
@@ -55,7 +71,7 @@ sandbox-deps:
 	        echo "Installing $(SANDBOX_APT)"; \
 	        apt-get update && apt-get install -y $(SANDBOX_APT) || exit 1; \
 	    else \
-	        echo "The sandbox needs SDL2 and SDL2_gfx. Install them with:"; \
+	        echo "The sandbox needs SDL2, SDL2_gfx and SDL2_image. Install them with:"; \
 	        echo "    sudo apt-get install -y $(SANDBOX_APT)"; \
 	        echo "then run 'make run' again."; \
 	        exit 1; \

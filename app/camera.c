@@ -1,25 +1,38 @@
 #include "camera.h"
 #include <math.h>
 
-/* The region the default view shows (metres): the floor's top is y = 0 and
- * the inner faces of the walls are at x = +-14 (sandbox_scene.c). */
-static const double VIEW_MIN_X = -15.5, VIEW_MAX_X = 15.5;
-static const double VIEW_MIN_Y = -1.5, VIEW_MAX_Y = 18.5;
-static const double MIN_SCALE = 4.0, MAX_SCALE = 800.0;
-
-void camera_init(camera_t *camera, int width, int height) {
+void camera_init(camera_t *camera, int width, int height, vector_t home_min, vector_t home_max) {
     camera->width = width;
     camera->height = height;
+    camera->home_min = home_min;
+    camera->home_max = home_max;
     camera_reset(camera);
 }
 
+/* The scale at which the box min .. max just fits. */
+static double fitting_scale(const camera_t *camera, vector_t min, vector_t max) {
+    double sx = camera->width / fmax(max.x - min.x, 1e-3);
+    double sy = camera->height / fmax(max.y - min.y, 1e-3);
+    return fmin(CAMERA_MAX_SCALE, fmax(CAMERA_MIN_SCALE, fmin(sx, sy)));
+}
+
+static void fit(camera_t *camera, vector_t min, vector_t max) {
+    camera->scale = fitting_scale(camera, min, max);
+    camera->center = (vector_t){0.5 * (min.x + max.x), 0.5 * (min.y + max.y)};
+}
+
+double camera_zoom(const camera_t *camera) {
+    return camera->scale / fitting_scale(camera, camera->home_min, camera->home_max);
+}
+
 void camera_reset(camera_t *camera) {
-    double sx = camera->width / (VIEW_MAX_X - VIEW_MIN_X);
-    double sy = camera->height / (VIEW_MAX_Y - VIEW_MIN_Y);
-    camera->scale = fmin(sx, sy);
-    if (!(camera->scale > 0.0)) camera->scale = 1.0;
-    camera->center = (vector_t){0.5 * (VIEW_MIN_X + VIEW_MAX_X), 0.5 * (VIEW_MIN_Y + VIEW_MAX_Y)};
+    fit(camera, camera->home_min, camera->home_max);
     camera->moved = false;
+}
+
+void camera_frame(camera_t *camera, vector_t min, vector_t max) {
+    fit(camera, min, max);
+    camera->moved = true;
 }
 
 void camera_resize(camera_t *camera, int width, int height) {
@@ -54,7 +67,7 @@ void camera_pan_pixels(camera_t *camera, double dx, double dy) {
 
 void camera_zoom_at(camera_t *camera, double factor, vector_t pixel) {
     vector_t anchor = camera_to_world(camera, pixel);
-    camera->scale = fmin(MAX_SCALE, fmax(MIN_SCALE, camera->scale * factor));
+    camera->scale = fmin(CAMERA_MAX_SCALE, fmax(CAMERA_MIN_SCALE, camera->scale * factor));
     /* Put anchor back under pixel. */
     vector_t moved = camera_to_pixel(camera, anchor);
     camera_pan_pixels(camera, pixel.x - moved.x, pixel.y - moved.y);

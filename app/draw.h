@@ -5,6 +5,7 @@
 
 #include <SDL.h>
 #include <stdbool.h>
+#include "layout.h"
 #include "palette.h"
 #include "vector.h"
 
@@ -32,7 +33,7 @@ void draw_text(SDL_Renderer *renderer, int x, int y, palette_rgb_t color, const 
 void draw_panel(SDL_Renderer *renderer, int x, int y, int w, int h, palette_rgb_t color,
                 Uint8 alpha);
 
-#define DRAW_CHAR_W 8
-#define DRAW_LINE_H 12
+#define DRAW_CHAR_W LAYOUT_CHAR_W
+#define DRAW_LINE_H LAYOUT_LINE_H
 
 #endif

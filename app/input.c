@@ -10,18 +10,20 @@ static const double ELASTICITY_STEP = 0.05;
 static const double SIZE_FACTOR = 1.1;
 static const double ZOOM_FACTOR = 1.15;
 static const double PAN_PIXELS = 60.0;
+static const double FRAME_MARGIN = 1.1;
+static const double FRAME_MIN_SIZE = 6.0;
 
 const input_control_t INPUT_CONTROLS[] = {
-    {"Left click", "drop the shape at the cursor"},
+    {"Left click", "drop the shape at the cursor (not in a wall or outside)"},
     {"Shift + left drag", "throw it with the drag's velocity"},
     {"Right drag on a body", "pull it with a spring to the cursor"},
-    {"Right/middle drag", "pan the view"},
-    {"Ctrl + left click, D, Del", "delete the body under the cursor"},
+    {"Right drag elsewhere, middle drag", "pan the view"},
+    {"Ctrl + left click, D, Del, Backspace", "delete the body under the cursor"},
     {"3 4 5 6 7 8", "regular polygon with 3 to 8 sides"},
     {"B / P / Tab", "box / random convex polygon / next shape"},
     {"Mouse wheel", "shape size (over the slider: elasticity)"},
     {"Up / Down, slider", "elasticity of new bodies +/- 0.05"},
-    {"E / Shift + E", "give the body under the cursor / all bodies that elasticity"},
+    {"E / Shift + E", "give that elasticity to the hovered body / every body"},
     {"A", "overlay: collision axes"},
     {"I", "overlay: impulses (fade over 0.5 s)"},
     {", / .", "impulse arrows shorter / longer"},
@@ -29,17 +31,18 @@ const input_control_t INPUT_CONTROLS[] = {
     {"V", "overlay: velocity vectors"},
     {"M", "overlay: centroids"},
     {"X", "overlay: bounding boxes"},
-    {"O", "all overlays on / off"},
+    {"O", "all overlays on / off (a click on a line toggles it)"},
     {"Space", "pause / resume"},
     {"S", "single step (pauses)"},
     {"[ / ]", "slow motion: time x0.1 to x1"},
     {"G", "gravity on / off"},
-    {"C / R", "clear bodies / reset the scene"},
-    {"Ctrl + wheel, + / -", "zoom"},
-    {"Left/Right, Ctrl + Up/Down", "pan the view"},
-    {"0, Home", "reset the view"},
-    {"H, F1", "this help"},
-    {"Esc, Q", "quit"},
+    {"C / R", "clear the bodies / reset the scene"},
+    {"Ctrl + wheel, + / -", "zoom about the cursor"},
+    {"Left / Right, Ctrl + Up / Down", "pan the view"},
+    {"F", "frame every body"},
+    {"0, Home", "the default view: the whole container"},
+    {"H, F1", "this help (a click closes it too)"},
+    {"Esc, Q", "quit (Esc first closes the help)"},
 };
 const size_t INPUT_CONTROL_COUNT = sizeof(INPUT_CONTROLS) / sizeof(INPUT_CONTROLS[0]);
 
@@ -48,7 +51,7 @@ vector_t input_cursor_world(const app_t *app) {
 }
 
 body_t *input_hovered_body(app_t *app) {
-    if (!app->mouse_inside) return NULL;
+    if (!app->mouse_inside || !app_in_view(app, app->mouse)) return NULL;
     if (app->drag == DRAG_GRAB) return app->sandbox.grab.body;
     return sandbox_body_at(&app->sandbox, input_cursor_world(app));
 }
@@ -80,9 +83,18 @@ static vector_t throw_velocity(const app_t *app) {
     return v;
 }
 
+/* Drops the next shape at `at` (moved clear of the floor and walls), or
+ * says on the status line why not: inside a static body, outside the
+ * container (sandbox_place). */
 static void drop_at(app_t *app, vector_t at, vector_t velocity) {
+    vector_t placed;
+    const char *refusal = sandbox_place(&app->sandbox, app->next_vertices, at, &placed);
+    if (refusal != NULL) {
+        app_warn(app, "cannot drop %s", refusal);
+        return;
+    }
     const char *problem = NULL;
-    body_t *body = sandbox_drop(&app->sandbox, sandbox_copy_vertices(app->next_vertices), at,
+    body_t *body = sandbox_drop(&app->sandbox, sandbox_copy_vertices(app->next_vertices), placed,
                                 velocity, app->elasticity, &problem);
     if (body == NULL) {
         app_status(app, "cannot drop: %s", problem);
@@ -115,11 +127,39 @@ static void change_size(app_t *app, double factor) {
     if (size == app->shape.size) return;
     app->shape.size = size;
     app_new_shape(app);
+    app_status(app, "size %.2f m", app->shape.size);
 }
 
-static void toggle_overlay(app_t *app, overlay_t overlay) {
-    app->overlays[overlay] = !app->overlays[overlay];
-    app_status(app, "%s %s", app_overlay_name(overlay), app->overlays[overlay] ? "on" : "off");
+static void change_elasticity(app_t *app, double delta) {
+    app_set_elasticity(app, app->elasticity + delta);
+    app_status(app, "elasticity of new bodies %.2f", app->elasticity);
+}
+
+/* Zooms about the cursor when it is over the view, else about the view's
+ * middle. */
+static void zoom(app_t *app, double factor) {
+    vector_t anchor = {0.5 * app->camera.width, 0.5 * app->camera.height};
+    if (app->mouse_inside && app_in_view(app, app->mouse)) anchor = app->mouse;
+    camera_zoom_at(&app->camera, factor, anchor);
+    app_status(app, "zoom x%.2f", camera_zoom(&app->camera));
+}
+
+/* Every body in view, with a margin; no closer than FRAME_MIN_SIZE across,
+ * so that one body does not fill the screen. */
+static void frame_all(app_t *app) {
+    aabb_t box;
+    if (!sandbox_bodies_bounds(&app->sandbox, &box)) {
+        camera_reset(&app->camera);
+        app_status(app, "no bodies: the whole container");
+        return;
+    }
+    vector_t middle = vec_multiply(0.5, vec_add(box.min, box.max));
+    vector_t half = vec_multiply(0.5, vec_subtract(box.max, box.min));
+    half.x = fmax(half.x * FRAME_MARGIN + 0.5, 0.5 * FRAME_MIN_SIZE);
+    half.y = fmax(half.y * FRAME_MARGIN + 0.5, 0.5 * FRAME_MIN_SIZE);
+    camera_frame(&app->camera, vec_subtract(middle, half), vec_add(middle, half));
+    size_t bodies = sandbox_totals(&app->sandbox).bodies;
+    app_status(app, "framed %zu bod%s", bodies, bodies == 1 ? "y" : "ies");
 }
 
 static void set_body_elasticity(app_t *app, bool all) {
@@ -145,9 +185,28 @@ static void set_body_elasticity(app_t *app, bool all) {
 
 static void delete_hovered(app_t *app) {
     body_t *body = input_hovered_body(app);
-    if (body == NULL) return;
+    if (body == NULL) {
+        app_status(app, "no body under the cursor to delete");
+        return;
+    }
     if (app->drag == DRAG_GRAB) app->drag = DRAG_NONE;
     sandbox_delete(&app->sandbox, body);
+    app_status(app, "deleted a body");
+}
+
+static void clear_bodies(app_t *app) {
+    size_t removed = sandbox_clear(&app->sandbox);
+    if (app->drag == DRAG_GRAB) app->drag = DRAG_NONE;
+    app_status(app, "cleared: %zu bod%s removed", removed, removed == 1 ? "y" : "ies");
+}
+
+static void reset_scene(app_t *app) {
+    size_t removed = sandbox_totals(&app->sandbox).bodies;
+    sandbox_reset(&app->sandbox);
+    impulse_trail_clear(&app->trail);
+    if (app->drag == DRAG_GRAB) app->drag = DRAG_NONE;
+    app_status(app, "reset: new scene, %zu bod%s removed, gravity on", removed,
+               removed == 1 ? "y" : "ies");
 }
 
 static void change_time_scale(app_t *app, double delta) {
@@ -166,11 +225,11 @@ static void on_key(app_t *app, const SDL_KeyboardEvent *key) {
     switch (sym) {
     case SDLK_UP:
         if (ctrl) camera_pan_pixels(&app->camera, 0, PAN_PIXELS);
-        else app_set_elasticity(app, app->elasticity + ELASTICITY_STEP);
+        else change_elasticity(app, ELASTICITY_STEP);
         return;
     case SDLK_DOWN:
         if (ctrl) camera_pan_pixels(&app->camera, 0, -PAN_PIXELS);
-        else app_set_elasticity(app, app->elasticity - ELASTICITY_STEP);
+        else change_elasticity(app, -ELASTICITY_STEP);
         return;
     case SDLK_LEFT:
         camera_pan_pixels(&app->camera, PAN_PIXELS, 0);
@@ -181,17 +240,16 @@ static void on_key(app_t *app, const SDL_KeyboardEvent *key) {
     case SDLK_PLUS:
     case SDLK_EQUALS:
     case SDLK_KP_PLUS:
-        camera_zoom_at(&app->camera, ZOOM_FACTOR,
-                       (vector_t){0.5 * app->camera.width, 0.5 * app->camera.height});
+        zoom(app, ZOOM_FACTOR);
         return;
     case SDLK_MINUS:
     case SDLK_KP_MINUS:
-        camera_zoom_at(&app->camera, 1.0 / ZOOM_FACTOR,
-                       (vector_t){0.5 * app->camera.width, 0.5 * app->camera.height});
+        zoom(app, 1.0 / ZOOM_FACTOR);
         return;
     case SDLK_s:
         app->paused = true;
         app->step_once = true;
+        app_status(app, "one step of %.4g s (paused)", APP_STEP);
         return;
     default:
         break;
@@ -215,22 +273,22 @@ static void on_key(app_t *app, const SDL_KeyboardEvent *key) {
         set_body_elasticity(app, shift);
         break;
     case SDLK_a:
-        toggle_overlay(app, OVERLAY_AXES);
+        app_toggle_overlay(app, OVERLAY_AXES);
         break;
     case SDLK_i:
-        toggle_overlay(app, OVERLAY_IMPULSES);
+        app_toggle_overlay(app, OVERLAY_IMPULSES);
         break;
     case SDLK_t:
-        toggle_overlay(app, OVERLAY_POINTS);
+        app_toggle_overlay(app, OVERLAY_POINTS);
         break;
     case SDLK_v:
-        toggle_overlay(app, OVERLAY_VELOCITIES);
+        app_toggle_overlay(app, OVERLAY_VELOCITIES);
         break;
     case SDLK_m:
-        toggle_overlay(app, OVERLAY_CENTROIDS);
+        app_toggle_overlay(app, OVERLAY_CENTROIDS);
         break;
     case SDLK_x:
-        toggle_overlay(app, OVERLAY_BOUNDS);
+        app_toggle_overlay(app, OVERLAY_BOUNDS);
         break;
     case SDLK_COMMA:
     case SDLK_PERIOD:
@@ -260,15 +318,13 @@ static void on_key(app_t *app, const SDL_KeyboardEvent *key) {
         app_status(app, "gravity %s", app->sandbox.gravity_on ? "on" : "off");
         break;
     case SDLK_c:
-        sandbox_clear(&app->sandbox);
-        if (app->drag == DRAG_GRAB) app->drag = DRAG_NONE;
-        app_status(app, "cleared");
+        clear_bodies(app);
         break;
     case SDLK_r:
-        sandbox_reset(&app->sandbox);
-        impulse_trail_clear(&app->trail);
-        if (app->drag == DRAG_GRAB) app->drag = DRAG_NONE;
-        app_status(app, "reset");
+        reset_scene(app);
+        break;
+    case SDLK_f:
+        frame_all(app);
         break;
     case SDLK_d:
     case SDLK_DELETE:
@@ -278,6 +334,7 @@ static void on_key(app_t *app, const SDL_KeyboardEvent *key) {
     case SDLK_0:
     case SDLK_HOME:
         camera_reset(&app->camera);
+        app_status(app, "view: the whole container");
         break;
     case SDLK_h:
     case SDLK_F1:
@@ -299,12 +356,19 @@ static void on_button_down(app_t *app, const SDL_MouseButtonEvent *button) {
     app->mouse = (vector_t){button->x, button->y};
     app->mouse_inside = true;
     if (app->drag != DRAG_NONE) return;
+    /* The help covers the view: a click there closes it and drops nothing. */
+    if (app->show_help) {
+        app->show_help = false;
+        return;
+    }
+    /* The side bar's panels take their own clicks; nothing reaches the world. */
+    if (!app_in_view(app, app->mouse)) {
+        if (button->button == SDL_BUTTON_LEFT) app->drag = ui_press(app, app->mouse);
+        return;
+    }
     vector_t world = input_cursor_world(app);
     if (button->button == SDL_BUTTON_LEFT) {
-        if (ui_slider_hit(app, app->mouse)) {
-            app->drag = DRAG_SLIDER;
-            app_set_elasticity(app, ui_slider_value_at(app, app->mouse));
-        } else if (app->mods & KMOD_CTRL) {
+        if (app->mods & KMOD_CTRL) {
             delete_hovered(app);
         } else if (app->mods & KMOD_SHIFT) {
             app->drag = DRAG_THROW;
@@ -365,6 +429,7 @@ static void on_motion(app_t *app, const SDL_MouseMotionEvent *motion) {
         break;
     case DRAG_SLIDER:
         app_set_elasticity(app, ui_slider_value_at(app, app->mouse));
+        app_status(app, "elasticity of new bodies %.2f", app->elasticity);
         break;
     case DRAG_GRAB:
         if (app->sandbox.grab.body == NULL) {
@@ -388,9 +453,9 @@ static void on_wheel(app_t *app, const SDL_MouseWheelEvent *wheel) {
     if (wheel->direction == SDL_MOUSEWHEEL_FLIPPED) notches = -notches;
     if (notches == 0) return;
     if (ui_slider_hit(app, app->mouse)) {
-        app_set_elasticity(app, app->elasticity + ELASTICITY_STEP * notches);
+        change_elasticity(app, ELASTICITY_STEP * notches);
     } else if (app->mods & KMOD_CTRL) {
-        camera_zoom_at(&app->camera, pow(ZOOM_FACTOR, notches), app->mouse);
+        zoom(app, pow(ZOOM_FACTOR, notches));
     } else {
         change_size(app, pow(SIZE_FACTOR, notches));
     }

@@ -13,6 +13,7 @@
 #include "app.h"
 #include "draw.h"
 #include "input.h"
+#include "layout.h"
 #include "render.h"
 #include "script.h"
 #include "stepper.h"
@@ -49,9 +50,11 @@ static void usage(FILE *out) {
             "                      is 1/60 s of display time\n"
             "  --frames N          stop after N frames (headless default: when the\n"
             "                      script ends, or 1 frame without a script)\n"
-            "  --screenshot FILE   save the last frame as a BMP file\n"
+            "  --screenshot FILE   save the last frame as FILE: a PNG when FILE ends in\n"
+            "                      .png, a BMP when it ends in .bmp\n"
             "  --script FILE       replay timed input from FILE (format below)\n"
-            "  --size WxH          window size in pixels (default 1280x720)\n"
+            "  --size WxH          window size in pixels (default 1280x720, at least\n"
+            "                      800x600)\n"
             "  --software          draw with SDL's software renderer (the default)\n"
             "  --gpu               draw with SDL's accelerated renderer instead\n"
             "  --no-vsync          do not hold the frame rate to the display's\n"
@@ -71,9 +74,13 @@ static void usage(FILE *out) {
             "\n"
             "Example (what make check's smoke tests do):\n"
             "  printf 'click 0 6\\nwait 1s\\n' > drop.txt\n"
-            "  ./sandbox --headless --script drop.txt --screenshot out.bmp\n"
-            "\n%s",
+            "  ./sandbox --headless --script drop.txt --screenshot out.png\n"
+            "\n%s\n",
             SCRIPT_HELP);
+    fprintf(out, "Keys and mouse in the app (H or F1 shows them there too):\n");
+    for (size_t i = 0; i < INPUT_CONTROL_COUNT; i++) {
+        fprintf(out, "  %-36s  %s\n", INPUT_CONTROLS[i].keys, INPUT_CONTROLS[i].action);
+    }
 }
 
 static int bad_usage(const char *format, const char *a, const char *b) {
@@ -168,15 +175,18 @@ static int parse_options(int argc, char **argv, options_t *o) {
                                  value, "");
             }
         } else if (strcmp(arg, "--screenshot") == 0) {
+            if (video_format_of(value) == VIDEO_FORMAT_NONE) {
+                return bad_usage("--screenshot: '%s': %s", value, VIDEO_FORMAT_HINT);
+            }
             o->screenshot = value;
         } else if (strcmp(arg, "--script") == 0) {
             o->script = value;
         } else if (strcmp(arg, "--size") == 0) {
             int w, h;
             char extra;
-            if (sscanf(value, "%dx%d%c", &w, &h, &extra) != 2 || w < 320 || h < 240 ||
-                w > 8192 || h > 8192) {
-                return bad_usage("--size: '%s' is not WIDTHxHEIGHT between 320x240 and "
+            if (sscanf(value, "%dx%d%c", &w, &h, &extra) != 2 || w < LAYOUT_MIN_WIDTH ||
+                h < LAYOUT_MIN_HEIGHT || w > 8192 || h > 8192) {
+                return bad_usage("--size: '%s' is not WIDTHxHEIGHT between 800x600 and "
                                  "8192x8192%s", value, "");
             }
             o->width = w;
@@ -237,6 +247,13 @@ static void print_stats(app_t *app, double wall_s) {
     printf("present %8.3f ms per frame\n", 1000.0 * t->total_present_s / frames);
     printf("wall    %8.3f ms per frame  (%.1f frames per second shown, waits included)\n",
            1000.0 * wall_s / frames, wall_s > 0 ? frames / wall_s : 0.0);
+    /* The simulated clock against the display's: equal while the frame rate
+     * holds (step_clock.h). */
+    printf("clock   %.3f s simulated for %.3f s of frames (%.2f%%), %.3f s forgiven after "
+           "stalls\n",
+           app->clock.simulated, app->requested_time,
+           app->requested_time > 0 ? 100.0 * app->clock.simulated / app->requested_time : 0.0,
+           app->clock.forgiven);
 }
 
 int main(int argc, char **argv) {
@@ -286,6 +303,7 @@ int main(int argc, char **argv) {
 
     static app_t app; /* large (the impulse trail): not on the stack */
     app_init(&app, width, height, o.seed);
+    app.headless = o.headless;
     app_set_elasticity(&app, o.elasticity);
     if (o.overlays_given) memcpy(app.overlays, o.overlays, sizeof(app.overlays));
     if (o.spawn > 0) sandbox_spawn(&app.sandbox, (size_t)o.spawn, o.spawn_size, app.elasticity);
@@ -321,7 +339,7 @@ int main(int argc, char **argv) {
         SDL_Event event;
         while (SDL_PollEvent(&event)) input_handle_event(&app, &event);
         bool resized = video_sync_size(&video);
-        if (resized) camera_resize(&app.camera, video.width, video.height);
+        if (resized) app_resize(&app, video.width, video.height);
         SDL_Renderer *renderer = video.renderer;
         const char *shot = NULL;
         if (script != NULL) script_frame(script, &app, &shot);

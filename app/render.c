@@ -3,8 +3,8 @@
 #include <math.h>
 #include <stdlib.h>
 #include "draw.h"
+#include "edge_markers.h"
 #include "raster.h"
-#include "ui.h"
 
 #define MAX_VERTICES 64
 #define IMPULSE_MAX_PIXELS 200.0
@@ -74,12 +74,15 @@ static void draw_bodies(SDL_Renderer *renderer, SDL_Surface *canvas, app_t *app,
     raster_end();
 }
 
-/* The shape the next click drops, at the cursor, as a translucent outline. */
+/* The shape the next click drops, translucent, where it would go (moved
+ * clear of the floor and walls); a red outline where a drop is refused. */
 static void draw_preview(SDL_Renderer *renderer, app_t *app) {
     if (!app->mouse_inside || app->next_vertices == NULL) return;
     if (app->drag != DRAG_NONE && app->drag != DRAG_THROW) return;
-    if (app->drag == DRAG_NONE && ui_captures(app, app->mouse)) return;
-    vector_t at = camera_to_world(&app->camera, app->mouse);
+    if (!app_in_view(app, app->mouse)) return;
+    vector_t at;
+    bool refused = sandbox_place(&app->sandbox, app->next_vertices,
+                                 camera_to_world(&app->camera, app->mouse), &at) != NULL;
     size_t n = list_size(app->next_vertices);
     if (n > MAX_VERTICES) n = MAX_VERTICES;
     Sint16 xs[MAX_VERTICES], ys[MAX_VERTICES];
@@ -90,8 +93,12 @@ static void draw_preview(SDL_Renderer *renderer, app_t *app) {
         xs[i] = draw_coord(p.x);
         ys[i] = draw_coord(p.y);
     }
-    palette_rgb_t c =
-        PALETTE_BODIES[app->sandbox.next_color % PALETTE_BODY_COUNT];
+    if (refused) {
+        polygonRGBA(renderer, xs, ys, (int)n, PALETTE_WARNING.r, PALETTE_WARNING.g,
+                    PALETTE_WARNING.b, 220);
+        return;
+    }
+    palette_rgb_t c = PALETTE_BODIES[app->sandbox.next_color % PALETTE_BODY_COUNT];
     Uint8 alpha = app->drag == DRAG_THROW ? 150 : 70;
     filledPolygonRGBA(renderer, xs, ys, (int)n, c.r, c.g, c.b, alpha);
     polygonRGBA(renderer, xs, ys, (int)n, c.r, c.g, c.b, 200);
@@ -236,4 +243,5 @@ void render_world(SDL_Renderer *renderer, SDL_Surface *canvas, app_t *app, body_
     if (app->overlays[OVERLAY_POINTS]) draw_points(renderer, app);
     draw_grab(renderer, app);
     draw_preview(renderer, app);
+    edge_markers_draw(renderer, canvas, app);
 }

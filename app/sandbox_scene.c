@@ -1,5 +1,6 @@
 #include "sandbox_scene.h"
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include "palette.h"
 
@@ -26,10 +27,13 @@ static double random_unit(sandbox_t *sandbox) {
     return (double)((x * 2685821657736338717ULL) >> 11) / 9007199254740992.0;
 }
 
-static void add_static_box(scene_t *scene, double x0, double y0, double x1, double y1) {
+/* A static box; its info is its name for messages ("inside the floor"). */
+static void add_static_box(scene_t *scene, const char *name, double x0, double y0, double x1,
+                           double y1) {
     list_t *shape = polygon_make_box((vector_t){0.5 * (x0 + x1), 0.5 * (y0 + y1)},
                                      0.5 * (x1 - x0), 0.5 * (y1 - y0));
-    body_t *body = body_init(shape, INFINITY, color_of(PALETTE_STATIC));
+    body_t *body =
+        body_init_with_info(shape, INFINITY, color_of(PALETTE_STATIC), (void *)name, NULL);
     body_set_elasticity(body, 0.0);
     scene_add_body(scene, body);
 }
@@ -66,9 +70,11 @@ static void build(sandbox_t *sandbox) {
     sandbox->grab = (grab_t){0};
 
     const double w = SANDBOX_WALL_X, thick = 1.0;
-    add_static_box(scene, -w - thick, -thick, w + thick, 0.0);     /* floor */
-    add_static_box(scene, -w - thick, 0.0, -w, SANDBOX_WALL_TOP); /* left wall */
-    add_static_box(scene, w, 0.0, w + thick, SANDBOX_WALL_TOP);   /* right wall */
+    add_static_box(scene, "the floor", -w - thick, -thick, w + thick, 0.0);
+    add_static_box(scene, "the left wall", -w - thick, 0.0, -w, SANDBOX_WALL_TOP);
+    add_static_box(scene, "the right wall", w, 0.0, w + thick, SANDBOX_WALL_TOP);
+    sandbox->container = (aabb_t){{-w, 0.0}, {w, SANDBOX_WALL_TOP}};
+    sandbox->extent = (aabb_t){{-w - thick, -thick}, {w + thick, SANDBOX_WALL_TOP}};
 
     scene_set_contacts_enabled(scene, true);
     sandbox_set_gravity(sandbox, true);
@@ -99,12 +105,16 @@ bool sandbox_is_static(body_t *body) {
     return isinf(body_get_mass(body));
 }
 
-void sandbox_clear(sandbox_t *sandbox) {
+size_t sandbox_clear(sandbox_t *sandbox) {
     sandbox->grab.body = NULL;
+    size_t removed = 0;
     for (size_t i = 0; i < scene_bodies(sandbox->scene); i++) {
         body_t *body = scene_get_body(sandbox->scene, i);
-        if (!sandbox_is_static(body)) body_remove(body);
+        if (sandbox_is_static(body) || body_is_removed(body)) continue;
+        body_remove(body);
+        removed++;
     }
+    return removed;
 }
 
 /* Points on an ellipse at increasing angles are in convex position; the
@@ -165,6 +175,61 @@ list_t *sandbox_make_shape(sandbox_t *sandbox, shape_choice_t shape, const char 
         return NULL;
     }
     return vertices;
+}
+
+/* The static body containing point, or NULL. */
+static body_t *static_at(sandbox_t *sandbox, vector_t point) {
+    for (size_t i = 0; i < scene_bodies(sandbox->scene); i++) {
+        body_t *body = scene_get_body(sandbox->scene, i);
+        if (sandbox_is_static(body) && !body_is_removed(body) &&
+            body_contains_point(body, point)) {
+            return body;
+        }
+    }
+    return NULL;
+}
+
+static bool inside(aabb_t box, vector_t point) {
+    return point.x > box.min.x && point.x < box.max.x && point.y > box.min.y &&
+           point.y < box.max.y;
+}
+
+const char *sandbox_place(sandbox_t *sandbox, list_t *vertices, vector_t at, vector_t *placed) {
+    *placed = at;
+    if (!vec_is_finite(at)) return "not a finite position";
+    body_t *wall = static_at(sandbox, at);
+    if (wall != NULL) {
+        const char *name = body_get_info(wall);
+        snprintf(sandbox->refusal, sizeof(sandbox->refusal), "inside %s",
+                 name != NULL ? name : "a static body");
+        return sandbox->refusal;
+    }
+    if (!inside(sandbox->container, at)) return "outside the container";
+    /* The shape's extent around its centroid, where the drop puts `at`. */
+    vector_t centroid = polygon_centroid(vertices);
+    vector_t low = {INFINITY, INFINITY}, high = {-INFINITY, -INFINITY};
+    for (size_t i = 0; i < list_size(vertices); i++) {
+        vector_t v = vec_subtract(*(vector_t *)list_get(vertices, i), centroid);
+        low = (vector_t){fmin(low.x, v.x), fmin(low.y, v.y)};
+        high = (vector_t){fmax(high.x, v.x), fmax(high.y, v.y)};
+    }
+    aabb_t box = sandbox->container;
+    if (at.y + low.y < box.min.y) placed->y = box.min.y - low.y;
+    if (at.x + low.x < box.min.x) placed->x = box.min.x - low.x;
+    if (at.x + high.x > box.max.x) placed->x = box.max.x - high.x;
+    return NULL;
+}
+
+bool sandbox_bodies_bounds(sandbox_t *sandbox, aabb_t *bounds) {
+    bool any = false;
+    for (size_t i = 0; i < scene_bodies(sandbox->scene); i++) {
+        body_t *body = scene_get_body(sandbox->scene, i);
+        if (body_is_removed(body) || sandbox_is_static(body)) continue;
+        aabb_t box = body_get_bounds(body);
+        *bounds = any ? aabb_union(*bounds, box) : box;
+        any = true;
+    }
+    return any;
 }
 
 list_t *sandbox_copy_vertices(list_t *vertices) {

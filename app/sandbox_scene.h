@@ -44,7 +44,13 @@ typedef struct {
 
 typedef struct {
     scene_t *scene;
+    /* The open box the bodies play in: between the walls' inner faces, from
+     * the floor's top to the walls' top. Drops outside it are refused. */
+    aabb_t container;
+    /* The container with its floor and walls: what the default view shows. */
+    aabb_t extent;
     grab_t grab;
+    char refusal[64]; /* sandbox_place's last reason */
     bool gravity_on;
     uint64_t rng;
     uint64_t seed;
@@ -61,8 +67,9 @@ void sandbox_free(sandbox_t *sandbox);
 /* Frees everything and builds the default scene again (same seed). */
 void sandbox_reset(sandbox_t *sandbox);
 
-/* Marks every dynamic body removed (the floor and walls stay). */
-void sandbox_clear(sandbox_t *sandbox);
+/* Marks every dynamic body removed (the floor and walls stay); returns how
+ * many there were. */
+size_t sandbox_clear(sandbox_t *sandbox);
 
 /* A new list of vertices for the shape centred at the origin; NULL and a
  * message in *problem when the shape is unusable. The random shape draws
@@ -75,6 +82,19 @@ list_t *sandbox_make_shape(sandbox_t *sandbox, shape_choice_t shape, const char 
  * then says why. */
 body_t *sandbox_drop(sandbox_t *sandbox, list_t *vertices, vector_t at, vector_t velocity,
                      double elasticity, const char **problem);
+
+/*
+ * Where a shape (vertices as sandbox_make_shape gives them) dropped with its
+ * centroid at `at` goes. A drop at a point inside a static body or outside
+ * the container is refused: the result is why ("inside the floor", "outside
+ * the container"). Otherwise the result is NULL and *placed is `at`, moved
+ * just enough that the shape's bounding box clears the floor and the walls
+ * (a click near the floor sets the shape on it rather than into it).
+ */
+const char *sandbox_place(sandbox_t *sandbox, list_t *vertices, vector_t at, vector_t *placed);
+
+/* The bounding box of every dynamic body; false when there is none. */
+bool sandbox_bodies_bounds(sandbox_t *sandbox, aabb_t *bounds);
 
 /* A new copy of a list of vertices. */
 list_t *sandbox_copy_vertices(list_t *vertices);

@@ -6,7 +6,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include "input.h"
+#include "video.h"
 
 const char SCRIPT_HELP[] =
     "Script files (--script FILE): one command per line; '#' starts a comment.\n"
@@ -30,7 +32,7 @@ const char SCRIPT_HELP[] =
     "  grab [px] X1 Y1 X2 Y2 [FRAMES]   right drag: pulls the body at X1 Y1\n"
     "  wheel N                 turn the mouse wheel N notches (N < 0: down)\n"
     "  spawn N [SIZE]          add N bodies (SIZE m, default 0.2) in a grid\n"
-    "  screenshot FILE         save this frame as a BMP\n"
+    "  screenshot FILE         save this frame (FILE ends in .png or .bmp)\n"
     "  quit                    stop the app\n";
 
 typedef enum {
@@ -393,6 +395,9 @@ static bool parse_line(parser_t *p, char **tokens, int n) {
     }
     if (strcmp(command, "screenshot") == 0) {
         if (n != 2) return fail(p, "'screenshot' needs one file name (no spaces)");
+        if (video_format_of(tokens[1]) == VIDEO_FORMAT_NONE) {
+            return fail(p, "screenshot '%s': %s", tokens[1], VIDEO_FORMAT_HINT);
+        }
         action_t *a = add(p, ACT_SCREENSHOT);
         a->path = malloc(strlen(tokens[1]) + 1);
         if (a->path == NULL) return fail(p, "out of memory");
@@ -458,6 +463,13 @@ script_t *script_parse(const char *name, const char *text, char *error, size_t e
 }
 
 script_t *script_load(const char *path, char *error, size_t error_size) {
+    /* fopen opens a directory on Linux, and reading it fails without a word. */
+    struct stat info;
+    if (stat(path, &info) == 0 && S_ISDIR(info.st_mode)) {
+        snprintf(error, error_size, "cannot read script '%s': it is a directory, not a file",
+                 path);
+        return NULL;
+    }
     FILE *file = fopen(path, "rb");
     if (file == NULL) {
         snprintf(error, error_size, "cannot open script '%s': %s", path, strerror(errno));
@@ -485,11 +497,11 @@ script_t *script_load(const char *path, char *error, size_t error_size) {
             capacity *= 2;
         }
     }
-    bool read_error = ferror(file) != 0;
+    int read_errno = ferror(file) ? errno : 0;
     fclose(file);
-    if (text == NULL || read_error) {
-        snprintf(error, error_size, "cannot read script '%s'%s", path,
-                 text == NULL ? ": out of memory" : "");
+    if (text == NULL || read_errno != 0) {
+        snprintf(error, error_size, "cannot read script '%s': %s", path,
+                 text == NULL ? "out of memory" : strerror(read_errno));
         free(text);
         return NULL;
     }

@@ -2,9 +2,8 @@
 #define SANDBOX_UI_H
 
 /*
- * The user interface drawn over the world: the HUD (frame rate, timings,
- * bodies, collisions, energy, momentum), the shape and elasticity panel with
- * its slider, the overlay legend, a status line and the help screen. Text uses
+ * The user interface: the side bar of stacked panels right of the view
+ * (layout.h), and the help screen over everything when asked for. Text uses
  * SDL2_gfx's built-in 8x8 font: no font files.
  */
 
@@ -14,14 +13,16 @@
 
 void ui_draw(SDL_Renderer *renderer, app_t *app, body_t *hovered);
 
-/* Whether the pixel is on the elasticity slider (a click there sets the
- * value rather than dropping a body). */
+/* A left press at a pixel of the side bar: the panel under it acts (the
+ * slider takes the value, an overlay's line toggles it); returns the drag it
+ * starts (DRAG_SLIDER or DRAG_NONE). */
+drag_t ui_press(app_t *app, vector_t pixel);
+
+/* Whether the pixel is on the elasticity slider (the wheel there sets the
+ * value rather than the size). */
 bool ui_slider_hit(const app_t *app, vector_t pixel);
 
 /* The slider value under pixel's x, clamped to the slider's range. */
 double ui_slider_value_at(const app_t *app, vector_t pixel);
-
-/* Whether the pixel is on a panel that takes clicks (no preview there). */
-bool ui_captures(const app_t *app, vector_t pixel);
 
 #endif

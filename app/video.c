@@ -1,6 +1,9 @@
 #include "video.h"
 #include <SDL2_gfxPrimitives.h>
+#include <SDL_image.h>
 #include <stdio.h>
+#include <string.h>
+#include "layout.h"
 
 /* The canvas is the window's own surface when there is a window (no copy
  * before it is shown), else a surface of ours. */
@@ -53,6 +56,8 @@ bool video_open(video_t *video, bool headless, bool gpu, bool vsync, int width, 
                 SDL_GetError());
         return false;
     }
+    /* The side bar and the whole container need this much (layout.h). */
+    SDL_SetWindowMinimumSize(video->window, LAYOUT_MIN_WIDTH, LAYOUT_MIN_HEIGHT);
     SDL_DisplayMode mode;
     if (SDL_GetWindowDisplayMode(video->window, &mode) == 0 && mode.refresh_rate > 0) {
         video->refresh_hz = mode.refresh_rate;
@@ -94,6 +99,28 @@ bool video_sync_size(video_t *video) {
     return true;
 }
 
+static bool ends_with(const char *text, const char *suffix) {
+    size_t n = strlen(text), m = strlen(suffix);
+    return n > m && SDL_strcasecmp(text + n - m, suffix) == 0;
+}
+
+video_format_t video_format_of(const char *path) {
+    if (ends_with(path, ".png")) return VIDEO_FORMAT_PNG;
+    if (ends_with(path, ".bmp")) return VIDEO_FORMAT_BMP;
+    return VIDEO_FORMAT_NONE;
+}
+
+/* SDL_image's PNG writer, or SDL's BMP writer; 0 on success. */
+static int save_surface(SDL_Surface *shot, const char *path) {
+    switch (video_format_of(path)) {
+    case VIDEO_FORMAT_PNG: return IMG_SavePNG(shot, path);
+    case VIDEO_FORMAT_BMP: return SDL_SaveBMP(shot, path);
+    case VIDEO_FORMAT_NONE: break;
+    }
+    SDL_SetError("%s", VIDEO_FORMAT_HINT);
+    return -1;
+}
+
 bool video_screenshot(video_t *video, const char *path) {
     SDL_Surface *shot =
         SDL_CreateRGBSurfaceWithFormat(0, video->width, video->height, 24, SDL_PIXELFORMAT_BGR24);
@@ -105,7 +132,7 @@ bool video_screenshot(video_t *video, const char *path) {
                                    shot->pitch) == 0;
     if (!ok) {
         fprintf(stderr, "sandbox: cannot read the frame's pixels: %s\n", SDL_GetError());
-    } else if (SDL_SaveBMP(shot, path) != 0) {
+    } else if (save_surface(shot, path) != 0) {
         fprintf(stderr, "sandbox: cannot save the screenshot '%s': %s\n", path, SDL_GetError());
         ok = false;
     }

@@ -27,7 +27,18 @@ bool video_open(video_t *video, bool headless, bool gpu, bool vsync, int width, 
 /* Follows the window's size; true when the output size changed. */
 bool video_sync_size(video_t *video);
 
-/* Saves the frame drawn so far (call before video_present) as a BMP. */
+/* The file formats a screenshot can be saved in, told by the file name's
+ * extension (.png or .bmp, any case). */
+typedef enum { VIDEO_FORMAT_NONE = 0, VIDEO_FORMAT_PNG, VIDEO_FORMAT_BMP } video_format_t;
+video_format_t video_format_of(const char *path);
+
+/* What the command line and the script say when a file name's extension is
+ * not one of them. */
+#define VIDEO_FORMAT_HINT "the file name must end in .png or .bmp"
+
+/* Saves the frame drawn so far (call before video_present) as a PNG or a BMP
+ * by the file name's extension; false, with a message on stderr, when it
+ * cannot. */
 bool video_screenshot(video_t *video, const char *path);
 
 /* Shows the frame. */

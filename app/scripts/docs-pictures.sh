@@ -1,0 +1,27 @@
+#!/bin/sh
+# Redraws the pictures of docs/sandbox.md (docs/sandbox.png, docs/drop.png)
+# by running the very commands it shows, so the pictures and the text agree.
+# make check's smoke test app_smoke.docs_pictures_regenerate runs the same
+# commands and compares the result with the committed pictures; run this
+# when a change to the app or the engine changes them on purpose.
+# Usage (from the repository root, after make): app/scripts/docs-pictures.sh
+set -e
+cd "$(dirname "$0")/../.."
+root=$(pwd)
+doc=docs/sandbox.md
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+
+# docs/sandbox.png: the line that runs app/scripts/demo.txt and saves it there.
+demo=$(grep -E '^\./sandbox .*--script app/scripts/demo\.txt .*--screenshot docs/sandbox\.png' "$doc")
+echo "$demo"
+eval "$demo"
+
+# docs/drop.png: the drop.txt example, run in a scratch directory.
+sed -n "/^cat > drop.txt <<'EOF'\$/,/^EOF\$/p" "$doc" | sed '1d;$d' > "$tmp/drop.txt"
+drop=$(grep -E '^\./sandbox .*--script drop\.txt .*--screenshot drop\.png' "$doc")
+echo "$drop"
+ln -s "$root/sandbox" "$tmp/sandbox"
+(cd "$tmp" && eval "$drop")
+cp "$tmp/drop.png" docs/drop.png
+echo "redrew docs/sandbox.png and docs/drop.png"

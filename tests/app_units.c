@@ -1,0 +1,194 @@
+/*
+ * Unit tests of the sandbox's plain-C parts (no SDL): the numbers and lines
+ * of the side bar (app/text.c, app/stats_text.c), the step clock
+ * (app/step_clock.c) and the layout (app/layout.c). Ends with
+ * "N passed, N failed" like every test program make check runs.
+ */
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <string.h>
+#include "layout.h"
+#include "stats_text.h"
+#include "step_clock.h"
+#include "text.h"
+
+static int failures;
+
+static void fail(const char *format, ...) {
+    va_list args;
+    va_start(args, format);
+    printf("    ");
+    vprintf(format, args);
+    printf("\n");
+    va_end(args);
+    failures++;
+}
+
+#define EXPECT(condition, ...)                                                               \
+    do {                                                                                     \
+        if (!(condition)) fail(__VA_ARGS__);                                                 \
+    } while (0)
+
+static void expect_number(double value, int decimals, size_t width, const char *expected) {
+    char out[32];
+    text_number(out, sizeof(out), value, decimals, width);
+    EXPECT(strcmp(out, expected) == 0, "text_number(%g, %d, %zu) gave \"%s\", expected \"%s\"",
+           value, decimals, width, out, expected);
+}
+
+static void test_numbers_never_show_negative_zero(void) {
+    expect_number(-0.0, 2, 9, "0.00");
+    expect_number(-0.004, 2, 9, "0.00");
+    expect_number(-1e-12, 1, 9, "0.0");
+    expect_number(-0.006, 2, 9, "-0.01");
+    expect_number(12.345, 2, 9, "12.35");
+    expect_number(-3.0, 0, 9, "-3");
+}
+
+static void test_large_numbers_shorten_to_fit(void) {
+    expect_number(123456.78, 2, 7, "123.46k");
+    expect_number(-123456.78, 2, 7, "-123.5k");
+    expect_number(98765432.1, 1, 6, "98.8M");
+    expect_number(98765432.1, 2, 6, "98.77M");
+    expect_number(1e30, 2, 7, "1e+30");
+    char out[32];
+    for (double v = 1.0; v < 1e18; v *= 7.3) {
+        text_number(out, sizeof(out), -v, 2, 7);
+        EXPECT(strlen(out) <= 7, "text_number(%g) gave \"%s\", over 7 characters", -v, out);
+    }
+}
+
+static void test_fit_and_wrap(void) {
+    char text[64] = "collisions this step 3613 (1144 near)";
+    text_fit(text, 20);
+    EXPECT(strlen(text) == 20 && strcmp(text + 18, "..") == 0, "text_fit gave \"%s\"", text);
+    char lines[2][40];
+    int n = text_wrap("elasticity of all 2000 bodies set to 0.55", 31, &lines[0][0], 40, 2);
+    EXPECT(n == 2 && strcmp(lines[0], "elasticity of all 2000 bodies") == 0 &&
+               strcmp(lines[1], "set to 0.55") == 0,
+           "text_wrap gave %d lines: \"%s\" / \"%s\"", n, lines[0], n > 1 ? lines[1] : "");
+    n = text_wrap("short", 31, &lines[0][0], 40, 2);
+    EXPECT(n == 1 && strcmp(lines[0], "short") == 0, "text_wrap of one word: %d lines", n);
+}
+
+/* Every line of the SIMULATION panel fits the side bar, shows its numbers
+ * whole, and no "-0.00", for small and huge values alike. */
+static void check_stats(const stats_values_t *values, const char *what) {
+    char lines[STATS_LINES][STATS_LINE_SIZE];
+    stats_text(values, lines);
+    for (int i = 0; i < STATS_LINES; i++) {
+        EXPECT(strlen(lines[i]) <= LAYOUT_LINE_CHARS, "%s: line %d is %zu characters: \"%s\"",
+               what, i, strlen(lines[i]), lines[i]);
+        EXPECT(strstr(lines[i], "..") == NULL, "%s: line %d was cut: \"%s\"", what, i,
+               lines[i]);
+        char *minus_zero = strstr(lines[i], "-0.00");
+        EXPECT(minus_zero == NULL, "%s: line %d shows -0.00: \"%s\"", what, i, lines[i]);
+    }
+}
+
+static void test_stats_lines_fit_the_side_bar(void) {
+    stats_values_t resting = {.fps = 60.0, .frame_ms = 12.2, .physics_ms = 3.1,
+                              .render_ms = 4.3, .steps = 2, .bodies = 3, .collisions = 3,
+                              .near = 0, .energy = 22.2, .kinetic = 1e-9,
+                              .momentum_x = -1e-9, .momentum_y = -0.004, .gravity_on = true,
+                              .time_scale = 1.0};
+    check_stats(&resting, "three resting bodies");
+    char lines[STATS_LINES][STATS_LINE_SIZE];
+    stats_text(&resting, lines);
+    EXPECT(strcmp(lines[7], "momentum (0.00, 0.00) N s") == 0, "momentum line: \"%s\"",
+           lines[7]);
+    stats_values_t pile = {.fps = 1149.6, .frame_ms = 249.99, .physics_ms = 123.456,
+                           .render_ms = 999.99, .steps = 4, .bodies = 20000,
+                           .collisions = 36130, .near = 11440, .energy = -123456789.0,
+                           .kinetic = 98765432.1, .momentum_x = -123456.78,
+                           .momentum_y = -98765.43, .paused = true, .time_scale = 0.1};
+    check_stats(&pile, "20000 bodies");
+    pile.headless = true;
+    check_stats(&pile, "20000 bodies, headless");
+    stats_text(&pile, lines);
+    EXPECT(strstr(lines[4], "36130") && strstr(lines[4], "11440"), "collisions line: \"%s\"",
+           lines[4]);
+}
+
+/* 11 minutes at 60 frames per second where one frame a second is late
+ * (50 ms) and the others make up for it: the frame rate holds, and the
+ * simulated clock must keep real time (the old rule dropped the owed steps
+ * at each late frame: 1.7% slow). */
+static void test_clock_keeps_real_time_through_late_frames(void) {
+    step_clock_t clock = {0};
+    double requested = 0.0;
+    const double late = 0.050, usual = (1.0 - late) / 59.0;
+    for (int frame = 0; frame < 60 * 660; frame++) {
+        double dt = frame % 60 == 59 ? late : usual;
+        requested += dt;
+        int steps = step_clock_advance(&clock, dt);
+        EXPECT(steps <= STEP_CLOCK_MAX_STEPS, "frame %d ran %d steps", frame, steps);
+        if (failures > 0) return;
+    }
+    /* Behind by at most the steps the last late frame still owes. */
+    EXPECT(requested - clock.simulated <= STEP_CLOCK_MAX_STEPS * STEP_CLOCK_STEP,
+           "simulated %.4f s for %.4f s of frames (%.3f%%)", clock.simulated, requested,
+           100.0 * clock.simulated / requested);
+    EXPECT(clock.forgiven == 0.0, "%.4f s forgiven while the frame rate held", clock.forgiven);
+}
+
+/* A stall of 2 s: a few steps now, then the debt is forgiven (the
+ * simulation slows down instead of running 240 steps in a burst). */
+static void test_clock_forgives_a_stall(void) {
+    step_clock_t clock = {0};
+    int steps = step_clock_advance(&clock, 2.0);
+    EXPECT(steps == STEP_CLOCK_MAX_STEPS, "%d steps after a stall", steps);
+    EXPECT(clock.owed <= STEP_CLOCK_MAX_DEBT, "%.3f s still owed after a stall", clock.owed);
+    int later = 0;
+    for (int i = 0; i < 60; i++) later += step_clock_advance(&clock, 1.0 / 60.0);
+    double expected = (1.0 + STEP_CLOCK_MAX_DEBT) / STEP_CLOCK_STEP;
+    EXPECT(fabs(later - expected) <= 1.0, "%d steps in the second after a stall, expected %.0f",
+           later, expected);
+    EXPECT(fabs(clock.forgiven - (2.0 - STEP_CLOCK_MAX_DEBT - 4 * STEP_CLOCK_STEP)) < 1e-9,
+           "forgave %.4f s", clock.forgiven);
+}
+
+static void test_layout_leaves_the_view_free(void) {
+    const int sizes[2][2] = {{800, 600}, {1280, 720}};
+    for (int i = 0; i < 2; i++) {
+        layout_t l = layout_of(sizes[i][0], sizes[i][1]);
+        EXPECT(l.view.x == 0 && l.view.y == 0 && l.view.h == sizes[i][1],
+               "%dx%d: view at (%d, %d) %d high", sizes[i][0], sizes[i][1], l.view.x, l.view.y,
+               l.view.h);
+        EXPECT(l.view.w + l.sidebar.w == sizes[i][0] && l.sidebar.x == l.view.w,
+               "%dx%d: view %d wide, side bar at %d, %d wide", sizes[i][0], sizes[i][1],
+               l.view.w, l.sidebar.x, l.sidebar.w);
+        EXPECT(!layout_contains(l.view, l.sidebar.x, 10) && layout_contains(l.view, 0, 0),
+               "%dx%d: the view and the side bar overlap", sizes[i][0], sizes[i][1]);
+    }
+}
+
+typedef struct {
+    const char *name;
+    void (*run)(void);
+} unit_test_t;
+
+static const unit_test_t TESTS[] = {
+    {"app_units.numbers_never_show_negative_zero", test_numbers_never_show_negative_zero},
+    {"app_units.large_numbers_shorten_to_fit", test_large_numbers_shorten_to_fit},
+    {"app_units.fit_and_wrap", test_fit_and_wrap},
+    {"app_units.stats_lines_fit_the_side_bar", test_stats_lines_fit_the_side_bar},
+    {"app_units.clock_keeps_real_time_through_late_frames",
+     test_clock_keeps_real_time_through_late_frames},
+    {"app_units.clock_forgives_a_stall", test_clock_forgives_a_stall},
+    {"app_units.layout_leaves_the_view_free", test_layout_leaves_the_view_free},
+};
+
+int main(void) {
+    size_t passed = 0, failed = 0;
+    for (size_t i = 0; i < sizeof(TESTS) / sizeof(TESTS[0]); i++) {
+        failures = 0;
+        TESTS[i].run();
+        printf("%s %s\n", failures == 0 ? "PASS" : "FAIL", TESTS[i].name);
+        if (failures == 0) passed++;
+        else failed++;
+    }
+    printf("%zu passed, %zu failed\n", passed, failed);
+    return failed == 0 ? 0 : 1;
+}
