@@ -6,6 +6,7 @@
 #                       (Debian libchipmunk-dev libbox2d-dev), then a table of
 #                       this engine's ms per step over each other engine's
 #   make bench-build    builds whichever of the three programs can be built
+#   make bench-stages   what a scene pays for the stages it leaves out (docs/leave-out.md)
 #
 # Options for the programs: make bench BENCH_ARGS="--quick" or
 # BENCH_ARGS="--scene pile --size 4000 --runs 3" (see tests/bench/bench_scenes.h).
@@ -25,7 +26,7 @@ BENCH_PROGRAMS = $(BENCH_DIR)/bench_engine \
 	$(if $(BENCH_HAVE_CHIPMUNK),$(BENCH_DIR)/bench_chipmunk) \
 	$(if $(BENCH_HAVE_BOX2D),$(BENCH_DIR)/bench_box2d)
 
-.PHONY: bench bench-compare bench-compare-run bench-build
+.PHONY: bench bench-compare bench-compare-run bench-build bench-stages
 
 $(BENCH_DIR)/bench_engine: tests/bench/bench_engine.c $(BENCH_HDR) build/libengine.a
 	@mkdir -p $(dir $@)
@@ -53,3 +54,12 @@ bench-compare: build/libengine.a
 
 bench-compare-run: $(BENCH_PROGRAMS)
 	@sh tests/bench/compare.sh -o $(BENCH_DIR)/compare.txt $(BENCH_PROGRAMS) -- $(BENCH_ARGS)
+
+# make bench-stages: what a scene pays for the stages it does not use
+# (docs/leave-out.md, about a minute and a half).
+$(BENCH_DIR)/bench_stages: tests/bench/bench_stages.c build/libengine.a
+	@mkdir -p $(dir $@)
+	$(CC) $(BENCH_CFLAGS) -Iengine/include $< build/libengine.a -lm -o $@
+
+bench-stages: $(BENCH_DIR)/bench_stages
+	$(BENCH_DIR)/bench_stages docs/leave-out.md
