@@ -74,6 +74,20 @@ struct body {
 /* Wakes the body and every body of its sleeping island. */
 void body_wake(body_t *body);
 
+/* body_add_force for the force creators of forces.c, which check their
+ * forces themselves: a nonzero push keeps the body awake. */
+static inline void body_push(body_t *body, vector_t force) {
+    body->force.x += force.x;
+    body->force.y += force.y;
+    if (force.x != 0.0 || force.y != 0.0) {
+        if (body->asleep) {
+            body_wake(body);
+        } else {
+            body->sleep_time = 0.0;
+        }
+    }
+}
+
 /* Whether the body can be moved by contacts (finite mass or inertia). */
 static inline bool body_is_movable(const body_t *body) {
     return body->inverse_mass > 0.0 || body->inverse_inertia > 0.0;

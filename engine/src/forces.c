@@ -97,8 +97,8 @@ static void newtonian_gravity(void *data) {
                    body_name(aux->scene, aux->body1).text,
                    body_name(aux->scene, aux->body2).text, aux->constant, m1, m2, distance);
     }
-    body_add_force(aux->body1, force);
-    body_add_force(aux->body2, vec_negate(force));
+    body_push(aux->body1, force);
+    body_push(aux->body2, vec_negate(force));
 }
 
 void create_newtonian_gravity(scene_t *scene, double G, body_t *body1, body_t *body2) {
@@ -215,8 +215,8 @@ static void spring(void *data) {
     vector_t stretch = vec_subtract(aux->body2->centroid, aux->body1->centroid);
     vector_t force = vec_multiply(aux->constant, stretch);
     if (!vec_is_finite(force)) fail_spring(aux, stretch);
-    body_add_force(aux->body1, force);
-    body_add_force(aux->body2, vec_negate(force));
+    body_push(aux->body1, force);
+    body_push(aux->body2, vec_negate(force));
 }
 
 void create_spring(scene_t *scene, double k, body_t *body1, body_t *body2) {
@@ -255,7 +255,7 @@ static void drag(void *data) {
     pair_aux_t *aux = data;
     vector_t force = vec_multiply(-aux->constant, aux->body1->velocity);
     if (!vec_is_finite(force)) fail_drag(aux);
-    body_add_force(aux->body1, force);
+    body_push(aux->body1, force);
 }
 
 void create_drag(scene_t *scene, double gamma, body_t *body) {
