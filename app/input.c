@@ -32,7 +32,7 @@ const input_control_t INPUT_CONTROLS[] = {
     {"V", "overlay: velocity vectors"},
     {"M", "overlay: centroids"},
     {"X", "overlay: bounding boxes"},
-    {"Z / Shift + Z", "sleeping bodies dimmer / sleeping itself on, off"},
+    {"Z / Shift + Z", "overlay: sleeping bodies dimmer / sleeping on, off"},
     {"O", "all overlays on / off (a click on a line toggles it)"},
     {"Space", "pause / resume"},
     {"S", "single step (pauses)"},

@@ -1316,6 +1316,8 @@ static void test_docs_pictures_regenerate(void) {
         return;
     }
     check_doc_picture(doc, "--script app/scripts/demo.txt", NULL, NULL, "docs/sandbox.png");
+    check_doc_picture(doc, "--script app/scripts/integrator.txt", NULL, NULL,
+                      "docs/integrator.png");
     char *drop = doc_heredoc(doc, "drop.txt");
     EXPECT(drop != NULL, "docs/sandbox.md has no cat > drop.txt <<'EOF' example");
     if (drop != NULL) {
