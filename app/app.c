@@ -1,5 +1,6 @@
 #include "app.h"
 #include <math.h>
+#include "integrator_choice.h"
 #include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
@@ -10,8 +11,9 @@
 static const double TRAIL_MIN_IMPULSE = 0.05;
 
 static const char *const OVERLAY_NAMES[OVERLAY_COUNT] = {
-    "axes", "impulses", "contact points", "velocities", "centroids", "bounding boxes"};
-static const char *const OVERLAY_KEYS[OVERLAY_COUNT] = {"A", "I", "T", "V", "M", "X"};
+    "axes",      "impulses",       "contact points",     "velocities",
+    "centroids", "bounding boxes", "dim sleeping bodies"};
+static const char *const OVERLAY_KEYS[OVERLAY_COUNT] = {"A", "I", "T", "V", "M", "X", "Z"};
 
 const char *app_overlay_name(overlay_t overlay) {
     return overlay < OVERLAY_COUNT ? OVERLAY_NAMES[overlay] : "?";
@@ -82,6 +84,9 @@ void app_init(app_t *app, int width, int height, uint64_t seed) {
     app->impulse_scale = 0.2;
     app->overlays[OVERLAY_AXES] = true;
     app->overlays[OVERLAY_IMPULSES] = true;
+    app->overlays[OVERLAY_SLEEPING] = true;
+    energy_drift_init(&app->drift);
+    app->totals = sandbox_totals(&app->sandbox);
     app->mouse = (vector_t){0.5 * app->layout.view.w, 0.5 * app->layout.view.h};
     app_new_shape(app);
 }
@@ -132,6 +137,26 @@ int app_plan_steps(app_t *app, double frame_dt) {
         steps++;
     }
     return steps;
+}
+
+void app_frame_done(app_t *app, int steps) {
+    app->totals = sandbox_totals(&app->sandbox);
+    energy_drift_sample(&app->drift, steps, app->totals.kinetic + app->totals.potential,
+                        app->totals.bodies, app->sandbox.changes);
+}
+
+void app_set_integrator(app_t *app, integrator_t integrator) {
+    sandbox_set_integrator(&app->sandbox, integrator);
+    energy_drift_rereference(&app->drift);
+    char stability[32];
+    integrator_choice_stability(integrator, stability, sizeof(stability));
+    app_status(app, "integrator: %s (%s)", integrator_get_name(integrator), stability);
+}
+
+void app_set_gravity(app_t *app, bool on) {
+    sandbox_set_gravity(&app->sandbox, on);
+    energy_drift_rereference(&app->drift);
+    app_status(app, "gravity %s", on ? "on" : "off");
 }
 
 void app_run_steps(app_t *app, int steps) {

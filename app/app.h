@@ -10,6 +10,7 @@
 #include <stdbool.h>
 #include <stdint.h>
 #include "camera.h"
+#include "energy_drift.h"
 #include "impulse_trail.h"
 #include "layout.h"
 #include "sandbox_scene.h"
@@ -30,6 +31,7 @@ typedef enum {
     OVERLAY_VELOCITIES,
     OVERLAY_CENTROIDS,
     OVERLAY_BOUNDS,
+    OVERLAY_SLEEPING, /* not drawn over the bodies: sleeping bodies drawn dimmer */
     OVERLAY_COUNT
 } overlay_t;
 
@@ -91,6 +93,10 @@ typedef struct {
     size_t sample_count; /* ring: the newest is samples[(sample_count - 1) % N] */
 
     impulse_trail_t trail;
+    /* The bodies' totals as of the last frame's steps (app_frame_done), read
+     * by the side bar, and the energy drift they feed. */
+    sandbox_totals_t totals;
+    energy_drift_t drift;
     app_timing_t timing;
     step_clock_t clock;
     double requested_time; /* simulated seconds the frames asked for (for --stats) */
@@ -125,6 +131,18 @@ int app_plan_steps(app_t *app, double frame_dt);
  * only the sandbox's scene and the trail, so it may run on another thread
  * while the main thread does anything else but those. */
 void app_run_steps(app_t *app, int steps);
+
+/* After a frame's steps (and before drawing it): the totals of the bodies,
+ * measured once, and the energy drift's sample. */
+void app_frame_done(app_t *app, int steps);
+
+/* Switches the scene's integrator, says so, and has the energy drift take a
+ * new reference. */
+void app_set_integrator(app_t *app, integrator_t integrator);
+
+/* Gravity on or off, said on the status line; the energy drift takes a new
+ * reference (the potential energy changes meaning). */
+void app_set_gravity(app_t *app, bool on);
 
 /* Shows a status line for a few seconds (printf-style). */
 void app_status(app_t *app, const char *format, ...)

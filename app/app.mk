@@ -46,11 +46,14 @@ APP_SMOKE_LIBS :=
 endif
 
 # The app's plain-C parts (no SDL: text, the side bar's lines, the step
-# clock, the layout), tested directly; they build and run without SDL.
-APP_UNIT_SRC := tests/app_units.c app/text.c app/stats_text.c app/step_clock.c app/layout.c
-build/tests/app_units: $(APP_UNIT_SRC) $(wildcard app/*.h) app/app.mk
+# clock, the layout, the energy drift, the integrators by name), tested
+# directly against the sanitized engine; they build and run without SDL.
+APP_UNIT_SRC := tests/app_units.c app/text.c app/stats_text.c app/step_clock.c app/layout.c \
+                app/energy_drift.c app/integrator_choice.c
+build/tests/app_units: $(APP_UNIT_SRC) $(wildcard app/*.h) app/app.mk build/libengine-san.a
 	@mkdir -p $(dir $@)
-	$(CC) $(CSTD) $(WARN) -O1 -g $(SAN) -Iapp $(APP_UNIT_SRC) -lm -o $@
+	$(CC) $(CSTD) $(WARN) -O1 -g $(SAN) -Iapp -Iengine/include $(APP_UNIT_SRC) \
+	    build/libengine-san.a -lm -o $@
 
 # The smoke tests drive ./sandbox from outside and read its screenshots; they
 # link no SDL.

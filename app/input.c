@@ -1,5 +1,6 @@
 #include "input.h"
 #include <math.h>
+#include "integrator_choice.h"
 #include "ui.h"
 
 /* Throws: the cursor's velocity over the last THROW_WINDOW seconds, at most
@@ -31,11 +32,13 @@ const input_control_t INPUT_CONTROLS[] = {
     {"V", "overlay: velocity vectors"},
     {"M", "overlay: centroids"},
     {"X", "overlay: bounding boxes"},
+    {"Z / Shift + Z", "overlay: sleeping bodies dimmer / sleeping on, off"},
     {"O", "all overlays on / off (a click on a line toggles it)"},
     {"Space", "pause / resume"},
     {"S", "single step (pauses)"},
     {"[ / ]", "slow motion: time x0.1 to x1"},
     {"G", "gravity on / off"},
+    {"N / Shift + N", "next / previous integrator (energy drift chart)"},
     {"C / R", "clear the bodies / reset the scene"},
     {"Ctrl + wheel, + / -", "zoom about the cursor"},
     {"Left / Right, Ctrl + Up / Down", "pan the view"},
@@ -209,6 +212,13 @@ static void reset_scene(app_t *app) {
                removed == 1 ? "y" : "ies");
 }
 
+/* Shift+Z: the engine's sleeping itself, on or off (off wakes every body). */
+static void toggle_sleeping(app_t *app) {
+    sandbox_set_sleeping(&app->sandbox, !app->sandbox.sleeping_on);
+    app_status(app, app->sandbox.sleeping_on ? "sleeping on: bodies at rest 0.5 s sleep"
+                                             : "sleeping off: every body awake");
+}
+
 static void change_time_scale(app_t *app, double delta) {
     double scale = round((app->time_scale + delta) * 10.0) / 10.0;
     app->time_scale = fmin(1.0, fmax(0.1, scale));
@@ -314,8 +324,14 @@ static void on_key(app_t *app, const SDL_KeyboardEvent *key) {
         change_time_scale(app, +0.1);
         break;
     case SDLK_g:
-        sandbox_set_gravity(&app->sandbox, !app->sandbox.gravity_on);
-        app_status(app, "gravity %s", app->sandbox.gravity_on ? "on" : "off");
+        app_set_gravity(app, !app->sandbox.gravity_on);
+        break;
+    case SDLK_n:
+        app_set_integrator(app, integrator_choice_step(app->sandbox.integrator, shift ? -1 : 1));
+        break;
+    case SDLK_z:
+        if (shift) toggle_sleeping(app);
+        else app_toggle_overlay(app, OVERLAY_SLEEPING);
         break;
     case SDLK_c:
         clear_bodies(app);
@@ -407,6 +423,9 @@ static void on_button_up(app_t *app, const SDL_MouseButtonEvent *button) {
     case DRAG_GRAB:
         if (button->button == SDL_BUTTON_RIGHT) {
             sandbox_release(&app->sandbox);
+            /* The spring did work on the body: the drift starts again from
+             * the energy it left. */
+            energy_drift_rereference(&app->drift);
             app->drag = DRAG_NONE;
         }
         break;

@@ -13,6 +13,7 @@
 #include "app.h"
 #include "draw.h"
 #include "input.h"
+#include "integrator_choice.h"
 #include "layout.h"
 #include "render.h"
 #include "script.h"
@@ -35,6 +36,7 @@ typedef struct {
     double elasticity;
     bool overlays_given;
     bool overlays[OVERLAY_COUNT];
+    integrator_t integrator;
 } options_t;
 
 static void usage(FILE *out) {
@@ -64,7 +66,12 @@ static void usage(FILE *out) {
             "  --elasticity E      elasticity of new bodies, 0 to 1 (default 0.5)\n"
             "  --overlays LIST     overlays on at start: comma-separated from axes,\n"
             "                      impulses, points, velocities, centroids, bounds,\n"
-            "                      or all or none (default axes,impulses)\n"
+            "                      sleeping (sleeping bodies dimmer), or all or none\n"
+            "                      (default axes,impulses,sleeping)\n"
+            "  --integrator NAME   the scene's integrator: seed (the default),\n"
+            "                      explicit_euler, symplectic_euler, velocity_verlet,\n"
+            "                      rk4, symplectic4 (any case; spaces or underscores);\n"
+            "                      N and Shift+N switch it while it runs\n"
             "  --seed N            seed of the random polygons (default 1)\n"
             "  --stats             print frame, physics and render times at exit\n"
             "  -h, --help          this help\n"
@@ -112,8 +119,8 @@ static bool parse_double(const char *text, double min, double max, double *out) 
 }
 
 static bool parse_overlays(const char *text, bool overlays[OVERLAY_COUNT]) {
-    static const char *const names[OVERLAY_COUNT] = {"axes",       "impulses",  "points",
-                                                     "velocities", "centroids", "bounds"};
+    static const char *const names[OVERLAY_COUNT] = {
+        "axes", "impulses", "points", "velocities", "centroids", "bounds", "sleeping"};
     for (int i = 0; i < OVERLAY_COUNT; i++) overlays[i] = false;
     if (strcmp(text, "none") == 0) return true;
     if (strcmp(text, "all") == 0) {
@@ -147,7 +154,7 @@ static int parse_options(int argc, char **argv, options_t *o) {
                            strcmp(arg, "--script") == 0 || strcmp(arg, "--size") == 0 ||
                            strcmp(arg, "--spawn") == 0 || strcmp(arg, "--spawn-size") == 0 ||
                            strcmp(arg, "--seed") == 0 || strcmp(arg, "--elasticity") == 0 ||
-                           strcmp(arg, "--overlays") == 0;
+                           strcmp(arg, "--overlays") == 0 || strcmp(arg, "--integrator") == 0;
         const char *value = NULL;
         if (takes_value) {
             if (i + 1 >= argc || argv[i + 1][0] == '\0') {
@@ -214,9 +221,17 @@ static int parse_options(int argc, char **argv, options_t *o) {
         } else if (strcmp(arg, "--overlays") == 0) {
             if (!parse_overlays(value, o->overlays)) {
                 return bad_usage("--overlays: '%s' is not a list of axes, impulses, points, "
-                                 "velocities, centroids, bounds (or all, none)%s", value, "");
+                                 "velocities, centroids, bounds, sleeping (or all, none)%s",
+                                 value, "");
             }
             o->overlays_given = true;
+        } else if (strcmp(arg, "--integrator") == 0) {
+            if (!integrator_choice_parse(value, &o->integrator)) {
+                char names[160];
+                integrator_choice_list(names, sizeof(names));
+                return bad_usage("--integrator: '%s' is not an integrator; the integrators "
+                                 "are %s", value, names);
+            }
         } else {
             return bad_usage("unknown option '%s'%s", arg, "");
         }
@@ -306,6 +321,7 @@ int main(int argc, char **argv) {
     app.headless = o.headless;
     app_set_elasticity(&app, o.elasticity);
     if (o.overlays_given) memcpy(app.overlays, o.overlays, sizeof(app.overlays));
+    sandbox_set_integrator(&app.sandbox, o.integrator);
     if (o.spawn > 0) sandbox_spawn(&app.sandbox, (size_t)o.spawn, o.spawn_size, app.elasticity);
 
     long frame_limit = o.frames;
@@ -355,6 +371,7 @@ int main(int argc, char **argv) {
             present_s = seconds_since(present_start);
         }
         double physics_s = stepper_finish(stepper);
+        app_frame_done(&app, steps);
 
         Uint64 render_start = SDL_GetPerformanceCounter();
         body_t *hovered = input_hovered_body(&app);

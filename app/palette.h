@@ -33,6 +33,18 @@ static const palette_rgb_t PALETTE_POINT = {0, 240, 255};     /* cyan */
 static const palette_rgb_t PALETTE_VELOCITY = {160, 255, 160};/* pale green */
 static const palette_rgb_t PALETTE_CENTROID = {255, 255, 255};/* white */
 static const palette_rgb_t PALETTE_BOUNDS = {130, 130, 150};  /* grey-blue */
+/* The sleeping tint's colour in the OVERLAYS legend (the tint itself darkens
+ * each body's own colour: palette_sleeping). */
+static const palette_rgb_t PALETTE_SLEEPING = {160, 170, 240}; /* lavender */
+
+/* A sleeping body's fill: its colour 55% of the way to the background, so
+ * that the bodies that take part in the step stand out. */
+static inline palette_rgb_t palette_sleeping(palette_rgb_t c) {
+    palette_rgb_t b = PALETTE_BACKGROUND;
+    return (palette_rgb_t){(unsigned char)(c.r + (b.r - c.r) * 55 / 100),
+                           (unsigned char)(c.g + (b.g - c.g) * 55 / 100),
+                           (unsigned char)(c.b + (b.b - c.b) * 55 / 100)};
+}
 
 /* The user interface. */
 static const palette_rgb_t PALETTE_TEXT = {230, 232, 238};
@@ -43,5 +55,10 @@ static const palette_rgb_t PALETTE_WARNING = {255, 120, 100}; /* a refused drop 
 static const palette_rgb_t PALETTE_OFF = {96, 101, 114};      /* an overlay that is off */
 static const palette_rgb_t PALETTE_RULE = {44, 48, 58};       /* lines between panels */
 static const palette_rgb_t PALETTE_GRAB = {255, 255, 255};
+/* The INTEGRATOR panel's strip chart: the drift, its zero line, the marks
+ * where the energy reference was taken again. */
+static const palette_rgb_t PALETTE_DRIFT = {110, 215, 255};
+static const palette_rgb_t PALETTE_CHART_ZERO = {90, 96, 110};
+static const palette_rgb_t PALETTE_CHART_MARK = {150, 110, 60};
 
 #endif

@@ -17,6 +17,7 @@ static palette_rgb_t overlay_color(overlay_t overlay) {
     case OVERLAY_VELOCITIES: return PALETTE_VELOCITY;
     case OVERLAY_CENTROIDS: return PALETTE_CENTROID;
     case OVERLAY_BOUNDS: return PALETTE_BOUNDS;
+    case OVERLAY_SLEEPING: return PALETTE_SLEEPING;
     case OVERLAY_COUNT: break;
     }
     return PALETTE_TEXT;

@@ -7,7 +7,7 @@
 
 static stats_values_t values_of(app_t *app) {
     const app_timing_t *t = &app->timing;
-    sandbox_totals_t totals = sandbox_totals(&app->sandbox);
+    const sandbox_totals_t totals = app->totals; /* measured once a frame */
     size_t collisions = app_collision_count(app);
     /* Until the first half second is counted, the frame time stands in. */
     double fps = t->fps > 0.0 ? t->fps : t->frame_ms > 0.0 ? 1000.0 / t->frame_ms : 0.0;
@@ -19,6 +19,8 @@ static stats_values_t values_of(app_t *app) {
         .render_ms = t->render_ms,
         .steps = t->steps,
         .bodies = totals.bodies,
+        .sleeping = totals.sleeping,
+        .sleeping_on = app->sandbox.sleeping_on,
         .collisions = collisions,
         .near = scene_contact_count(app->sandbox.scene) - collisions,
         .energy = totals.kinetic + totals.potential,

@@ -43,6 +43,7 @@ static void draw_bodies(SDL_Renderer *renderer, SDL_Surface *canvas, app_t *app,
     scene_t *scene = app->sandbox.scene;
     const camera_t *camera = &app->camera;
     vector_t pixels[MAX_VERTICES];
+    bool dim_sleeping = app->overlays[OVERLAY_SLEEPING];
     raster_begin(renderer, canvas);
     /* Fills first; the outlines go on top. */
     for (int pass = 0; pass < 2; pass++) {
@@ -63,6 +64,7 @@ static void draw_bodies(SDL_Renderer *renderer, SDL_Surface *canvas, app_t *app,
                 continue;
             }
             palette_rgb_t fill = rgb_of(body_get_color(body));
+            if (dim_sleeping && body_is_sleeping(body)) fill = palette_sleeping(fill);
             if (pass == 0) {
                 raster_fill(pixels, n, fill);
             } else {

@@ -77,7 +77,10 @@ static void build(sandbox_t *sandbox) {
     sandbox->extent = (aabb_t){{-w - thick, -thick}, {w + thick, SANDBOX_WALL_TOP}};
 
     scene_set_contacts_enabled(scene, true);
+    scene_set_sleeping(scene, sandbox->sleeping_on);
+    scene_set_integrator(scene, sandbox->integrator);
     sandbox_set_gravity(sandbox, true);
+    sandbox->changes++;
     /* The grab spring is registered once; it does nothing while grab.body is
      * NULL. It depends on no body: the sandbox clears grab.body itself before
      * it removes the grabbed body. */
@@ -87,6 +90,8 @@ static void build(sandbox_t *sandbox) {
 void sandbox_init(sandbox_t *sandbox, uint64_t seed) {
     *sandbox = (sandbox_t){0};
     sandbox->seed = seed;
+    sandbox->integrator = INTEGRATOR_SEED;
+    sandbox->sleeping_on = true;
     build(sandbox);
 }
 
@@ -114,6 +119,7 @@ size_t sandbox_clear(sandbox_t *sandbox) {
         body_remove(body);
         removed++;
     }
+    if (removed > 0) sandbox->changes++;
     return removed;
 }
 
@@ -261,6 +267,7 @@ body_t *sandbox_drop(sandbox_t *sandbox, list_t *vertices, vector_t at, vector_t
     body_set_velocity(body, velocity);
     body_set_elasticity(body, fmax(0.0, elasticity));
     scene_add_body(sandbox->scene, body);
+    sandbox->changes++;
     return body;
 }
 
@@ -292,6 +299,7 @@ body_t *sandbox_body_at(sandbox_t *sandbox, vector_t point) {
 void sandbox_delete(sandbox_t *sandbox, body_t *body) {
     if (body == NULL || sandbox_is_static(body)) return;
     if (sandbox->grab.body == body) sandbox->grab.body = NULL;
+    if (!body_is_removed(body)) sandbox->changes++;
     body_remove(body);
 }
 
@@ -322,6 +330,16 @@ void sandbox_set_gravity(sandbox_t *sandbox, bool on) {
     sandbox->grab.gravity = gravity;
 }
 
+void sandbox_set_integrator(sandbox_t *sandbox, integrator_t integrator) {
+    sandbox->integrator = integrator;
+    scene_set_integrator(sandbox->scene, integrator);
+}
+
+void sandbox_set_sleeping(sandbox_t *sandbox, bool on) {
+    sandbox->sleeping_on = on;
+    scene_set_sleeping(sandbox->scene, on);
+}
+
 void sandbox_step(sandbox_t *sandbox, double dt) {
     scene_tick(sandbox->scene, dt);
     for (size_t i = 0; i < scene_bodies(sandbox->scene); i++) {
@@ -340,6 +358,7 @@ sandbox_totals_t sandbox_totals(sandbox_t *sandbox) {
         if (body_is_removed(body) || sandbox_is_static(body)) continue;
         double mass = body_get_mass(body);
         totals.bodies++;
+        totals.sleeping += body_is_sleeping(body);
         totals.kinetic += body_get_kinetic_energy(body);
         totals.potential -= mass * vec_dot(gravity, body_get_centroid(body));
         totals.momentum = vec_add(totals.momentum, vec_multiply(mass, body_get_velocity(body)));

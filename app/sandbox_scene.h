@@ -52,6 +52,13 @@ typedef struct {
     grab_t grab;
     char refusal[64]; /* sandbox_place's last reason */
     bool gravity_on;
+    /* Kept through sandbox_reset: the user's choices. */
+    integrator_t integrator; /* the scene's integrator (the engine's default: seed) */
+    bool sleeping_on;        /* resting bodies sleep (the engine's default: on) */
+    /* Moves whenever a body is added or removed (dropped, deleted, cleared,
+     * fallen out, the scene reset): the energy drift then takes a new
+     * reference. */
+    unsigned long changes;
     uint64_t rng;
     uint64_t seed;
     unsigned next_color;
@@ -120,12 +127,20 @@ vector_t sandbox_grab_point(sandbox_t *sandbox);
 
 void sandbox_set_gravity(sandbox_t *sandbox, bool on);
 
+/* The scene's integrator, now and after a reset. */
+void sandbox_set_integrator(sandbox_t *sandbox, integrator_t integrator);
+
+/* Sleeping on or off (scene_set_sleeping), now and after a reset; off wakes
+ * every body. */
+void sandbox_set_sleeping(sandbox_t *sandbox, bool on);
+
 /* One physics step of dt seconds; then removes the bodies that fell out. */
 void sandbox_step(sandbox_t *sandbox, double dt);
 
-/* Totals over the bodies of finite mass that are not removed. */
+/* Totals over the bodies of finite mass that are not removed, in one pass. */
 typedef struct {
     size_t bodies;      /* dynamic bodies */
+    size_t sleeping;    /* of which asleep (body_is_sleeping) */
     double kinetic;     /* J */
     double potential;   /* J, m g h with h the centroid's height above the floor */
     vector_t momentum;  /* N s */

@@ -45,7 +45,8 @@ static void timing_lines(const stats_values_t *v, char lines[STATS_LINES][STATS_
 
 void stats_text(const stats_values_t *v, char lines[STATS_LINES][STATS_LINE_SIZE]) {
     timing_lines(v, lines);
-    put(lines[3], "bodies %zu", v->bodies);
+    if (v->sleeping_on) put(lines[3], "bodies %zu  sleeping %zu", v->bodies, v->sleeping);
+    else put(lines[3], "bodies %zu  sleeping off", v->bodies);
     put(lines[4], "collisions %zu (%zu near)", v->collisions, v->near);
     NUMBER(energy, v->energy, 1, 12);
     NUMBER(kinetic, v->kinetic, 1, 12);

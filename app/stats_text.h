@@ -17,6 +17,8 @@ typedef struct {
     double fps, frame_ms, physics_ms, render_ms;
     int steps;           /* physics steps in the last frame */
     size_t bodies, collisions, near;
+    size_t sleeping;     /* bodies asleep */
+    bool sleeping_on;    /* whether the scene lets bodies sleep at all */
     double energy, kinetic; /* J */
     double momentum_x, momentum_y; /* N s */
     bool paused, gravity_on;

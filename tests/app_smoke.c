@@ -455,7 +455,8 @@ static void check_layout(const char *size, int width, int height) {
                map.right - map.left + 1, map.bottom - map.top + 1);
     }
     const char *panels[] = {"H or F1: every key", "SIMULATION", "SHAPE", "ELASTICITY",
-                            "OVERLAYS", "bounding boxes"};
+                            "OVERLAYS", "dim sleeping bodies", "INTEGRATOR", "energy drift",
+                            "-5 s", "now"};
     for (size_t i = 0; i < sizeof panels / sizeof panels[0]; i++) {
         int x, y;
         bool found = image_find_text(&image, panels[i], 0, 0, width, height, &x, &y, NULL);
@@ -503,8 +504,8 @@ static void test_panel_and_wall_clicks_drop_nothing(void) {
     long bodies = bodies_in_view(&image);
     EXPECT(bodies == 0, "%ld body pixels in the view after clicks that drop nothing", bodies);
     char count[40];
-    EXPECT(read_line_after(&image, "bodies ", count, 12) && strcmp(count, "0") == 0,
-           "the side bar counts '%s' bodies, not 0", count);
+    EXPECT(read_line_after(&image, "bodies ", count, 30) && strcmp(count, "0  sleeping 0") == 0,
+           "the side bar counts '%s' bodies, not '0  sleeping 0'", count);
     image_free(&image);
     const struct {
         const char *shot, *first, *second;
@@ -820,6 +821,12 @@ static void test_bad_flags_are_refused(void) {
     const char *e6[] = {"cannot save the screenshot", "no/such/dir/x.png", NULL};
     check_refusal("unwritable screenshot", bad_dir, 1, e6);
 
+    const char *integrator[] = {"--headless", "--integrator", "leapfrog", NULL};
+    const char *e8[] = {"--integrator: 'leapfrog'",
+                        "seed, explicit_euler, symplectic_euler, velocity_verlet, rk4, "
+                        "symplectic4", NULL};
+    check_refusal("unknown integrator", integrator, 2, e8);
+
     const char *jpeg[] = {"--headless", "--screenshot", TMP_DIR "/x.jpg", NULL};
     const char *e7[] = {"--screenshot", "x.jpg", "must end in .png or .bmp"};
     check_refusal("screenshot of an unknown format", jpeg, 2, e7);
@@ -830,7 +837,8 @@ static void test_bad_flags_are_refused(void) {
     run_sandbox(&run, 20, help);
     EXPECT(run.status == 0, "--help exited with %d", run.status);
     const char *documented[] = {"--headless", "--frames", "--screenshot", "--script", ".png",
-                                "wait", "click", "throw", "screenshot"};
+                                "--integrator", "symplectic_euler", "wait", "click", "throw",
+                                "screenshot"};
     for (size_t i = 0; i < sizeof documented / sizeof documented[0]; i++) {
         EXPECT(strstr(run.output, documented[i]) != NULL, "--help does not mention %s",
                documented[i]);
@@ -927,7 +935,7 @@ static void test_help_lists_every_readme_key(void) {
                          "click 0 5\nwait 30\nmove px 5 5\n";
     if (run_script("help", script, NULL, &run) && load_shot("help_open", &image)) {
         const char *lines[] = {"SANDBOX CONTROLS", "Ctrl + left click, D, Del, Backspace",
-                               "frame every body", "Esc, Q"};
+                               "frame every body", "N / Shift + N", "Z / Shift + Z", "Esc, Q"};
         for (size_t i = 0; i < sizeof lines / sizeof lines[0]; i++) {
             EXPECT(shows(&image, lines[i], true), "the help screen lacks '%s'", lines[i]);
         }
@@ -937,6 +945,264 @@ static void test_help_lists_every_readme_key(void) {
     if (load_shot("help", &image)) {
         EXPECT(!shows(&image, "SANDBOX CONTROLS", true), "a click left the help open");
         EXPECT(bodies_in_view(&image) == 0, "a click on the help dropped a body");
+        image_free(&image);
+    }
+}
+
+/* ---- the INTEGRATOR panel and sleeping bodies ---- */
+
+/* Where text is in the side bar below the panel title `title`. */
+static bool find_in_panel(const image_t *image, const char *title, const char *text, int *x,
+                          int *y, unsigned char color[3]) {
+    int tx, ty;
+    int x0 = layout_of(image->width, image->height).sidebar.x;
+    if (!image_find_text(image, title, x0, 0, image->width, image->height, &tx, &ty, NULL)) {
+        return false;
+    }
+    return image_find_text(image, text, x0, ty + 1, image->width, image->height, x, y, color);
+}
+
+/* The INTEGRATOR panel shows `name` (in the accent colour) with `position`
+ * ("3 of 6") and `springs` (in red when unstable). */
+static void expect_integrator(const image_t *image, const char *what, const char *name,
+                              const char *position, const char *springs, bool unstable) {
+    unsigned char color[3];
+    int x, y;
+    EXPECT(find_in_panel(image, "INTEGRATOR", name, &x, &y, color) &&
+               same_color(color, PALETTE_ACCENT),
+           "%s: the INTEGRATOR panel does not name '%s'", what, name);
+    EXPECT(find_in_panel(image, "INTEGRATOR", position, NULL, NULL, NULL),
+           "%s: the INTEGRATOR panel does not say '%s'", what, position);
+    bool found = find_in_panel(image, "INTEGRATOR", springs, NULL, NULL, color);
+    EXPECT(found, "%s: the INTEGRATOR panel does not say '%s'", what, springs);
+    EXPECT(!found || same_color(color, unstable ? PALETTE_WARNING : PALETTE_TEXT),
+           "%s: '%s' in (%d, %d, %d)", what, springs, color[0], color[1], color[2]);
+}
+
+/* N and Shift+N switch the integrator while the scene runs, round the six,
+ * each confirmed on the status line; --integrator picks one by name. */
+static void test_integrator_key_switches_live(void) {
+    const char *script = "move px 5 5\nscreenshot " TMP_DIR "/integrator_0.bmp\n"
+                         "key n\nscreenshot " TMP_DIR "/integrator_1.bmp\n"
+                         "key n\nscreenshot " TMP_DIR "/integrator_2.bmp\n"
+                         "key shift+n\nkey shift+n\nkey shift+n\n";
+    run_t run;
+    image_t image;
+    if (!run_script("integrator", script, NULL, &run)) return;
+    if (load_shot("integrator_0", &image)) {
+        expect_integrator(&image, "at start", "seed", "1 of 6", "unstable with springs", true);
+        image_free(&image);
+    }
+    if (load_shot("integrator_1", &image)) {
+        expect_integrator(&image, "after N", "explicit Euler", "2 of 6", "unstable with springs",
+                          true);
+        EXPECT(shows(&image, "integrator: explicit Euler", false),
+               "after N: no status line 'integrator: explicit Euler'");
+        image_free(&image);
+    }
+    if (load_shot("integrator_2", &image)) {
+        expect_integrator(&image, "after N N", "symplectic Euler", "3 of 6",
+                          "stable for w dt < 2.00", false);
+        EXPECT(shows(&image, "integrator: symplectic Euler", false) &&
+                   shows(&image, "(stable for w dt < 2.00)", false),
+               "after N N: no status line 'integrator: symplectic Euler (stable for w dt < "
+               "2.00)'");
+        image_free(&image);
+    }
+    if (load_shot("integrator", &image)) {
+        expect_integrator(&image, "after three Shift+N", "symplectic4", "6 of 6",
+                          "stable for w dt < 1.57", false);
+        image_free(&image);
+    }
+    const char *names[][4] = {{"Velocity_Verlet", "velocity Verlet", "4 of 6", "2.00"},
+                              {"rk4", "RK4", "5 of 6", "2.83"},
+                              {"symplectic euler", "symplectic Euler", "3 of 6", "2.00"}};
+    for (size_t i = 0; i < sizeof names / sizeof names[0]; i++) {
+        const char *flags[] = {"--integrator", names[i][0], NULL};
+        char what[64], springs[40];
+        snprintf(what, sizeof what, "--integrator '%s'", names[i][0]);
+        snprintf(springs, sizeof springs, "stable for w dt < %s", names[i][3]);
+        if (run_script("integrator_flag", "move px 5 5\n", flags, &run) &&
+            load_shot("integrator_flag", &image)) {
+            expect_integrator(&image, what, names[i][1], names[i][2], springs, false);
+            image_free(&image);
+        }
+    }
+}
+
+/* The drift readout beside "energy drift", as a number (percent). */
+static bool read_drift(const image_t *image, double *percent, char *text, size_t max) {
+    int x, y;
+    text[0] = '\0';
+    if (!find_in_panel(image, "INTEGRATOR", "energy drift", &x, &y, NULL)) return false;
+    const unsigned char c[3] = {PALETTE_DRIFT.r, PALETTE_DRIFT.g, PALETTE_DRIFT.b};
+    image_read_text(image, x, y, c, text, max);
+    return sscanf(text, "%lf", percent) == 1;
+}
+
+static bool is_drift_color(const unsigned char *p) {
+    return same_color(p, PALETTE_DRIFT);
+}
+
+static bool is_mark_color(const unsigned char *p) {
+    return same_color(p, PALETTE_CHART_MARK);
+}
+
+/* The chart's plot: its left column, top and bottom rows (from the "-5 s"
+ * label under its left edge). */
+typedef struct {
+    int left, right, top, mid, bottom;
+} plot_t;
+
+static bool find_plot(const image_t *image, plot_t *plot) {
+    int x, y;
+    if (!find_in_panel(image, "INTEGRATOR", "-5 s", &x, &y, NULL)) {
+        fail("no '-5 s' under the drift chart");
+        return false;
+    }
+    plot->left = x;
+    plot->right = x + 199;
+    plot->bottom = y - 4;
+    plot->top = plot->bottom - 60;
+    plot->mid = plot->top + 30;
+    return true;
+}
+
+/* A body falls freely for 1.5 s under each scheme (dropped anew after C):
+ * the seed integrator keeps its energy (a flat line on the zero row, the
+ * smallest scale), explicit Euler gains energy and symplectic Euler loses it
+ * (E changes by +-m g^2 dt^2 / 2 a step: about 0.25% of the drop's energy),
+ * drawn above and below the zero line on a scale that widened to 0.5%. A
+ * switch with the body falling takes a new reference, marked on the chart. */
+static void test_energy_drift_chart_tells_the_schemes_apart(void) {
+    const char *script = "click 0 25\nwait 90\nmove px 5 5\n"
+                         "screenshot " TMP_DIR "/drift_seed.bmp\n"
+                         "key c\nkey n\nclick 0 25\nwait 90\nmove px 5 5\n"
+                         "screenshot " TMP_DIR "/drift_explicit.bmp\n"
+                         "key c\nkey n\nclick 0 25\nwait 90\nmove px 5 5\n"
+                         "screenshot " TMP_DIR "/drift_symplectic.bmp\n"
+                         "key n\nwait 2\n";
+    const char *flags[] = {"--elasticity", "0", NULL};
+    run_t run;
+    if (!run_script("drift", script, flags, &run)) return;
+    const struct {
+        const char *shot, *scheme, *scale;
+        double low, high; /* the readout (%) */
+        int sign;         /* where the newest 1.4 s of the chart are: above zero (1), below, on it */
+    } cases[] = {
+        {"drift_seed", "seed", "+0.01%", -0.0005, 0.0005, 0},
+        {"drift_explicit", "explicit Euler", "+0.5%", 0.2, 0.3, 1},
+        {"drift_symplectic", "symplectic Euler", "+0.5%", -0.3, -0.2, -1},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        image_t image;
+        if (!load_shot(cases[i].shot, &image)) continue;
+        double percent = NAN;
+        char text[40];
+        bool read = read_drift(&image, &percent, text, 32);
+        EXPECT(read && percent >= cases[i].low && percent <= cases[i].high,
+               "%s: the drift reads '%s', expected %g%% to %g%%", cases[i].scheme, text,
+               cases[i].low, cases[i].high);
+        EXPECT(find_in_panel(&image, "INTEGRATOR", cases[i].scale, NULL, NULL, NULL),
+               "%s: the chart's scale is not %s", cases[i].scheme, cases[i].scale);
+        plot_t plot;
+        if (find_plot(&image, &plot)) {
+            int x0 = plot.right - 56, x1 = plot.right - 4; /* 0.1 s to 1.4 s ago */
+            long above = image_count(&image, is_drift_color, x0, plot.top, x1, plot.mid);
+            long on = image_count(&image, is_drift_color, x0, plot.mid, x1, plot.mid + 1);
+            long below = image_count(&image, is_drift_color, x0, plot.mid + 1, x1,
+                                     plot.bottom + 1);
+            long expected_above = cases[i].sign > 0, expected_below = cases[i].sign < 0;
+            EXPECT((expected_above ? above > 30 : above == 0) &&
+                       (expected_below ? below > 30 : below == 0) &&
+                       (cases[i].sign != 0 || on > 40),
+                   "%s: the chart's last 1.3 s: %ld drift pixels above zero, %ld on it, %ld "
+                   "below", cases[i].scheme, above, on, below);
+        }
+        image_free(&image);
+    }
+    image_t image;
+    if (load_shot("drift", &image)) {
+        double percent = NAN;
+        char text[40];
+        EXPECT(read_drift(&image, &percent, text, 32) && fabs(percent) < 0.01,
+               "right after switching to velocity Verlet the drift reads '%s', not about 0",
+               text);
+        plot_t plot;
+        if (find_plot(&image, &plot)) {
+            long marks = image_count(&image, is_mark_color, plot.right - 3, plot.top,
+                                     plot.right + 1, plot.bottom + 1);
+            EXPECT(marks >= 40, "no mark of the new reference at the chart's right edge (%ld "
+                   "pixels)", marks);
+        }
+        image_free(&image);
+    }
+}
+
+static bool is_dimmed_body_color(const unsigned char *p) {
+    for (int i = 0; i < PALETTE_BODY_COUNT; i++) {
+        if (same_color(p, palette_sleeping(PALETTE_BODIES[i]))) return true;
+    }
+    return false;
+}
+
+static long dimmed_in_view(const image_t *image) {
+    return image_count(image, is_dimmed_body_color, 0, 0,
+                       layout_of(image->width, image->height).view.w, image->height);
+}
+
+/* Three bodies come to rest and fall asleep: they are drawn dimmer and the
+ * side bar counts them; Z turns the tint off and on; Shift+Z turns sleeping
+ * off (every body awake, bright) and on again. */
+static void test_sleeping_bodies_drawn_dimmer(void) {
+    const char *script = "click -6 1\nclick 0 1\nkey b\nclick 6 1\nwait 3s\nmove px 5 5\n"
+                         "screenshot " TMP_DIR "/sleep_dim.bmp\n"
+                         "key z\nscreenshot " TMP_DIR "/sleep_tint_off.bmp\n"
+                         "key z\nkey shift+z\nwait 2\nscreenshot " TMP_DIR "/sleep_off.bmp\n"
+                         "key shift+z\nwait 3s\n";
+    const char *flags[] = {"--elasticity", "0", NULL};
+    run_t run;
+    if (!run_script("sleep", script, flags, &run)) return;
+    const struct {
+        const char *shot, *what, *bodies, *status, *legend;
+        bool dim;
+    } cases[] = {
+        {"sleep_dim", "at rest", "3  sleeping 3", NULL, "on", true},
+        {"sleep_tint_off", "after Z", "3  sleeping 3", "dim sleeping bodies off", "off", false},
+        {"sleep_off", "after Z, Shift+Z", "3  sleeping off", "sleeping off: every body awake",
+         "on", false},
+        {"sleep", "after Shift+Z and 3 s", "3  sleeping 3", NULL, "on", true},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        image_t image;
+        if (!load_shot(cases[i].shot, &image)) continue;
+        char line[40] = "";
+        int x, y;
+        unsigned char text_color[3];
+        /* Under SIMULATION: the status line may say "bodies" too. */
+        if (find_in_panel(&image, "SIMULATION", "bodies ", &x, &y, text_color)) {
+            image_read_text(&image, x + 8 * 7, y, text_color, line, 30);
+        }
+        EXPECT(strcmp(line, cases[i].bodies) == 0,
+               "%s: the side bar reads 'bodies %s', expected 'bodies %s'", cases[i].what, line,
+               cases[i].bodies);
+        long dim = dimmed_in_view(&image), bright = bodies_in_view(&image);
+        EXPECT(cases[i].dim ? dim > 300 && bright == 0 : dim == 0 && bright > 300,
+               "%s: %ld pixels of dimmed body colours, %ld of bright ones", cases[i].what, dim,
+               bright);
+        if (cases[i].status != NULL) {
+            EXPECT(shows(&image, cases[i].status, false), "%s: no status line '%s'",
+                   cases[i].what, cases[i].status);
+        }
+        char state[8];
+        unsigned char color[3];
+        if (legend_state(&image, "dim sleeping bodies", state, color)) {
+            bool on = strcmp(cases[i].legend, "on") == 0;
+            EXPECT(strcmp(state, cases[i].legend) == 0 &&
+                       same_color(color, on ? PALETTE_SLEEPING : PALETTE_OFF),
+                   "%s: the legend says '%s' in (%d, %d, %d), expected '%s'", cases[i].what,
+                   state, color[0], color[1], color[2], cases[i].legend);
+        }
         image_free(&image);
     }
 }
@@ -1050,6 +1316,8 @@ static void test_docs_pictures_regenerate(void) {
         return;
     }
     check_doc_picture(doc, "--script app/scripts/demo.txt", NULL, NULL, "docs/sandbox.png");
+    check_doc_picture(doc, "--script app/scripts/integrator.txt", NULL, NULL,
+                      "docs/integrator.png");
     char *drop = doc_heredoc(doc, "drop.txt");
     EXPECT(drop != NULL, "docs/sandbox.md has no cat > drop.txt <<'EOF' example");
     if (drop != NULL) {
@@ -1082,6 +1350,10 @@ static const smoke_test_t TESTS[] = {
     {"app_smoke.zoom_keys_zoom_about_the_cursor", test_zoom_keys_zoom_about_the_cursor},
     {"app_smoke.edge_markers_and_frame_key", test_edge_markers_and_frame_key},
     {"app_smoke.text_fits_and_shows_no_negative_zero", test_text_fits_and_shows_no_negative_zero},
+    {"app_smoke.integrator_key_switches_live", test_integrator_key_switches_live},
+    {"app_smoke.energy_drift_chart_tells_the_schemes_apart",
+     test_energy_drift_chart_tells_the_schemes_apart},
+    {"app_smoke.sleeping_bodies_drawn_dimmer", test_sleeping_bodies_drawn_dimmer},
     {"app_smoke.png_screenshots_are_png", test_png_screenshots_are_png},
     {"app_smoke.bad_flags_are_refused", test_bad_flags_are_refused},
     {"app_smoke.bad_scripts_are_refused", test_bad_scripts_are_refused},

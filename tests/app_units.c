@@ -1,13 +1,17 @@
 /*
  * Unit tests of the sandbox's plain-C parts (no SDL): the numbers and lines
  * of the side bar (app/text.c, app/stats_text.c), the step clock
- * (app/step_clock.c) and the layout (app/layout.c). Ends with
- * "N passed, N failed" like every test program make check runs.
+ * (app/step_clock.c), the layout (app/layout.c), the energy drift of the
+ * INTEGRATOR panel (app/energy_drift.c) and the integrators by name
+ * (app/integrator_choice.c, against the engine). Ends with "N passed, N
+ * failed" like every test program make check runs.
  */
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
+#include "energy_drift.h"
+#include "integrator_choice.h"
 #include "layout.h"
 #include "stats_text.h"
 #include "step_clock.h"
@@ -89,7 +93,8 @@ static void check_stats(const stats_values_t *values, const char *what) {
 
 static void test_stats_lines_fit_the_side_bar(void) {
     stats_values_t resting = {.fps = 60.0, .frame_ms = 12.2, .physics_ms = 3.1,
-                              .render_ms = 4.3, .steps = 2, .bodies = 3, .collisions = 3,
+                              .render_ms = 4.3, .steps = 2, .bodies = 3, .sleeping = 2,
+                              .sleeping_on = true, .collisions = 3,
                               .near = 0, .energy = 22.2, .kinetic = 1e-9,
                               .momentum_x = -1e-9, .momentum_y = -0.004, .gravity_on = true,
                               .time_scale = 1.0};
@@ -98,8 +103,14 @@ static void test_stats_lines_fit_the_side_bar(void) {
     stats_text(&resting, lines);
     EXPECT(strcmp(lines[7], "momentum (0.00, 0.00) N s") == 0, "momentum line: \"%s\"",
            lines[7]);
+    EXPECT(strcmp(lines[3], "bodies 3  sleeping 2") == 0, "bodies line: \"%s\"", lines[3]);
+    resting.sleeping_on = false;
+    stats_text(&resting, lines);
+    EXPECT(strcmp(lines[3], "bodies 3  sleeping off") == 0, "bodies line with sleeping off: "
+           "\"%s\"", lines[3]);
     stats_values_t pile = {.fps = 1149.6, .frame_ms = 249.99, .physics_ms = 123.456,
                            .render_ms = 999.99, .steps = 4, .bodies = 20000,
+                           .sleeping = 19999, .sleeping_on = true,
                            .collisions = 36130, .near = 11440, .energy = -123456789.0,
                            .kinetic = 98765432.1, .momentum_x = -123456.78,
                            .momentum_y = -98765.43, .paused = true, .time_scale = 0.1};
@@ -164,6 +175,188 @@ static void test_layout_leaves_the_view_free(void) {
     }
 }
 
+/* Frames of 2 steps (1/60 s) at a constant energy of `energy` J. */
+static void drift_frames(energy_drift_t *drift, int frames, double energy, unsigned long changes) {
+    for (int i = 0; i < frames; i++) energy_drift_sample(drift, 2, energy, 3, changes);
+}
+
+/* The drift is measured from the first energy after each change: a body added
+ * or removed (the change counter), a rereference (integrator, gravity, grab);
+ * a paused frame records nothing but may take the new reference. */
+static void test_energy_drift_from_its_reference(void) {
+    static energy_drift_t drift;
+    energy_drift_init(&drift);
+    energy_drift_sample(&drift, 2, 0.0, 0, 1);
+    EXPECT(!drift.valid, "a drift with no bodies");
+    drift_frames(&drift, 1, 200.0, 2);
+    EXPECT(drift.valid && drift.drift == 0.0, "the first energy is not the reference (%g)",
+           drift.drift);
+    EXPECT(!energy_drift_column(&drift, 0)->rereferenced,
+           "a mark where the chart had nothing to break off from");
+    drift_frames(&drift, 1, 201.0, 2);
+    EXPECT(fabs(drift.drift - 0.005) < 1e-12, "E 201 J from 200 J: drift %g", drift.drift);
+    drift_frames(&drift, 1, 190.0, 2);
+    EXPECT(fabs(drift.drift + 0.05) < 1e-12, "E 190 J from 200 J: drift %g", drift.drift);
+    const drift_column_t *newest = energy_drift_column(&drift, 0);
+    EXPECT(newest->filled && newest->low < -0.049f, "the newest column: %g to %g",
+           newest->low, newest->high);
+    EXPECT(fabs(energy_drift_scale(&drift) - 0.05) < 1e-12, "scale %g for a drift of -5%%",
+           energy_drift_scale(&drift));
+    /* A body dropped: a new reference, marked. */
+    drift_frames(&drift, 1, 500.0, 3);
+    EXPECT(drift.drift == 0.0 && drift.reference == 500.0, "after a drop: drift %g from %g J",
+           drift.drift, drift.reference);
+    newest = energy_drift_column(&drift, 0);
+    EXPECT(newest->rereferenced && newest->filled && newest->low == 0.0f,
+           "the drop's column: mark %d, %g to %g", newest->rereferenced, newest->low,
+           newest->high);
+    /* The integrator switched. */
+    drift_frames(&drift, 1, 510.0, 3);
+    energy_drift_rereference(&drift);
+    drift_frames(&drift, 1, 520.0, 3);
+    EXPECT(drift.drift == 0.0 && drift.reference == 520.0, "after a rereference: %g from %g J",
+           drift.drift, drift.reference);
+    /* Paused: no column moves, but a body deleted meanwhile is a new reference. */
+    size_t head = drift.head;
+    int steps = drift.steps;
+    energy_drift_sample(&drift, 0, 400.0, 2, 4);
+    EXPECT(drift.head == head && drift.steps == steps, "a paused frame moved the chart");
+    EXPECT(drift.reference == 400.0 && drift.drift == 0.0, "paused deletion: reference %g J",
+           drift.reference);
+    /* No energy to compare with (gravity off, all at rest). */
+    energy_drift_rereference(&drift);
+    energy_drift_sample(&drift, 2, 0.0, 3, 4);
+    EXPECT(!drift.valid, "a drift relative to 0 J");
+}
+
+/* The chart holds the last 5 s: 200 columns of 3 steps; frames of 4 steps
+ * (catching up) leave no gap; the scale follows what is on the chart. */
+static void test_energy_drift_chart_window_and_scale(void) {
+    static energy_drift_t drift;
+    energy_drift_init(&drift);
+    /* 10 s of a drift rising 0.1% a second. */
+    for (int frame = 0; frame <= 600; frame++) {
+        energy_drift_sample(&drift, 2, 1000.0 * (1.0 + 0.001 * frame / 60.0), 3, 1);
+    }
+    const drift_column_t *oldest = energy_drift_column(&drift, DRIFT_COLUMNS - 1);
+    const drift_column_t *newest = energy_drift_column(&drift, 0);
+    EXPECT(oldest->filled && fabs(oldest->low - 0.005) < 0.0001,
+           "5 s ago the chart shows %g, expected 0.005", oldest->low);
+    EXPECT(newest->filled && fabs(newest->high - 0.01) < 1e-6, "now the chart shows %g",
+           newest->high);
+    EXPECT(fabs(energy_drift_scale(&drift) - 0.01) < 1e-12, "scale %g for 1%%",
+           energy_drift_scale(&drift));
+    for (int frame = 0; frame < 200; frame++) energy_drift_sample(&drift, 4, 1000.0, 3, 2);
+    size_t gaps = 0;
+    for (size_t age = 0; age < DRIFT_COLUMNS; age++) gaps += !energy_drift_column(&drift, age)->filled;
+    EXPECT(gaps == 0, "%zu empty columns after frames of 4 steps", gaps);
+    EXPECT(energy_drift_scale(&drift) == DRIFT_MIN_SCALE, "scale %g for no drift at all",
+           energy_drift_scale(&drift));
+    drift_frames(&drift, 1, 1e9, 2);
+    EXPECT(energy_drift_scale(&drift) == DRIFT_MAX_SCALE, "scale %g beyond 1000%%",
+           energy_drift_scale(&drift));
+    const double drifts[] = {0.0003, 0.0007, 0.0015, 0.003, 0.04, 0.3, 0.7};
+    const double scales[] = {0.0005, 0.001, 0.002, 0.005, 0.05, 0.5, 1.0};
+    for (size_t i = 0; i < sizeof drifts / sizeof drifts[0]; i++) {
+        energy_drift_init(&drift);
+        drift_frames(&drift, 1, 100.0, 1);
+        drift_frames(&drift, 1, 100.0 * (1.0 - drifts[i]), 1);
+        EXPECT(fabs(energy_drift_scale(&drift) - scales[i]) < 1e-12,
+               "scale %g for a drift of -%g, expected %g", energy_drift_scale(&drift),
+               drifts[i], scales[i]);
+    }
+}
+
+static void expect_drift_text(double fraction, const char *expected) {
+    char out[32];
+    energy_drift_format(fraction, out, sizeof(out));
+    EXPECT(strcmp(out, expected) == 0 && strlen(out) <= 7,
+           "energy_drift_format(%g) gave \"%s\", expected \"%s\"", fraction, out, expected);
+}
+
+static void test_energy_drift_text_fits(void) {
+    expect_drift_text(0.00367, "+0.367%");
+    expect_drift_text(-0.0000001, "0.000%");
+    expect_drift_text(-0.0135, "-1.35%");
+    expect_drift_text(0.123, "+12.3%");
+    expect_drift_text(-0.99996, "-100.0%");
+    expect_drift_text(2.5, "+250%");
+    expect_drift_text(20.0, ">+999%");
+    expect_drift_text(-1e300, "<-999%");
+    char out[32];
+    for (double v = 1e-6; v < 1e6; v *= 1.37) {
+        energy_drift_format(-v, out, sizeof(out));
+        EXPECT(strlen(out) <= 7, "energy_drift_format(%g) gave \"%s\"", -v, out);
+    }
+    const struct {
+        double scale;
+        char sign;
+        const char *text;
+    } labels[] = {{1e-4, '+', "+0.01%"}, {5e-3, '-', "-0.5%"}, {1.0, '+', "+100%"},
+                  {10.0, '-', "-1000%"}, {2e-4, '+', "+0.02%"}};
+    for (size_t i = 0; i < sizeof labels / sizeof labels[0]; i++) {
+        energy_drift_format_scale(labels[i].scale, labels[i].sign, out, sizeof(out));
+        EXPECT(strcmp(out, labels[i].text) == 0, "scale label %g: \"%s\", expected \"%s\"",
+               labels[i].scale, out, labels[i].text);
+    }
+}
+
+/* --integrator's names: the engine's, any case, spaces, underscores or
+ * hyphens; N and Shift+N wrap around; the words for springs. */
+static void test_integrators_by_name(void) {
+    const struct {
+        const char *text;
+        integrator_t expected;
+    } names[] = {
+        {"seed", INTEGRATOR_SEED},
+        {"SEED", INTEGRATOR_SEED},
+        {"explicit euler", INTEGRATOR_EXPLICIT_EULER},
+        {"symplectic_euler", INTEGRATOR_SYMPLECTIC_EULER},
+        {"Symplectic Euler", INTEGRATOR_SYMPLECTIC_EULER},
+        {"velocity-Verlet", INTEGRATOR_VELOCITY_VERLET},
+        {"rk4", INTEGRATOR_RK4},
+        {"Symplectic4", INTEGRATOR_SYMPLECTIC4},
+    };
+    for (size_t i = 0; i < sizeof names / sizeof names[0]; i++) {
+        integrator_t got = INTEGRATOR_COUNT;
+        EXPECT(integrator_choice_parse(names[i].text, &got) && got == names[i].expected,
+               "'%s' gave integrator %d, expected %d", names[i].text, (int)got,
+               (int)names[i].expected);
+    }
+    const char *unknown[] = {"leapfrog", "", "symplectic", "rk", "euler"};
+    for (size_t i = 0; i < sizeof unknown / sizeof unknown[0]; i++) {
+        integrator_t got;
+        EXPECT(!integrator_choice_parse(unknown[i], &got), "'%s' was taken as an integrator",
+               unknown[i]);
+    }
+    char list[256];
+    integrator_choice_list(list, sizeof(list));
+    EXPECT(strcmp(list, "seed, explicit_euler, symplectic_euler, velocity_verlet, rk4, "
+                        "symplectic4") == 0,
+           "the list of integrators: \"%s\"", list);
+    for (int i = 0; i < INTEGRATOR_COUNT; i++) {
+        integrator_t got;
+        EXPECT(integrator_choice_parse(integrator_get_name((integrator_t)i), &got) &&
+                   got == (integrator_t)i,
+               "the engine's own name '%s' is refused", integrator_get_name((integrator_t)i));
+    }
+    EXPECT(integrator_choice_step(INTEGRATOR_SYMPLECTIC4, 1) == INTEGRATOR_SEED &&
+               integrator_choice_step(INTEGRATOR_SEED, -1) == INTEGRATOR_SYMPLECTIC4 &&
+               integrator_choice_step(INTEGRATOR_EXPLICIT_EULER, 1) ==
+                   INTEGRATOR_SYMPLECTIC_EULER,
+           "N and Shift+N do not go round the integrators");
+    const char *expected[INTEGRATOR_COUNT] = {
+        "unstable with springs",  "unstable with springs",  "stable for w dt < 2.00",
+        "stable for w dt < 2.00", "stable for w dt < 2.83", "stable for w dt < 1.57"};
+    for (int i = 0; i < INTEGRATOR_COUNT; i++) {
+        char words[64];
+        integrator_choice_stability((integrator_t)i, words, sizeof(words));
+        EXPECT(strcmp(words, expected[i]) == 0 && strlen(words) <= 22,
+               "%s with springs: \"%s\", expected \"%s\"", integrator_get_name((integrator_t)i),
+               words, expected[i]);
+    }
+}
+
 typedef struct {
     const char *name;
     void (*run)(void);
@@ -178,6 +371,10 @@ static const unit_test_t TESTS[] = {
      test_clock_keeps_real_time_through_late_frames},
     {"app_units.clock_forgives_a_stall", test_clock_forgives_a_stall},
     {"app_units.layout_leaves_the_view_free", test_layout_leaves_the_view_free},
+    {"app_units.energy_drift_from_its_reference", test_energy_drift_from_its_reference},
+    {"app_units.energy_drift_chart_window_and_scale", test_energy_drift_chart_window_and_scale},
+    {"app_units.energy_drift_text_fits", test_energy_drift_text_fits},
+    {"app_units.integrators_by_name", test_integrators_by_name},
 };
 
 int main(void) {

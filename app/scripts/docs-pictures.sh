@@ -1,5 +1,6 @@
 #!/bin/sh
-# Redraws the pictures of docs/sandbox.md (docs/sandbox.png, docs/drop.png)
+# Redraws the pictures of docs/sandbox.md (docs/sandbox.png, docs/drop.png,
+# docs/integrator.png)
 # by running the very commands it shows, so the pictures and the text agree.
 # make check's smoke test app_smoke.docs_pictures_regenerate runs the same
 # commands and compares the result with the committed pictures; run this
@@ -17,6 +18,11 @@ demo=$(grep -E '^\./sandbox .*--script app/scripts/demo\.txt .*--screenshot docs
 echo "$demo"
 eval "$demo"
 
+# docs/integrator.png: the line that runs app/scripts/integrator.txt.
+integrator=$(grep -E '^\./sandbox .*--script app/scripts/integrator\.txt .*--screenshot docs/integrator\.png' "$doc")
+echo "$integrator"
+eval "$integrator"
+
 # docs/drop.png: the drop.txt example, run in a scratch directory.
 sed -n "/^cat > drop.txt <<'EOF'\$/,/^EOF\$/p" "$doc" | sed '1d;$d' > "$tmp/drop.txt"
 drop=$(grep -E '^\./sandbox .*--script drop\.txt .*--screenshot drop\.png' "$doc")
@@ -24,4 +30,4 @@ echo "$drop"
 ln -s "$root/sandbox" "$tmp/sandbox"
 (cd "$tmp" && eval "$drop")
 cp "$tmp/drop.png" docs/drop.png
-echo "redrew docs/sandbox.png and docs/drop.png"
+echo "redrew docs/sandbox.png, docs/drop.png and docs/integrator.png"
