@@ -298,6 +298,7 @@ void body_tick(body_t *body, double dt) {
         body_explain_non_finite(body, &before, dt, message, sizeof message);
         engine_fail(__func__, "%s", message);
     }
+    body_clear_accumulators(body);
 }
 
 void body_explain_non_finite(const body_t *body, const body_motion_t *before, double dt,
@@ -331,10 +332,7 @@ void body_explain_non_finite(const body_t *body, const body_motion_t *before, do
 
 void body_reset(body_t *body) {
     REQUIRE_NOT_NULL(body);
-    body->force = VEC_ZERO;
-    body->torque = 0.0;
-    body->impulse = VEC_ZERO;
-    body->angular_impulse = 0.0;
+    body_clear_accumulators(body);
 }
 
 void body_remove(body_t *body) {

@@ -88,6 +88,14 @@ static inline void body_push(body_t *body, vector_t force) {
     }
 }
 
+/* Clears the force, torque and impulses accumulated for the step. */
+static inline void body_clear_accumulators(body_t *body) {
+    body->force = VEC_ZERO;
+    body->torque = 0.0;
+    body->impulse = VEC_ZERO;
+    body->angular_impulse = 0.0;
+}
+
 /* Whether the body can be moved by contacts (finite mass or inertia). */
 static inline bool body_is_movable(const body_t *body) {
     return body->inverse_mass > 0.0 || body->inverse_inertia > 0.0;

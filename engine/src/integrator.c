@@ -378,8 +378,4 @@ void integrator_apply(body_t *body, const integrator_motion_t *motion) {
     }
     body->velocity = motion->velocity;
     body->angular_velocity = motion->angular_velocity;
-    body->force = VEC_ZERO;
-    body->torque = 0.0;
-    body->impulse = VEC_ZERO;
-    body->angular_impulse = 0.0;
 }

@@ -99,14 +99,15 @@ typedef struct {
  * hold the force, torque and impulses of the start of the step): a
  * multi-stage scheme evaluates them at its later stages; then motions[i]
  * is written for bodies[i]. The bodies are left at their start pose and
- * velocity, with the forces and impulses of the first evaluation (cleared
- * by integrator_apply). *stages is made or grown as needed.
+ * velocity, with the forces and impulses of the first evaluation. *stages
+ * is made or grown as needed.
  */
 void integrator_predict(const integrator_step_t *step, body_t **bodies, size_t count,
                         integrator_motion_t *motions, integrator_stages_t **stages);
 
 /* The integrate stage for one body: moves it by motion and gives it the
- * motion's velocities; clears its accumulated force, torque and impulses. */
+ * motion's velocities. The caller checks the result and then clears the
+ * body's accumulators (which explain a result that overflowed). */
 void integrator_apply(body_t *body, const integrator_motion_t *motion);
 
 #endif // #ifndef INTEGRATOR_H

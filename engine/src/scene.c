@@ -355,9 +355,12 @@ static void stage_motion(scene_t *scene, double dt) {
 #if defined(__GNUC__)
 __attribute__((noreturn, cold))
 #endif
-static void fail_integrate(const scene_t *scene, size_t index, const body_motion_t *before) {
+static void fail_integrate(const scene_t *scene, size_t index, vector_t start) {
     char what[512], springs[768] = "";
-    body_explain_non_finite(scene->bodies[index], before, scene->dt, what, sizeof what);
+    /* The accumulators still hold the step's forces and impulses. */
+    body_motion_t before = body_motion(scene->bodies[index]);
+    before.centroid = start;
+    body_explain_non_finite(scene->bodies[index], &before, scene->dt, what, sizeof what);
     double stiffest = 0.0;
     size_t spring = SIZE_MAX;
     for (size_t i = 0; i < scene->force_count; i++) {
@@ -373,7 +376,7 @@ static void fail_integrate(const scene_t *scene, size_t index, const body_motion
         snprintf(springs, sizeof springs, "; the scene's stiffest %s", explanation);
     }
     engine_fail("scene_tick", "integrate stage: body %zu (centroid (%g, %g) before the step): %s%s",
-                index, before->centroid.x, before->centroid.y, what, springs);
+                index, start.x, start.y, what, springs);
 }
 
 /* Stage 3. Returns whether any body is marked removed (those are not
@@ -386,9 +389,10 @@ static bool stage_integrate(scene_t *scene) {
             removed = true;
             continue;
         }
-        body_motion_t before = body_motion(body);
+        vector_t start = body->centroid;
         integrator_apply(body, &scene->motions[i]);
-        if (!body_motion_is_finite(body)) fail_integrate(scene, i, &before);
+        if (!body_motion_is_finite(body)) fail_integrate(scene, i, start);
+        body_clear_accumulators(body);
     }
     return removed;
 }
