@@ -12,7 +12,8 @@
  *      each later stage of a multi-stage integrator), and from them each
  *      body's free motion over the step;
  *   2. world contacts, when enabled: broadphase, narrowphase, solver, which
- *      change those motions;
+ *      change those motions, leaving out the islands that sleep
+ *      (scene_set_sleeping);
  *   3. integrate: move every body by its motion;
  *   4. reap the bodies marked removed and their force creators (below);
  *   5. the step's record (contacts, collisions) is published for reading.
