@@ -26,7 +26,7 @@ GAMES_SRC := $(wildcard app/games/*.c)
 GAMES_HDR := $(wildcard app/games/*.h)
 GAMES_SAN_OBJ := $(patsubst app/games/%.c,build/games-san/%.o,$(GAMES_SRC))
 
-TEST_SRC := $(wildcard tests/test_*.c) tests/test.c tests/main.c
+TEST_SRC := $(wildcard tests/test_*.c) tests/test.c tests/main.c tests/scene_file_check.c
 TEST_SAN_OBJ := $(patsubst tests/%.c,build/tests/%.o,$(TEST_SRC))
 
 .PHONY: all check clean
@@ -58,7 +58,7 @@ build/games-san/%.o: app/games/%.c $(GAMES_HDR) $(ENGINE_HDR)
 	@mkdir -p $(dir $@)
 	$(CC) $(CSTD) $(WARN) -O1 -g $(SAN) -Iengine/include -c $< -o $@
 
-build/tests/%.o: tests/%.c tests/test.h tests/suites.h $(ENGINE_HDR) $(GAMES_HDR)
+build/tests/%.o: tests/%.c tests/test.h tests/suites.h tests/scene_file_check.h $(ENGINE_HDR) $(GAMES_HDR)
 	@mkdir -p $(dir $@)
 	$(CC) $(CSTD) $(WARN) -O1 -g $(SAN) -Iengine/include -Iengine/src -Itests -Iapp/games -c $< -o $@
 

@@ -115,6 +115,9 @@ body_t *scene_file_find_body(scene_file_t *file, const char *name);
 body_t *scene_file_spawn(scene_file_t *file, const char *template_name, vector_t position,
                          vector_t velocity);
 
+/* Whether the file has a template of that name (scene_file_spawn can use it). */
+bool scene_file_has_template(scene_file_t *file, const char *template_name);
+
 /* A force creator the file made (for drawing springs and for tests). body2 is
  * NULL for a drag. */
 typedef enum {

@@ -404,12 +404,21 @@ static bool within(vector_t v, double limit) {
     return vec_is_finite(v) && fabs(v.x) <= limit && fabs(v.y) <= limit;
 }
 
+/* The index of the template of that name, or SIZE_MAX. */
+static size_t find_template(scene_file_t *file, const char *template_name) {
+    if (file == NULL || template_name == NULL) return SIZE_MAX;
+    sf_name_entry_t *entry = sf_names_find(&file->doc.names, template_name);
+    if (entry == NULL || !entry->is_group) return SIZE_MAX;
+    return file->doc.groups[entry->index].template_body;
+}
+
+bool scene_file_has_template(scene_file_t *file, const char *template_name) {
+    return find_template(file, template_name) != SIZE_MAX;
+}
+
 body_t *scene_file_spawn(scene_file_t *file, const char *template_name, vector_t position,
                          vector_t velocity) {
-    if (file == NULL || template_name == NULL) return NULL;
-    sf_name_entry_t *entry = sf_names_find(&file->doc.names, template_name);
-    if (entry == NULL || !entry->is_group) return NULL;
-    size_t spec_index = file->doc.groups[entry->index].template_body;
+    size_t spec_index = find_template(file, template_name);
     if (spec_index == SIZE_MAX) return NULL;
     if (!within(position, SF_MAX_LENGTH) || !within(velocity, SF_MAX_MOTION)) return NULL;
     size_t live = file->record_count - file->freed_records;

@@ -511,6 +511,7 @@ static bool parse_property(parser_t *p, sf_body_t *body, seen_t *seen) {
             !read_count(p, "the number of copies along x", 1, SCENE_FILE_MAX_BODIES, &x) ||
             !read_count(p, "the number of copies along y", 1, SCENE_FILE_MAX_BODIES, &y))
             return false;
+        body->has_repeat = true;
         body->repeat_x = (size_t)x;
         body->repeat_y = (size_t)y;
         return read_vector(p, &OFFSET, &body->repeat_step);
@@ -600,18 +601,22 @@ static bool derive_mass(parser_t *p, sf_body_t *body, sf_where_t where) {
     double mass = body->mass_kind == MASS_TOTAL ? body->mass_value
                                                 : body->mass_value * body->shape.area;
     double moment = mass * body->shape.moment_per_kg;
-    const char *from = body->mass_kind == MASS_TOTAL ? "mass" : "density";
+    char given[160];
+    if (body->mass_kind == MASS_TOTAL) {
+        snprintf(given, sizeof given, "mass %g kg", mass);
+    } else {
+        snprintf(given, sizeof given, "density %g kg/m^2 on %g m^2, %g kg", body->mass_value,
+                 body->shape.area, mass);
+    }
     if (!(mass > 0.0) || !isfinite(mass) || !isfinite(1.0 / mass)) {
-        return sf_fail(p->lexer, where,
-                       "expected a %s giving a mass whose inverse is finite, found %g kg on "
-                       "%g m^2",
-                       from, mass, body->shape.area);
+        return sf_fail(p->lexer, where, "expected a mass whose inverse is finite, found %s",
+                       given);
     }
     if (!(moment >= SF_MIN_MOMENT && moment <= SF_MAX_MOMENT)) {
         return sf_fail(p->lexer, where,
-                       "expected a %s giving a moment of inertia from %g to %g kg m^2 on this "
-                       "shape, found %g kg giving %g kg m^2",
-                       from, SF_MIN_MOMENT, SF_MAX_MOMENT, mass, moment);
+                       "expected a moment of inertia from %g to %g kg m^2, found %g kg m^2 "
+                       "(%s on this shape)",
+                       SF_MIN_MOMENT, SF_MAX_MOMENT, moment, given);
     }
     body->mass = mass;
     return true;
@@ -623,7 +628,7 @@ static bool register_name(parser_t *p, sf_body_t *body, size_t index, sf_where_t
     sf_doc_t *doc = p->doc;
     if (body->name.text[0] == '\0') return true;
     sf_name_entry_t *entry = sf_names_find(&doc->names, body->name.text);
-    bool names_group = body->is_template || body->repeat_x * body->repeat_y > 1;
+    bool names_group = body->is_template || body->has_repeat;
     if (!names_group) {
         if (entry != NULL) {
             sf_where_t first = entry_where(doc, entry);
@@ -669,7 +674,7 @@ static bool finish_body(parser_t *p, sf_body_t *body, const seen_t *seen, sf_whe
                        "expected no repeat in a template (a game spawns its copies), found one");
     }
     size_t copies = body->repeat_x * body->repeat_y;
-    if (copies > 1) {
+    if (body->has_repeat) {
         vector_t last = vec_add(body->position,
                                 (vector_t){(double)(body->repeat_x - 1) * body->repeat_step.x,
                                            (double)(body->repeat_y - 1) * body->repeat_step.y});
@@ -717,7 +722,7 @@ static bool parse_body(parser_t *p, bool is_template, sf_where_t here) {
     };
     sf_where_t name_where = here;
     if (p->token.kind == TOKEN_WORD || is_template) {
-        if (!read_new_name(p, is_template ? "the template's name" : "the body's name or '{'",
+        if (!read_new_name(p, is_template ? "the template's name" : "the body's name",
                            &body->name, &name_where))
             return false;
     }

@@ -129,6 +129,7 @@ typedef struct {
     double spin;
     bool has_filter;
     uint32_t category, mask, filter_group;
+    bool has_repeat;         /* a repeated block names a group, whatever its counts */
     size_t repeat_x, repeat_y; /* 1 and 1 without repeat */
     vector_t repeat_step;
     size_t *groups;          /* group indices named by `group` */
