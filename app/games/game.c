@@ -4,7 +4,7 @@
 #include <string.h>
 
 /* Every game this build knows. */
-static const game_rules_t *const GAMES[] = {&BREAKOUT_RULES, &SPACE_INVADERS_RULES};
+static const game_rules_t *const GAMES[] = {&BREAKOUT_RULES, &SPACE_INVADERS_RULES, &PEGS_RULES};
 
 struct game {
     const game_rules_t *rules;

@@ -64,6 +64,7 @@ typedef struct {
 
 extern const game_rules_t BREAKOUT_RULES;
 extern const game_rules_t SPACE_INVADERS_RULES;
+extern const game_rules_t PEGS_RULES;
 
 typedef struct game game_t;
 
