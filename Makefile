@@ -72,6 +72,7 @@ CHECK_PROGRAMS := build/tests/engine_tests tests/check_examples.sh
 
 -include app/app.mk
 -include tests/bench/bench.mk
+-include tests/fuzz/fuzz.mk
 
 check: $(CHECK_PROGRAMS) build/libengine.a
 	@tests/run_all.sh $(CHECK_PROGRAMS)

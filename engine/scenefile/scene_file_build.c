@@ -74,12 +74,6 @@ static bool spec_in_group(const sf_body_t *spec, size_t group) {
     return false;
 }
 
-static void join_group(sf_group_t *group, sf_record_t *record) {
-    sf_reserve((void **)&group->members, &group->member_capacity, group->member_count + 1,
-               sizeof(sf_record_t *));
-    group->members[group->member_count++] = record;
-}
-
 /* Makes a body of spec with its centroid at position and adds it to the
  * scene; every value was checked by the parser (or by spawn). */
 static sf_record_t *make_body(scene_file_t *file, size_t spec_index, vector_t position,
@@ -116,8 +110,6 @@ static sf_record_t *make_body(scene_file_t *file, size_t spec_index, vector_t po
     sf_reserve((void **)&file->records, &file->record_capacity, file->record_count + 1,
                sizeof(sf_record_t *));
     file->records[file->record_count++] = record;
-    for (size_t i = 0; i < spec->group_count; i++) join_group(&doc->groups[spec->groups[i]], record);
-    if (spec->own_group != SIZE_MAX) join_group(&doc->groups[spec->own_group], record);
     return record;
 }
 
@@ -290,14 +282,6 @@ void sf_collect(scene_file_t *file) {
     }
     file->instance_count = kept;
     sf_doc_t *doc = &file->doc;
-    for (size_t g = 0; g < doc->group_count; g++) {
-        sf_group_t *group = &doc->groups[g];
-        kept = 0;
-        for (size_t i = 0; i < group->member_count; i++) {
-            if (group->members[i]->body != NULL) group->members[kept++] = group->members[i];
-        }
-        group->member_count = kept;
-    }
     for (size_t i = 0; i < doc->body_count; i++) {
         if (doc->bodies[i].record != NULL && doc->bodies[i].record->body == NULL)
             doc->bodies[i].record = NULL;

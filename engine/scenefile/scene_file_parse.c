@@ -879,7 +879,6 @@ void sf_doc_free(sf_doc_t *doc) {
         free(doc->bodies[i].groups);
     }
     free(doc->bodies);
-    for (size_t i = 0; i < doc->group_count; i++) free(doc->groups[i].members);
     free(doc->groups);
     for (size_t i = 0; i < doc->statement_count; i++) free(doc->statements[i].refs);
     free(doc->statements);

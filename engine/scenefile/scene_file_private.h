@@ -138,13 +138,13 @@ typedef struct {
     struct sf_record *record; /* a single named body's record once built, NULL when freed */
 } sf_body_t;
 
-/* A group: its members are records (below), in the order made. */
+/* A group. Its members are the records made from blocks that list it (or
+ * that it is named after): membership is read from the blocks, so bodies
+ * spawned later belong as they appear. */
 typedef struct {
     sf_name_t name;
     sf_where_t where;
     size_t template_body;    /* index of the template named like it, or SIZE_MAX */
-    struct sf_record **members;
-    size_t member_count, member_capacity;
 } sf_group_t;
 
 typedef enum { REF_BODY = 0, REF_GROUP, REF_ALL } sf_ref_kind_t;
@@ -262,7 +262,7 @@ struct scene_file {
  * error set when a name or a limit is refused; nothing is built then. */
 bool sf_build(scene_file_t *file, sf_lexer_t *lexer);
 
-/* Drops instances and group members whose bodies were freed, and frees their
+/* Drops instances whose bodies were freed, forgets those bodies, and frees their
  * records (keeps memory flat while a game spawns and destroys bodies). */
 void sf_collect(scene_file_t *file);
 

@@ -151,14 +151,16 @@ static void put_state(out_t *out, const state_t *state) {
 
 static void put_labels(out_t *out, const sf_doc_t *doc, const sf_body_t *spec, bool own_group) {
     if (spec->tag.text[0] != '\0') put(out, "    tag %s\n", spec->tag.text);
-    if (spec->group_count > 0 || (own_group && spec->own_group != SIZE_MAX)) {
+    /* The group a repeated block or template names, unless the block also
+     * listed it itself. */
+    bool own = own_group && spec->own_group != SIZE_MAX;
+    for (size_t i = 0; own && i < spec->group_count; i++) own = spec->groups[i] != spec->own_group;
+    if (spec->group_count > 0 || own) {
         put(out, "    group");
         for (size_t i = 0; i < spec->group_count; i++) {
             put(out, " %s", doc->groups[spec->groups[i]].name.text);
         }
-        if (own_group && spec->own_group != SIZE_MAX) {
-            put(out, " %s", doc->groups[spec->own_group].name.text);
-        }
+        if (own) put(out, " %s", doc->groups[spec->own_group].name.text);
         put(out, "\n");
     }
     if (spec->has_filter) {
