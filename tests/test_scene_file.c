@@ -633,6 +633,34 @@ static void every_engine_refusal_is_caught_first(void) {
     scene_file_free(file);
 }
 
+/* ---- The documentation ---------------------------------------------------- */
+
+static void documented_examples_load(void) {
+    /* Every ```scene block of docs/scenes.md is a file that loads, so the
+     * examples cannot drift from the parser. */
+    FILE *stream = fopen("docs/scenes.md", "rb");
+    CHECK(stream != NULL);
+    if (stream == NULL) return;
+    char *text = malloc(1 << 20);
+    size_t size = fread(text, 1, (1 << 20) - 1, stream);
+    fclose(stream);
+    text[size] = '\0';
+    size_t examples = 0;
+    for (char *at = strstr(text, "```scene\n"); at != NULL; at = strstr(at, "```scene\n")) {
+        at += strlen("```scene\n");
+        char *end = strstr(at, "```");
+        if (end == NULL) break;
+        scene_file_error_t error;
+        scene_file_t *file = scene_file_parse(at, (size_t)(end - at), "docs/scenes.md", &error);
+        if (file == NULL) test_fail(__FILE__, __LINE__, "example %zu: %s", examples + 1, error.message);
+        scene_file_free(file);
+        examples++;
+        at = end + 3;
+    }
+    CHECK(examples >= 13); /* one per feature, at the time of writing */
+    free(text);
+}
+
 /* ---- The fuzz corpus ------------------------------------------------------ */
 
 static size_t replay_directory(const char *path, size_t *failures) {
@@ -690,4 +718,5 @@ TEST_SUITE(scene_file, TEST_CASE(settings_reach_the_scene),
            TEST_CASE(malformed_files_are_refused_with_where_and_what),
            TEST_CASE(a_nul_byte_is_refused_where_it_is),
            TEST_CASE(a_refused_file_leaves_the_open_scene_alone),
-           TEST_CASE(every_engine_refusal_is_caught_first), TEST_CASE(fuzz_corpus_replays_cleanly));
+           TEST_CASE(every_engine_refusal_is_caught_first), TEST_CASE(documented_examples_load),
+           TEST_CASE(fuzz_corpus_replays_cleanly));
