@@ -143,8 +143,7 @@ bool scene_file_same(scene_file_t *a, scene_file_t *b, char *why, size_t size) {
     return same_forces(a, b, false, why, size);
 }
 
-bool scene_file_same_forces_in_any_order(scene_file_t *a, scene_file_t *b, char *why,
-                                         size_t size) {
+bool scene_file_same_forces_in_any_order(scene_file_t *a, scene_file_t *b, char *why, size_t size) {
     return same_forces(a, b, true, why, size);
 }
 

@@ -81,7 +81,8 @@ static void breakout_is_won_by_a_paddle_under_the_ball(void) {
      * freed at the next tick; dt = 0 applies removals only). */
     scene_tick(scene_file_get_scene(file), 0);
     scene_file_t *fresh = load("assets/scenes/breakout.scene");
-    CHECK(scene_bodies(scene_file_get_scene(file)) == scene_bodies(scene_file_get_scene(fresh)) - 50);
+    CHECK(scene_bodies(scene_file_get_scene(file)) ==
+          scene_bodies(scene_file_get_scene(fresh)) - 50);
     scene_file_free(fresh);
     scene_file_free(file);
     CHECK(test_no_leaks());
@@ -116,7 +117,10 @@ static game_input_t invaders_player(scene_file_t *file) {
         }
         if (game_body_has_tag(body, "invader")) {
             double lead = c.x + body_get_velocity(body).x * (c.y - at.y) / 14.0;
-            if (fabs(lead - at.x) < best) best = fabs(lead - at.x), target = lead;
+            if (fabs(lead - at.x) < best) {
+                best = fabs(lead - at.x);
+                target = lead;
+            }
         }
     }
     return (game_input_t){clamp_unit(4.0 * (target - at.x)), fabs(target - at.x) < 0.3};
@@ -156,7 +160,8 @@ static void space_invaders_march_down_and_shoot(void) {
     scene_t *scene = scene_file_get_scene(file);
     body_t *first = NULL;
     for (size_t i = 0; i < scene_bodies(scene) && first == NULL; i++) {
-        if (game_body_has_tag(scene_get_body(scene, i), "invader")) first = scene_get_body(scene, i);
+        if (game_body_has_tag(scene_get_body(scene, i), "invader"))
+            first = scene_get_body(scene, i);
     }
     vector_t start = body_get_centroid(first);
     char error[256];

@@ -21,7 +21,8 @@ static scene_file_t *load(const char *name) {
 }
 
 static void run(scene_file_t *file, int steps) {
-    for (int i = 0; i < steps; i++) scene_tick(scene_file_get_scene(file), scene_file_get_timestep(file));
+    for (int i = 0; i < steps; i++)
+        scene_tick(scene_file_get_scene(file), scene_file_get_timestep(file));
 }
 
 static bool all_finite(scene_file_t *file) {
@@ -96,7 +97,8 @@ static void newtons_cradle_passes_the_blow_along(scene_file_t *file) {
     run(file, 300);
     scene_t *scene = scene_file_get_scene(file);
     size_t last = scene_bodies(scene) - 1;
-    for (size_t i = 0; i < last; i++) CHECK_VEC(body_get_velocity(scene_get_body(scene, i)), 0, 0, 1e-9);
+    for (size_t i = 0; i < last; i++)
+        CHECK_VEC(body_get_velocity(scene_get_body(scene, i)), 0, 0, 1e-9);
     CHECK_VEC(body_get_velocity(scene_get_body(scene, last)), 2, 0, 1e-9);
 }
 
@@ -170,7 +172,8 @@ static void stiff_spring_stays_bounded(scene_file_t *file) {
     double worst = 0.0;
     for (int i = 0; i < 1200; i++) {
         run(file, 1);
-        worst = fmax(worst, vec_get_length(vec_subtract(body_get_centroid(named(file, "weight")), pin)));
+        worst = fmax(worst,
+                     vec_get_length(vec_subtract(body_get_centroid(named(file, "weight")), pin)));
     }
     CHECK(worst < 0.55); /* released 0.5 m away: no energy gained */
     CHECK(worst > 0.45);

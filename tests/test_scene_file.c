@@ -197,10 +197,10 @@ static void forces_and_rules_make_their_pairs(void) {
                                "body b { box 1 1; position 3 0 }\n"
                                "body c { box 1 1; position 6 0; group g }\n"
                                "body d { box 1 1; position 9 0; group g }\n"
-                               "spring 5 a b\n"      /* 1 */
-                               "newton 2 all\n"      /* 4 bodies: 6 pairs */
-                               "newton 3 a g\n"      /* a, c, d: 3 pairs */
-                               "drag 0.5 b g\n"      /* 3 */
+                               "spring 5 a b\n"            /* 1 */
+                               "newton 2 all\n"            /* 4 bodies: 6 pairs */
+                               "newton 3 a g\n"            /* a, c, d: 3 pairs */
+                               "drag 0.5 b g\n"            /* 3 */
                                "collide a g physics 0.5\n" /* 2 */
                                "collide g g destructive\n" /* c-d once */
                                "collide all g physics 1\n" /* a,b with c,d: 4, and c-d once: 5 */
@@ -329,8 +329,7 @@ static void written_scenes_load_back_the_same(void) {
                        "spring 10 odd floor\ndrag 0.2 stuff\n"
                        "collide shot stuff destructive\n";
     char why[256] = "";
-    CHECK(scene_file_round_trip((const uint8_t *)text, strlen(text), "t.scene", why,
-                                sizeof why));
+    CHECK(scene_file_round_trip((const uint8_t *)text, strlen(text), "t.scene", why, sizeof why));
     if (why[0] != '\0') printf("    %s\n", why);
 }
 
@@ -347,8 +346,8 @@ static void a_running_scene_is_written_as_it_is_now(void) {
     /* A shot that lands on the floor, away from the boxes: its rules stay. */
     CHECK(scene_file_spawn(file, "shot", (vector_t){-8, 2}, VEC_ZERO) != NULL);
     /* A body the file did not make: written as vertices with its mass. */
-    body_t *dropped = body_init(polygon_make_regular(5, 0.5, (vector_t){8, 1}, 0.3), 2,
-                                (rgb_color_t){1, 0, 0});
+    body_t *dropped =
+        body_init(polygon_make_regular(5, 0.5, (vector_t){8, 1}, 0.3), 2, (rgb_color_t){1, 0, 0});
     body_set_velocity(dropped, (vector_t){0.5, 0});
     scene_add_body(scene, dropped);
     body_remove(scene_file_find_body(file, "doomed"));
@@ -426,26 +425,31 @@ static const bad_file_t BAD_FILES[] = {
     {"bdoy x { box 1 1 }",
      "t.scene:1:1: expected a statement (body, template, group, gravity, contacts, integrator, "
      "iterations, timestep, view, game, spring, newton, drag, collide), found \"bdoy\""},
-    {"gravity 0 abc", "t.scene:1:11: expected a gravity component (m/s^2), a number, found \"abc\""},
+    {"gravity 0 abc",
+     "t.scene:1:11: expected a gravity component (m/s^2), a number, found \"abc\""},
     {"gravity 0 1e999",
      "t.scene:1:11: expected a gravity component (m/s^2), a finite number, found \"1e999\""},
-    {"gravity 0 nan", "t.scene:1:11: expected a gravity component (m/s^2), a number, found \"nan\""},
-    {"gravity 0\n", "t.scene:1:10: expected a gravity component (m/s^2), a number, found the end of the line"},
-    {"gravity 0 1e10",
-     "t.scene:1:11: expected a gravity component (m/s^2), a number >= -1e+09 and <= 1e+09, found \"1e10\""},
-    {"timestep 1/0",
-     "t.scene:1:10: expected the timestep (s), a fraction with a denominator other than 0, found \"1/0\""},
+    {"gravity 0 nan",
+     "t.scene:1:11: expected a gravity component (m/s^2), a number, found \"nan\""},
+    {"gravity 0\n",
+     "t.scene:1:10: expected a gravity component (m/s^2), a number, found the end of the line"},
+    {"gravity 0 1e10", "t.scene:1:11: expected a gravity component (m/s^2), a number >= -1e+09 and "
+                       "<= 1e+09, found \"1e10\""},
+    {"timestep 1/0", "t.scene:1:10: expected the timestep (s), a fraction with a denominator other "
+                     "than 0, found \"1/0\""},
     {"timestep 0", "t.scene:1:10: expected the timestep (s), a number > 0 and <= 10, found \"0\""},
     {"contacts maybe", "t.scene:1:10: expected on or off (world contacts), found \"maybe\""},
-    {"integrator rk5",
-     "t.scene:1:12: expected an integrator (seed, explicit_euler, symplectic_euler), found \"rk5\""},
+    {"integrator rk5", "t.scene:1:12: expected an integrator (seed, explicit_euler, "
+                       "symplectic_euler), found \"rk5\""},
     {"iterations 0 4",
      "t.scene:1:12: expected the velocity iterations, a whole number from 1 to 1000, found \"0\""},
     {"gravity 0 -10\ngravity 0 -9",
      "t.scene:2:1: expected one gravity statement per file, found a second (the first at line 1)"},
-    {"view 0 0 0 10", "t.scene:1:10: expected a view size (m), a number > 0 and <= 2e+09, found \"0\""},
-    {"game 3d", "t.scene:1:6: expected the game's name (a letter or '_', then letters, digits, '_', "
-                "'.' or '-', at most 63 characters), found \"3d\""},
+    {"view 0 0 0 10",
+     "t.scene:1:10: expected a view size (m), a number > 0 and <= 2e+09, found \"0\""},
+    {"game 3d",
+     "t.scene:1:6: expected the game's name (a letter or '_', then letters, digits, '_', "
+     "'.' or '-', at most 63 characters), found \"3d\""},
     {"body a { box 1 1 } extra",
      "t.scene:1:20: expected the end of the statement (a new line or ';'), found \"extra\""},
     {"body a { box 1 1 extra }",
@@ -502,8 +506,8 @@ static const bad_file_t BAD_FILES[] = {
     {"body a { box 1 1; static\n mass 2 }",
      "t.scene:2:2: expected one mass, density or static per body, found a second (the first at "
      "line 1)"},
-    {"body a { mass 1 }",
-     "t.scene:1:17: expected a shape (regular, box or vertices) in the body, found '}' without one"},
+    {"body a { mass 1 }", "t.scene:1:17: expected a shape (regular, box or vertices) in the body, "
+                          "found '}' without one"},
     {"body a {\n box 1 1\n",
      "t.scene:3:1: expected '}' to close the block opened at line 1, found the end of the file"},
     {"body a { colour 1 1 1 }",
@@ -517,12 +521,12 @@ static const bad_file_t BAD_FILES[] = {
     {"body all { box 1 1 }",
      "t.scene:1:6: expected the body's name other than all (all stands for every body), found "
      "\"all\""},
-    {"body 1x { box 1 1 }",
-     "t.scene:1:6: expected the body's name (a letter or '_', then letters, digits, '_', '.' or '-', "
-     "at most 63 characters), found \"1x\""},
-    {"body a { box 1 1; filter 1 0x1ffffffff 0 }",
-     "t.scene:1:28: expected the filter's mask bits, a whole number from 0 to 4294967295 (or 0x0 to "
-     "0xffffffff), found \"0x1ffffffff\""},
+    {"body 1x { box 1 1 }", "t.scene:1:6: expected the body's name (a letter or '_', then letters, "
+                            "digits, '_', '.' or '-', "
+                            "at most 63 characters), found \"1x\""},
+    {"body a { box 1 1; filter 1 0x1ffffffff 0 }", "t.scene:1:28: expected the filter's mask bits, "
+                                                   "a whole number from 0 to 4294967295 (or 0x0 to "
+                                                   "0xffffffff), found \"0x1ffffffff\""},
     {"body a { box 1 1; repeat 200 200 1 1 }",
      "t.scene:1:1: expected at most 20000 bodies in a file, found 40000 with this block"},
     {"body a { box 1 1; repeat 3 1 1e9 0 }",
@@ -538,7 +542,8 @@ static const bad_file_t BAD_FILES[] = {
      "t.scene:2:12: expected the name of a body or group, found \"b\", which names nothing in the "
      "file"},
     {"body g { box 1 1; repeat 2 1 2 0 }\nbody a { box 1 1 }\nspring 1 a g",
-     "t.scene:3:12: expected a single body for the spring, found \"g\", a group (a repeated body, a "
+     "t.scene:3:12: expected a single body for the spring, found \"g\", a group (a repeated body, "
+     "a "
      "template or a group)"},
     {"body a { box 1 1 }\nspring 1 a a",
      "t.scene:2:12: expected two different bodies for the spring, found \"a\" twice"},
@@ -552,9 +557,9 @@ static const bad_file_t BAD_FILES[] = {
      "t.scene:2:1: expected at most 1000000 force creators from the forces and rules of a file, "
      "found 49995000 with this newton"},
     {"gravity 0 0\n\x01", "t.scene:2:1: expected text, found the control byte 0x01"},
-    {"body a { box 1 1; tag \"x\" }",
-     "t.scene:1:23: expected a tag (a letter or '_', then letters, digits, '_', '.' or '-', at most "
-     "63 characters), found \"\\\"x\\\"\""},
+    {"body a { box 1 1; tag \"x\" }", "t.scene:1:23: expected a tag (a letter or '_', then "
+                                      "letters, digits, '_', '.' or '-', at most "
+                                      "63 characters), found \"\\\"x\\\"\""},
 };
 
 static void malformed_files_are_refused_with_where_and_what(void) {
@@ -609,12 +614,12 @@ static void every_engine_refusal_is_caught_first(void) {
     /* Values the engine would abort on (docs/api.md) never reach it: each of
      * these is refused with a message and the program goes on. */
     const char *const texts[] = {
-        "body a { vertices 0 0 1 0 }",              /* < 3 vertices */
-        "body a { vertices 0 0 2 0 1 1 1 0.5 }",     /* reflex */
-        "body a { regular 3 1e300 }",                /* out of range */
-        "body a { box 1 1; mass 1e-320 }",           /* subnormal mass */
-        "body a { box 1 1; mass 1e41 }",             /* past the mass limit */
-        "body a { box 1e-100 1e-100 }",              /* a moment that underflows */
+        "body a { vertices 0 0 1 0 }",           /* < 3 vertices */
+        "body a { vertices 0 0 2 0 1 1 1 0.5 }", /* reflex */
+        "body a { regular 3 1e300 }",            /* out of range */
+        "body a { box 1 1; mass 1e-320 }",       /* subnormal mass */
+        "body a { box 1 1; mass 1e41 }",         /* past the mass limit */
+        "body a { box 1e-100 1e-100 }",          /* a moment that underflows */
         "body a { box 1 1; friction -1 }",
         "body a { box 1 1; velocity 1e300 0 }",
         "body a { box 1 1 }\nbody b { box 1 1 }\ncollide a a physics 1\nspring -1 a b",
@@ -652,7 +657,8 @@ static void documented_examples_load(void) {
         if (end == NULL) break;
         scene_file_error_t error;
         scene_file_t *file = scene_file_parse(at, (size_t)(end - at), "docs/scenes.md", &error);
-        if (file == NULL) test_fail(__FILE__, __LINE__, "example %zu: %s", examples + 1, error.message);
+        if (file == NULL)
+            test_fail(__FILE__, __LINE__, "example %zu: %s", examples + 1, error.message);
         scene_file_free(file);
         examples++;
         at = end + 3;
@@ -711,8 +717,8 @@ TEST_SUITE(scene_file, TEST_CASE(settings_reach_the_scene),
            TEST_CASE(repeat_makes_a_group_of_copies), TEST_CASE(forces_and_rules_make_their_pairs),
            TEST_CASE(layout_is_free), TEST_CASE(names_and_groups_may_be_used_before_their_blocks),
            TEST_CASE(spawn_applies_the_rules_of_its_groups),
-           TEST_CASE(many_spawns_and_destructions_leave_nothing_behind), TEST_CASE(find_body_forgets_freed_bodies),
-           TEST_CASE(written_scenes_load_back_the_same),
+           TEST_CASE(many_spawns_and_destructions_leave_nothing_behind),
+           TEST_CASE(find_body_forgets_freed_bodies), TEST_CASE(written_scenes_load_back_the_same),
            TEST_CASE(a_running_scene_is_written_as_it_is_now),
            TEST_CASE(save_and_load_through_a_path),
            TEST_CASE(malformed_files_are_refused_with_where_and_what),

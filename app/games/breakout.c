@@ -16,7 +16,7 @@
 #include "game.h"
 
 static const int LIVES = 3;
-static const double PADDLE_SPEED = 12.0;              /* m/s at move = 1 */
+static const double PADDLE_SPEED = 12.0;                    /* m/s at move = 1 */
 static const double MAX_BOUNCE_ANGLE = 60.0 * M_PI / 180.0; /* off vertical, at the paddle's end */
 static const double LOST_BELOW = 1.0; /* m under the paddle's bottom: the ball is lost */
 
@@ -27,7 +27,7 @@ typedef struct {
     body_t *paddle;
     vector_t ball_start;
     vector_t ball_start_velocity;
-    double speed;                /* the ball's speed, kept through every bounce */
+    double speed; /* the ball's speed, kept through every bounce */
     double paddle_half_width;
     double paddle_min_x, paddle_max_x; /* where the paddle's centre may go */
     double lost_y;
@@ -67,10 +67,14 @@ static void *breakout_start(scene_file_t *file, char *error, size_t error_size) 
     body_t *ball = scene_file_find_body(file, "ball");
     body_t *paddle = scene_file_find_body(file, "paddle");
     const char *problem = NULL;
-    if (ball == NULL) problem = "the scene has no body named ball";
-    else if (paddle == NULL) problem = "the scene has no body named paddle";
-    else if (isinf(body_get_mass(ball))) problem = "the ball must have a finite mass";
-    else if (vec_get_length(body_get_velocity(ball)) == 0.0) problem = "the ball must move";
+    if (ball == NULL)
+        problem = "the scene has no body named ball";
+    else if (paddle == NULL)
+        problem = "the scene has no body named paddle";
+    else if (isinf(body_get_mass(ball)))
+        problem = "the ball must have a finite mass";
+    else if (vec_get_length(body_get_velocity(ball)) == 0.0)
+        problem = "the ball must move";
     if (problem != NULL) {
         snprintf(error, error_size, "breakout: %s", problem);
         return NULL;
@@ -90,7 +94,8 @@ static void *breakout_start(scene_file_t *file, char *error, size_t error_size) 
 }
 
 static bool is_pair(const contact_t *contact, body_t *a, body_t *b) {
-    return (contact->body1 == a && contact->body2 == b) || (contact->body1 == b && contact->body2 == a);
+    return (contact->body1 == a && contact->body2 == b) ||
+           (contact->body1 == b && contact->body2 == a);
 }
 
 /* The ball leaves the paddle at up to MAX_BOUNCE_ANGLE off vertical, by how
@@ -113,9 +118,9 @@ static void read_hits(breakout_t *game) {
             steer_off_paddle(game);
             continue;
         }
-        body_t *other = contact->body1 == game->ball ? contact->body2
+        body_t *other = contact->body1 == game->ball   ? contact->body2
                         : contact->body2 == game->ball ? contact->body1
-                                                        : NULL;
+                                                       : NULL;
         if (other != NULL && game_body_has_tag(other, "brick") && !body_is_removed(other)) {
             body_remove(other);
             game->status.score++;
@@ -141,7 +146,7 @@ static void stop(breakout_t *game, game_outcome_t outcome) {
 static void breakout_update(void *state, game_input_t input, double dt) {
     breakout_t *game = state;
     read_hits(game);
-    game->status.remaining = count_bricks(game->scene) ;
+    game->status.remaining = count_bricks(game->scene);
     if (game->status.remaining == 0) {
         stop(game, GAME_WON);
         return;

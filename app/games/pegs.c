@@ -38,8 +38,10 @@ static void *pegs_start(scene_file_t *file, char *error, size_t error_size) {
     pegs_t *game = calloc(1, sizeof *game);
     if (game == NULL) abort();
     vector_t half = {0.5 * view.width, 0.5 * view.height};
-    *game = (pegs_t){scene, {vec_subtract(view.center, half), vec_add(view.center, half)},
-                     0x2545F4914F6CDD1DULL, {GAME_PLAYING, 1, 0, balls}};
+    *game = (pegs_t){scene,
+                     {vec_subtract(view.center, half), vec_add(view.center, half)},
+                     0x2545F4914F6CDD1DULL,
+                     {GAME_PLAYING, 1, 0, balls}};
     return game;
 }
 

@@ -20,23 +20,23 @@
 #include <stdlib.h>
 #include "game.h"
 
-static const double GUN_SPEED = 8.0;          /* m/s at move = 1 */
-static const double SHOT_SPEED = 14.0;        /* m/s, up */
-static const double RELOAD = 0.35;            /* s between shots */
-static const int MAX_SHOTS = 2;               /* the gun's shots in flight at once */
-static const double MARCH_SPEED = 1.0;        /* m/s with the whole formation left ... */
-static const double MARCH_SPEED_LAST = 4.0;   /* ... and with one invader left */
-static const double STEP_DOWN = 0.5;          /* m, at each edge */
-static const double BOMB_SPEED = 5.0;         /* m/s, down */
-static const double BOMB_INTERVAL = 0.9;      /* s between bombs */
+static const double GUN_SPEED = 8.0;        /* m/s at move = 1 */
+static const double SHOT_SPEED = 14.0;      /* m/s, up */
+static const double RELOAD = 0.35;          /* s between shots */
+static const int MAX_SHOTS = 2;             /* the gun's shots in flight at once */
+static const double MARCH_SPEED = 1.0;      /* m/s with the whole formation left ... */
+static const double MARCH_SPEED_LAST = 4.0; /* ... and with one invader left */
+static const double STEP_DOWN = 0.5;        /* m, at each edge */
+static const double BOMB_SPEED = 5.0;       /* m/s, down */
+static const double BOMB_INTERVAL = 0.9;    /* s between bombs */
 
 typedef struct {
     scene_file_t *file;
     scene_t *scene;
     aabb_t field;
-    double direction;   /* +1 marching right, -1 left */
-    double reload;      /* s until the gun may fire */
-    double bomb_timer;  /* s until the next bomb */
+    double direction;  /* +1 marching right, -1 left */
+    double reload;     /* s until the gun may fire */
+    double bomb_timer; /* s until the next bomb */
     uint64_t random;
     int initial_invaders;
     game_status_t status;
@@ -66,11 +66,16 @@ static void *invaders_start(scene_file_t *file, char *error, size_t error_size) 
     scene_t *scene = scene_file_get_scene(file);
     scene_file_view_t view = scene_file_get_view(file);
     const char *problem = NULL;
-    if (scene_file_find_body(file, "player") == NULL) problem = "the scene has no body named player";
-    else if (count(scene, "invader") == 0) problem = "the scene has no body tagged invader";
-    else if (!scene_file_has_template(file, "shot")) problem = "the scene has no template named shot";
-    else if (!scene_file_has_template(file, "bomb")) problem = "the scene has no template named bomb";
-    else if (!view.has_view) problem = "the scene has no view (the field)";
+    if (scene_file_find_body(file, "player") == NULL)
+        problem = "the scene has no body named player";
+    else if (count(scene, "invader") == 0)
+        problem = "the scene has no body tagged invader";
+    else if (!scene_file_has_template(file, "shot"))
+        problem = "the scene has no template named shot";
+    else if (!scene_file_has_template(file, "bomb"))
+        problem = "the scene has no template named bomb";
+    else if (!view.has_view)
+        problem = "the scene has no view (the field)";
     if (problem != NULL) {
         snprintf(error, error_size, "space_invaders: %s", problem);
         return NULL;
@@ -135,7 +140,10 @@ static void drop_bomb(invaders_t *game) {
     for (size_t i = 0; i < scene_bodies(game->scene); i++) {
         body_t *body = scene_get_body(game->scene, i);
         vector_t c = body_get_centroid(body);
-        if (alive(body, "invader") && fabs(c.x - at.x) < 0.5 && c.y < at.y) at = c, chosen = body;
+        if (alive(body, "invader") && fabs(c.x - at.x) < 0.5 && c.y < at.y) {
+            at = c;
+            chosen = body;
+        }
     }
     aabb_t bounds = body_get_bounds(chosen);
     scene_file_spawn(game->file, "bomb", (vector_t){at.x, bounds.min.y - 0.3},

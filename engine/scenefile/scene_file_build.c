@@ -125,7 +125,8 @@ static void make_bodies(scene_file_t *file) {
                 sf_record_t *record =
                     make_body(file, i, vec_add(spec->position, offset), spec->velocity);
                 /* A single body is what its name refers to. */
-                if (spec->own_group == SIZE_MAX && spec->name.text[0] != '\0') spec->record = record;
+                if (spec->own_group == SIZE_MAX && spec->name.text[0] != '\0')
+                    spec->record = record;
             }
         }
     }
@@ -374,10 +375,8 @@ static size_t spawn_pairs(scene_file_t *file, sf_record_t *record, size_t spec_i
             } else {
                 continue;
             }
-            if (record != NULL) {
-                if (a != NULL) make_force(file, s, a, record);
-                else make_force(file, s, record, b);
-            }
+            if (record != NULL && a != NULL) make_force(file, s, a, record);
+            if (record != NULL && b != NULL) make_force(file, s, record, b);
             count++;
         }
     }

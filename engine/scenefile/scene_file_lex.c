@@ -23,8 +23,8 @@ bool sf_fail(sf_lexer_t *lexer, sf_where_t where, const char *format, ...) {
     lexer->failed = true;
     scene_file_error_t *error = lexer->error;
     if (error == NULL) return false;
-    int used = snprintf(error->message, sizeof error->message, "%s:%zu:%zu: ",
-                        lexer->file_name, where.line, where.column);
+    int used = snprintf(error->message, sizeof error->message, "%s:%zu:%zu: ", lexer->file_name,
+                        where.line, where.column);
     if (used >= 0 && (size_t)used < sizeof error->message) {
         va_list args;
         va_start(args, format);

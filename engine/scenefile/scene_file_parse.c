@@ -29,10 +29,10 @@ const char *scene_file_integrator_name(integrator_t integrator) {
     return NULL;
 }
 
-static const double DEFAULT_FRICTION = 0.6;     /* the engine's default (body.h) */
-static const double DEFAULT_DENSITY = 1.0;      /* kg/m^2 */
+static const double DEFAULT_FRICTION = 0.6; /* the engine's default (body.h) */
+static const double DEFAULT_DENSITY = 1.0;  /* kg/m^2 */
 static const double DEFAULT_TIMESTEP = 1.0 / 120.0;
-static const size_t MAX_ITERATIONS = 1000;      /* scene_set_solver_iterations */
+static const size_t MAX_ITERATIONS = 1000; /* scene_set_solver_iterations */
 static const rgb_color_t STATIC_COLOR = {0.5, 0.5, 0.5};
 static const rgb_color_t MOVING_COLOR = {0.85, 0.55, 0.25};
 
@@ -67,7 +67,8 @@ typedef struct {
     bool angle;    /* "deg" allowed */
 } quantity_t;
 
-static const quantity_t COORDINATE = {"a coordinate (m)", -SF_MAX_LENGTH, SF_MAX_LENGTH, false, false};
+static const quantity_t COORDINATE = {"a coordinate (m)", -SF_MAX_LENGTH, SF_MAX_LENGTH, false,
+                                      false};
 static const quantity_t OFFSET = {"an offset (m)", -SF_MAX_LENGTH, SF_MAX_LENGTH, false, false};
 static const quantity_t SIZE = {"a size (m)", 0.0, 2.0 * SF_MAX_LENGTH, true, false};
 static const quantity_t RADIUS = {"the radius (m)", 0.0, SF_MAX_LENGTH, true, false};
@@ -76,14 +77,20 @@ static const quantity_t DENSITY = {"the density (kg/m^2)", 0.0, SF_MAX_CONSTANT,
 static const quantity_t ELASTICITY = {"the elasticity", 0.0, SF_MAX_MOTION, false, false};
 static const quantity_t FRICTION = {"the friction coefficient", 0.0, SF_MAX_MOTION, false, false};
 static const quantity_t COLOR = {"a colour component", 0.0, 1.0, false, false};
-static const quantity_t ANGLE = {"the angle (rad, or deg with the suffix deg)", -SF_MAX_MOTION, SF_MAX_MOTION, false, true};
-static const quantity_t VELOCITY = {"a velocity component (m/s)", -SF_MAX_MOTION, SF_MAX_MOTION, false, false};
-static const quantity_t SPIN = {"the spin (rad/s, or deg/s with the suffix deg)", -SF_MAX_MOTION, SF_MAX_MOTION, false, true};
-static const quantity_t GRAVITY = {"a gravity component (m/s^2)", -SF_MAX_MOTION, SF_MAX_MOTION, false, false};
+static const quantity_t ANGLE = {"the angle (rad, or deg with the suffix deg)", -SF_MAX_MOTION,
+                                 SF_MAX_MOTION, false, true};
+static const quantity_t VELOCITY = {"a velocity component (m/s)", -SF_MAX_MOTION, SF_MAX_MOTION,
+                                    false, false};
+static const quantity_t SPIN = {"the spin (rad/s, or deg/s with the suffix deg)", -SF_MAX_MOTION,
+                                SF_MAX_MOTION, false, true};
+static const quantity_t GRAVITY = {"a gravity component (m/s^2)", -SF_MAX_MOTION, SF_MAX_MOTION,
+                                   false, false};
 static const quantity_t TIMESTEP = {"the timestep (s)", 0.0, 10.0, true, false};
 static const quantity_t VIEW_SIZE = {"a view size (m)", 0.0, 2.0 * SF_MAX_LENGTH, true, false};
-static const quantity_t SPRING_K = {"the spring constant k (N/m)", 0.0, SF_MAX_CONSTANT, false, false};
-static const quantity_t NEWTON_G = {"the constant G (N m^2/kg^2)", 0.0, SF_MAX_CONSTANT, false, false};
+static const quantity_t SPRING_K = {"the spring constant k (N/m)", 0.0, SF_MAX_CONSTANT, false,
+                                    false};
+static const quantity_t NEWTON_G = {"the constant G (N m^2/kg^2)", 0.0, SF_MAX_CONSTANT, false,
+                                    false};
 static const quantity_t DRAG_GAMMA = {"the drag gamma (kg/s)", 0.0, SF_MAX_CONSTANT, false, false};
 
 static bool read_quantity(parser_t *p, const quantity_t *q, double *out) {
@@ -117,8 +124,7 @@ static bool read_vector(parser_t *p, const quantity_t *q, vector_t *out) {
     return read_quantity(p, q, &out->x) && read_quantity(p, q, &out->y);
 }
 
-static bool read_count(parser_t *p, const char *what, uint64_t min, uint64_t max,
-                       uint64_t *out) {
+static bool read_count(parser_t *p, const char *what, uint64_t min, uint64_t max, uint64_t *out) {
     uint64_t value = 0;
     if (!sf_read_integer(&p->token, UINT64_MAX, false, &value) || value < min || value > max) {
         char expectation[256];
@@ -346,8 +352,9 @@ typedef struct {
 
 static bool once(parser_t *p, sf_where_t *seen, const char *what, sf_where_t here) {
     if (seen->line != 0) {
-        return sf_fail(p->lexer, here, "expected one %s per body, found a second (the first at line %zu)",
-                       what, seen->line);
+        return sf_fail(p->lexer, here,
+                       "expected one %s per body, found a second (the first at line %zu)", what,
+                       seen->line);
     }
     *seen = here;
     return true;
@@ -371,8 +378,8 @@ static bool read_vertices(parser_t *p, sf_shape_t *shape) {
                 break;
             }
         }
-        if (p->token.kind != TOKEN_WORD || sf_read_number(&p->token, false, &(double){0}) ==
-                                                SF_NUMBER_SYNTAX) {
+        if (p->token.kind != TOKEN_WORD ||
+            sf_read_number(&p->token, false, &(double){0}) == SF_NUMBER_SYNTAX) {
             break;
         }
         if (shape->count == SCENE_FILE_MAX_VERTICES) {
@@ -421,8 +428,7 @@ static bool parse_shape(parser_t *p, const char *keyword, sf_body_t *body, seen_
         quantity_t width = SIZE, height = SIZE;
         width.what = "the width (m)";
         height.what = "the height (m)";
-        return read_quantity(p, &width, &shape->width) &&
-               read_quantity(p, &height, &shape->height);
+        return read_quantity(p, &width, &shape->width) && read_quantity(p, &height, &shape->height);
     }
     shape->kind = SHAPE_VERTICES;
     return read_vertices(p, shape);
@@ -540,10 +546,8 @@ static list_t *shape_list(const sf_shape_t *shape) {
         /* A flat bottom edge: vertices at -90 degrees +- half a side. */
         return polygon_make_regular(shape->sides, shape->radius, VEC_ZERO,
                                     -M_PI / 2.0 - M_PI / (double)shape->sides);
-    case SHAPE_BOX:
-        return polygon_make_box(VEC_ZERO, shape->width / 2.0, shape->height / 2.0);
-    default:
-        return list_of(shape->written, shape->count);
+    case SHAPE_BOX: return polygon_make_box(VEC_ZERO, shape->width / 2.0, shape->height / 2.0);
+    default: return list_of(shape->written, shape->count);
     }
 }
 
@@ -598,8 +602,8 @@ static bool derive_mass(parser_t *p, sf_body_t *body, sf_where_t where) {
         body->mass = INFINITY;
         return true;
     }
-    double mass = body->mass_kind == MASS_TOTAL ? body->mass_value
-                                                : body->mass_value * body->shape.area;
+    double mass =
+        body->mass_kind == MASS_TOTAL ? body->mass_value : body->mass_value * body->shape.area;
     double moment = mass * body->shape.moment_per_kg;
     char given[160];
     if (body->mass_kind == MASS_TOTAL) {
@@ -609,8 +613,7 @@ static bool derive_mass(parser_t *p, sf_body_t *body, sf_where_t where) {
                  body->shape.area, mass);
     }
     if (!(mass > 0.0) || !isfinite(mass) || !isfinite(1.0 / mass)) {
-        return sf_fail(p->lexer, where, "expected a mass whose inverse is finite, found %s",
-                       given);
+        return sf_fail(p->lexer, where, "expected a mass whose inverse is finite, found %s", given);
     }
     if (!(moment >= SF_MIN_MOMENT && moment <= SF_MAX_MOMENT)) {
         return sf_fail(p->lexer, where,
@@ -667,7 +670,8 @@ static bool finish_body(parser_t *p, sf_body_t *body, const seen_t *seen, sf_whe
     }
     if (!derive_shape(p, &body->shape)) return false;
     if (!derive_mass(p, body, seen->mass.line != 0 ? seen->mass : body->shape.where)) return false;
-    if (!body->has_color) body->color = body->mass_kind == MASS_STATIC ? STATIC_COLOR : MOVING_COLOR;
+    if (!body->has_color)
+        body->color = body->mass_kind == MASS_STATIC ? STATIC_COLOR : MOVING_COLOR;
     if (!body->has_position) body->position = body->shape.centroid;
     if (body->is_template && seen->repeat.line != 0) {
         return sf_fail(p->lexer, seen->repeat,
@@ -675,9 +679,9 @@ static bool finish_body(parser_t *p, sf_body_t *body, const seen_t *seen, sf_whe
     }
     size_t copies = body->repeat_x * body->repeat_y;
     if (body->has_repeat) {
-        vector_t last = vec_add(body->position,
-                                (vector_t){(double)(body->repeat_x - 1) * body->repeat_step.x,
-                                           (double)(body->repeat_y - 1) * body->repeat_step.y});
+        vector_t last =
+            vec_add(body->position, (vector_t){(double)(body->repeat_x - 1) * body->repeat_step.x,
+                                               (double)(body->repeat_y - 1) * body->repeat_step.y});
         if (!(fabs(last.x) <= SF_MAX_LENGTH && fabs(last.y) <= SF_MAX_LENGTH)) {
             return sf_fail(p->lexer, seen->repeat,
                            "expected copies within %g m of the origin, found the last at "
@@ -722,8 +726,8 @@ static bool parse_body(parser_t *p, bool is_template, sf_where_t here) {
     };
     sf_where_t name_where = here;
     if (p->token.kind == TOKEN_WORD || is_template) {
-        if (!read_new_name(p, is_template ? "the template's name" : "the body's name",
-                           &body->name, &name_where))
+        if (!read_new_name(p, is_template ? "the template's name" : "the body's name", &body->name,
+                           &name_where))
             return false;
     }
     while (p->token.kind == TOKEN_NEWLINE) next(p);
@@ -814,8 +818,8 @@ static bool parse_statement(parser_t *p, const char *keyword, sf_where_t here) {
 
 /* ---- The file ------------------------------------------------------------- */
 
-static const char *const SETTINGS[] = {"gravity", "contacts", "integrator", "iterations",
-                                       "timestep", "view", "game"};
+static const char *const SETTINGS[] = {"gravity",  "contacts", "integrator", "iterations",
+                                       "timestep", "view",     "game"};
 static const char *const FORCES[] = {"spring", "newton", "drag", "collide"};
 
 static bool parse_one(parser_t *p) {
@@ -850,9 +854,8 @@ static bool parse_one(parser_t *p) {
         return ok;
     }
     if (p->token.kind == TOKEN_BAD_BYTE) return expected(p, "text");
-    return expected(p,
-                    "a statement (body, template, group, gravity, contacts, integrator, "
-                    "iterations, timestep, view, game, spring, newton, drag, collide)");
+    return expected(p, "a statement (body, template, group, gravity, contacts, integrator, "
+                       "iterations, timestep, view, game, spring, newton, drag, collide)");
 }
 
 bool sf_parse(sf_lexer_t *lexer, sf_doc_t *doc) {

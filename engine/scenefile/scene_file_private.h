@@ -33,13 +33,13 @@ typedef struct {
 /* ---- Lexer ---------------------------------------------------------------- */
 
 typedef enum {
-    TOKEN_WORD = 0,  /* a run of bytes up to a space, newline, ';', '{', '}' or '#' */
+    TOKEN_WORD = 0, /* a run of bytes up to a space, newline, ';', '{', '}' or '#' */
     TOKEN_NEWLINE,
     TOKEN_SEMICOLON,
-    TOKEN_OPEN,      /* '{' */
-    TOKEN_CLOSE,     /* '}' */
+    TOKEN_OPEN,  /* '{' */
+    TOKEN_CLOSE, /* '}' */
     TOKEN_END,
-    TOKEN_BAD_BYTE,  /* a control byte (NUL included) outside a comment */
+    TOKEN_BAD_BYTE, /* a control byte (NUL included) outside a comment */
 } sf_token_kind_t;
 
 typedef struct {
@@ -78,7 +78,12 @@ const char *sf_describe(const sf_token_t *token, char *buffer, size_t size);
 /* A decimal number, optionally a fraction "1/60", optionally with the suffix
  * "deg" when allow_degrees (converted to radians). False when the token is
  * not one (nothing is reported: the caller knows what it expected). */
-typedef enum { SF_NUMBER_OK = 0, SF_NUMBER_SYNTAX, SF_NUMBER_NOT_FINITE, SF_NUMBER_ZERO_DENOMINATOR } sf_number_status_t;
+typedef enum {
+    SF_NUMBER_OK = 0,
+    SF_NUMBER_SYNTAX,
+    SF_NUMBER_NOT_FINITE,
+    SF_NUMBER_ZERO_DENOMINATOR
+} sf_number_status_t;
 sf_number_status_t sf_read_number(const sf_token_t *token, bool allow_degrees, double *value);
 
 /* A decimal integer (or "0x" hexadecimal when allow_hex) no larger than max. */
@@ -94,16 +99,16 @@ typedef enum { SHAPE_NONE = 0, SHAPE_REGULAR, SHAPE_BOX, SHAPE_VERTICES } sf_sha
 typedef struct {
     sf_shape_kind_t kind;
     sf_where_t where;
-    size_t sides;           /* SHAPE_REGULAR */
-    double radius;          /* SHAPE_REGULAR: circumradius */
-    double width, height;   /* SHAPE_BOX: full sizes */
-    vector_t *written;      /* SHAPE_VERTICES: as written, made counter-clockwise */
-    size_t count;           /* vertices */
+    size_t sides;         /* SHAPE_REGULAR */
+    double radius;        /* SHAPE_REGULAR: circumradius */
+    double width, height; /* SHAPE_BOX: full sizes */
+    vector_t *written;    /* SHAPE_VERTICES: as written, made counter-clockwise */
+    size_t count;         /* vertices */
     /* Derived once the shape is checked: */
-    vector_t *centred;      /* the vertices relative to the area centroid, counter-clockwise */
-    vector_t centroid;      /* where that centroid lies as written (origin for regular, box) */
-    double area;            /* m^2, > 0 */
-    double moment_per_kg;   /* moment of inertia of 1 kg of it, kg m^2 / kg */
+    vector_t *centred;    /* the vertices relative to the area centroid, counter-clockwise */
+    vector_t centroid;    /* where that centroid lies as written (origin for regular, box) */
+    double area;          /* m^2, > 0 */
+    double moment_per_kg; /* moment of inertia of 1 kg of it, kg m^2 / kg */
 } sf_shape_t;
 
 typedef enum { MASS_DENSITY = 0, MASS_TOTAL, MASS_STATIC } sf_mass_kind_t;
@@ -112,29 +117,29 @@ typedef enum { MASS_DENSITY = 0, MASS_TOTAL, MASS_STATIC } sf_mass_kind_t;
 typedef struct {
     sf_where_t where;
     bool is_template;
-    sf_name_t name;          /* "" for an anonymous body */
+    sf_name_t name; /* "" for an anonymous body */
     sf_name_t tag;
     sf_shape_t shape;
     sf_mass_kind_t mass_kind;
-    double mass_value;       /* density (kg/m^2) or mass (kg) as written */
-    double mass;             /* kg; INFINITY when static */
+    double mass_value; /* density (kg/m^2) or mass (kg) as written */
+    double mass;       /* kg; INFINITY when static */
     double elasticity;
     double friction;
     rgb_color_t color;
     bool has_color;
     bool has_position;
-    vector_t position;       /* of the centroid */
+    vector_t position; /* of the centroid */
     double angle;
     vector_t velocity;
     double spin;
     bool has_filter;
     uint32_t category, mask, filter_group;
-    bool has_repeat;         /* a repeated block names a group, whatever its counts */
+    bool has_repeat;           /* a repeated block names a group, whatever its counts */
     size_t repeat_x, repeat_y; /* 1 and 1 without repeat */
     vector_t repeat_step;
-    size_t *groups;          /* group indices named by `group` */
+    size_t *groups; /* group indices named by `group` */
     size_t group_count;
-    size_t own_group;        /* the group named after a repeated body or a template, or SIZE_MAX */
+    size_t own_group;         /* the group named after a repeated body or a template, or SIZE_MAX */
     struct sf_record *record; /* a single named body's record once built, NULL when freed */
 } sf_body_t;
 
@@ -144,7 +149,7 @@ typedef struct {
 typedef struct {
     sf_name_t name;
     sf_where_t where;
-    size_t template_body;    /* index of the template named like it, or SIZE_MAX */
+    size_t template_body; /* index of the template named like it, or SIZE_MAX */
 } sf_group_t;
 
 typedef enum { REF_BODY = 0, REF_GROUP, REF_ALL } sf_ref_kind_t;
@@ -152,8 +157,8 @@ typedef enum { REF_BODY = 0, REF_GROUP, REF_ALL } sf_ref_kind_t;
 typedef struct {
     sf_where_t where;
     sf_name_t name;
-    sf_ref_kind_t kind;      /* set by the resolve pass */
-    size_t index;            /* body (single) or group index */
+    sf_ref_kind_t kind; /* set by the resolve pass */
+    size_t index;       /* body (single) or group index */
 } sf_ref_t;
 
 typedef enum {
@@ -195,14 +200,14 @@ typedef struct {
 
 /* One name: a single body or a group. */
 typedef struct {
-    sf_name_t key;           /* a copy: the bodies and groups arrays move as they grow */
+    sf_name_t key; /* a copy: the bodies and groups arrays move as they grow */
     bool used;
     bool is_group;
     size_t index;
 } sf_name_entry_t;
 
 typedef struct {
-    sf_name_entry_t *slots;  /* open addressing, a power-of-two capacity, at most half full */
+    sf_name_entry_t *slots; /* open addressing, a power-of-two capacity, at most half full */
     size_t capacity, count;
 } sf_names_t;
 
@@ -215,7 +220,7 @@ typedef struct {
     sf_statement_t *statements;
     size_t statement_count, statement_capacity;
     sf_names_t names;
-    size_t total_bodies;     /* bodies the blocks make, repeats counted */
+    size_t total_bodies; /* bodies the blocks make, repeats counted */
     size_t total_vertices;
 } sf_doc_t;
 
@@ -235,25 +240,25 @@ bool sf_parse(sf_lexer_t *lexer, sf_doc_t *doc);
  * member (C11 6.7.2.1), so body_get_info reads as the tag string. */
 typedef struct sf_record {
     char tag[SCENE_FILE_NAME_MAX + 1];
-    body_t *body;            /* NULL once the engine freed the body */
+    body_t *body; /* NULL once the engine freed the body */
     struct scene_file *file;
-    size_t spec;             /* the sf_body_t it was made from */
-    size_t index;            /* its place in file->records */
+    size_t spec;  /* the sf_body_t it was made from */
+    size_t index; /* its place in file->records */
 } sf_record_t;
 
 /* A force creator made by a statement, with the records it joins. */
 typedef struct {
     size_t statement;
     sf_record_t *body1;
-    sf_record_t *body2;      /* NULL for a drag */
+    sf_record_t *body2; /* NULL for a drag */
 } sf_instance_t;
 
 struct scene_file {
     sf_doc_t doc;
     scene_t *scene;
-    sf_record_t **records;   /* in the order made */
+    sf_record_t **records; /* in the order made */
     size_t record_count, record_capacity;
-    size_t freed_records;    /* records whose body the engine freed */
+    size_t freed_records; /* records whose body the engine freed */
     sf_instance_t *instances;
     size_t instance_count, instance_capacity;
 };
@@ -270,8 +275,8 @@ void sf_collect(scene_file_t *file);
 void sf_reserve(void **array, size_t *capacity, size_t needed, size_t element_size);
 
 /* The checked quantities, shared by the parser and spawn. */
-#define SF_MAX_LENGTH 1e9   /* coordinates, sizes, positions (m) */
-#define SF_MAX_MOTION 1e9   /* velocities (m/s), angles (rad), spins (rad/s), gravity */
+#define SF_MAX_LENGTH 1e9    /* coordinates, sizes, positions (m) */
+#define SF_MAX_MOTION 1e9    /* velocities (m/s), angles (rad), spins (rad/s), gravity */
 #define SF_MAX_CONSTANT 1e40 /* masses, densities, G, k, gamma */
 #define SF_MIN_MOMENT 1e-290 /* kg m^2: far inside what a double inverts */
 #define SF_MAX_MOMENT 1e290

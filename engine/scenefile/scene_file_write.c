@@ -173,8 +173,16 @@ static void put_template(out_t *out, const sf_doc_t *doc, const sf_body_t *spec)
     put(out, "\ntemplate %s {\n", spec->name.text);
     put_shape(out, &spec->shape);
     put_mass(out, spec->mass_kind, spec->mass_value);
-    state_t state = {spec->elasticity, spec->friction, spec->angle, spec->spin, spec->color,
-                     spec->has_position, spec->position, spec->velocity};
+    state_t state = {
+        .elasticity = spec->elasticity,
+        .friction = spec->friction,
+        .angle = spec->angle,
+        .spin = spec->spin,
+        .color = spec->color,
+        .has_position = spec->has_position,
+        .position = spec->position,
+        .velocity = spec->velocity,
+    };
     put_state(out, &state);
     put_labels(out, doc, spec, false);
     put(out, "}\n");
@@ -198,8 +206,7 @@ static void put_record(out_t *out, const sf_doc_t *doc, const sf_record_t *recor
     /* Only a single body keeps its name: copies and spawns are anonymous
      * members of the group their block named. */
     bool single = spec->record == record;
-    if (single) put(out, "\nbody %s {\n", spec->name.text);
-    else put(out, "\nbody {\n");
+    put(out, "\nbody %s%s{\n", single ? spec->name.text : "", single ? " " : "");
     put_shape(out, &spec->shape);
     put_mass(out, spec->mass_kind, spec->mass_value);
     state_t state = live_state(record->body);
@@ -245,8 +252,11 @@ static void put_bodies(out_t *out, scene_file_t *file) {
         sf_record_t key_record = {.body = body};
         sf_record_t *key = &key_record;
         sf_record_t **found = bsearch(&key, sorted, live, sizeof *sorted, compare_by_body);
-        if (found != NULL) put_record(out, &file->doc, *found);
-        else put_foreign(out, body);
+        if (found != NULL) {
+            put_record(out, &file->doc, *found);
+        } else {
+            put_foreign(out, body);
+        }
     }
     free(sorted);
 }
