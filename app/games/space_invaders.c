@@ -191,7 +191,7 @@ static void invaders_update(void *state, game_input_t input, double dt) {
     game->status.score += game->status.remaining - left;
     game->status.remaining = left;
     body_t *gun = scene_file_find_body(game->file, "player");
-    aabb_t formation;
+    aabb_t formation = {VEC_ZERO, VEC_ZERO}; /* set by formation_bounds when it returns true */
     if (!formation_bounds(game, &formation)) {
         stop(game, GAME_WON);
         return;

@@ -152,7 +152,13 @@ scene_file_force_t scene_file_get_force(scene_file_t *file, size_t index);
  * not written (the engine cannot list them).
  *
  * Loading the text gives the same scene: the same bodies in the same order,
- * bit for bit in every value the engine reports, and the same force creators.
+ * those the file made equal bit for bit in every value the engine reports
+ * (the others to rounding: their vertices are taken relative to their
+ * centroid again), and the same force creators (those a spawned body joined
+ * in file order rather than last). A body that has gone beyond the limits of
+ * docs/scenes.md (1e9 m from the origin) makes a text that loading refuses,
+ * naming it.
+ *
  * Returns a NUL-terminated heap string (the caller frees it with free) and its
  * length in *length (may be NULL), or NULL with *error filled in when the
  * scene's integrator has no name in the file format's table.
