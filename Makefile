@@ -15,7 +15,20 @@ ENGINE_HDR := $(wildcard engine/include/*.h engine/src/*.h)
 ENGINE_OBJ := $(patsubst engine/src/%.c,build/engine/%.o,$(ENGINE_SRC))
 ENGINE_SAN_OBJ := $(patsubst engine/src/%.c,build/engine-san/%.o,$(ENGINE_SRC))
 
-TEST_SRC := $(wildcard tests/test_*.c) tests/test.c tests/main.c tests/reference.c
+# Scene files (engine/scenefile/, docs/scenes.md): built on the public API only,
+# so compiled with engine/include alone, and archived into the engine's libraries.
+SCENEFILE_SRC := $(wildcard engine/scenefile/*.c)
+SCENEFILE_HDR := $(wildcard engine/include/*.h engine/scenefile/*.h)
+ENGINE_OBJ += $(patsubst engine/scenefile/%.c,build/scenefile/%.o,$(SCENEFILE_SRC))
+ENGINE_SAN_OBJ += $(patsubst engine/scenefile/%.c,build/scenefile-san/%.o,$(SCENEFILE_SRC))
+
+# Game rules for scene files (app/games/): no SDL, so the tests link them.
+GAMES_SRC := $(wildcard app/games/*.c)
+GAMES_HDR := $(wildcard app/games/*.h)
+GAMES_SAN_OBJ := $(patsubst app/games/%.c,build/games-san/%.o,$(GAMES_SRC))
+
+TEST_SRC := $(wildcard tests/test_*.c) tests/test.c tests/main.c tests/reference.c \
+	tests/scene_file_check.c
 TEST_SAN_OBJ := $(patsubst tests/%.c,build/tests/%.o,$(TEST_SRC))
 
 .PHONY: all check clean
@@ -35,11 +48,24 @@ build/engine-san/%.o: engine/src/%.c $(ENGINE_HDR)
 build/libengine-san.a: $(ENGINE_SAN_OBJ)
 	ar rcs $@ $^
 
-build/tests/%.o: tests/%.c tests/test.h tests/suites.h tests/reference.h $(ENGINE_HDR)
+build/scenefile/%.o: engine/scenefile/%.c $(SCENEFILE_HDR)
 	@mkdir -p $(dir $@)
-	$(CC) $(CSTD) $(WARN) -O1 -g $(SAN) -Iengine/include -Iengine/src -Itests -c $< -o $@
+	$(CC) $(CSTD) $(WARN) $(OPT) -Iengine/include -c $< -o $@
 
-build/tests/engine_tests: $(TEST_SAN_OBJ) build/libengine-san.a
+build/scenefile-san/%.o: engine/scenefile/%.c $(SCENEFILE_HDR)
+	@mkdir -p $(dir $@)
+	$(CC) $(CSTD) $(WARN) -O1 -g $(SAN) -Iengine/include -c $< -o $@
+
+build/games-san/%.o: app/games/%.c $(GAMES_HDR) $(ENGINE_HDR)
+	@mkdir -p $(dir $@)
+	$(CC) $(CSTD) $(WARN) -O1 -g $(SAN) -Iengine/include -c $< -o $@
+
+build/tests/%.o: tests/%.c tests/test.h tests/suites.h tests/reference.h tests/scene_file_check.h \
+		$(ENGINE_HDR) $(GAMES_HDR)
+	@mkdir -p $(dir $@)
+	$(CC) $(CSTD) $(WARN) -O1 -g $(SAN) -Iengine/include -Iengine/src -Itests -Iapp/games -c $< -o $@
+
+build/tests/engine_tests: $(TEST_SAN_OBJ) $(GAMES_SAN_OBJ) build/libengine-san.a
 	$(CC) $(SAN) $^ -lm -o $@
 
 # Programs `make check` runs; app/app.mk adds the sandbox's smoke tests.
@@ -50,6 +76,7 @@ CHECK_PROGRAMS := build/tests/engine_tests tests/check_examples.sh tests/report/
 -include app/app.mk
 -include tests/bench/bench.mk
 -include tests/report/report.mk
+-include tests/fuzz/fuzz.mk
 
 check: $(CHECK_PROGRAMS) build/libengine.a build/report/accuracy
 	@tests/run_all.sh $(CHECK_PROGRAMS)

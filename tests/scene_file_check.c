@@ -1,0 +1,180 @@
+#include "scene_file_check.h"
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "engine.h"
+
+static bool differ(char *why, size_t size, const char *format, ...) {
+    va_list args;
+    va_start(args, format);
+    vsnprintf(why, size, format, args);
+    va_end(args);
+    return false;
+}
+
+static bool same_vector(vector_t a, vector_t b) {
+    return a.x == b.x && a.y == b.y;
+}
+
+static bool same_settings(scene_file_t *a, scene_file_t *b, char *why, size_t size) {
+    scene_t *x = scene_file_get_scene(a), *y = scene_file_get_scene(b);
+    if (!same_vector(scene_get_gravity(x), scene_get_gravity(y)))
+        return differ(why, size, "gravity differs");
+    if (scene_get_contacts_enabled(x) != scene_get_contacts_enabled(y))
+        return differ(why, size, "contacts differ");
+    if (scene_get_integrator(x) != scene_get_integrator(y))
+        return differ(why, size, "integrator differs");
+    if (scene_file_get_timestep(a) != scene_file_get_timestep(b))
+        return differ(why, size, "timestep differs");
+    scene_file_view_t u = scene_file_get_view(a), v = scene_file_get_view(b);
+    if (u.has_view != v.has_view || !same_vector(u.center, v.center) || u.width != v.width ||
+        u.height != v.height)
+        return differ(why, size, "view differs");
+    if (strcmp(scene_file_get_game(a), scene_file_get_game(b)) != 0)
+        return differ(why, size, "game differs");
+    return true;
+}
+
+static bool same_body(body_t *a, body_t *b, size_t i, char *why, size_t size) {
+    if (!same_vector(body_get_centroid(a), body_get_centroid(b)))
+        return differ(why, size, "body %zu: centroid (%.17g, %.17g) against (%.17g, %.17g)", i,
+                      body_get_centroid(a).x, body_get_centroid(a).y, body_get_centroid(b).x,
+                      body_get_centroid(b).y);
+    if (body_get_rotation(a) != body_get_rotation(b))
+        return differ(why, size, "body %zu: rotation differs", i);
+    if (!same_vector(body_get_velocity(a), body_get_velocity(b)))
+        return differ(why, size, "body %zu: velocity differs", i);
+    if (body_get_angular_velocity(a) != body_get_angular_velocity(b))
+        return differ(why, size, "body %zu: angular velocity differs", i);
+    if (body_get_mass(a) != body_get_mass(b)) return differ(why, size, "body %zu: mass differs", i);
+    if (body_get_inertia(a) != body_get_inertia(b))
+        return differ(why, size, "body %zu: inertia differs", i);
+    if (body_get_elasticity(a) != body_get_elasticity(b) ||
+        body_get_friction(a) != body_get_friction(b))
+        return differ(why, size, "body %zu: material differs", i);
+    rgb_color_t p = body_get_color(a), q = body_get_color(b);
+    if (p.r != q.r || p.g != q.g || p.b != q.b)
+        return differ(why, size, "body %zu: colour differs", i);
+    const char *s = body_get_info(a), *t = body_get_info(b);
+    if ((s == NULL) != (t == NULL) || (s != NULL && strcmp(s, t) != 0))
+        return differ(why, size, "body %zu: tag differs", i);
+    polygon_t f = body_get_polygon(a), g = body_get_polygon(b);
+    if (f.count != g.count) return differ(why, size, "body %zu: vertex count differs", i);
+    for (size_t k = 0; k < f.count; k++) {
+        if (!same_vector(f.vertices[k], g.vertices[k]))
+            return differ(why, size, "body %zu: vertex %zu differs", i, k);
+    }
+    return true;
+}
+
+/* A force with its bodies as indices into its scene, for comparing. */
+typedef struct {
+    int kind;
+    double constant;
+    long body1, body2;
+} indexed_force_t;
+
+static long index_of(scene_t *scene, body_t *body) {
+    if (body == NULL) return -1;
+    for (size_t i = 0; i < scene_bodies(scene); i++) {
+        if (scene_get_body(scene, i) == body) return (long)i;
+    }
+    return -2;
+}
+
+static indexed_force_t *indexed_forces(scene_file_t *file, size_t *count) {
+    *count = scene_file_force_count(file);
+    indexed_force_t *forces = malloc((*count + 1) * sizeof *forces);
+    scene_t *scene = scene_file_get_scene(file);
+    for (size_t i = 0; i < *count; i++) {
+        scene_file_force_t f = scene_file_get_force(file, i);
+        forces[i] = (indexed_force_t){(int)f.kind, f.constant, index_of(scene, f.body1),
+                                      index_of(scene, f.body2)};
+    }
+    return forces;
+}
+
+static int compare_forces(const void *p, const void *q) {
+    const indexed_force_t *a = p, *b = q;
+    if (a->kind != b->kind) return a->kind < b->kind ? -1 : 1;
+    if (a->body1 != b->body1) return a->body1 < b->body1 ? -1 : 1;
+    if (a->body2 != b->body2) return a->body2 < b->body2 ? -1 : 1;
+    return (a->constant > b->constant) - (a->constant < b->constant);
+}
+
+static bool same_forces(scene_file_t *a, scene_file_t *b, bool sort, char *why, size_t size) {
+    size_t n = 0, m = 0;
+    indexed_force_t *x = indexed_forces(a, &n), *y = indexed_forces(b, &m);
+    bool same = n == m;
+    if (!same) differ(why, size, "%zu force creators against %zu", n, m);
+    if (same && sort) {
+        qsort(x, n, sizeof *x, compare_forces);
+        qsort(y, m, sizeof *y, compare_forces);
+    }
+    for (size_t i = 0; same && i < n; i++) {
+        if (compare_forces(&x[i], &y[i]) != 0 || x[i].constant != y[i].constant) {
+            same = differ(why, size,
+                          "force %zu: kind %d, %.17g, bodies %ld %ld against kind %d, %.17g, "
+                          "bodies %ld %ld",
+                          i, x[i].kind, x[i].constant, x[i].body1, x[i].body2, y[i].kind,
+                          y[i].constant, y[i].body1, y[i].body2);
+        }
+    }
+    free(x);
+    free(y);
+    return same;
+}
+
+bool scene_file_same(scene_file_t *a, scene_file_t *b, char *why, size_t size) {
+    if (!same_settings(a, b, why, size)) return false;
+    scene_t *x = scene_file_get_scene(a), *y = scene_file_get_scene(b);
+    /* Bodies marked removed are not written: compare the others. */
+    size_t i = 0, j = 0, compared = 0;
+    for (;; i++, j++) {
+        while (i < scene_bodies(x) && body_is_removed(scene_get_body(x, i))) i++;
+        while (j < scene_bodies(y) && body_is_removed(scene_get_body(y, j))) j++;
+        if (i == scene_bodies(x) || j == scene_bodies(y)) break;
+        if (!same_body(scene_get_body(x, i), scene_get_body(y, j), compared++, why, size))
+            return false;
+    }
+    if (i != scene_bodies(x) || j != scene_bodies(y))
+        return differ(why, size, "the scenes hold different numbers of bodies");
+    return same_forces(a, b, false, why, size);
+}
+
+bool scene_file_same_forces_in_any_order(scene_file_t *a, scene_file_t *b, char *why, size_t size) {
+    return same_forces(a, b, true, why, size);
+}
+
+bool scene_file_round_trip(const uint8_t *data, size_t size, const char *name, char *why,
+                           size_t why_size) {
+    scene_file_error_t error;
+    scene_file_t *first = scene_file_parse((const char *)data, size, name, &error);
+    if (first == NULL) {
+        size_t n = strlen(name);
+        if (strncmp(error.message, name, n) != 0 || error.message[n] != ':' || error.line == 0)
+            return differ(why, why_size, "refused without a FILE:LINE:COLUMN message: \"%s\"",
+                          error.message);
+        return true;
+    }
+    size_t length = 0, again_length = 0;
+    char *text = scene_file_write(first, &length, &error);
+    scene_file_t *second = text != NULL ? scene_file_parse(text, length, "written", &error) : NULL;
+    char *again = second != NULL ? scene_file_write(second, &again_length, &error) : NULL;
+    bool ok = true;
+    if (text == NULL) {
+        ok = differ(why, why_size, "could not write: %s", error.message);
+    } else if (second == NULL) {
+        ok = differ(why, why_size, "the written text does not load: %s", error.message);
+    } else if (!scene_file_same(first, second, why, why_size)) {
+        ok = false;
+    } else if (again == NULL || again_length != length || memcmp(text, again, length) != 0) {
+        ok = differ(why, why_size, "writing the reloaded scene gives another text");
+    }
+    free(text);
+    free(again);
+    scene_file_free(first);
+    scene_file_free(second);
+    return ok;
+}

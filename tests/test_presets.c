@@ -1,0 +1,275 @@
+/* The presets (assets/scenes/): each loads, runs headless for a few hundred
+ * steps with every body finite, saves and loads back the same (at the start
+ * and mid-run), and does what its comment says. Run from the repository root,
+ * as make check does. */
+#include <dirent.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "engine.h"
+#include "scene_file.h"
+#include "scene_file_check.h"
+#include "test.h"
+
+static scene_file_t *load(const char *name) {
+    char path[256];
+    snprintf(path, sizeof path, "assets/scenes/%s.scene", name);
+    scene_file_error_t error;
+    scene_file_t *file = scene_file_load(path, &error);
+    if (file == NULL) test_fail(__FILE__, __LINE__, "%s", error.message);
+    return file;
+}
+
+static void run(scene_file_t *file, int steps) {
+    for (int i = 0; i < steps; i++)
+        scene_tick(scene_file_get_scene(file), scene_file_get_timestep(file));
+}
+
+static bool all_finite(scene_file_t *file) {
+    scene_t *scene = scene_file_get_scene(file);
+    for (size_t i = 0; i < scene_bodies(scene); i++) {
+        body_t *body = scene_get_body(scene, i);
+        if (!vec_is_finite(body_get_centroid(body)) || !vec_is_finite(body_get_velocity(body)) ||
+            !isfinite(body_get_rotation(body)) || !isfinite(body_get_angular_velocity(body)))
+            return false;
+    }
+    return true;
+}
+
+/* Saves the file as it is now and loads the text: the same scene. */
+static void check_round_trip(scene_file_t *file, const char *name) {
+    size_t length = 0;
+    scene_file_error_t error;
+    char *text = scene_file_write(file, &length, &error);
+    CHECK(text != NULL);
+    scene_file_t *again = scene_file_parse(text, length, name, &error);
+    if (again == NULL) test_fail(__FILE__, __LINE__, "%s: %s", name, error.message);
+    char why[256] = "";
+    if (again != NULL && !scene_file_same(file, again, why, sizeof why))
+        test_fail(__FILE__, __LINE__, "%s: %s", name, why);
+    scene_file_free(again);
+    free(text);
+}
+
+static body_t *named(scene_file_t *file, const char *name) {
+    body_t *body = scene_file_find_body(file, name);
+    if (body == NULL) test_fail(__FILE__, __LINE__, "no body named %s", name);
+    return body;
+}
+
+static bool tagged(body_t *body, const char *tag) {
+    const char *info = body_get_info(body);
+    return info != NULL && strcmp(info, tag) == 0;
+}
+
+/* ---- What each preset promises -------------------------------------------- */
+
+static double energy(scene_t *scene, double g, double G) {
+    double e = 0.0;
+    for (size_t i = 0; i < scene_bodies(scene); i++) {
+        body_t *a = scene_get_body(scene, i);
+        if (isinf(body_get_mass(a))) continue;
+        e += body_get_kinetic_energy(a) + body_get_mass(a) * g * body_get_centroid(a).y;
+        for (size_t j = i + 1; G > 0 && j < scene_bodies(scene); j++) {
+            body_t *b = scene_get_body(scene, j);
+            double r = vec_get_length(vec_subtract(body_get_centroid(a), body_get_centroid(b)));
+            e -= G * body_get_mass(a) * body_get_mass(b) / r;
+        }
+    }
+    return e;
+}
+
+static void pegs_keeps_balls_between_the_walls(scene_file_t *file) {
+    /* 300 steps: the balls fall through the board; elastic collisions with
+     * infinite masses keep the energy (within 1%), and no ball leaves through
+     * a wall (inner faces at x = +-6). */
+    scene_t *scene = scene_file_get_scene(file);
+    double start = energy(scene, 9.8, 0);
+    run(file, 300);
+    CHECK_RELATIVE(energy(scene, 9.8, 0), start, 0.01);
+    for (size_t i = 0; i < scene_bodies(scene); i++) {
+        body_t *body = scene_get_body(scene, i);
+        if (tagged(body, "ball")) CHECK(fabs(body_get_centroid(body).x) < 6.0);
+    }
+}
+
+static void newtons_cradle_passes_the_blow_along(scene_file_t *file) {
+    run(file, 300);
+    scene_t *scene = scene_file_get_scene(file);
+    size_t last = scene_bodies(scene) - 1;
+    for (size_t i = 0; i < last; i++)
+        CHECK_VEC(body_get_velocity(scene_get_body(scene, i)), 0, 0, 1e-9);
+    CHECK_VEC(body_get_velocity(scene_get_body(scene, last)), 2, 0, 1e-9);
+}
+
+static void pyramid_stands(scene_file_t *file) {
+    vector_t top = body_get_centroid(named(file, "top"));
+    run(file, 600);
+    CHECK_NEAR(body_get_centroid(named(file, "top")).y, top.y, 0.01);
+    CHECK_NEAR(body_get_centroid(named(file, "top")).x, top.x, 0.01);
+    scene_t *scene = scene_file_get_scene(file);
+    for (size_t i = 0; i < scene_bodies(scene); i++)
+        CHECK(vec_get_length(body_get_velocity(scene_get_body(scene, i))) < 0.01);
+}
+
+static void card_house_stands(scene_file_t *file) {
+    scene_t *scene = scene_file_get_scene(file);
+    size_t n = scene_bodies(scene);
+    vector_t *at = malloc(n * sizeof *at);
+    double *angle = malloc(n * sizeof *angle);
+    for (size_t i = 0; i < n; i++) {
+        at[i] = body_get_centroid(scene_get_body(scene, i));
+        angle[i] = body_get_rotation(scene_get_body(scene, i));
+    }
+    run(file, 600);
+    for (size_t i = 0; i < n; i++) {
+        body_t *card = scene_get_body(scene, i);
+        CHECK(vec_get_length(vec_subtract(body_get_centroid(card), at[i])) < 0.05);
+        CHECK_NEAR(body_get_rotation(card), angle[i], 0.05);
+    }
+    free(at);
+    free(angle);
+}
+
+static void orbits_stay_round(scene_file_t *file) {
+    /* Four planets for 20 s, about two periods of the outermost: each stays
+     * within 10% of its radius, the total energy within 0.1%. */
+    scene_t *scene = scene_file_get_scene(file);
+    body_t *sun = named(file, "sun");
+    const char *const planets[] = {"mercury", "venus", "earth", "mars"};
+    double radius[4];
+    for (int i = 0; i < 4; i++) {
+        radius[i] = vec_get_length(
+            vec_subtract(body_get_centroid(named(file, planets[i])), body_get_centroid(sun)));
+    }
+    double start = energy(scene, 0, 1);
+    for (int step = 0; step < 2400; step += 100) {
+        run(file, 100);
+        for (int i = 0; i < 4; i++) {
+            double r = vec_get_length(
+                vec_subtract(body_get_centroid(named(file, planets[i])), body_get_centroid(sun)));
+            CHECK_RELATIVE(r, radius[i], 0.1);
+        }
+    }
+    CHECK_RELATIVE(energy(scene, 0, 1), start, 1e-3);
+    CHECK(scene_file_force_count(file) == 10); /* newton all: 5 bodies, 10 pairs */
+}
+
+static void spring_chain_hangs(scene_file_t *file) {
+    run(file, 1200);
+    double anchor_y = body_get_centroid(named(file, "anchor")).y;
+    char name[16];
+    for (int i = 1; i <= 8; i++) {
+        snprintf(name, sizeof name, "link%d", i);
+        CHECK(body_get_centroid(named(file, name)).y < anchor_y);
+    }
+    /* Below the anchor in order, the last lowest. */
+    CHECK(body_get_centroid(named(file, "link8")).y < body_get_centroid(named(file, "link1")).y);
+}
+
+static void stiff_spring_stays_bounded(scene_file_t *file) {
+    vector_t pin = body_get_centroid(named(file, "pin"));
+    double worst = 0.0;
+    for (int i = 0; i < 1200; i++) {
+        run(file, 1);
+        worst = fmax(worst,
+                     vec_get_length(vec_subtract(body_get_centroid(named(file, "weight")), pin)));
+    }
+    CHECK(worst < 0.55); /* released 0.5 m away: no energy gained */
+    CHECK(worst > 0.45);
+}
+
+static void mass_ratio_stack_holds(scene_file_t *file) {
+    run(file, 600);
+    CHECK_NEAR(body_get_centroid(named(file, "light")).y, 0.5, 0.01);
+    CHECK_NEAR(body_get_centroid(named(file, "heavy")).y, 1.5, 0.01);
+    CHECK_NEAR(body_get_centroid(named(file, "top")).y, 2.5, 0.01);
+    CHECK_NEAR(body_get_centroid(named(file, "heavy")).x, 0, 0.01);
+}
+
+static void tunnelling_stops_every_box(scene_file_t *file) {
+    const char *const boxes[] = {"slow", "fast", "faster", "fastest"};
+    for (int step = 0; step < 300; step++) {
+        run(file, 1);
+        for (int i = 0; i < 4; i++) CHECK(body_get_centroid(named(file, boxes[i])).x < 19.95);
+    }
+    CHECK(body_get_velocity(named(file, "faster")).x < -999); /* elasticity 1: back it comes */
+}
+
+static void games_run_without_their_rules(scene_file_t *file) {
+    /* Breakout and Space Invaders are played in tests/test_games.c; without
+     * their rules the scenes still run. */
+    run(file, 300);
+}
+
+/* ---- Every preset --------------------------------------------------------- */
+
+typedef struct {
+    const char *name;
+    void (*promise)(scene_file_t *file);
+} preset_t;
+
+static const preset_t PRESETS[] = {
+    {"pegs", pegs_keeps_balls_between_the_walls},
+    {"breakout", games_run_without_their_rules},
+    {"space_invaders", games_run_without_their_rules},
+    {"newtons_cradle", newtons_cradle_passes_the_blow_along},
+    {"pyramid", pyramid_stands},
+    {"card_house", card_house_stands},
+    {"orbits", orbits_stay_round},
+    {"spring_chain", spring_chain_hangs},
+    {"stiff_spring", stiff_spring_stays_bounded},
+    {"mass_ratio_stack", mass_ratio_stack_holds},
+    {"tunnelling", tunnelling_stops_every_box},
+};
+#define PRESET_COUNT (sizeof PRESETS / sizeof PRESETS[0])
+
+static void every_preset_file_is_listed_here(void) {
+    DIR *directory = opendir("assets/scenes");
+    CHECK(directory != NULL);
+    if (directory == NULL) return;
+    size_t files = 0;
+    struct dirent *entry;
+    while ((entry = readdir(directory)) != NULL) {
+        size_t n = strlen(entry->d_name);
+        if (n < 7 || strcmp(entry->d_name + n - 6, ".scene") != 0) continue;
+        files++;
+        bool listed = false;
+        for (size_t i = 0; i < PRESET_COUNT; i++) {
+            listed = listed || (strlen(PRESETS[i].name) == n - 6 &&
+                                strncmp(PRESETS[i].name, entry->d_name, n - 6) == 0);
+        }
+        if (!listed) test_fail(__FILE__, __LINE__, "%s has no test", entry->d_name);
+    }
+    closedir(directory);
+    CHECK(files == PRESET_COUNT);
+}
+
+static void every_preset_loads_runs_and_round_trips(void) {
+    for (size_t i = 0; i < PRESET_COUNT; i++) {
+        scene_file_t *file = load(PRESETS[i].name);
+        if (file == NULL) continue;
+        check_round_trip(file, PRESETS[i].name);
+        run(file, 300);
+        if (!all_finite(file)) test_fail(__FILE__, __LINE__, "%s: not finite", PRESETS[i].name);
+        check_round_trip(file, PRESETS[i].name); /* mid-run: the state as it is */
+        scene_file_free(file);
+    }
+    CHECK(test_no_leaks());
+}
+
+static void every_preset_does_what_it_says(void) {
+    for (size_t i = 0; i < PRESET_COUNT; i++) {
+        scene_file_t *file = load(PRESETS[i].name);
+        if (file == NULL) continue;
+        int failures = test_failures;
+        PRESETS[i].promise(file);
+        if (!all_finite(file)) test_fail(__FILE__, __LINE__, "not finite");
+        if (test_failures != failures) printf("    (in %s)\n", PRESETS[i].name);
+        scene_file_free(file);
+    }
+}
+
+TEST_SUITE(presets, TEST_CASE(every_preset_file_is_listed_here),
+           TEST_CASE(every_preset_loads_runs_and_round_trips),
+           TEST_CASE(every_preset_does_what_it_says));
