@@ -277,12 +277,13 @@ LANE_INLINE void solve_normal_block(const solver_batch_t *batch, lane_point_t *p
     p2->normal_impulse = x2;
 }
 
-/* Built twice where the compiler can (GCC and Clang on x86-64 with ifunc
- * support): once for AVX2, which does a batch's four lanes in one
- * instruction, and once for the baseline (two SSE2 instructions); the
- * loader picks the one the processor runs. Neither uses fused
- * multiply-add, so both give the same numbers. */
-#if defined(__x86_64__) && defined(__GNUC__) && defined(__ELF__)
+/* Built twice where the compiler can (GCC on x86-64 with ifunc support):
+ * once for AVX2, which does a batch's four lanes in one instruction, and
+ * once for the baseline (two SSE2 instructions); the loader picks the one
+ * the processor runs. Neither uses fused multiply-add, so both give the
+ * same numbers. Clang 14 leaves calls to such functions undefined at link
+ * time, so it builds the baseline only. */
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && defined(__ELF__)
 #define LANE_CLONES __attribute__((target_clones("avx2", "default")))
 #else
 #define LANE_CLONES

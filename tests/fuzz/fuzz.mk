@@ -13,11 +13,7 @@
 
 FUZZ_CC ?= clang
 FUZZ_SECONDS ?= 60
-# -U__ELF__: clang 14 (Debian 12) names the dispatcher of a target_clones
-# function "NAME.ifunc", so solver.c's calls into solver_wide.c do not link.
-# Without __ELF__, solver_wide.c builds its baseline version only, which gives
-# the same numbers (solver_wide.c, LANE_CLONES).
-FUZZ_FLAGS := -g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined -U__ELF__
+FUZZ_FLAGS := -g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined
 FUZZ_SRC := $(ENGINE_SRC) $(SCENEFILE_SRC) tests/scene_file_check.c tests/fuzz/fuzz_scene_file.c
 FUZZ_RUN := -dict=tests/fuzz/scene.dict -max_len=4096 -timeout=10 -print_final_stats=1
 
