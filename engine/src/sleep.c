@@ -2,6 +2,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include "body_private.h"
+#include "broadphase.h"
 #include "memory.h"
 
 /* Box2D's tolerances (0.01 m/s, 2 degrees/s, half a second). */
@@ -54,8 +55,18 @@ static bool is_slow(const solver_velocity_t *row, const solver_displacement_t *m
     return body->sleep_time >= SLEEP_TIME;
 }
 
+size_t sleep_time_bodies(const sleep_step_t *step) {
+    size_t ready = 0;
+    for (size_t i = 0; i < step->count; i++) {
+        body_t *body = step->bodies[i];
+        if (!body_is_movable(body) || body->removed) continue;
+        ready += is_slow(&step->velocities[i], &step->displacements[i], step->dt, body);
+    }
+    return ready;
+}
+
 /* Joins the rows into islands over the touching links; an island is ready
- * when every body has been slow for SLEEP_TIME. */
+ * when every body has been slow for SLEEP_TIME and its contacts settled. */
 static void build_islands(sleep_t *sleep, const sleep_step_t *step, const sleep_link_t *links,
                           size_t link_count) {
     memory_reserve((void **)&sleep->parent, &sleep->parent_capacity, step->count,
@@ -68,8 +79,7 @@ static void build_islands(sleep_t *sleep, const sleep_step_t *step, const sleep_
     }
     for (size_t k = 0; k < link_count; k++) {
         body_t *a = step->bodies[links[k].a], *b = step->bodies[links[k].b];
-        bool movable_a = body_is_movable(a), movable_b = body_is_movable(b);
-        if (movable_a && movable_b) {
+        if (body_is_movable(a) && body_is_movable(b)) {
             uint32_t ra = find_root(sleep->parent, links[k].a);
             uint32_t rb = find_root(sleep->parent, links[k].b);
             if (ra != rb) sleep->parent[ra] = rb;
@@ -91,21 +101,18 @@ static void build_islands(sleep_t *sleep, const sleep_step_t *step, const sleep_
     for (size_t i = 0; i < step->count; i++) {
         body_t *body = step->bodies[i];
         struct sleep_island *island = &sleep->islands[find_root(sleep->parent, (uint32_t)i)];
-        if (!body_is_movable(body) || body->removed) {
-            if (body_is_movable(body)) island->ready = false;
-            continue;
-        }
-        if (!is_slow(&step->velocities[i], &step->displacements[i], step->dt, body)) {
-            island->ready = false;
-        }
+        if (!body_is_movable(body)) continue;
+        if (body->removed || body->sleep_time < SLEEP_TIME) island->ready = false;
         vector_t a = step->states[i].acceleration;
         if (a.x != 0.0 || a.y != 0.0) island->pushed = true;
     }
 }
 
 /* Puts the ready islands to sleep, each body's velocities to 0 and its
- * island linked in a circle; returns how many bodies fell asleep. */
-static size_t sleep_islands(sleep_t *sleep, const sleep_step_t *step) {
+ * island linked in a circle. */
+void sleep_islands(sleep_t *sleep, const sleep_step_t *step, const sleep_link_t *links,
+                   size_t link_count) {
+    build_islands(sleep, step, links, link_count);
     size_t slept = 0;
     for (size_t i = 0; i < step->count; i++) {
         body_t *body = step->bodies[i];
@@ -127,7 +134,7 @@ static size_t sleep_islands(sleep_t *sleep, const sleep_step_t *step) {
         struct sleep_island *island = &sleep->islands[i];
         if (island->first != NULL) island->last->sleep_next = island->first;
     }
-    return slept;
+    sleep->slept += slept;
 }
 
 static int compare_entries(const void *a, const void *b) {
@@ -181,12 +188,24 @@ static void wake_within(const sleep_t *sleep, aabb_t reach) {
     }
 }
 
-void sleep_update(sleep_t *sleep, const sleep_step_t *step, const sleep_link_t *links,
-                  size_t link_count, body_t **all_bodies, size_t all_count) {
-    build_islands(sleep, step, links, link_count);
-    size_t slept = sleep_islands(sleep, step);
+/* Where a body may be by the end of the next step: its box over this one
+ * grown by what its end velocities cover in a step, and the margin. */
+static aabb_t reach_of(const sleep_step_t *step, size_t i) {
+    const solver_velocity_t *row = &step->velocities[i];
+    double grow = step->dt * (vec_get_length(row->v) + fabs(row->w) * step->bodies[i]->radius) +
+                  step->margin;
+    aabb_t box = step->proxies[i].box;
+    return (aabb_t){{box.min.x - grow, box.min.y - grow}, {box.max.x + grow, box.max.y + grow}};
+}
+
+void sleep_wake_reached(sleep_t *sleep, const sleep_step_t *step, body_t **all_bodies,
+                        size_t all_count) {
+    if (sleep->slept == 0 && sleep->count == 0) return;
     size_t asleep = count_asleep(all_bodies, all_count);
-    if (slept > 0 || asleep != sleep->count) rebuild_index(sleep, all_bodies, all_count, asleep);
+    if (sleep->slept > 0 || asleep != sleep->count) {
+        rebuild_index(sleep, all_bodies, all_count, asleep);
+    }
+    sleep->slept = 0;
     if (sleep->count == 0) return;
     /* A body wakes others when it moved faster than the sleep tolerances
      * this step (its timer restarted), not when it creeps: a pile's last
@@ -196,6 +215,6 @@ void sleep_update(sleep_t *sleep, const sleep_step_t *step, const sleep_link_t *
         const solver_velocity_t *row = &step->velocities[i];
         bool moving = (row->v.x != 0.0 || row->v.y != 0.0 || row->w != 0.0) &&
                       body->sleep_time == 0.0;
-        if (!body->asleep && !body->removed && moving) wake_within(sleep, step->reach[i]);
+        if (!body->asleep && !body->removed && moving) wake_within(sleep, reach_of(step, i));
     }
 }

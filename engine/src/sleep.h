@@ -7,10 +7,11 @@
  * within a step of them (body.c wakes them when the user sets a pose,
  * velocity, force or impulse, or removes a body of the island).
  *
- * The world calls sleep_update at the end of its step: it joins the step's
- * active bodies into islands over their touching contacts, puts to sleep
- * the islands that qualify, and wakes the sleeping islands that a moving
- * body's box for the next step reaches. Sleeping bodies are kept in an
+ * The world calls it at the end of its step: sleep_time_bodies advances the
+ * timers, sleep_islands (only when some body is ready) joins the step's
+ * bodies into islands over their touching contacts and puts to sleep the
+ * islands that qualify, sleep_wake_reached wakes the sleeping islands that
+ * a moving body's box for the next step reaches. Sleeping bodies are kept in an
  * index sorted by the left edge of their boxes, rebuilt only when the set
  * of sleeping bodies changed, so a scene that is all asleep costs one
  * check per body per step.
@@ -22,6 +23,7 @@
 #include <stdint.h>
 #include "aabb.h"
 #include "body.h"
+#include "broadphase.h"
 #include "solver.h"
 
 /* Below these speeds (m/s, rad/s; the linear one less for bodies under
@@ -32,6 +34,7 @@ typedef struct {
     struct sleep_entry *entries;
     size_t count, capacity;
     double widest; /* the widest box in the index (m) */
+    size_t slept;  /* bodies put to sleep since the index was built */
     uint32_t *parent;
     size_t parent_capacity;
     struct sleep_island *islands;
@@ -40,34 +43,51 @@ typedef struct {
 
 void sleep_free(sleep_t *sleep);
 
-/* The step as sleep_update reads it, one row per active body, in solver
- * row order: the body, its end velocities (which sleep_update sets to 0 for
- * a body it puts to sleep) and displacement, its free acceleration (a body pushed by a force
- * or gravity sleeps only resting on something immovable) and the box it
- * may reach by the end of the next step. */
+/* Whether some body may be asleep; when not, the world steps every body
+ * without gathering the awake ones. */
+static inline bool sleep_any(const sleep_t *sleep) {
+    return sleep->count > 0;
+}
+
+/* The step as sleep.c reads it, one row per body the world stepped, in
+ * solver row order: the body, its end velocities (set to 0 for a body put
+ * to sleep) and displacement, its free acceleration (a body pushed by a
+ * force or gravity sleeps only resting on something immovable), and its
+ * broadphase box over the step, from which its reach over the next step
+ * is found with margin. */
 typedef struct {
     body_t **bodies;
     solver_velocity_t *velocities;
     const solver_displacement_t *displacements;
     const solver_state_t *states;
-    const aabb_t *reach;
+    const broadphase_proxy_t *proxies;
     size_t count;
     double dt;
+    double margin;
 } sleep_step_t;
 
-/* Two active rows whose contact touches this step; settled when its
- * overlap is within what the position pass leaves alone (an island still
- * pushing an overlap out, with no velocity, must not sleep before it is
- * out). */
+/* Two rows whose contact touches this step; settled when its overlap is
+ * within what the position pass leaves alone (an island still pushing an
+ * overlap out, with no velocity, must not sleep before it is out). */
 typedef struct {
     uint32_t a, b;
     bool settled;
 } sleep_link_t;
 
-/* Updates the sleep timers, puts qualifying islands to sleep, and wakes the
- * sleeping islands within reach of moving bodies. all_bodies[0 ..
- * all_count) is every body of the scene, for the index. */
-void sleep_update(sleep_t *sleep, const sleep_step_t *step, const sleep_link_t *links,
-                  size_t link_count, body_t **all_bodies, size_t all_count);
+/* Advances each movable body's sleep timer; returns how many have been
+ * slow for SLEEP_TIME. When none has, no island can sleep: the caller need
+ * not list its contacts for sleep_islands. */
+size_t sleep_time_bodies(const sleep_step_t *step);
+
+/* Puts to sleep the islands whose every body is ready, joined over the
+ * touching links. */
+void sleep_islands(sleep_t *sleep, const sleep_step_t *step, const sleep_link_t *links,
+                   size_t link_count);
+
+/* Keeps the index of sleeping bodies current (all_bodies[0 .. all_count)
+ * is every body of the scene) and wakes the sleeping islands that a body
+ * moving faster than the tolerances may reach in the next step. */
+void sleep_wake_reached(sleep_t *sleep, const sleep_step_t *step, body_t **all_bodies,
+                        size_t all_count);
 
 #endif // #ifndef SLEEP_H

@@ -84,15 +84,12 @@ struct world {
     int velocity_iterations, position_iterations;
 
     /* Sleeping: the awake bodies of the step, their motions and where
-     * those came from; each body's reach over the next step; the touching
-     * contacts that join islands. */
+     * those came from; the touching contacts that join islands. */
     sleep_t sleep;
     body_t **active;
     integrator_motion_t *active_motions;
     size_t *active_index;
     size_t active_capacity, active_motion_capacity, active_index_capacity;
-    aabb_t *reach;
-    size_t reach_capacity;
     sleep_link_t *links;
     size_t link_capacity;
 };
@@ -122,7 +119,6 @@ void world_free(world_t *world) {
     memory_free(world->active);
     memory_free(world->active_motions);
     memory_free(world->active_index);
-    memory_free(world->reach);
     memory_free(world->links);
     memory_free(world);
 }
@@ -385,31 +381,26 @@ static bool is_settled(const solver_contact_t *c) {
     return true;
 }
 
-/* Hands the step to sleep.c: the touching contacts and each body's reach
- * (its box over this step, grown by what its end velocities cover in the
- * next). */
+/* Hands the step to sleep.c; the touching contacts are listed only when
+ * some body has been slow long enough for its island to sleep. */
 static void update_sleep(world_t *world, body_t **bodies, size_t count, double dt,
                          body_t **all_bodies, size_t all_count) {
-    memory_reserve((void **)&world->reach, &world->reach_capacity, count, sizeof(aabb_t));
-    memory_reserve((void **)&world->links, &world->link_capacity, world->contact_count,
-                   sizeof(sleep_link_t));
-    for (size_t i = 0; i < count; i++) {
-        const solver_velocity_t *row = &world->velocities[i];
-        double grow = dt * (vec_get_length(row->v) + fabs(row->w) * bodies[i]->radius) +
-                      CONTACT_MARGIN;
-        aabb_t box = world->proxies[i].box;
-        world->reach[i] = (aabb_t){{box.min.x - grow, box.min.y - grow},
-                                   {box.max.x + grow, box.max.y + grow}};
+    sleep_step_t step = {bodies,          world->velocities, world->displacements,
+                         world->states,   world->proxies,    count,
+                         dt,              CONTACT_MARGIN};
+    if (sleep_time_bodies(&step) > 0) {
+        memory_reserve((void **)&world->links, &world->link_capacity, world->contact_count,
+                       sizeof(sleep_link_t));
+        size_t link_count = 0;
+        for (size_t i = 0; i < world->contact_count; i++) {
+            const solver_contact_t *c = &world->contacts[i];
+            if (is_touching(c)) {
+                world->links[link_count++] = (sleep_link_t){c->a, c->b, is_settled(c)};
+            }
+        }
+        sleep_islands(&world->sleep, &step, world->links, link_count);
     }
-    size_t link_count = 0;
-    for (size_t i = 0; i < world->contact_count; i++) {
-        const solver_contact_t *c = &world->contacts[i];
-        if (is_touching(c)) world->links[link_count++] = (sleep_link_t){c->a, c->b, is_settled(c)};
-    }
-    sleep_step_t step = {bodies,       world->velocities, world->displacements,
-                         world->states, world->reach,      count,
-                         dt};
-    sleep_update(&world->sleep, &step, world->links, link_count, all_bodies, all_count);
+    sleep_wake_reached(&world->sleep, &step, all_bodies, all_count);
 }
 
 /* The pipeline over bodies[0 .. count), which are all the scene's bodies
@@ -457,7 +448,8 @@ static size_t gather_awake(world_t *world, body_t **bodies, const integrator_mot
 
 void world_step(world_t *world, body_t **bodies, integrator_motion_t *motions, size_t count,
                 const world_step_t *step, scene_stats_t *stats) {
-    if (!step->sleeping) {
+    /* Nobody asleep: every body is in the step, with nothing to gather. */
+    if (!step->sleeping || !sleep_any(&world->sleep)) {
         run_pipeline(world, bodies, motions, count, step, stats, bodies, count);
         return;
     }
