@@ -123,13 +123,13 @@ void app_init(app_t *app, int width, int height, uint64_t seed, const char *pres
 }
 
 bool app_game_mode(const app_t *app) {
-    return app->sandbox.game != NULL;
+    return game_takes_input(app->sandbox.game);
 }
 
 /* "breakout: Left/Right or A/D move, Space fires" or "pyramid (55 bodies)". */
 static void say_opened(app_t *app) {
     const sandbox_t *sandbox = &app->sandbox;
-    if (sandbox->game != NULL) {
+    if (app_game_mode(app)) {
         app_status(app, "opened %s: Left/Right or A/D move, Space fires", sandbox->name);
     } else {
         size_t bodies = scene_bodies(sandbox->scene);
@@ -312,6 +312,13 @@ static void announce_game(app_t *app) {
     if (app->sandbox.game == NULL) return;
     game_status_t now = game_status(app->sandbox.game), before = app->game_status;
     app->game_status = now;
+    /* The rules moved bodies (a ball served again, dropped again at the
+     * top, a brick gone): the energy changed from outside the integrator,
+     * and the drift starts again from here. */
+    if (now.score != before.score || now.lives != before.lives ||
+        now.remaining != before.remaining || now.outcome != before.outcome) {
+        app->sandbox.changes++;
+    }
     if (now.outcome == GAME_WON && before.outcome != GAME_WON) {
         app_status(app, "you won! score %d (R: play again)", now.score);
     } else if (now.outcome == GAME_LOST && before.outcome != GAME_LOST) {

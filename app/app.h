@@ -183,7 +183,8 @@ void app_reset_scene(app_t *app);
  * (the first N free; an existing file is never replaced) and says where. */
 void app_save_scene(app_t *app);
 
-/* Whether the open scene runs a game: its keys then come first. */
+/* Whether the open scene runs a game that takes input (Breakout, Space
+ * Invaders; not the pegs board): its keys then come first. */
 bool app_game_mode(const app_t *app);
 
 /* Shows a status line for a few seconds (printf-style). */

@@ -66,13 +66,14 @@ build/tests/app_units: $(APP_UNIT_SRC) $(wildcard app/*.h) $(GAMES_HDR) app/app.
 	    $(GAMES_SAN_OBJ) build/libengine-san.a -lm -o $@
 
 # The smoke tests drive ./sandbox from outside and read its screenshots; they
-# link no SDL.
-APP_SMOKE_SRC := tests/app_smoke.c tests/app_image.c app/layout.c
-build/tests/app_smoke: $(APP_SMOKE_SRC) tests/app_image.h app/palette.h app/layout.h app/app.mk \
-                       $(APP_SMOKE_DEPS)
+# link no SDL, but the sanitized engine, to load the scene files the sandbox
+# saves (scene_file_load), and the list of presets.
+APP_SMOKE_SRC := tests/app_smoke.c tests/app_image.c app/layout.c app/presets.c
+build/tests/app_smoke: $(APP_SMOKE_SRC) tests/app_image.h app/palette.h app/layout.h \
+                       app/presets.h app/app.mk build/libengine-san.a $(APP_SMOKE_DEPS)
 	@mkdir -p $(dir $@)
-	$(CC) $(CSTD) $(WARN) -O1 -g $(SAN) $(APP_SMOKE_DEFS) -Iapp -Itests $(APP_SMOKE_SRC) \
-	    $(APP_SMOKE_LIBS) -lm -o $@
+	$(CC) $(CSTD) $(WARN) -O1 -g $(SAN) $(APP_SMOKE_DEFS) -Iapp -Itests -Iengine/include \
+	    $(APP_SMOKE_SRC) build/libengine-san.a $(APP_SMOKE_LIBS) -lm -o $@
 
 CHECK_PROGRAMS += build/tests/app_units build/tests/app_smoke
 
