@@ -74,12 +74,15 @@ void app_new_shape(app_t *app) {
     }
 }
 
-/* The camera, clock, drift, trail, drags and keys of a newly shown scene. */
-static void scene_shown(app_t *app) {
+/* The camera, clock, drift, trail, drags and keys of a newly shown scene.
+ * Another scene starts a new drift chart; the same one again (R) goes on
+ * with a mark where it was reset. */
+static void scene_shown(app_t *app, bool another) {
     const sandbox_t *sandbox = &app->sandbox;
     camera_init(&app->camera, app->layout.view.w, app->layout.view.h, sandbox->home.min,
                 sandbox->home.max);
     step_clock_set_step(&app->clock, sandbox->step);
+    if (another) energy_drift_init(&app->drift);
     energy_drift_set_step(&app->drift, sandbox->step);
     energy_drift_rereference(&app->drift);
     impulse_trail_clear(&app->trail);
@@ -116,8 +119,7 @@ void app_init(app_t *app, int width, int height, uint64_t seed, const char *pres
     app->overlays[OVERLAY_AXES] = true;
     app->overlays[OVERLAY_IMPULSES] = true;
     app->overlays[OVERLAY_SLEEPING] = true;
-    energy_drift_init(&app->drift);
-    scene_shown(app);
+    scene_shown(app, true);
     app->mouse = (vector_t){0.5 * app->layout.view.w, 0.5 * app->layout.view.h};
     app_new_shape(app);
 }
@@ -131,6 +133,8 @@ static void say_opened(app_t *app) {
     const sandbox_t *sandbox = &app->sandbox;
     if (app_game_mode(app)) {
         app_status(app, "opened %s: Left/Right or A/D move, Space fires", sandbox->name);
+    } else if (sandbox->is_default) {
+        app_status(app, "opened %s: the empty container", sandbox->name);
     } else {
         size_t bodies = scene_bodies(sandbox->scene);
         app_status(app, "opened %s (%zu bod%s)", sandbox->name, bodies, bodies == 1 ? "y" : "ies");
@@ -139,7 +143,7 @@ static void say_opened(app_t *app) {
 
 void app_show(app_t *app, sandbox_loaded_t *loaded) {
     sandbox_show(&app->sandbox, loaded, false);
-    scene_shown(app);
+    scene_shown(app, true);
 }
 
 /* A refused file: the message, the file named by its name alone on screen
@@ -178,7 +182,7 @@ void app_reset_scene(app_t *app) {
         say_refused(app, error);
         return;
     }
-    scene_shown(app);
+    scene_shown(app, false);
     if (app->sandbox.game != NULL) {
         app_status(app, "reset: %s from the start", app->sandbox.name);
     } else {

@@ -1495,10 +1495,12 @@ static double middle_x(const image_t *image, image_color_test_t test) {
 
 /* In Breakout, Right and A move the paddle (and no longer pan the view),
  * Space does not pause (it fires) but Enter does; the side bar shows the
- * score, the lives, the bricks and the keys; the overlays are off. In Space
+ * score, the lives, the bricks and the keys, and the help screen says they
+ * come first; the overlays are off. In Space
  * Invaders, Left moves the gun and Space fires a shot. */
 static void test_games_respond_to_their_keys(void) {
-    const char *script = "move px 700 300\nscreenshot " TMP_DIR "/game_0.bmp\n"
+    const char *script = "key h\nscreenshot " TMP_DIR "/game_help.bmp\nkey h\n"
+                         "move px 700 300\nscreenshot " TMP_DIR "/game_0.bmp\n"
                          "keydown right\nwait 20\nkeyup right\nscreenshot " TMP_DIR "/game_1.bmp\n"
                          "keydown a\nwait 10\nkeyup a\nscreenshot " TMP_DIR "/game_2.bmp\n"
                          "key space\nwait 2\nscreenshot " TMP_DIR "/game_3.bmp\nkey enter\n"
@@ -1544,6 +1546,12 @@ static void test_games_respond_to_their_keys(void) {
            "Enter did not pause the game");
     (void)line;
     for (int i = 0; i < 5; i++) image_free(&shots[i]);
+    image_t help;
+    if (load_shot("game_help", &help)) {
+        EXPECT(shows(&help, "Now playing breakout: the Game: keys come first", true),
+               "the help screen does not say the game's keys come first");
+        image_free(&help);
+    }
 
     /* Space Invaders: 1 s to the left, clear of the shields, then fire. */
     const char *invaders = "move px 700 300\nkeydown left\nwait 60\nkeyup left\n"
