@@ -13,14 +13,12 @@
 #include "energy_drift.h"
 #include "impulse_trail.h"
 #include "layout.h"
+#include "presets.h"
 #include "sandbox_scene.h"
 #include "step_clock.h"
 
-/* The fixed physics step (s); step_clock.h says how frames pay for steps. */
-#define APP_STEP STEP_CLOCK_STEP
-/* The default view shows the container, its floor and walls, and this much
- * around them (m). */
-#define APP_VIEW_MARGIN 0.5
+/* Physics runs in fixed steps of the open scene's timestep (1/120 s in the
+ * default scene); step_clock.h says how frames pay for steps. */
 /* The frame time in --headless mode, where no clock is read (s). */
 #define APP_HEADLESS_FRAME (1.0 / 60.0)
 
@@ -45,6 +43,13 @@ typedef enum {
 
 #define APP_MOTION_SAMPLES 16
 
+/* A game's keys: held now, and pressed since the last steps (a press and
+ * release within one frame still moves or fires for that frame's steps). */
+typedef struct {
+    bool left, right, fire;
+    bool left_tapped, right_tapped, fire_tapped;
+} game_keys_t;
+
 typedef struct {
     double time;     /* app clock (s) */
     vector_t world;  /* cursor (m) */
@@ -65,6 +70,15 @@ typedef struct {
 
 typedef struct {
     sandbox_t sandbox;
+    /* The scenes PageDown and PageUp go through, the open scene's place in
+     * that list (-1: a file from elsewhere) and the place they go on from
+     * (the last one tried, even when it was refused). */
+    presets_t presets;
+    int scene_index;
+    int scene_cursor;
+    char save_dir[SANDBOX_PATH_MAX]; /* where Ctrl+S writes saved-N.scene */
+    game_keys_t keys;                /* the game's controls (a game's scene only) */
+    game_status_t game_status;       /* as of the last frame, to announce changes */
     layout_t layout;  /* the view area and the side bar */
     camera_t camera;  /* the world in the view area */
     bool headless;    /* no clock: the side bar shows no wall-clock timings */
@@ -75,6 +89,10 @@ typedef struct {
     double elasticity;
 
     bool overlays[OVERLAY_COUNT];
+    /* A game's scene opens with the overlays drawn over the bodies off; they
+     * are kept here to come back when a scene without a game opens. */
+    bool overlays_before_game[OVERLAY_COUNT];
+    bool in_game;
     bool paused;
     bool step_once;  /* run one step at the next frame (while paused) */
     bool show_help;
@@ -111,8 +129,9 @@ typedef struct {
 /* How long a status line shows (s). */
 #define APP_STATUS_SECONDS 2.5
 
-/* The default scene and settings for a window of width x height pixels. */
-void app_init(app_t *app, int width, int height, uint64_t seed);
+/* The default scene and settings for a window of width x height pixels;
+ * the presets are the *.scene files of presets_dir (NULL: none). */
+void app_init(app_t *app, int width, int height, uint64_t seed, const char *presets_dir);
 void app_free(app_t *app);
 
 /* The window is now width x height pixels: the layout and the view follow. */
@@ -143,6 +162,30 @@ void app_set_integrator(app_t *app, integrator_t integrator);
 /* Gravity on or off, said on the status line; the energy drift takes a new
  * reference (the potential energy changes meaning). */
 void app_set_gravity(app_t *app, bool on);
+
+/* Shows a scene sandbox_load read (in place of the open one): the view
+ * frames its `view`, the clock and the energy drift take its timestep, the
+ * drags, the impulse trail and the game's keys start afresh. */
+void app_show(app_t *app, sandbox_loaded_t *loaded);
+
+/* Opens a scene file (NULL: the default scene) and says so; when it is
+ * refused, says why as a warning (also on stderr) and keeps the open scene.
+ * Returns whether it opened. */
+bool app_open(app_t *app, const char *path);
+
+/* PageDown (+1) and PageUp (-1): the next or previous scene of the list. */
+void app_cycle_scene(app_t *app, int step);
+
+/* R: the open scene as it started (its file read again). */
+void app_reset_scene(app_t *app);
+
+/* Ctrl+S: writes the scene as it is now to a new file save_dir/saved-N.scene
+ * (the first N free; an existing file is never replaced) and says where. */
+void app_save_scene(app_t *app);
+
+/* Whether the open scene runs a game that takes input (Breakout, Space
+ * Invaders; not the pegs board): its keys then come first. */
+bool app_game_mode(const app_t *app);
 
 /* Shows a status line for a few seconds (printf-style). */
 void app_status(app_t *app, const char *format, ...)

@@ -9,8 +9,10 @@ SANDBOX_APT := libsdl2-dev libsdl2-gfx-dev libsdl2-image-dev pkg-config
 SANDBOX_HAVE_SDL := $(shell pkg-config --exists $(SANDBOX_PKGS) 2>/dev/null && echo yes)
 
 APP_SRC := $(wildcard app/*.c)
-APP_HDR := $(wildcard app/*.h)
+APP_HDR := $(wildcard app/*.h) $(GAMES_HDR)
 APP_OBJ := $(patsubst app/%.c,build/app/%.o,$(APP_SRC))
+# The game rules (app/games/, no SDL), which the tests link too.
+APP_GAMES_OBJ := $(patsubst app/games/%.c,build/app/games/%.o,$(GAMES_SRC))
 
 .PHONY: run sandbox-deps
 
@@ -21,12 +23,16 @@ SANDBOX_LIBS := $(shell pkg-config --libs $(SANDBOX_PKGS))
 
 all: sandbox
 
+build/app/games/%.o: app/games/%.c $(GAMES_HDR) $(wildcard engine/include/*.h) app/app.mk
+	@mkdir -p $(dir $@)
+	$(CC) $(CSTD) $(WARN) $(OPT) -Iengine/include -c $< -o $@
+
 build/app/%.o: app/%.c $(APP_HDR) $(wildcard engine/include/*.h) app/app.mk
 	@mkdir -p $(dir $@)
-	$(CC) $(CSTD) $(WARN) $(OPT) -Iengine/include $(SANDBOX_CFLAGS) -c $< -o $@
+	$(CC) $(CSTD) $(WARN) $(OPT) -Iengine/include -Iapp/games $(SANDBOX_CFLAGS) -c $< -o $@
 
-sandbox: $(APP_OBJ) build/libengine.a
-	$(CC) $(APP_OBJ) build/libengine.a $(SANDBOX_LIBS) -lm -o $@
+sandbox: $(APP_OBJ) $(APP_GAMES_OBJ) build/libengine.a
+	$(CC) $(APP_OBJ) $(APP_GAMES_OBJ) build/libengine.a $(SANDBOX_LIBS) -lm -o $@
 
 APP_SMOKE_DEPS := sandbox
 # The smoke tests read the app's 8x8 font (SDL2_gfx's header) to find text in
@@ -46,23 +52,28 @@ APP_SMOKE_LIBS :=
 endif
 
 # The app's plain-C parts (no SDL: text, the side bar's lines, the step
-# clock, the layout, the energy drift, the integrators by name), tested
-# directly against the sanitized engine; they build and run without SDL.
+# clock, the layout, the energy drift, the integrators by name, the list of
+# scenes, the SCENE panel's words, the sandbox's scenes with the game rules),
+# tested directly against the sanitized engine; they build and run without
+# SDL.
 APP_UNIT_SRC := tests/app_units.c app/text.c app/stats_text.c app/step_clock.c app/layout.c \
-                app/energy_drift.c app/integrator_choice.c
-build/tests/app_units: $(APP_UNIT_SRC) $(wildcard app/*.h) app/app.mk build/libengine-san.a
+                app/energy_drift.c app/integrator_choice.c app/presets.c app/scene_text.c \
+                app/sandbox_scene.c
+build/tests/app_units: $(APP_UNIT_SRC) $(wildcard app/*.h) $(GAMES_HDR) app/app.mk \
+                       build/libengine-san.a $(GAMES_SAN_OBJ)
 	@mkdir -p $(dir $@)
-	$(CC) $(CSTD) $(WARN) -O1 -g $(SAN) -Iapp -Iengine/include $(APP_UNIT_SRC) \
-	    build/libengine-san.a -lm -o $@
+	$(CC) $(CSTD) $(WARN) -O1 -g $(SAN) -Iapp -Iapp/games -Iengine/include $(APP_UNIT_SRC) \
+	    $(GAMES_SAN_OBJ) build/libengine-san.a -lm -o $@
 
 # The smoke tests drive ./sandbox from outside and read its screenshots; they
-# link no SDL.
-APP_SMOKE_SRC := tests/app_smoke.c tests/app_image.c app/layout.c
-build/tests/app_smoke: $(APP_SMOKE_SRC) tests/app_image.h app/palette.h app/layout.h app/app.mk \
-                       $(APP_SMOKE_DEPS)
+# link no SDL, but the sanitized engine, to load the scene files the sandbox
+# saves (scene_file_load), and the list of presets.
+APP_SMOKE_SRC := tests/app_smoke.c tests/app_image.c app/layout.c app/presets.c
+build/tests/app_smoke: $(APP_SMOKE_SRC) tests/app_image.h app/palette.h app/layout.h \
+                       app/presets.h app/app.mk build/libengine-san.a $(APP_SMOKE_DEPS)
 	@mkdir -p $(dir $@)
-	$(CC) $(CSTD) $(WARN) -O1 -g $(SAN) $(APP_SMOKE_DEFS) -Iapp -Itests $(APP_SMOKE_SRC) \
-	    $(APP_SMOKE_LIBS) -lm -o $@
+	$(CC) $(CSTD) $(WARN) -O1 -g $(SAN) $(APP_SMOKE_DEFS) -Iapp -Itests -Iengine/include \
+	    $(APP_SMOKE_SRC) build/libengine-san.a $(APP_SMOKE_LIBS) -lm -o $@
 
 CHECK_PROGRAMS += build/tests/app_units build/tests/app_smoke
 

@@ -9,6 +9,11 @@
 
 void energy_drift_init(energy_drift_t *drift) {
     memset(drift, 0, sizeof(*drift));
+    drift->step = DRIFT_DEFAULT_STEP;
+}
+
+void energy_drift_set_step(energy_drift_t *drift, double step) {
+    if (step > 0.0 && isfinite(step)) drift->step = step;
 }
 
 void energy_drift_rereference(energy_drift_t *drift) {
@@ -26,17 +31,28 @@ static void put(drift_column_t *column, double value) {
     }
 }
 
+/* Whether `elapsed` seconds run past a column (rounding forgiven: 3 steps of
+ * 1/120 s fill a column of 1/40 s exactly). */
+static bool past_column(double elapsed) {
+    return elapsed > DRIFT_COLUMN_SECONDS * (1.0 + 1e-6);
+}
+
 /* Moves on to the next column after `steps` more steps. A column that no
- * frame fell in (a frame of more than 3 steps, after a late one) carries the
+ * frame fell in (a frame longer than a column, after a late one) carries the
  * last drift on. */
 static void advance(energy_drift_t *drift, int steps) {
-    drift->steps += steps;
-    while (drift->steps > DRIFT_STEPS_PER_COLUMN) {
-        drift->steps -= DRIFT_STEPS_PER_COLUMN;
+    drift->elapsed += steps * drift->step;
+    while (past_column(drift->elapsed)) {
+        drift->elapsed -= DRIFT_COLUMN_SECONDS;
         drift->head = (drift->head + 1) % DRIFT_COLUMNS;
         drift_column_t *column = &drift->columns[drift->head];
         *column = (drift_column_t){0};
-        if (drift->steps > DRIFT_STEPS_PER_COLUMN && drift->valid) put(column, drift->drift);
+        if (past_column(drift->elapsed) && drift->valid) put(column, drift->drift);
+        /* A step longer than the whole chart need not walk every column. */
+        if (drift->elapsed > (DRIFT_COLUMNS + 1) * DRIFT_COLUMN_SECONDS) {
+            drift->elapsed = DRIFT_COLUMNS * DRIFT_COLUMN_SECONDS +
+                             fmod(drift->elapsed, DRIFT_COLUMN_SECONDS);
+        }
     }
 }
 

@@ -13,18 +13,22 @@
  * bodies added or removed (the caller's change counter moves), or a
  * rereference asked for (the integrator switched, gravity toggled, a grab let
  * go). Each column of the chart holds the lowest and highest drift of the
- * frames that fell in its 3 steps (1/40 s), so a spike shorter than a column
- * still shows. Fixed size, no allocation; plain C (no SDL, no engine), tested
+ * frames that fell in its 1/40 s of simulated time (3 steps of 1/120 s; the
+ * step is the scene's, energy_drift_set_step), so a spike shorter than a
+ * column still shows. Fixed size, no allocation; plain C (no SDL, no engine), tested
  * by tests/app_units.c.
  */
 
 #include <stdbool.h>
 #include <stddef.h>
 
-/* 200 columns of 3 steps of 1/120 s: the last 5 s of simulated time. */
+/* 200 columns of 1/40 s (3 steps of 1/120 s): the last 5 s of simulated
+ * time. */
 #define DRIFT_COLUMNS 200
-#define DRIFT_STEPS_PER_COLUMN 3
+#define DRIFT_COLUMN_SECONDS (1.0 / 40.0)
 #define DRIFT_SECONDS 5.0
+/* The step when none is set (s). */
+#define DRIFT_DEFAULT_STEP (1.0 / 120.0)
 /* The vertical scale: 1, 2, 5 times a power of ten, from 0.01% to 1000%. */
 #define DRIFT_MIN_SCALE 1e-4
 #define DRIFT_MAX_SCALE 10.0
@@ -40,7 +44,8 @@ typedef struct {
 typedef struct {
     drift_column_t columns[DRIFT_COLUMNS]; /* a ring; columns[head] is the newest */
     size_t head;
-    int steps;              /* steps into the newest column */
+    double elapsed;         /* simulated seconds into the newest column */
+    double step;            /* seconds per step */
     double reference;       /* E_ref (J) */
     bool have_reference;    /* false: the next sample takes one */
     unsigned long changes;  /* the caller's change counter at E_ref */
@@ -48,8 +53,12 @@ typedef struct {
     bool valid;             /* whether `drift` means anything (bodies, |E_ref| large enough) */
 } energy_drift_t;
 
-/* Empty; the first sample takes the reference. */
+/* Empty, for steps of DRIFT_DEFAULT_STEP; the first sample takes the
+ * reference. */
 void energy_drift_init(energy_drift_t *drift);
+
+/* Steps of `step` seconds from now on (a scene with another timestep). */
+void energy_drift_set_step(energy_drift_t *drift, double step);
 
 /* Takes E_ref again at the next sample. */
 void energy_drift_rereference(energy_drift_t *drift);

@@ -24,6 +24,12 @@ void help_draw(SDL_Renderer *renderer, app_t *app) {
     int ty = y + LAYOUT_PAD;
     draw_text(renderer, x + LAYOUT_PAD, ty, PALETTE_ACCENT,
               "SANDBOX CONTROLS   (H, F1, Esc or a click closes)");
+    if (app_game_mode(app)) {
+        /* The line between the title and the table says whose keys win. */
+        draw_text(renderer, x + LAYOUT_PAD, ty + row_h, PALETTE_WON,
+                  "Now playing %.24s: the Game: keys come first (Ctrl + Left / Right pans)",
+                  app->sandbox.name);
+    }
     ty += 2 * row_h;
     int action_x = x + LAYOUT_PAD + (KEY_CHARS + 2) * DRAW_CHAR_W;
     for (size_t i = 0; i < INPUT_CONTROL_COUNT; i++) {

@@ -34,16 +34,21 @@ const input_control_t INPUT_CONTROLS[] = {
     {"X", "overlay: bounding boxes"},
     {"Z / Shift + Z", "overlay: sleeping bodies dimmer / sleeping on, off"},
     {"O", "all overlays on / off (a click on a line toggles it)"},
-    {"Space", "pause / resume"},
+    {"Space, Enter", "pause / resume (in a game Enter only)"},
     {"S", "single step (pauses)"},
     {"[ / ]", "slow motion: time x0.1 to x1"},
     {"G", "gravity on / off"},
     {"N / Shift + N", "next / previous integrator (energy drift chart)"},
-    {"C / R", "clear the bodies / reset the scene"},
+    {"C / R", "clear the bodies / reset the scene (read its file again)"},
+    {"PageDown / PageUp", "next / previous scene: the sandbox, then the presets"},
+    {"Ctrl + S", "save the scene to a new ./saved-N.scene"},
+    {"A .scene file dropped on the window", "open it"},
+    {"Game: Left / Right, A / D", "move (instead of panning, the A and D keys)"},
+    {"Game: Space", "fire (instead of pausing: pause with Enter)"},
     {"Ctrl + wheel, + / -", "zoom about the cursor"},
-    {"Left / Right, Ctrl + Up / Down", "pan the view"},
+    {"Left / Right, Ctrl + arrows", "pan the view (in a game Ctrl + Left / Right)"},
     {"F", "frame every body"},
-    {"0, Home", "the default view: the whole container"},
+    {"0, Home", "the default view: the whole container or the file's view"},
     {"H, F1", "this help (a click closes it too)"},
     {"Esc, Q", "quit (Esc first closes the help)"},
 };
@@ -147,13 +152,18 @@ static void zoom(app_t *app, double factor) {
     app_status(app, "zoom x%.2f", camera_zoom(&app->camera));
 }
 
+/* What 0 shows: the default scene's container, a file's own view. */
+static const char *home_view_name(const app_t *app) {
+    return app->sandbox.is_default ? "the whole container" : "the scene's view";
+}
+
 /* Every body in view, with a margin; no closer than FRAME_MIN_SIZE across,
  * so that one body does not fill the screen. */
 static void frame_all(app_t *app) {
     aabb_t box;
     if (!sandbox_bodies_bounds(&app->sandbox, &box)) {
         camera_reset(&app->camera);
-        app_status(app, "no bodies: the whole container");
+        app_status(app, "no bodies: %s", home_view_name(app));
         return;
     }
     vector_t middle = vec_multiply(0.5, vec_add(box.min, box.max));
@@ -203,15 +213,6 @@ static void clear_bodies(app_t *app) {
     app_status(app, "cleared: %zu bod%s removed", removed, removed == 1 ? "y" : "ies");
 }
 
-static void reset_scene(app_t *app) {
-    size_t removed = sandbox_totals(&app->sandbox).bodies;
-    sandbox_reset(&app->sandbox);
-    impulse_trail_clear(&app->trail);
-    if (app->drag == DRAG_GRAB) app->drag = DRAG_NONE;
-    app_status(app, "reset: new scene, %zu bod%s removed, gravity on", removed,
-               removed == 1 ? "y" : "ies");
-}
-
 /* Shift+Z: the engine's sleeping itself, on or off (off wakes every body). */
 static void toggle_sleeping(app_t *app) {
     sandbox_set_sleeping(&app->sandbox, !app->sandbox.sleeping_on);
@@ -225,11 +226,57 @@ static void change_time_scale(app_t *app, double delta) {
     app_status(app, "time x%.1f", app->time_scale);
 }
 
+/* A game's key, pressed or let go: Left / A, Right / D, Space (without
+ * Ctrl, which keeps Left and Right for panning). False for other keys. */
+static bool game_key(app_t *app, SDL_Keycode sym, bool down) {
+    if (!app_game_mode(app) || (app->mods & KMOD_CTRL) != 0) {
+        /* A key let go after Ctrl was pressed, or after the scene changed,
+         * is let go all the same. */
+        if (!down) {
+            if (sym == SDLK_LEFT || sym == SDLK_a) app->keys.left = false;
+            if (sym == SDLK_RIGHT || sym == SDLK_d) app->keys.right = false;
+            if (sym == SDLK_SPACE) app->keys.fire = false;
+        }
+        return false;
+    }
+    bool *held, *tapped;
+    switch (sym) {
+    case SDLK_LEFT:
+    case SDLK_a:
+        held = &app->keys.left;
+        tapped = &app->keys.left_tapped;
+        break;
+    case SDLK_RIGHT:
+    case SDLK_d:
+        held = &app->keys.right;
+        tapped = &app->keys.right_tapped;
+        break;
+    case SDLK_SPACE:
+        held = &app->keys.fire;
+        tapped = &app->keys.fire_tapped;
+        break;
+    default:
+        return false;
+    }
+    *held = down;
+    if (down) *tapped = true;
+    return true;
+}
+
+static void toggle_pause(app_t *app) {
+    app->paused = !app->paused;
+    if (app_game_mode(app)) app_status(app, app->paused ? "paused (Enter resumes)" : "running");
+    else app_status(app, app->paused ? "paused" : "running");
+}
+
 static void on_key(app_t *app, const SDL_KeyboardEvent *key) {
     SDL_Keycode sym = key->keysym.sym;
     bool ctrl = (app->mods & KMOD_CTRL) != 0;
     bool shift = (app->mods & KMOD_SHIFT) != 0;
     bool repeat = key->repeat != 0;
+
+    /* In a game its keys come first: Left, Right, A, D move, Space fires. */
+    if (game_key(app, sym, true)) return;
 
     /* Keys that may repeat while held. */
     switch (sym) {
@@ -241,7 +288,7 @@ static void on_key(app_t *app, const SDL_KeyboardEvent *key) {
         if (ctrl) camera_pan_pixels(&app->camera, 0, -PAN_PIXELS);
         else change_elasticity(app, -ELASTICITY_STEP);
         return;
-    case SDLK_LEFT:
+    case SDLK_LEFT: /* with or without Ctrl; in a game with Ctrl only */
         camera_pan_pixels(&app->camera, PAN_PIXELS, 0);
         return;
     case SDLK_RIGHT:
@@ -257,9 +304,10 @@ static void on_key(app_t *app, const SDL_KeyboardEvent *key) {
         zoom(app, 1.0 / ZOOM_FACTOR);
         return;
     case SDLK_s:
+        if (ctrl) break; /* Ctrl+S saves, below */
         app->paused = true;
         app->step_once = true;
-        app_status(app, "one step of %.4g s (paused)", APP_STEP);
+        app_status(app, "one step of %.4g s (paused)", app->sandbox.step);
         return;
     default:
         break;
@@ -314,8 +362,18 @@ static void on_key(app_t *app, const SDL_KeyboardEvent *key) {
         break;
     }
     case SDLK_SPACE:
-        app->paused = !app->paused;
-        app_status(app, app->paused ? "paused" : "running");
+    case SDLK_RETURN:
+    case SDLK_KP_ENTER:
+        toggle_pause(app);
+        break;
+    case SDLK_s: /* with Ctrl: a plain S stepped above */
+        app_save_scene(app);
+        break;
+    case SDLK_PAGEDOWN:
+        app_cycle_scene(app, 1);
+        break;
+    case SDLK_PAGEUP:
+        app_cycle_scene(app, -1);
         break;
     case SDLK_LEFTBRACKET:
         change_time_scale(app, -0.1);
@@ -337,7 +395,7 @@ static void on_key(app_t *app, const SDL_KeyboardEvent *key) {
         clear_bodies(app);
         break;
     case SDLK_r:
-        reset_scene(app);
+        app_reset_scene(app);
         break;
     case SDLK_f:
         frame_all(app);
@@ -350,7 +408,7 @@ static void on_key(app_t *app, const SDL_KeyboardEvent *key) {
     case SDLK_0:
     case SDLK_HOME:
         camera_reset(&app->camera);
-        app_status(app, "view: the whole container");
+        app_status(app, "view: %s", home_view_name(app));
         break;
     case SDLK_h:
     case SDLK_F1:
@@ -491,6 +549,14 @@ void input_handle_event(app_t *app, const SDL_Event *event) {
         break;
     case SDL_KEYUP:
         app->mods = event->key.keysym.mod;
+        game_key(app, event->key.keysym.sym, false);
+        break;
+    case SDL_DROPFILE:
+        /* A file dropped on the window: a scene to open. */
+        if (event->drop.file != NULL) {
+            app_open(app, event->drop.file);
+            SDL_free(event->drop.file);
+        }
         break;
     case SDL_MOUSEBUTTONDOWN:
         on_button_down(app, &event->button);
@@ -512,6 +578,7 @@ void input_handle_event(app_t *app, const SDL_Event *event) {
             app->mouse_inside = true;
         } else if (event->window.event == SDL_WINDOWEVENT_FOCUS_LOST) {
             app->mods = 0;
+            app->keys.left = app->keys.right = app->keys.fire = false;
         }
         break;
     default:

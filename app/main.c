@@ -10,6 +10,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include "app.h"
 #include "draw.h"
 #include "input.h"
@@ -37,14 +38,27 @@ typedef struct {
     bool overlays_given;
     bool overlays[OVERLAY_COUNT];
     integrator_t integrator;
+    bool integrator_given;
+    const char *scene;     /* FILE.scene to open, or NULL: the default scene */
+    const char *save_dir;  /* where Ctrl+S saves */
 } options_t;
 
 static void usage(FILE *out) {
     fprintf(out,
-            "Usage: ./sandbox [OPTIONS]\n"
+            "Usage: ./sandbox [OPTIONS] [FILE.scene]\n"
             "A 2D rigid-body sandbox: click to drop polygons, change the elasticity,\n"
             "and watch collision axes and impulses live. Press H or F1 in the app for\n"
             "every key.\n"
+            "\n"
+            "FILE.scene opens a scene file (docs/scenes.md): the view frames its\n"
+            "`view`, the physics steps with its timestep and integrator, and its\n"
+            "game runs: Breakout and Space Invaders are played with Left/Right or\n"
+            "A/D and Space (Enter pauses). Without it the default scene opens: an\n"
+            "empty container. PageDown and PageUp go through the default scene and\n"
+            "the presets (assets/scenes/*.scene); Ctrl+S saves the scene as it is to\n"
+            "a new saved-N.scene. A file that is refused is named with its line and\n"
+            "column (FILE:LINE:COLUMN: expected ..., found ...) and the exit status\n"
+            "is 2.\n"
             "\n"
             "Options:\n"
             "  --headless          render offscreen (SDL's dummy video driver and a\n"
@@ -73,11 +87,13 @@ static void usage(FILE *out) {
             "                      rk4, symplectic4 (any case; spaces or underscores);\n"
             "                      N and Shift+N switch it while it runs\n"
             "  --seed N            seed of the random polygons (default 1)\n"
+            "  --save-dir DIR      where Ctrl+S writes saved-N.scene (default: the\n"
+            "                      current directory)\n"
             "  --stats             print frame, physics and render times at exit\n"
             "  -h, --help          this help\n"
             "\n"
             "Exit status: 0 on success, 1 when SDL fails or a screenshot cannot be\n"
-            "saved, 2 for a bad option or script.\n"
+            "saved, 2 for a bad option, script or scene file.\n"
             "\n"
             "Example (what make check's smoke tests do):\n"
             "  printf 'click 0 6\\nwait 1s\\n' > drop.txt\n"
@@ -154,7 +170,8 @@ static int parse_options(int argc, char **argv, options_t *o) {
                            strcmp(arg, "--script") == 0 || strcmp(arg, "--size") == 0 ||
                            strcmp(arg, "--spawn") == 0 || strcmp(arg, "--spawn-size") == 0 ||
                            strcmp(arg, "--seed") == 0 || strcmp(arg, "--elasticity") == 0 ||
-                           strcmp(arg, "--overlays") == 0 || strcmp(arg, "--integrator") == 0;
+                           strcmp(arg, "--overlays") == 0 || strcmp(arg, "--integrator") == 0 ||
+                           strcmp(arg, "--save-dir") == 0;
         const char *value = NULL;
         if (takes_value) {
             if (i + 1 >= argc || argv[i + 1][0] == '\0') {
@@ -232,11 +249,37 @@ static int parse_options(int argc, char **argv, options_t *o) {
                 return bad_usage("--integrator: '%s' is not an integrator; the integrators "
                                  "are %s", value, names);
             }
-        } else {
+            o->integrator_given = true;
+        } else if (strcmp(arg, "--save-dir") == 0) {
+            o->save_dir = value;
+        } else if (arg[0] == '-' && arg[1] != '\0') {
             return bad_usage("unknown option '%s'%s", arg, "");
+        } else if (o->scene != NULL) {
+            return bad_usage("one scene file at a time: '%s', then '%s'", o->scene, arg);
+        } else {
+            o->scene = arg;
         }
     }
     return -1;
+}
+
+/* The presets' directory: assets/scenes here, else beside the program (run
+ * from elsewhere, or through a link). NULL when there is none. */
+static char *presets_dir(void) {
+    static const char RELATIVE[] = "assets/scenes";
+    struct stat info;
+    if (stat(RELATIVE, &info) == 0 && S_ISDIR(info.st_mode)) return SDL_strdup(RELATIVE);
+    char *base = SDL_GetBasePath();
+    if (base == NULL) return NULL;
+    size_t size = strlen(base) + sizeof(RELATIVE);
+    char *dir = SDL_malloc(size);
+    if (dir != NULL) snprintf(dir, size, "%s%s", base, RELATIVE);
+    SDL_free(base);
+    if (dir != NULL && (stat(dir, &info) != 0 || !S_ISDIR(info.st_mode))) {
+        SDL_free(dir);
+        dir = NULL;
+    }
+    return dir;
 }
 
 static double seconds_since(Uint64 start) {
@@ -286,11 +329,24 @@ int main(int argc, char **argv) {
         }
     }
 
+    /* The scene file too is checked before anything opens: a refused file
+     * is named with its line and column, and the status is 2. */
+    sandbox_loaded_t scene = {0};
+    if (o.scene != NULL) {
+        char error[600];
+        if (!sandbox_load(o.scene, &scene, error, sizeof(error))) {
+            fprintf(stderr, "sandbox: %s\n", error);
+            script_free(script);
+            return 2;
+        }
+    }
+
     if (o.headless) SDL_setenv("SDL_VIDEODRIVER", "dummy", 1);
     SDL_SetMainReady();
     if (SDL_Init(SDL_INIT_VIDEO | SDL_INIT_EVENTS) != 0) {
         fprintf(stderr, "sandbox: cannot start SDL: %s%s\n", SDL_GetError(),
                 o.headless ? "" : " (no display? try --headless)");
+        sandbox_loaded_free(&scene);
         script_free(script);
         return 1;
     }
@@ -304,6 +360,7 @@ int main(int argc, char **argv) {
                 "DISPLAY set?). Run it on a desktop, or use --headless (see --help).\n",
                 driver);
         SDL_Quit();
+        sandbox_loaded_free(&scene);
         script_free(script);
         return 1;
     }
@@ -311,17 +368,26 @@ int main(int argc, char **argv) {
     if (!video_open(&video, o.headless, o.gpu, o.vsync, o.width, o.height)) {
         video_close(&video);
         SDL_Quit();
+        sandbox_loaded_free(&scene);
         script_free(script);
         return 1;
     }
     int width = video.width, height = video.height;
 
     static app_t app; /* large (the impulse trail): not on the stack */
-    app_init(&app, width, height, o.seed);
+    char *presets = presets_dir();
+    app_init(&app, width, height, o.seed, presets);
+    SDL_free(presets);
+    if (o.save_dir != NULL) snprintf(app.save_dir, sizeof(app.save_dir), "%s", o.save_dir);
     app.headless = o.headless;
     app_set_elasticity(&app, o.elasticity);
+    /* --integrator: the scene opened now, and the default scene whenever it
+     * opens again; a file otherwise steps with its own. */
+    if (o.integrator_given) app.sandbox.default_integrator = o.integrator;
+    if (o.scene != NULL) app_show(&app, &scene);
+    if (o.integrator_given) sandbox_set_integrator(&app.sandbox, o.integrator);
+    /* --overlays is what the user asked for, in a game too. */
     if (o.overlays_given) memcpy(app.overlays, o.overlays, sizeof(app.overlays));
-    sandbox_set_integrator(&app.sandbox, o.integrator);
     if (o.spawn > 0) sandbox_spawn(&app.sandbox, (size_t)o.spawn, o.spawn_size, app.elasticity);
 
     long frame_limit = o.frames;

@@ -52,6 +52,9 @@ static const palette_rgb_t PALETTE_TEXT_DIM = {140, 146, 160};
 static const palette_rgb_t PALETTE_PANEL = {10, 11, 14};
 static const palette_rgb_t PALETTE_ACCENT = {255, 200, 60};
 static const palette_rgb_t PALETTE_WARNING = {255, 120, 100}; /* a refused drop */
+static const palette_rgb_t PALETTE_WON = {130, 230, 130};     /* a game won */
+/* A scene file's springs, drawn between the centroids they join. */
+static const palette_rgb_t PALETTE_SPRING = {200, 200, 210};
 static const palette_rgb_t PALETTE_OFF = {96, 101, 114};      /* an overlay that is off */
 static const palette_rgb_t PALETTE_RULE = {44, 48, 58};       /* lines between panels */
 static const palette_rgb_t PALETTE_GRAB = {255, 255, 255};

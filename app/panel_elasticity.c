@@ -52,8 +52,7 @@ static void draw_elasticity(SDL_Renderer *renderer, app_t *app, body_t *hovered,
         draw_text(renderer, r.x, y, PALETTE_TEXT, "under cursor: e %.2f  m %.2f kg",
                   body_get_elasticity(hovered), body_get_mass(hovered));
     } else {
-        draw_text(renderer, r.x, y, PALETTE_TEXT_DIM, "E: give it to the body under");
-        draw_text(renderer, r.x, y + DRAW_LINE_H, PALETTE_TEXT_DIM, "the cursor, Shift+E: to all");
+        draw_text(renderer, r.x, y, PALETTE_TEXT_DIM, "E: to hovered body, Shift+E: all");
     }
 }
 
@@ -66,5 +65,5 @@ static drag_t press_elasticity(app_t *app, SDL_Rect content, vector_t pixel) {
 }
 
 const ui_section_t UI_ELASTICITY = {"ELASTICITY (Up/Down, slider)",
-                                    SLIDER_H + 6 + 2 * DRAW_LINE_H, draw_elasticity,
+                                    SLIDER_H + 6 + DRAW_LINE_H, draw_elasticity,
                                     press_elasticity};

@@ -76,6 +76,46 @@ static void draw_bodies(SDL_Renderer *renderer, SDL_Surface *canvas, app_t *app,
     raster_end();
 }
 
+/* The scene file's springs: a zigzag between the centroids they pull
+ * together (rest length 0), over the bodies. */
+static void draw_springs(SDL_Renderer *renderer, app_t *app) {
+    scene_file_t *file = app->sandbox.file;
+    palette_rgb_t c = PALETTE_SPRING;
+    size_t count = scene_file_force_count(file);
+    for (size_t i = 0; i < count; i++) {
+        scene_file_force_t force = scene_file_get_force(file, i);
+        if (force.kind != SCENE_FILE_SPRING || force.body2 == NULL) continue;
+        vector_t a = camera_to_pixel(&app->camera, body_get_centroid(force.body1));
+        vector_t b = camera_to_pixel(&app->camera, body_get_centroid(force.body2));
+        vector_t d = vec_subtract(b, a);
+        double length = vec_get_length(d);
+        if (!(length < 1e5)) continue; /* not finite, or far beyond the view */
+        if (length < 16.0) {
+            aalineRGBA(renderer, draw_coord(a.x), draw_coord(a.y), draw_coord(b.x),
+                       draw_coord(b.y), c.r, c.g, c.b, 255);
+            continue;
+        }
+        /* Straight ends, ten zigs between, 4 px to either side. */
+        vector_t along = vec_multiply(1.0 / length, d), side = vec_perpendicular(along);
+        const int zigs = 10;
+        double end = 4.0, span = length - 2.0 * end;
+        vector_t previous = a;
+        for (int k = 0; k <= zigs + 1; k++) {
+            vector_t next;
+            if (k == zigs + 1) {
+                next = b;
+            } else {
+                double t = end + span * (k + 0.5) / (zigs + 1);
+                double offset = k == 0 ? 0.0 : (k % 2 == 0 ? 4.0 : -4.0);
+                next = vec_add(vec_add(a, vec_multiply(t, along)), vec_multiply(offset, side));
+            }
+            aalineRGBA(renderer, draw_coord(previous.x), draw_coord(previous.y),
+                       draw_coord(next.x), draw_coord(next.y), c.r, c.g, c.b, 255);
+            previous = next;
+        }
+    }
+}
+
 /* The shape the next click drops, translucent, where it would go (moved
  * clear of the floor and walls); a red outline where a drop is refused. */
 static void draw_preview(SDL_Renderer *renderer, app_t *app) {
@@ -237,6 +277,7 @@ void render_world(SDL_Renderer *renderer, SDL_Surface *canvas, app_t *app, body_
     SDL_RenderClear(renderer);
     draw_grid(renderer, &app->camera);
     draw_bodies(renderer, canvas, app, hovered);
+    draw_springs(renderer, app);
     if (app->overlays[OVERLAY_BOUNDS]) draw_bounds(renderer, app);
     if (app->overlays[OVERLAY_VELOCITIES]) draw_velocities(renderer, app);
     if (app->overlays[OVERLAY_CENTROIDS]) draw_centroids(renderer, app);

@@ -2,6 +2,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 #include "palette.h"
 
 /* The grab spring: a damped spring from the grab point to the cursor whose
@@ -27,17 +28,6 @@ static double random_unit(sandbox_t *sandbox) {
     return (double)((x * 2685821657736338717ULL) >> 11) / 9007199254740992.0;
 }
 
-/* A static box; its info is its name for messages ("inside the floor"). */
-static void add_static_box(scene_t *scene, const char *name, double x0, double y0, double x1,
-                           double y1) {
-    list_t *shape = polygon_make_box((vector_t){0.5 * (x0 + x1), 0.5 * (y0 + y1)},
-                                     0.5 * (x1 - x0), 0.5 * (y1 - y0));
-    body_t *body =
-        body_init_with_info(shape, INFINITY, color_of(PALETTE_STATIC), (void *)name, NULL);
-    body_set_elasticity(body, 0.0);
-    scene_add_body(scene, body);
-}
-
 static vector_t grab_world_point(const grab_t *grab) {
     body_t *body = grab->body;
     return vec_add(body_get_centroid(body), vec_rotate(grab->local_point, body_get_rotation(body)));
@@ -61,49 +51,166 @@ static void grab_force(void *aux) {
     body_add_force_at(body, force, point);
 }
 
-static void build(sandbox_t *sandbox) {
-    scene_t *scene = scene_init();
-    sandbox->scene = scene;
+/* The default scene. Its static colour is PALETTE_STATIC (92, 98, 112), which
+ * the smoke tests look for; its tags name the bodies in messages ("cannot
+ * drop inside the left wall"). */
+const char SANDBOX_DEFAULT_SCENE[] =
+    "# The sandbox's default scene: an open container, a floor and two walls.\n"
+    "gravity 0 -10\n"
+    "contacts on\n"
+    "timestep 1/120\n"
+    "view 0 14.5 31 32   # the container with its floor and walls, and 0.5 m around\n"
+    "body floor      { box 30 1; static; position 0 -0.5;   elasticity 0; "
+    "color 92/255 98/255 112/255; tag floor }\n"
+    "body left_wall  { box 1 30; static; position -14.5 15; elasticity 0; "
+    "color 92/255 98/255 112/255; tag left_wall }\n"
+    "body right_wall { box 1 30; static; position 14.5 15;  elasticity 0; "
+    "color 92/255 98/255 112/255; tag right_wall }\n";
+
+void sandbox_scene_name(const char *path, char *name, size_t size) {
+    if (size == 0) return;
+    const char *base = strrchr(path, '/');
+    base = base != NULL ? base + 1 : path;
+    size_t length = strlen(base);
+    if (length > 6 && strcmp(base + length - 6, ".scene") == 0) length -= 6;
+    if (length > size - 1) length = size - 1;
+    memcpy(name, base, length);
+    name[length] = '\0';
+}
+
+bool sandbox_load(const char *path, sandbox_loaded_t *loaded, char *error, size_t error_size) {
+    *loaded = (sandbox_loaded_t){0};
+    scene_file_error_t problem;
+    scene_file_t *file =
+        path != NULL ? scene_file_load(path, &problem)
+                     : scene_file_parse(SANDBOX_DEFAULT_SCENE, strlen(SANDBOX_DEFAULT_SCENE),
+                                        SANDBOX_DEFAULT_NAME, &problem);
+    if (file == NULL) {
+        snprintf(error, error_size, "%s", problem.message);
+        return false;
+    }
+    char why[256];
+    game_t *game = game_start(file, why, sizeof(why));
+    if (game == NULL && why[0] != '\0') {
+        snprintf(error, error_size, "%s: %s", path != NULL ? path : SANDBOX_DEFAULT_NAME, why);
+        scene_file_free(file);
+        return false;
+    }
+    loaded->file = file;
+    loaded->game = game;
+    loaded->is_default = path == NULL;
+    if (path != NULL) snprintf(loaded->path, sizeof(loaded->path), "%s", path);
+    return true;
+}
+
+void sandbox_loaded_free(sandbox_loaded_t *loaded) {
+    game_free(loaded->game); /* the game before its file */
+    scene_file_free(loaded->file);
+    *loaded = (sandbox_loaded_t){0};
+}
+
+/* What the default view shows of a file without a view: every body, with a
+ * tenth around them. */
+static aabb_t bodies_box(scene_t *scene) {
+    aabb_t box = {{-10.0, -10.0}, {10.0, 10.0}};
+    bool any = false;
+    for (size_t i = 0; i < scene_bodies(scene); i++) {
+        aabb_t b = body_get_bounds(scene_get_body(scene, i));
+        box = any ? aabb_union(box, b) : b;
+        any = true;
+    }
+    vector_t margin = vec_multiply(0.05, vec_subtract(box.max, box.min));
+    margin = (vector_t){fmax(margin.x, 0.5), fmax(margin.y, 0.5)};
+    return (aabb_t){vec_subtract(box.min, margin), vec_add(box.max, margin)};
+}
+
+void sandbox_show(sandbox_t *sandbox, sandbox_loaded_t *loaded, bool keep_integrator) {
+    sandbox_free(sandbox);
+    sandbox->file = loaded->file;
+    sandbox->game = loaded->game;
+    sandbox->scene = scene_file_get_scene(loaded->file);
+    sandbox->is_default = loaded->is_default;
+    snprintf(sandbox->path, sizeof(sandbox->path), "%s", loaded->path);
+    if (loaded->is_default) {
+        snprintf(sandbox->name, sizeof(sandbox->name), "%s", SANDBOX_DEFAULT_NAME);
+    } else {
+        sandbox_scene_name(loaded->path, sandbox->name, sizeof(sandbox->name));
+    }
+    *loaded = (sandbox_loaded_t){0};
+
+    scene_t *scene = sandbox->scene;
+    sandbox->step = scene_file_get_timestep(sandbox->file);
+    scene_file_view_t view = scene_file_get_view(sandbox->file);
+    if (view.has_view) {
+        vector_t half = {0.5 * view.width, 0.5 * view.height};
+        sandbox->home = (aabb_t){vec_subtract(view.center, half), vec_add(view.center, half)};
+    } else {
+        sandbox->home = bodies_box(scene);
+    }
+    sandbox->container = sandbox->is_default
+                             ? (aabb_t){{-SANDBOX_WALL_X, 0.0}, {SANDBOX_WALL_X, SANDBOX_WALL_TOP}}
+                             : sandbox->home;
+    vector_t gravity = scene_get_gravity(scene);
+    bool has_gravity = gravity.x != 0.0 || gravity.y != 0.0;
+    sandbox->gravity = has_gravity ? gravity : (vector_t){0.0, -SANDBOX_GRAVITY};
+    sandbox->gravity_on = has_gravity;
+    sandbox->grab = (grab_t){0};
+    sandbox->grab.gravity = gravity;
+    sandbox->input = (game_input_t){0};
+    if (!keep_integrator) {
+        sandbox->integrator = sandbox->is_default ? sandbox->default_integrator
+                                                  : scene_get_integrator(scene);
+    }
+    scene_set_integrator(scene, sandbox->integrator);
+    scene_set_sleeping(scene, sandbox->sleeping_on);
     sandbox->rng = sandbox->seed * 2654435769ULL + 0x9E3779B97F4A7C15ULL;
     if (sandbox->rng == 0) sandbox->rng = 1;
     sandbox->next_color = 0;
-    sandbox->grab = (grab_t){0};
-
-    const double w = SANDBOX_WALL_X, thick = 1.0;
-    add_static_box(scene, "the floor", -w - thick, -thick, w + thick, 0.0);
-    add_static_box(scene, "the left wall", -w - thick, 0.0, -w, SANDBOX_WALL_TOP);
-    add_static_box(scene, "the right wall", w, 0.0, w + thick, SANDBOX_WALL_TOP);
-    sandbox->container = (aabb_t){{-w, 0.0}, {w, SANDBOX_WALL_TOP}};
-    sandbox->extent = (aabb_t){{-w - thick, -thick}, {w + thick, SANDBOX_WALL_TOP}};
-
-    scene_set_contacts_enabled(scene, true);
-    scene_set_sleeping(scene, sandbox->sleeping_on);
-    scene_set_integrator(scene, sandbox->integrator);
-    sandbox_set_gravity(sandbox, true);
     sandbox->changes++;
-    /* The grab spring is registered once; it does nothing while grab.body is
-     * NULL. It depends on no body: the sandbox clears grab.body itself before
-     * it removes the grabbed body. */
+    /* The grab spring is registered once per scene; it does nothing while
+     * grab.body is NULL. It depends on no body: the sandbox clears
+     * grab.body itself when the grabbed body goes (sandbox_delete, and after
+     * each step for bodies a collision or a game removed). */
     scene_add_bodies_force_creator(scene, grab_force, &sandbox->grab, list_init(0, NULL), NULL);
+}
+
+bool sandbox_open(sandbox_t *sandbox, const char *path, char *error, size_t error_size) {
+    sandbox_loaded_t loaded;
+    if (!sandbox_load(path, &loaded, error, error_size)) return false;
+    sandbox_show(sandbox, &loaded, false);
+    return true;
 }
 
 void sandbox_init(sandbox_t *sandbox, uint64_t seed) {
     *sandbox = (sandbox_t){0};
     sandbox->seed = seed;
     sandbox->integrator = INTEGRATOR_SEED;
+    sandbox->default_integrator = INTEGRATOR_SEED;
     sandbox->sleeping_on = true;
-    build(sandbox);
+    char error[512];
+    if (!sandbox_open(sandbox, NULL, error, sizeof(error))) {
+        /* The built-in text is checked by the tests; this cannot happen. */
+        fprintf(stderr, "sandbox: the default scene is refused: %s\n", error);
+        abort();
+    }
 }
 
 void sandbox_free(sandbox_t *sandbox) {
-    if (sandbox->scene != NULL) scene_free(sandbox->scene);
+    game_free(sandbox->game); /* the game before its file */
+    scene_file_free(sandbox->file);
+    sandbox->game = NULL;
+    sandbox->file = NULL;
     sandbox->scene = NULL;
     sandbox->grab.body = NULL;
 }
 
-void sandbox_reset(sandbox_t *sandbox) {
-    sandbox_free(sandbox);
-    build(sandbox);
+bool sandbox_reset(sandbox_t *sandbox, char *error, size_t error_size) {
+    sandbox_loaded_t loaded;
+    char path[SANDBOX_PATH_MAX];
+    snprintf(path, sizeof(path), "%s", sandbox->path);
+    if (!sandbox_load(sandbox->is_default ? NULL : path, &loaded, error, error_size)) return false;
+    sandbox_show(sandbox, &loaded, true);
+    return true;
 }
 
 bool sandbox_is_static(body_t *body) {
@@ -200,14 +307,27 @@ static bool inside(aabb_t box, vector_t point) {
            point.y < box.max.y;
 }
 
+/* "the left wall" for a body tagged left_wall; "a static body" untagged. */
+static void name_of(body_t *body, char *out, size_t size) {
+    const char *tag = body_get_info(body);
+    if (tag == NULL || tag[0] == '\0') {
+        snprintf(out, size, "a static body");
+        return;
+    }
+    snprintf(out, size, "the %s", tag);
+    for (char *c = out; *c != '\0'; c++) {
+        if (*c == '_') *c = ' ';
+    }
+}
+
 const char *sandbox_place(sandbox_t *sandbox, list_t *vertices, vector_t at, vector_t *placed) {
     *placed = at;
     if (!vec_is_finite(at)) return "not a finite position";
     body_t *wall = static_at(sandbox, at);
     if (wall != NULL) {
-        const char *name = body_get_info(wall);
-        snprintf(sandbox->refusal, sizeof(sandbox->refusal), "inside %s",
-                 name != NULL ? name : "a static body");
+        char name[SCENE_FILE_NAME_MAX + 8];
+        name_of(wall, name, sizeof(name));
+        snprintf(sandbox->refusal, sizeof(sandbox->refusal), "inside %s", name);
         return sandbox->refusal;
     }
     if (!inside(sandbox->container, at)) return "outside the container";
@@ -272,13 +392,14 @@ body_t *sandbox_drop(sandbox_t *sandbox, list_t *vertices, vector_t at, vector_t
 }
 
 void sandbox_spawn(sandbox_t *sandbox, size_t count, double size, double elasticity) {
+    aabb_t box = sandbox->container;
     double spacing = 2.2 * size;
-    size_t per_row = (size_t)floor(2.0 * SANDBOX_WALL_X / spacing);
+    size_t per_row = (size_t)floor((box.max.x - box.min.x) / spacing);
     if (per_row == 0) per_row = 1;
     for (size_t i = 0; i < count; i++) {
         size_t row = i / per_row, column = i % per_row;
-        vector_t at = {-SANDBOX_WALL_X + spacing * (column + 0.5) + (row % 2) * 0.25 * size,
-                       spacing * (row + 0.5) + 0.1};
+        vector_t at = {box.min.x + spacing * (column + 0.5) + (row % 2) * 0.25 * size,
+                       box.min.y + spacing * (row + 0.5) + 0.1};
         shape_choice_t shape = {SHAPE_REGULAR, 3 + (int)(i % 6), size};
         if (i % 7 == 6) shape.kind = SHAPE_BOX;
         const char *problem;
@@ -325,7 +446,7 @@ vector_t sandbox_grab_point(sandbox_t *sandbox) {
 
 void sandbox_set_gravity(sandbox_t *sandbox, bool on) {
     sandbox->gravity_on = on;
-    vector_t gravity = on ? (vector_t){0.0, -SANDBOX_GRAVITY} : VEC_ZERO;
+    vector_t gravity = on ? sandbox->gravity : VEC_ZERO;
     scene_set_gravity(sandbox->scene, gravity);
     sandbox->grab.gravity = gravity;
 }
@@ -340,14 +461,62 @@ void sandbox_set_sleeping(sandbox_t *sandbox, bool on) {
     scene_set_sleeping(sandbox->scene, on);
 }
 
-void sandbox_step(sandbox_t *sandbox, double dt) {
-    scene_tick(sandbox->scene, dt);
-    for (size_t i = 0; i < scene_bodies(sandbox->scene); i++) {
-        body_t *body = scene_get_body(sandbox->scene, i);
-        if (!body_is_removed(body) && body_get_centroid(body).y < SANDBOX_KILL_Y) {
+/* Whether body is still in the scene (not reaped). */
+static bool in_scene(scene_t *scene, body_t *body) {
+    for (size_t i = 0; i < scene_bodies(scene); i++) {
+        if (scene_get_body(scene, i) == body) return true;
+    }
+    return false;
+}
+
+void sandbox_step(sandbox_t *sandbox) {
+    scene_t *scene = sandbox->scene;
+    scene_tick(scene, sandbox->step);
+    /* A collision may have removed the grabbed body in this tick, which then
+     * reaped it (a destructive collision): let go of it before anything
+     * else can be added where it was. */
+    if (sandbox->grab.body != NULL && !in_scene(scene, sandbox->grab.body)) {
+        sandbox->grab.body = NULL;
+    }
+    /* The game reads the step's record, then applies the input for the next
+     * step (game.h). */
+    game_update(sandbox->game, sandbox->input, sandbox->step);
+    double kill_y = sandbox->container.min.y - SANDBOX_KILL_DEPTH;
+    for (size_t i = 0; i < scene_bodies(scene); i++) {
+        body_t *body = scene_get_body(scene, i);
+        if (!body_is_removed(body) && body_get_centroid(body).y < kill_y) {
             sandbox_delete(sandbox, body);
         }
     }
+    if (sandbox->grab.body != NULL && body_is_removed(sandbox->grab.body)) {
+        sandbox->grab.body = NULL; /* the game removed it */
+    }
+}
+
+/* The potential energy of the file's springs (1/2 k d^2, rest length 0
+ * between the centroids) and Newtonian gravity (-G m1 m2 / r between bodies
+ * of finite mass, as forces.h applies it). */
+static double force_potential(scene_file_t *file) {
+    double energy = 0.0;
+    size_t count = scene_file_force_count(file);
+    for (size_t i = 0; i < count; i++) {
+        scene_file_force_t force = scene_file_get_force(file, i);
+        if (force.kind != SCENE_FILE_SPRING && force.kind != SCENE_FILE_NEWTON) continue;
+        if (force.body1 == NULL || force.body2 == NULL || body_is_removed(force.body1) ||
+            body_is_removed(force.body2)) {
+            continue;
+        }
+        vector_t d = vec_subtract(body_get_centroid(force.body2), body_get_centroid(force.body1));
+        double r = vec_get_length(d);
+        if (force.kind == SCENE_FILE_SPRING) {
+            energy += 0.5 * force.constant * r * r;
+        } else {
+            double m1 = body_get_mass(force.body1), m2 = body_get_mass(force.body2);
+            if (isinf(m1) || isinf(m2) || r < 1e-9) continue;
+            energy -= force.constant * m1 * m2 / r;
+        }
+    }
+    return energy;
 }
 
 sandbox_totals_t sandbox_totals(sandbox_t *sandbox) {
@@ -363,6 +532,7 @@ sandbox_totals_t sandbox_totals(sandbox_t *sandbox) {
         totals.potential -= mass * vec_dot(gravity, body_get_centroid(body));
         totals.momentum = vec_add(totals.momentum, vec_multiply(mass, body_get_velocity(body)));
     }
+    totals.potential += force_potential(sandbox->file);
     return totals;
 }
 

@@ -12,14 +12,16 @@
 
 const char SCRIPT_HELP[] =
     "Script files (--script FILE): one command per line; '#' starts a comment.\n"
-    "Positions are world metres (x right, y up; the floor's top is y = 0, the\n"
-    "walls are at x = -14 and 14), or window pixels after the word 'px'.\n"
+    "Positions are world metres (x right, y up; in the default scene the floor's\n"
+    "top is y = 0 and the walls are at x = -14 and 14; in a scene file, its own\n"
+    "coordinates), or window pixels after the word 'px'.\n"
     "The frame rate of a script is 60 frames per second of display time.\n"
     "  wait N                  let N frames pass (N >= 0)\n"
     "  wait Ts                 let T seconds pass (e.g. wait 0.5s)\n"
     "  key NAME                press and release a key: a letter or digit, space,\n"
     "                          tab, enter, escape, backspace, delete, up, down,\n"
-    "                          left, right, home, f1..f12, [ ] + - = , .\n"
+    "                          left, right, home, pageup, pagedown, f1..f12,\n"
+    "                          [ ] + - = , .\n"
     "                          a prefix shift+ or ctrl+ holds that modifier\n"
     "  keydown NAME, keyup NAME  press or release a key (e.g. keydown shift)\n"
     "  move [px] X Y           move the mouse\n"
@@ -32,6 +34,7 @@ const char SCRIPT_HELP[] =
     "  grab [px] X1 Y1 X2 Y2 [FRAMES]   right drag: pulls the body at X1 Y1\n"
     "  wheel N                 turn the mouse wheel N notches (N < 0: down)\n"
     "  spawn N [SIZE]          add N bodies (SIZE m, default 0.2) in a grid\n"
+    "  open FILE               open a scene file, as if dropped on the window\n"
     "  screenshot FILE         save this frame (FILE ends in .png or .bmp)\n"
     "  quit                    stop the app\n";
 
@@ -45,6 +48,7 @@ typedef enum {
     ACT_WHEEL,
     ACT_SPAWN,
     ACT_SCREENSHOT,
+    ACT_OPEN,
     ACT_QUIT,
 } action_kind_t;
 
@@ -59,7 +63,7 @@ typedef struct {
     bool has_position;   /* MOVE, BUTTON_*: else the mouse stays where it is */
     bool pixels;         /* position in pixels rather than metres */
     vector_t position;
-    char *path;          /* SCREENSHOT */
+    char *path;          /* SCREENSHOT, OPEN */
 } action_t;
 
 struct script {
@@ -149,6 +153,8 @@ static const key_name_t KEY_NAMES[] = {
     {"backspace", SDLK_BACKSPACE}, {"delete", SDLK_DELETE}, {"del", SDLK_DELETE},
     {"up", SDLK_UP},             {"down", SDLK_DOWN},       {"left", SDLK_LEFT},
     {"right", SDLK_RIGHT},       {"home", SDLK_HOME},       {"shift", SDLK_LSHIFT},
+    {"pageup", SDLK_PAGEUP},     {"pagedown", SDLK_PAGEDOWN}, {"pgup", SDLK_PAGEUP},
+    {"pgdn", SDLK_PAGEDOWN},
     {"ctrl", SDLK_LCTRL},        {"f1", SDLK_F1},           {"f2", SDLK_F2},
     {"f3", SDLK_F3},             {"f4", SDLK_F4},           {"f5", SDLK_F5},
     {"f6", SDLK_F6},             {"f7", SDLK_F7},           {"f8", SDLK_F8},
@@ -404,13 +410,21 @@ static bool parse_line(parser_t *p, char **tokens, int n) {
         strcpy(a->path, tokens[1]);
         return true;
     }
+    if (strcmp(command, "open") == 0) {
+        if (n != 2) return fail(p, "'open' needs one file name (no spaces)");
+        action_t *a = add(p, ACT_OPEN);
+        a->path = malloc(strlen(tokens[1]) + 1);
+        if (a->path == NULL) return fail(p, "out of memory");
+        strcpy(a->path, tokens[1]);
+        return true;
+    }
     if (strcmp(command, "quit") == 0) {
         if (n != 1) return fail(p, "'quit' takes no arguments");
         add(p, ACT_QUIT);
         return true;
     }
     return fail(p, "unknown command '%s' (expected wait, key, keydown, keyup, move, click, "
-                   "press, release, drag, throw, grab, wheel, spawn, screenshot or quit)",
+                   "press, release, drag, throw, grab, wheel, spawn, open, screenshot or quit)",
                 command);
 }
 
@@ -590,6 +604,14 @@ static void run_action(const action_t *a, app_t *app, const char **screenshot) {
         break;
     case ACT_SCREENSHOT:
         *screenshot = a->path;
+        break;
+    case ACT_OPEN:
+        /* The event a file dropped on the window makes; its handler frees
+         * the name. */
+        event.type = SDL_DROPFILE;
+        event.drop.timestamp = timestamp;
+        event.drop.file = SDL_strdup(a->path);
+        input_handle_event(app, &event);
         break;
     case ACT_QUIT:
         app->quit = true;

@@ -1,16 +1,34 @@
 #include "step_clock.h"
+#include <math.h>
+
+double step_clock_step(const step_clock_t *clock) {
+    return clock->step > 0.0 ? clock->step : STEP_CLOCK_STEP;
+}
+
+int step_clock_max_steps(const step_clock_t *clock) {
+    double steps = ceil(STEP_CLOCK_MAX_STEPS * STEP_CLOCK_STEP / step_clock_step(clock) - 1e-9);
+    return steps > STEP_CLOCK_MAX_STEPS ? (int)fmin(steps, 100000.0) : STEP_CLOCK_MAX_STEPS;
+}
+
+void step_clock_set_step(step_clock_t *clock, double step) {
+    clock->step = step > 0.0 ? step : 0.0;
+    clock->owed = 0.0;
+}
 
 int step_clock_advance(step_clock_t *clock, double dt) {
+    double step = step_clock_step(clock);
+    int max_steps = step_clock_max_steps(clock);
+    double max_debt = fmax(STEP_CLOCK_MAX_DEBT, step);
     clock->owed += dt;
     int steps = 0;
-    while (clock->owed >= STEP_CLOCK_STEP && steps < STEP_CLOCK_MAX_STEPS) {
-        clock->owed -= STEP_CLOCK_STEP;
+    while (clock->owed >= step && steps < max_steps) {
+        clock->owed -= step;
         steps++;
     }
-    if (clock->owed > STEP_CLOCK_MAX_DEBT) {
-        clock->forgiven += clock->owed - STEP_CLOCK_MAX_DEBT;
-        clock->owed = STEP_CLOCK_MAX_DEBT;
+    if (clock->owed > max_debt) {
+        clock->forgiven += clock->owed - max_debt;
+        clock->owed = max_debt;
     }
-    clock->simulated += steps * STEP_CLOCK_STEP;
+    clock->simulated += steps * step;
     return steps;
 }

@@ -16,13 +16,31 @@
 #define STEP_CLOCK_MAX_STEPS 4
 #define STEP_CLOCK_MAX_DEBT 0.1
 
+/*
+ * The step is the open scene's (a scene file's timestep; STEP_CLOCK_STEP
+ * when `step` is 0). A frame runs at most as much simulated time as
+ * STEP_CLOCK_MAX_STEPS steps of STEP_CLOCK_STEP (1/30 s), and never fewer
+ * than STEP_CLOCK_MAX_STEPS steps: a file stepping at 1/1000 s runs up to 34
+ * steps a frame, one at 1/60 s up to 4. The debt kept is at most
+ * STEP_CLOCK_MAX_DEBT, or one step when a step is longer.
+ */
 typedef struct {
     double owed;      /* simulated seconds owed to the physics */
     double simulated; /* simulated seconds run so far */
     double forgiven;  /* simulated seconds dropped after stalls */
+    double step;      /* seconds per step; 0: STEP_CLOCK_STEP */
 } step_clock_t;
 
 /* Adds dt simulated seconds; returns the steps to run now. */
 int step_clock_advance(step_clock_t *clock, double dt);
+
+/* The clock's step (s). */
+double step_clock_step(const step_clock_t *clock);
+
+/* The most steps a frame may run at this step. */
+int step_clock_max_steps(const step_clock_t *clock);
+
+/* Steps of `step` seconds from now on (a new scene); nothing is owed. */
+void step_clock_set_step(step_clock_t *clock, double step);
 
 #endif

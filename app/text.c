@@ -62,8 +62,12 @@ int text_wrap(const char *text, size_t max_chars, char *lines, size_t line_size,
         }
         int last = count == max_lines - 1;
         if (last && take < length) {
-            snprintf(line, line_size, "%s", p);
-            text_fit(line, room);
+            /* The rest does not fit: as much as the line holds, ending in
+             * ".." (the copy alone would be cut to the line's size without
+             * a mark). */
+            memcpy(line, p, room);
+            line[room] = '\0';
+            if (room >= 2) line[room - 2] = line[room - 1] = '.';
         } else {
             memcpy(line, p, take);
             line[take] = '\0';

@@ -6,7 +6,7 @@
 
 /* The side bar, top to bottom. A new panel goes here. */
 static const ui_section_t *const SECTIONS[] = {
-    &UI_STATUS, &UI_STATS, &UI_SHAPE, &UI_ELASTICITY, &UI_OVERLAYS, &UI_INTEGRATOR,
+    &UI_STATUS, &UI_STATS, &UI_SHAPE, &UI_ELASTICITY, &UI_OVERLAYS, &UI_INTEGRATOR, &UI_SCENE,
 };
 #define SECTION_COUNT (sizeof(SECTIONS) / sizeof(SECTIONS[0]))
 

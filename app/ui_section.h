@@ -27,6 +27,7 @@ extern const ui_section_t UI_SHAPE;      /* panel_shape.c */
 extern const ui_section_t UI_ELASTICITY; /* panel_elasticity.c */
 extern const ui_section_t UI_OVERLAYS;   /* panel_overlays.c */
 extern const ui_section_t UI_INTEGRATOR; /* panel_integrator.c */
+extern const ui_section_t UI_SCENE;      /* panel_scene.c */
 
 /* Where a panel's content is now; an empty rectangle when it is not shown. */
 SDL_Rect ui_section_content(const app_t *app, const ui_section_t *section);

@@ -28,6 +28,8 @@
 #include "app_image.h"
 #include "layout.h"
 #include "palette.h"
+#include "presets.h"
+#include "scene_file.h"
 
 #ifndef APP_SMOKE_HAVE_SDL
 #define APP_SMOKE_HAVE_SDL 0
@@ -456,7 +458,8 @@ static void check_layout(const char *size, int width, int height) {
     }
     const char *panels[] = {"H or F1: every key", "SIMULATION", "SHAPE", "ELASTICITY",
                             "OVERLAYS", "dim sleeping bodies", "INTEGRATOR", "energy drift",
-                            "-5 s", "now"};
+                            "-5 s", "now", "SCENE (PgDn, PgUp; Ctrl+S saves)", "sandbox",
+                            "timestep 1/120 s"};
     for (size_t i = 0; i < sizeof panels / sizeof panels[0]; i++) {
         int x, y;
         bool found = image_find_text(&image, panels[i], 0, 0, width, height, &x, &y, NULL);
@@ -838,7 +841,8 @@ static void test_bad_flags_are_refused(void) {
     EXPECT(run.status == 0, "--help exited with %d", run.status);
     const char *documented[] = {"--headless", "--frames", "--screenshot", "--script", ".png",
                                 "--integrator", "symplectic_euler", "wait", "click", "throw",
-                                "screenshot"};
+                                "screenshot", "FILE.scene", "FILE:LINE:COLUMN", "--save-dir",
+                                "PageDown", "open FILE", "pagedown"};
     for (size_t i = 0; i < sizeof documented / sizeof documented[0]; i++) {
         EXPECT(strstr(run.output, documented[i]) != NULL, "--help does not mention %s",
                documented[i]);
@@ -866,6 +870,7 @@ static void test_bad_scripts_are_refused(void) {
         {"range", "wheel 5\nspawn 999999\n", {":2:", "spawn count", NULL}},
         {"button", "drag sideways 0 0 1 1\n", {":1:", "mouse button 'sideways'", NULL}},
         {"format", "wait 2\nscreenshot shot.gif\n", {":2:", "'shot.gif'", ".png or .bmp"}},
+        {"open", "wait 2\nopen\n", {":2:", "'open' needs one file name", NULL}},
     };
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         char name[64];
@@ -935,7 +940,9 @@ static void test_help_lists_every_readme_key(void) {
                          "click 0 5\nwait 30\nmove px 5 5\n";
     if (run_script("help", script, NULL, &run) && load_shot("help_open", &image)) {
         const char *lines[] = {"SANDBOX CONTROLS", "Ctrl + left click, D, Del, Backspace",
-                               "frame every body", "N / Shift + N", "Z / Shift + Z", "Esc, Q"};
+                               "frame every body", "N / Shift + N", "Z / Shift + Z",
+                               "PageDown / PageUp", "Ctrl + S", "Game: Left / Right, A / D",
+                               "Game: Space", "Esc, Q"};
         for (size_t i = 0; i < sizeof lines / sizeof lines[0]; i++) {
             EXPECT(shows(&image, lines[i], true), "the help screen lacks '%s'", lines[i]);
         }
@@ -1207,6 +1214,370 @@ static void test_sleeping_bodies_drawn_dimmer(void) {
     }
 }
 
+/* ---- scene files, presets, saving and games ---- */
+
+/* The name the SCENE panel shows (in the accent colour, below its title). */
+static bool scene_name(const image_t *image, char *name, size_t max) {
+    int x, y;
+    name[0] = '\0';
+    layout_t layout = layout_of(image->width, image->height);
+    if (!image_find_text(image, "SCENE (", layout.sidebar.x, 0, image->width, image->height, &x,
+                         &y, NULL)) {
+        return false;
+    }
+    const unsigned char accent[3] = {PALETTE_ACCENT.r, PALETTE_ACCENT.g, PALETTE_ACCENT.b};
+    image_read_text(image, x, y + LAYOUT_LINE_H + 3 + 2, accent, name, max);
+    return name[0] != '\0';
+}
+
+static void preset_name(const char *path, char *name, size_t size) {
+    const char *base = strrchr(path, '/');
+    snprintf(name, size, "%s", base != NULL ? base + 1 : path);
+    char *dot = strstr(name, ".scene");
+    if (dot != NULL) *dot = '\0';
+}
+
+/* Whether the file names a game that the player controls (the pegs board
+ * takes no input: its keys stay the sandbox's). */
+static bool is_scene_game(const char *path) {
+    scene_file_error_t error;
+    scene_file_t *file = scene_file_load(path, &error);
+    bool game = file != NULL && scene_file_get_game(file)[0] != '\0' &&
+                strcmp(scene_file_get_game(file), "pegs") != 0;
+    scene_file_free(file);
+    return game;
+}
+
+static bool is_background_or_grid(const unsigned char *p) {
+    return same_color(p, PALETTE_BACKGROUND) || same_color(p, PALETTE_GRID);
+}
+
+static bool is_drawn(const unsigned char *p) {
+    return !is_background_or_grid(p);
+}
+
+/* Every preset opens from the command line, headless, and draws: its name
+ * and place in the SCENE panel, its bodies in the view; a game the player
+ * controls says its keys. */
+static void test_presets_open_from_the_command_line(void) {
+    static presets_t presets;
+    presets_load(&presets, "assets/scenes");
+    EXPECT(presets.count >= 11, "only %zu presets in assets/scenes", presets.count);
+    for (size_t i = 0; i < presets.count; i++) {
+        char name[64], shot_name[80], shot[256];
+        preset_name(presets.paths[i], name, sizeof name);
+        snprintf(shot_name, sizeof shot_name, "preset_%s", name);
+        snprintf(shot, sizeof shot, "%s", tmp_path(shot_name, ".bmp"));
+        remove(shot);
+        const char *args[] = {"--headless", "--size", SIZE_FLAG, "--frames", "30",
+                              presets.paths[i], "--screenshot", shot, NULL};
+        run_t run;
+        run_sandbox(&run, 60, args);
+        if (run.status != 0) {
+            fail("%s: exit status %d:\n%s", presets.paths[i], run.status, run.output);
+            continue;
+        }
+        image_t image;
+        if (!load_shot(shot_name, &image)) continue;
+        char shown[40];
+        EXPECT(scene_name(&image, shown, 30) && strcmp(shown, name) == 0,
+               "%s: the SCENE panel names '%s'", presets.paths[i], shown);
+        char position[32];
+        snprintf(position, sizeof position, "%zu of %zu", i + 2, presets.count + 1);
+        EXPECT(find_in_panel(&image, "SCENE (", position, NULL, NULL, NULL),
+               "%s: the SCENE panel does not say '%s'", presets.paths[i], position);
+        long drawn = image_count(&image, is_drawn, 0, 0, layout_800().view.w, HEIGHT);
+        EXPECT(drawn > 300, "%s: %ld pixels drawn in the view", presets.paths[i], drawn);
+        bool game = is_scene_game(presets.paths[i]);
+        EXPECT(game == shows(&image, "GAME KEYS: Left/Right, A/D move", false),
+               "%s: %s game, and the side bar %s its keys", presets.paths[i],
+               game ? "a" : "no", game ? "does not show" : "shows");
+        expect_text_inside(&image, name);
+        image_free(&image);
+    }
+    presets_free(&presets);
+}
+
+/* PageDown goes through the default scene and every preset in order, and
+ * round to the default scene; PageUp goes back, round to the last preset.
+ * Each opens with its name in the SCENE panel and on the status line. */
+static void test_scene_keys_cycle_through_the_presets(void) {
+    static presets_t presets;
+    presets_load(&presets, "assets/scenes");
+    size_t count = presets.count + 1;
+    char script[8192] = "move px 5 5\nscreenshot " TMP_DIR "/cycle_0.bmp\n";
+    size_t used = strlen(script);
+    for (size_t k = 1; k <= count; k++) {
+        used += (size_t)snprintf(script + used, sizeof script - used,
+                                 "key pagedown\nwait 1\nscreenshot " TMP_DIR "/cycle_%zu.bmp\n",
+                                 k);
+    }
+    used += (size_t)snprintf(script + used, sizeof script - used, "key pageup\nwait 1\n");
+    run_t run;
+    if (!run_script("cycle", script, NULL, &run)) {
+        presets_free(&presets);
+        return;
+    }
+    for (size_t k = 0; k <= count + 1; k++) {
+        char shot_name[32];
+        if (k <= count) snprintf(shot_name, sizeof shot_name, "cycle_%zu", k);
+        else snprintf(shot_name, sizeof shot_name, "cycle");
+        /* k presses of PageDown (the last: PageDown round, then PageUp). */
+        size_t index = k <= count ? k % count : count - 1;
+        char expected[64] = "sandbox";
+        if (index > 0) preset_name(presets.paths[index - 1], expected, sizeof expected);
+        image_t image;
+        if (!load_shot(shot_name, &image)) continue;
+        char shown[40];
+        EXPECT(scene_name(&image, shown, 30) && strcmp(shown, expected) == 0,
+               "after %zu keys the SCENE panel names '%s', expected '%s'", k, shown, expected);
+        char opened[80];
+        snprintf(opened, sizeof opened, "opened %s", expected);
+        EXPECT(k == 0 || shows(&image, opened, false), "after %zu keys no status '%s'", k,
+               opened);
+        image_free(&image);
+    }
+    presets_free(&presets);
+}
+
+/* A refused file on the command line: its FILE:LINE:COLUMN message and
+ * status 2. In the app (a file dropped on the window), the message as a
+ * warning, and the open scene as it was. */
+static void test_bad_scene_files_are_refused(void) {
+    const char *bad = TMP_DIR "/bad.scene";
+    if (!write_file(bad, "body a { box 1 1 }\nbody b { regular 3 -1 }\n")) return;
+    const char *args[] = {"--headless", bad, NULL};
+    const char *e1[] = {TMP_DIR "/bad.scene:2:20: expected the radius (m), a number > 0 and <= "
+                        "1e+09, found \"-1\"", NULL};
+    check_refusal("a malformed scene file", args, 2, e1);
+
+    const char *missing[] = {"--headless", TMP_DIR "/no_such.scene", NULL};
+    const char *e2[] = {TMP_DIR "/no_such.scene: cannot read", NULL};
+    check_refusal("a missing scene file", missing, 2, e2);
+
+    const char *no_paddle = TMP_DIR "/no_paddle.scene";
+    if (write_file(no_paddle, "game breakout\nbody ball { regular 8 0.2; velocity 1 1 }\n")) {
+        const char *game[] = {"--headless", no_paddle, NULL};
+        const char *e3[] = {"no_paddle.scene: breakout: the scene has no body named paddle",
+                            NULL};
+        check_refusal("a game that lacks its paddle", game, 2, e3);
+    }
+    const char *two[] = {"--headless", "assets/scenes/pegs.scene", "assets/scenes/pyramid.scene",
+                         NULL};
+    const char *e4[] = {"one scene file at a time", NULL};
+    check_refusal("two scene files", two, 2, e4);
+
+    /* In the app: the pyramid stays. */
+    char script[256];
+    snprintf(script, sizeof script, "move px 5 5\nwait 10\nopen %s\nwait 2\n", bad);
+    const char *flags[] = {"assets/scenes/pyramid.scene", NULL};
+    run_t run;
+    image_t image;
+    if (!run_script("bad_open", script, flags, &run) || !load_shot("bad_open", &image)) return;
+    EXPECT(strstr(run.output, "bad.scene:2:20: expected the radius") != NULL,
+           "no message on stderr:\n%s", run.output);
+    int x, y;
+    unsigned char color[3];
+    bool found = image_find_text(&image, "cannot open bad.scene:2:20:", layout_800().sidebar.x,
+                                 0, WIDTH, HEIGHT, &x, &y, color);
+    EXPECT(found && same_color(color, PALETTE_WARNING),
+           "no warning 'cannot open bad.scene:2:20:' on the status line");
+    if (found) {
+        char next[40];
+        image_read_text(&image, x, y + LAYOUT_LINE_H, color, next, 32);
+        EXPECT(strcmp(next, "expected the radius (m), a") == 0, "the message goes on '%s'",
+               next);
+    }
+    char shown[40], bodies[40];
+    EXPECT(scene_name(&image, shown, 30) && strcmp(shown, "pyramid") == 0,
+           "after a refused file the SCENE panel names '%s', not pyramid", shown);
+    unsigned long count = 0;
+    EXPECT(read_line_after(&image, "bodies ", bodies, 30) && sscanf(bodies, "%lu", &count) == 1 &&
+               count == 55,
+           "after a refused file the side bar counts 'bodies %s', not the pyramid's 55", bodies);
+    image_free(&image);
+}
+
+/* The number of bodies of a scene file, or -1 (with the message) when it does
+ * not load. */
+static long scene_file_bodies(const char *path, char *game, size_t game_size) {
+    scene_file_error_t error;
+    scene_file_t *file = scene_file_load(path, &error);
+    if (file == NULL) {
+        fail("%s", error.message);
+        return -1;
+    }
+    long bodies = (long)scene_bodies(scene_file_get_scene(file));
+    if (game != NULL) snprintf(game, game_size, "%s", scene_file_get_game(file));
+    scene_file_free(file);
+    return bodies;
+}
+
+/* Ctrl+S writes the scene to the first free saved-N.scene (never over a file
+ * already there), says where, and the file loads back with the same bodies:
+ * the default scene with three bodies dropped in it, and Breakout, which
+ * still names its game. */
+static void test_save_writes_scenes_that_load_back(void) {
+    const char *dir = TMP_DIR "/saves";
+    mkdir(dir, 0755);
+    char path[256];
+    for (int n = 1; n <= 6; n++) {
+        snprintf(path, sizeof path, "%s/saved-%d.scene", dir, n);
+        remove(path);
+    }
+    snprintf(path, sizeof path, "%s/saved-1.scene", dir);
+    if (!write_file(path, "# someone else's\n")) return;
+    const char *script = "click -5 3\nclick 0 3\nkey b\nclick 5 3\nwait 30\nkey ctrl+s\n"
+                         "move px 5 5\nscreenshot " TMP_DIR "/save_default.bmp\n"
+                         "open assets/scenes/breakout.scene\nwait 30\nkey ctrl+s\n"
+                         "screenshot " TMP_DIR "/save_game.bmp\nkey ctrl+s\nwait 1\n";
+    const char *flags[] = {"--save-dir", dir, NULL};
+    run_t run;
+    if (!run_script("save", script, flags, &run)) return;
+    char *mine = read_text_file(path);
+    EXPECT(mine != NULL && strcmp(mine, "# someone else's\n") == 0,
+           "saved-1.scene, which was there before, was replaced");
+    free(mine);
+    image_t image;
+    if (load_shot("save_default", &image)) {
+        EXPECT(shows(&image, "saved-2.scene (6 bodies)", false),
+               "no status line '... saved-2.scene (6 bodies)'");
+        image_free(&image);
+    }
+    char game[64];
+    snprintf(path, sizeof path, "%s/saved-2.scene", dir);
+    long bodies = scene_file_bodies(path, NULL, 0);
+    EXPECT(bodies == 6, "saved-2.scene (the default scene and 3 drops) holds %ld bodies", bodies);
+    long breakout = scene_file_bodies("assets/scenes/breakout.scene", NULL, 0);
+    for (int n = 3; n <= 4; n++) {
+        snprintf(path, sizeof path, "%s/saved-%d.scene", dir, n);
+        bodies = scene_file_bodies(path, game, sizeof game);
+        EXPECT(bodies == breakout && strcmp(game, "breakout") == 0,
+               "saved-%d.scene (Breakout after 0.5 s) holds %ld bodies, not %ld, and the game "
+               "'%s'", n, bodies, breakout, game);
+    }
+    snprintf(path, sizeof path, "%s/saved-5.scene", dir);
+    EXPECT(access(path, F_OK) != 0, "three presses of Ctrl+S wrote a fourth file");
+    if (load_shot("save_game", &image)) {
+        EXPECT(shows(&image, "saved-3.scene (55 bodies)", false),
+               "no status line '... saved-3.scene (55 bodies)'");
+        image_free(&image);
+    }
+}
+
+/* Near a colour (the game bodies' colours go through rounding). */
+static bool near_color(const unsigned char *p, int r, int g, int b) {
+    return abs(p[0] - r) <= 2 && abs(p[1] - g) <= 2 && abs(p[2] - b) <= 2;
+}
+
+static bool is_paddle(const unsigned char *p) {
+    return near_color(p, 217, 217, 230); /* color 0.85 0.85 0.9 */
+}
+
+static bool is_red_brick(const unsigned char *p) {
+    return near_color(p, 230, 77, 77); /* color 0.90 0.30 0.30 */
+}
+
+static bool is_gun(const unsigned char *p) {
+    return near_color(p, 102, 230, 128); /* color 0.4 0.9 0.5 */
+}
+
+static bool is_white(const unsigned char *p) {
+    return p[0] == 255 && p[1] == 255 && p[2] == 255;
+}
+
+/* The middle column of the pixels passing test in the view; -1 if none. */
+static double middle_x(const image_t *image, image_color_test_t test) {
+    int x0, y0, x1, y1;
+    if (!image_bounds(image, test, &x0, &y0, &x1, &y1)) return -1.0;
+    return 0.5 * (x0 + x1);
+}
+
+/* In Breakout, Right and A move the paddle (and no longer pan the view),
+ * Space does not pause (it fires) but Enter does; the side bar shows the
+ * score, the lives, the bricks and the keys, and the help screen says they
+ * come first; the overlays are off. In Space
+ * Invaders, Left moves the gun and Space fires a shot. */
+static void test_games_respond_to_their_keys(void) {
+    const char *script = "key h\nscreenshot " TMP_DIR "/game_help.bmp\nkey h\n"
+                         "move px 700 300\nscreenshot " TMP_DIR "/game_0.bmp\n"
+                         "keydown right\nwait 20\nkeyup right\nscreenshot " TMP_DIR "/game_1.bmp\n"
+                         "keydown a\nwait 10\nkeyup a\nscreenshot " TMP_DIR "/game_2.bmp\n"
+                         "key space\nwait 2\nscreenshot " TMP_DIR "/game_3.bmp\nkey enter\n"
+                         "wait 2\n";
+    const char *flags[] = {"assets/scenes/breakout.scene", NULL};
+    run_t run;
+    image_t shots[5];
+    const char *names[5] = {"game_0", "game_1", "game_2", "game_3", "game"};
+    if (!run_script("game", script, flags, &run)) return;
+    for (int i = 0; i < 5; i++) {
+        if (!load_shot(names[i], &shots[i])) {
+            for (int k = 0; k < i; k++) image_free(&shots[k]);
+            return;
+        }
+    }
+    double paddle[3];
+    for (int i = 0; i < 3; i++) paddle[i] = middle_x(&shots[i], is_paddle);
+    /* The view is 16 m wide in 528 pixels: 33 pixels a metre. Right for
+     * 1/3 s at 12 m/s is 4 m. */
+    EXPECT(paddle[0] > 0 && paddle[1] - paddle[0] > 100.0 && paddle[2] < paddle[1] - 30.0,
+           "the paddle's middle: %.0f at start, %.0f after Right, %.0f after A", paddle[0],
+           paddle[1], paddle[2]);
+    int b0[4], b2[4];
+    bool bricks = image_bounds(&shots[0], is_red_brick, &b0[0], &b0[1], &b0[2], &b0[3]) &&
+                  image_bounds(&shots[2], is_red_brick, &b2[0], &b2[1], &b2[2], &b2[3]);
+    EXPECT(bricks && memcmp(b0, b2, sizeof b0) == 0,
+           "the red bricks moved on screen: Right or A panned the view");
+    EXPECT(shows(&shots[0], "score 0  lives 3  bricks 50", false),
+           "no 'score 0  lives 3  bricks 50' in the side bar");
+    EXPECT(shows(&shots[0], "GAME KEYS: Left/Right, A/D move", false) &&
+               shows(&shots[0], "Space fires, Enter pauses", false),
+           "the side bar does not say the game's keys");
+    char state[8];
+    unsigned char color[3];
+    if (legend_state(&shots[0], "axes", state, color)) {
+        EXPECT(strcmp(state, "off") == 0, "the axes overlay is %s in a game", state);
+    }
+    char line[40];
+    EXPECT(find_in_panel(&shots[3], "SIMULATION", "running", NULL, NULL, NULL),
+           "Space paused the game");
+    EXPECT(find_in_panel(&shots[4], "SIMULATION", "PAUSED", NULL, NULL, NULL) &&
+               shows(&shots[4], "paused (Enter resumes)", false),
+           "Enter did not pause the game");
+    (void)line;
+    for (int i = 0; i < 5; i++) image_free(&shots[i]);
+    image_t help;
+    if (load_shot("game_help", &help)) {
+        EXPECT(shows(&help, "Now playing breakout: the Game: keys come first", true),
+               "the help screen does not say the game's keys come first");
+        image_free(&help);
+    }
+
+    /* Space Invaders: 1 s to the left, clear of the shields, then fire. */
+    const char *invaders = "move px 700 300\nkeydown left\nwait 60\nkeyup left\n"
+                           "screenshot " TMP_DIR "/invaders_0.bmp\nkey space\nwait 8\n";
+    const char *invaders_flags[] = {"assets/scenes/space_invaders.scene", NULL};
+    image_t before, after;
+    if (!run_script("invaders", invaders, invaders_flags, &run)) return;
+    if (!load_shot("invaders_0", &before)) return;
+    if (!load_shot("invaders", &after)) {
+        image_free(&before);
+        return;
+    }
+    int view_w = layout_800().view.w;
+    double gun = middle_x(&before, is_gun);
+    EXPECT(gun > 0 && gun < view_w / 2 - 150, "the gun is at %.0f after 1 s of Left", gun);
+    long shots_before = image_count(&before, is_white, 0, 0, view_w, HEIGHT);
+    long shots_after = image_count(&after, is_white, (int)gun - 10, 0, (int)gun + 10, HEIGHT);
+    EXPECT(shots_before == 0 && shots_after >= 8,
+           "white shot pixels: %ld before Space, %ld above the gun after", shots_before,
+           shots_after);
+    EXPECT(shows(&after, "score 0  lives 1  invaders 32", false),
+           "no 'score 0  lives 1  invaders 32' in the side bar");
+    image_free(&before);
+    image_free(&after);
+}
+
 /* ---- the documented pictures ---- */
 
 /* The line of docs/sandbox.md that runs ./sandbox with `marker`, split into
@@ -1318,6 +1689,10 @@ static void test_docs_pictures_regenerate(void) {
     check_doc_picture(doc, "--script app/scripts/demo.txt", NULL, NULL, "docs/sandbox.png");
     check_doc_picture(doc, "--script app/scripts/integrator.txt", NULL, NULL,
                       "docs/integrator.png");
+    check_doc_picture(doc, "--script app/scripts/breakout.txt", NULL, NULL, "docs/breakout.png");
+    check_doc_picture(doc, "--script app/scripts/space_invaders.txt", NULL, NULL,
+                      "docs/space_invaders.png");
+    check_doc_picture(doc, "--script app/scripts/pegs.txt", NULL, NULL, "docs/pegs.png");
     char *drop = doc_heredoc(doc, "drop.txt");
     EXPECT(drop != NULL, "docs/sandbox.md has no cat > drop.txt <<'EOF' example");
     if (drop != NULL) {
@@ -1354,6 +1729,12 @@ static const smoke_test_t TESTS[] = {
     {"app_smoke.energy_drift_chart_tells_the_schemes_apart",
      test_energy_drift_chart_tells_the_schemes_apart},
     {"app_smoke.sleeping_bodies_drawn_dimmer", test_sleeping_bodies_drawn_dimmer},
+    {"app_smoke.presets_open_from_the_command_line", test_presets_open_from_the_command_line},
+    {"app_smoke.scene_keys_cycle_through_the_presets",
+     test_scene_keys_cycle_through_the_presets},
+    {"app_smoke.bad_scene_files_are_refused", test_bad_scene_files_are_refused},
+    {"app_smoke.save_writes_scenes_that_load_back", test_save_writes_scenes_that_load_back},
+    {"app_smoke.games_respond_to_their_keys", test_games_respond_to_their_keys},
     {"app_smoke.png_screenshots_are_png", test_png_screenshots_are_png},
     {"app_smoke.bad_flags_are_refused", test_bad_flags_are_refused},
     {"app_smoke.bad_scripts_are_refused", test_bad_scripts_are_refused},

@@ -2,17 +2,26 @@
  * Unit tests of the sandbox's plain-C parts (no SDL): the numbers and lines
  * of the side bar (app/text.c, app/stats_text.c), the step clock
  * (app/step_clock.c), the layout (app/layout.c), the energy drift of the
- * INTEGRATOR panel (app/energy_drift.c) and the integrators by name
- * (app/integrator_choice.c, against the engine). Ends with "N passed, N
- * failed" like every test program make check runs.
+ * INTEGRATOR panel (app/energy_drift.c), the integrators by name
+ * (app/integrator_choice.c, against the engine), the list of scenes
+ * PageDown and PageUp go through (app/presets.c), the SCENE panel's words
+ * (app/scene_text.c), and the sandbox's scenes from scene files
+ * (app/sandbox_scene.c with the game rules, against the sanitized engine).
+ * Ends with "N passed, N failed" like every test program make check runs.
+ * Run from the repository root (it reads assets/scenes/).
  */
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include "energy_drift.h"
 #include "integrator_choice.h"
 #include "layout.h"
+#include "palette.h"
+#include "presets.h"
+#include "sandbox_scene.h"
+#include "scene_text.h"
 #include "stats_text.h"
 #include "step_clock.h"
 #include "text.h"
@@ -74,6 +83,16 @@ static void test_fit_and_wrap(void) {
            "text_wrap gave %d lines: \"%s\" / \"%s\"", n, lines[0], n > 1 ? lines[1] : "");
     n = text_wrap("short", 31, &lines[0][0], 40, 2);
     EXPECT(n == 1 && strcmp(lines[0], "short") == 0, "text_wrap of one word: %d lines", n);
+    /* A message longer than the lines: the last one ends in "..", also when
+     * the line's buffer is exactly one line long (it used to be cut
+     * without a mark). */
+    char three[3][LAYOUT_LINE_CHARS + 1];
+    n = text_wrap("cannot open bad.scene:2:20: expected the radius (m), a number > 0 and <= "
+                  "1e+09, found \"-1\"",
+                  LAYOUT_LINE_CHARS, &three[0][0], sizeof(three[0]), 3);
+    EXPECT(n == 3 && strlen(three[2]) == LAYOUT_LINE_CHARS &&
+               strcmp(three[2] + LAYOUT_LINE_CHARS - 2, "..") == 0,
+           "a message cut after 3 lines ends \"%s\"", n == 3 ? three[2] : "");
 }
 
 /* Every line of the SIMULATION panel fits the side bar, shows its numbers
@@ -160,6 +179,35 @@ static void test_clock_forgives_a_stall(void) {
            "forgave %.4f s", clock.forgiven);
 }
 
+/* A scene file's own timestep: the clock keeps real time at 60 frames per
+ * second for steps of 1/1000 s to 1/30 s, runs up to 1/30 s of steps a frame
+ * (never fewer than 4 steps), and a step longer than the debt limit still
+ * comes round. */
+static void test_clock_follows_the_scene_timestep(void) {
+    const double steps[] = {1.0 / 1000.0, 1.0 / 240.0, 1.0 / 120.0, 1.0 / 60.0, 1.0 / 30.0};
+    const int max_steps[] = {34, 8, 4, 4, 4};
+    for (size_t i = 0; i < sizeof steps / sizeof steps[0]; i++) {
+        step_clock_t clock = {0};
+        step_clock_set_step(&clock, steps[i]);
+        EXPECT(step_clock_max_steps(&clock) == max_steps[i], "dt = %g s: at most %d steps a "
+               "frame, expected %d", steps[i], step_clock_max_steps(&clock), max_steps[i]);
+        long total = 0;
+        for (int frame = 0; frame < 600; frame++) total += step_clock_advance(&clock, 1.0 / 60.0);
+        EXPECT(fabs(total * steps[i] - 10.0) <= steps[i] + 1e-9 && clock.forgiven == 0.0,
+               "dt = %g s: %ld steps (%.4f s) in 10 s of frames, %.4f s forgiven", steps[i],
+               total, total * steps[i], clock.forgiven);
+    }
+    step_clock_t slow = {0};
+    step_clock_set_step(&slow, 2.0);
+    long total = 0;
+    for (int frame = 0; frame < 630; frame++) total += step_clock_advance(&slow, 1.0 / 60.0);
+    EXPECT(total == 5 && slow.forgiven == 0.0, "steps of 2 s: %ld in 10.5 s, %.3f s forgiven",
+           total, slow.forgiven);
+    step_clock_set_step(&slow, 0.0);
+    EXPECT(step_clock_step(&slow) == STEP_CLOCK_STEP && slow.owed == 0.0,
+           "step 0 is not the default step");
+}
+
 static void test_layout_leaves_the_view_free(void) {
     const int sizes[2][2] = {{800, 600}, {1280, 720}};
     for (int i = 0; i < 2; i++) {
@@ -218,9 +266,9 @@ static void test_energy_drift_from_its_reference(void) {
            drift.drift, drift.reference);
     /* Paused: no column moves, but a body deleted meanwhile is a new reference. */
     size_t head = drift.head;
-    int steps = drift.steps;
+    double elapsed = drift.elapsed;
     energy_drift_sample(&drift, 0, 400.0, 2, 4);
-    EXPECT(drift.head == head && drift.steps == steps, "a paused frame moved the chart");
+    EXPECT(drift.head == head && drift.elapsed == elapsed, "a paused frame moved the chart");
     EXPECT(drift.reference == 400.0 && drift.drift == 0.0, "paused deletion: reference %g J",
            drift.reference);
     /* No energy to compare with (gravity off, all at rest). */
@@ -264,6 +312,27 @@ static void test_energy_drift_chart_window_and_scale(void) {
         EXPECT(fabs(energy_drift_scale(&drift) - scales[i]) < 1e-12,
                "scale %g for a drift of -%g, expected %g", energy_drift_scale(&drift),
                drifts[i], scales[i]);
+    }
+}
+
+/* With a scene's step of 1/60 s (two a column... and a half) or 1/240 s the
+ * chart still holds the last 5 s: its columns are time, not steps. */
+static void test_energy_drift_columns_follow_the_step(void) {
+    static energy_drift_t drift;
+    const double steps[] = {1.0 / 60.0, 1.0 / 240.0, 1.0 / 30.0};
+    for (size_t i = 0; i < sizeof steps / sizeof steps[0]; i++) {
+        energy_drift_init(&drift);
+        energy_drift_set_step(&drift, steps[i]);
+        int per_frame = (int)lround(1.0 / 60.0 / steps[i]);
+        if (per_frame < 1) per_frame = 1;
+        double frame_time = per_frame * steps[i];
+        /* 10 s of a drift rising 0.1% a second. */
+        for (double t = 0.0; t <= 10.0 + 1e-9; t += frame_time) {
+            energy_drift_sample(&drift, per_frame, 1000.0 * (1.0 + 0.001 * t), 3, 1);
+        }
+        const drift_column_t *oldest = energy_drift_column(&drift, DRIFT_COLUMNS - 1);
+        EXPECT(oldest->filled && fabs(oldest->low - 0.005) < 0.0002,
+               "dt = %g s: 5 s ago the chart shows %g, expected 0.005", steps[i], oldest->low);
     }
 }
 
@@ -357,6 +426,276 @@ static void test_integrators_by_name(void) {
     }
 }
 
+/* ---- scenes ---- */
+
+/* The presets' directory lists its *.scene files by name after the default
+ * scene; a scene is found by its path however it is written; PageDown and
+ * PageUp go round. */
+static void test_presets_list_the_scene_files(void) {
+    static presets_t presets;
+    presets_load(&presets, "assets/scenes");
+    EXPECT(presets.count >= 11, "%zu presets in assets/scenes", presets.count);
+    EXPECT(presets_scene_count(&presets) == presets.count + 1 && presets_path(&presets, 0) == NULL,
+           "the default scene is not first");
+    for (size_t i = 1; i < presets.count; i++) {
+        EXPECT(strcmp(presets.paths[i - 1], presets.paths[i]) < 0, "%s before %s",
+               presets.paths[i - 1], presets.paths[i]);
+    }
+    int pegs = presets_find(&presets, "./assets/scenes/../scenes/pegs.scene");
+    EXPECT(pegs > 0 && strstr(presets_path(&presets, (size_t)pegs), "pegs.scene") != NULL,
+           "pegs.scene found at %d", pegs);
+    EXPECT(presets_find(&presets, NULL) == 0, "the default scene is not at 0");
+    EXPECT(presets_find(&presets, "app/app.c") == -1 && presets_find(&presets, "no/such") == -1,
+           "a file that is not a preset is found in the list");
+    size_t last = presets_scene_count(&presets) - 1;
+    EXPECT(presets_next(&presets, (int)last, 1) == 0 && presets_next(&presets, 0, -1) == last &&
+               presets_next(&presets, 2, 1) == 3 && presets_next(&presets, -1, 1) == 0 &&
+               presets_next(&presets, -1, -1) == last,
+           "PageDown and PageUp do not go round the list");
+    presets_free(&presets);
+    presets_load(&presets, "no/such/directory");
+    EXPECT(presets.count == 0 && presets_scene_count(&presets) == 1,
+           "a missing directory lists %zu presets", presets.count);
+    presets_free(&presets);
+}
+
+/* The SCENE panel's lines fit the side bar and say what they should. */
+static void test_scene_panel_words(void) {
+    char line[SCENE_TEXT_SIZE];
+    scene_text_position(1, 12, line);
+    EXPECT(strcmp(line, "2 of 12") == 0, "position: \"%s\"", line);
+    scene_text_position(-1, 12, line);
+    EXPECT(strcmp(line, "file") == 0, "position of a file: \"%s\"", line);
+    scene_text_timestep(1.0 / 120.0, line);
+    EXPECT(strcmp(line, "timestep 1/120 s") == 0, "timestep: \"%s\"", line);
+    scene_text_timestep(0.003, line);
+    EXPECT(strcmp(line, "timestep 0.003 s") == 0, "timestep: \"%s\"", line);
+    scene_text_game("breakout", SCENE_TEXT_PLAYING, 3, 2, 47, line);
+    EXPECT(strcmp(line, "score 3  lives 2  bricks 47") == 0, "breakout: \"%s\"", line);
+    scene_text_game("space_invaders", SCENE_TEXT_PLAYING, 31, 1, 1, line);
+    EXPECT(strcmp(line, "score 31  lives 1  invaders 1") == 0, "invaders: \"%s\"", line);
+    scene_text_game("pegs", SCENE_TEXT_PLAYING, 12, 1, 24, line);
+    EXPECT(strcmp(line, "balls 24  through 12") == 0, "pegs: \"%s\"", line);
+    scene_text_game("breakout", SCENE_TEXT_WON, 50, 3, 0, line);
+    EXPECT(strcmp(line, "WON  score 50  R: again") == 0, "won: \"%s\"", line);
+    scene_text_game("space_invaders", SCENE_TEXT_LOST, 12, 0, 20, line);
+    EXPECT(strcmp(line, "LOST  score 12  R: again") == 0, "lost: \"%s\"", line);
+    scene_text_game("some_game", SCENE_TEXT_PLAYING, 2000000000, 2000000000, 2000000000, line);
+    EXPECT(strlen(line) <= LAYOUT_LINE_CHARS, "huge numbers: \"%s\"", line);
+}
+
+static bool same_rgb(rgb_color_t c, palette_rgb_t p) {
+    return lround(c.r * 255.0) == p.r && lround(c.g * 255.0) == p.g && lround(c.b * 255.0) == p.b;
+}
+
+/* The default scene is a scene file built into the app: the same container
+ * as before (the floor and walls in the static colour the smoke tests look
+ * for, gravity 10, contacts on, 1/120 s), and drops into it are refused or
+ * placed as before. */
+static void test_default_scene_is_a_scene_file(void) {
+    static sandbox_t sandbox;
+    sandbox_init(&sandbox, 1);
+    scene_t *scene = sandbox.scene;
+    EXPECT(sandbox.is_default && strcmp(sandbox.name, "sandbox") == 0 && sandbox.game == NULL,
+           "the default scene is \"%s\"", sandbox.name);
+    EXPECT(scene_bodies(scene) == 3, "%zu bodies in the default scene", scene_bodies(scene));
+    for (size_t i = 0; i < scene_bodies(scene); i++) {
+        body_t *body = scene_get_body(scene, i);
+        EXPECT(isinf(body_get_mass(body)) && same_rgb(body_get_color(body), PALETTE_STATIC) &&
+                   body_get_elasticity(body) == 0.0,
+               "static body %zu: mass %g, not in PALETTE_STATIC or elastic", i,
+               body_get_mass(body));
+    }
+    aabb_t floor = body_get_bounds(scene_get_body(scene, 0));
+    EXPECT(floor.min.x == -15.0 && floor.max.x == 15.0 && floor.min.y == -1.0 && floor.max.y == 0.0,
+           "the floor spans (%g, %g) to (%g, %g)", floor.min.x, floor.min.y, floor.max.x,
+           floor.max.y);
+    EXPECT(sandbox.home.min.x == -15.5 && sandbox.home.max.x == 15.5 &&
+               sandbox.home.min.y == -1.5 && sandbox.home.max.y == 30.5,
+           "the default view is (%g, %g) to (%g, %g)", sandbox.home.min.x, sandbox.home.min.y,
+           sandbox.home.max.x, sandbox.home.max.y);
+    EXPECT(sandbox.step == 1.0 / 120.0 && sandbox.gravity_on &&
+               scene_get_gravity(scene).y == -SANDBOX_GRAVITY,
+           "step %g, gravity %g", sandbox.step, scene_get_gravity(scene).y);
+    const char *problem = NULL;
+    list_t *shape = sandbox_make_shape(&sandbox, (shape_choice_t){SHAPE_BOX, 0, 0.5}, &problem);
+    vector_t placed;
+    const char *why = sandbox_place(&sandbox, shape, (vector_t){-14.5, 10.0}, &placed);
+    EXPECT(why != NULL && strcmp(why, "inside the left wall") == 0, "a drop in the left wall: %s",
+           why != NULL ? why : "accepted");
+    why = sandbox_place(&sandbox, shape, (vector_t){0.0, -1.4}, &placed);
+    EXPECT(why != NULL && strcmp(why, "outside the container") == 0, "a drop below the floor: %s",
+           why != NULL ? why : "accepted");
+    why = sandbox_place(&sandbox, shape, (vector_t){0.0, 0.1}, &placed);
+    EXPECT(why == NULL && fabs(placed.y - 0.3) < 1e-12, "a drop on the floor goes to y = %g",
+           placed.y);
+    list_free(shape);
+    sandbox_free(&sandbox);
+    /* docs/sandbox.md shows the default scene: the very text. */
+    FILE *doc = fopen("docs/sandbox.md", "rb");
+    static char text[200000];
+    size_t length = doc != NULL ? fread(text, 1, sizeof(text) - 1, doc) : 0;
+    if (doc != NULL) fclose(doc);
+    text[length] = '\0';
+    const char *start = strstr(text, "```scene\n# The sandbox's default scene");
+    const char *end = start != NULL ? strstr(start + 9, "```") : NULL;
+    EXPECT(start != NULL && end != NULL &&
+               (size_t)(end - start - 9) == strlen(SANDBOX_DEFAULT_SCENE) &&
+               strncmp(start + 9, SANDBOX_DEFAULT_SCENE, strlen(SANDBOX_DEFAULT_SCENE)) == 0,
+           "docs/sandbox.md does not show SANDBOX_DEFAULT_SCENE word for word");
+}
+
+/* Every preset opens: its view, timestep and integrator are the file's, its
+ * game starts; a refused file leaves the open scene as it was; R reads the
+ * file again, keeping the integrator the user chose. */
+static void test_scene_files_open_and_refusals_keep_the_scene(void) {
+    static sandbox_t sandbox;
+    static presets_t presets;
+    char error[600];
+    sandbox_init(&sandbox, 1);
+    presets_load(&presets, "assets/scenes");
+    for (size_t i = 0; i < presets.count; i++) {
+        const char *path = presets.paths[i];
+        if (!sandbox_open(&sandbox, path, error, sizeof(error))) {
+            fail("%s is refused: %s", path, error);
+            continue;
+        }
+        scene_file_view_t view = scene_file_get_view(sandbox.file);
+        EXPECT(!sandbox.is_default && strstr(path, sandbox.name) != NULL &&
+                   sandbox.step == scene_file_get_timestep(sandbox.file) && view.has_view &&
+                   fabs(sandbox.home.max.x - sandbox.home.min.x - view.width) < 1e-9,
+               "%s: opened as \"%s\", step %g", path, sandbox.name, sandbox.step);
+        EXPECT((sandbox.game != NULL) == (scene_file_get_game(sandbox.file)[0] != '\0'),
+               "%s: the game %s started", path, sandbox.game != NULL ? "" : "not");
+        for (int step = 0; step < 30; step++) sandbox_step(&sandbox);
+    }
+    EXPECT(sandbox_open(&sandbox, "assets/scenes/orbits.scene", error, sizeof(error)) &&
+               sandbox.integrator == INTEGRATOR_SYMPLECTIC_EULER,
+           "orbits.scene does not step with its own integrator");
+    scene_t *kept = sandbox.scene;
+    size_t bodies = scene_bodies(kept);
+    const char *bad = "build/tests/app_units_bad.scene";
+    FILE *file = fopen(bad, "w");
+    if (file != NULL) {
+        fputs("body a { box 1 1 }\nbody b { regular 3 -1 }\n", file);
+        fclose(file);
+    }
+    EXPECT(!sandbox_open(&sandbox, bad, error, sizeof(error)) &&
+               strstr(error, "app_units_bad.scene:2:20: expected the radius") != NULL,
+           "a bad file: \"%s\"", error);
+    EXPECT(sandbox.scene == kept && scene_bodies(kept) == bodies &&
+               strcmp(sandbox.name, "orbits") == 0,
+           "a refused file changed the open scene");
+    EXPECT(!sandbox_open(&sandbox, "no/such.scene", error, sizeof(error)) &&
+               strstr(error, "no/such.scene: cannot read") != NULL,
+           "a missing file: \"%s\"", error);
+    /* A file whose game lacks what it needs. */
+    file = fopen(bad, "w");
+    if (file != NULL) {
+        fputs("game breakout\nbody ball { regular 8 0.2; velocity 1 1 }\n", file);
+        fclose(file);
+    }
+    EXPECT(!sandbox_open(&sandbox, bad, error, sizeof(error)) &&
+               strstr(error, "breakout: the scene has no body named paddle") != NULL &&
+               sandbox.scene == kept,
+           "a game that cannot start: \"%s\"", error);
+    remove(bad);
+    sandbox_set_integrator(&sandbox, INTEGRATOR_RK4);
+    for (int step = 0; step < 30; step++) sandbox_step(&sandbox);
+    EXPECT(sandbox_reset(&sandbox, error, sizeof(error)) &&
+               sandbox.integrator == INTEGRATOR_RK4 &&
+               scene_get_integrator(sandbox.scene) == INTEGRATOR_RK4,
+           "R forgot the integrator");
+    EXPECT(sandbox_open(&sandbox, NULL, error, sizeof(error)) && sandbox.is_default &&
+               sandbox.integrator == INTEGRATOR_SEED && scene_bodies(sandbox.scene) == 3,
+           "the default scene does not open again");
+    presets_free(&presets);
+    sandbox_free(&sandbox);
+}
+
+/* A grabbed shot that a destructive collision removes (and the engine frees
+ * in the same tick) is let go: the grab spring never touches it again (the
+ * sanitizer would tell). The game's keys move the gun and fire. */
+static void test_grabbed_body_destroyed_is_let_go(void) {
+    static sandbox_t sandbox;
+    char error[600];
+    sandbox_init(&sandbox, 1);
+    if (!sandbox_open(&sandbox, "assets/scenes/space_invaders.scene", error, sizeof(error))) {
+        fail("space_invaders.scene: %s", error);
+        sandbox_free(&sandbox);
+        return;
+    }
+    body_t *gun = scene_file_find_body(sandbox.file, "player");
+    double x0 = body_get_centroid(gun).x;
+    sandbox.input = (game_input_t){-1.0, true};
+    sandbox_step(&sandbox);
+    sandbox_step(&sandbox);
+    sandbox.input = (game_input_t){0.0, false};
+    body_t *shot = NULL;
+    for (size_t i = 0; i < scene_bodies(sandbox.scene); i++) {
+        if (game_body_has_tag(scene_get_body(sandbox.scene, i), "shot")) {
+            shot = scene_get_body(sandbox.scene, i);
+        }
+    }
+    EXPECT(body_get_centroid(gun).x < x0 - 0.05, "the gun did not move left (x %g from %g)",
+           body_get_centroid(gun).x, x0);
+    EXPECT(shot != NULL, "Space fired no shot");
+    if (shot == NULL) {
+        sandbox_free(&sandbox);
+        return;
+    }
+    /* Held by the grab spring just under the middle shield: it flies into it. */
+    sandbox_grab(&sandbox, shot, body_get_centroid(shot));
+    sandbox_grab_move(&sandbox, (vector_t){-0.5, 3.0});
+    int steps = 0;
+    while (sandbox.grab.body != NULL && steps < 240) {
+        sandbox_step(&sandbox);
+        steps++;
+    }
+    EXPECT(sandbox.grab.body == NULL, "the shot is still held after %d steps", steps);
+    for (int i = 0; i < 60; i++) sandbox_step(&sandbox);
+    sandbox_free(&sandbox);
+}
+
+/* The energy the side bar shows counts the file's springs and Newtonian
+ * gravity: on the orbits, kinetic energy alone swings by tens of percent,
+ * the whole stays within 0.1% (symplectic Euler). */
+static void test_energy_counts_springs_and_newton(void) {
+    static sandbox_t sandbox;
+    char error[600];
+    sandbox_init(&sandbox, 1);
+    if (!sandbox_open(&sandbox, "assets/scenes/orbits.scene", error, sizeof(error))) {
+        fail("orbits.scene: %s", error);
+        sandbox_free(&sandbox);
+        return;
+    }
+    sandbox_totals_t start = sandbox_totals(&sandbox);
+    double e0 = start.kinetic + start.potential, worst = 0.0;
+    for (int step = 0; step < 1200; step++) {
+        sandbox_step(&sandbox);
+        sandbox_totals_t now = sandbox_totals(&sandbox);
+        worst = fmax(worst, fabs((now.kinetic + now.potential - e0) / e0));
+    }
+    EXPECT(start.potential < 0.0 && worst < 0.001,
+           "orbits: potential %g J, energy drifts %.4f%% in 10 s", start.potential, 100 * worst);
+    /* One spring, to a static anchor: 1/2 k d^2 with d the distance between
+     * the centroids. */
+    if (sandbox_open(&sandbox, "assets/scenes/stiff_spring.scene", error, sizeof(error))) {
+        scene_file_force_t spring = scene_file_get_force(sandbox.file, 0);
+        double d = vec_get_length(vec_subtract(body_get_centroid(spring.body1),
+                                               body_get_centroid(spring.body2)));
+        sandbox_set_gravity(&sandbox, false);
+        sandbox_totals_t totals = sandbox_totals(&sandbox);
+        EXPECT(spring.kind == SCENE_FILE_SPRING &&
+                   fabs(totals.potential - 0.5 * spring.constant * d * d) < 1e-9 * spring.constant,
+               "stiff_spring: potential %g J, expected %g J", totals.potential,
+               0.5 * spring.constant * d * d);
+    } else {
+        fail("stiff_spring.scene: %s", error);
+    }
+    sandbox_free(&sandbox);
+}
+
 typedef struct {
     const char *name;
     void (*run)(void);
@@ -375,6 +714,15 @@ static const unit_test_t TESTS[] = {
     {"app_units.energy_drift_chart_window_and_scale", test_energy_drift_chart_window_and_scale},
     {"app_units.energy_drift_text_fits", test_energy_drift_text_fits},
     {"app_units.integrators_by_name", test_integrators_by_name},
+    {"app_units.clock_follows_the_scene_timestep", test_clock_follows_the_scene_timestep},
+    {"app_units.energy_drift_columns_follow_the_step", test_energy_drift_columns_follow_the_step},
+    {"app_units.presets_list_the_scene_files", test_presets_list_the_scene_files},
+    {"app_units.scene_panel_words", test_scene_panel_words},
+    {"app_units.default_scene_is_a_scene_file", test_default_scene_is_a_scene_file},
+    {"app_units.scene_files_open_and_refusals_keep_the_scene",
+     test_scene_files_open_and_refusals_keep_the_scene},
+    {"app_units.grabbed_body_destroyed_is_let_go", test_grabbed_body_destroyed_is_let_go},
+    {"app_units.energy_counts_springs_and_newton", test_energy_counts_springs_and_newton},
 };
 
 int main(void) {

@@ -47,6 +47,10 @@ game_status_t game_status(const game_t *game) {
     return game->rules->status(game->state);
 }
 
+bool game_takes_input(const game_t *game) {
+    return game != NULL && game->rules->takes_input;
+}
+
 void game_free(game_t *game) {
     if (game == NULL) return;
     game->rules->free(game->state);

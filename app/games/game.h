@@ -60,6 +60,9 @@ typedef struct {
     void (*update)(void *state, game_input_t input, double dt);
     game_status_t (*status)(const void *state);
     void (*free)(void *state);
+    /* Whether the player's input does anything (the pegs board ignores it):
+     * the sandbox gives the game its keys only then. */
+    bool takes_input;
 } game_rules_t;
 
 extern const game_rules_t BREAKOUT_RULES;
@@ -86,6 +89,9 @@ game_t *game_start(scene_file_t *file, char *error, size_t error_size);
 void game_update(game_t *game, game_input_t input, double dt);
 
 game_status_t game_status(const game_t *game);
+
+/* Whether the game reads game_input_t (its rules' takes_input). */
+bool game_takes_input(const game_t *game);
 
 /* Frees the game's state (not the scene). NULL is allowed. */
 void game_free(game_t *game);

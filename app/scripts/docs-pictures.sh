@@ -1,6 +1,7 @@
 #!/bin/sh
 # Redraws the pictures of docs/sandbox.md (docs/sandbox.png, docs/drop.png,
-# docs/integrator.png)
+# docs/integrator.png, and the games: docs/breakout.png,
+# docs/space_invaders.png, docs/pegs.png)
 # by running the very commands it shows, so the pictures and the text agree.
 # make check's smoke test app_smoke.docs_pictures_regenerate runs the same
 # commands and compares the result with the committed pictures; run this
@@ -23,6 +24,13 @@ integrator=$(grep -E '^\./sandbox .*--script app/scripts/integrator\.txt .*--scr
 echo "$integrator"
 eval "$integrator"
 
+# The games: the lines that run app/scripts/GAME.txt on assets/scenes/GAME.scene.
+for game in breakout space_invaders pegs; do
+    line=$(grep -E "^\./sandbox .*--script app/scripts/$game\.txt .*--screenshot docs/$game\.png" "$doc")
+    echo "$line"
+    eval "$line"
+done
+
 # docs/drop.png: the drop.txt example, run in a scratch directory.
 sed -n "/^cat > drop.txt <<'EOF'\$/,/^EOF\$/p" "$doc" | sed '1d;$d' > "$tmp/drop.txt"
 drop=$(grep -E '^\./sandbox .*--script drop\.txt .*--screenshot drop\.png' "$doc")
@@ -30,4 +38,5 @@ echo "$drop"
 ln -s "$root/sandbox" "$tmp/sandbox"
 (cd "$tmp" && eval "$drop")
 cp "$tmp/drop.png" docs/drop.png
-echo "redrew docs/sandbox.png, docs/drop.png and docs/integrator.png"
+echo "redrew docs/sandbox.png, docs/drop.png, docs/integrator.png, docs/breakout.png,"
+echo "docs/space_invaders.png and docs/pegs.png"
