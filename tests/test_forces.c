@@ -325,6 +325,27 @@ static void physics_handler_applies_the_formula_along_any_axis(void) {
     body_free(b);
 }
 
+/* A ball dropped between two pegs meets both in one tick at elasticity 1.
+ * Each impulse is computed from the velocity the other left, so the ball
+ * bounces off one and then the other, never faster than it came. Before,
+ * both came from its old velocity: the speed rose from 4 to 7.06 m/s. */
+static void a_ball_meeting_two_pegs_in_one_tick_gains_no_energy(void) {
+    scene_t *scene = scene_init();
+    body_t *ball = added(scene, body_init(polygon_make_regular(16, 0.5, (vector_t){0, 0.9}, 0),
+                                          1.0, BLUE));
+    body_t *left = added(scene, square((vector_t){-0.6, 0.0}, 0.3, INFINITY));
+    body_t *right = added(scene, square((vector_t){0.6, 0.0}, 0.3, INFINITY));
+    body_set_velocity(ball, (vector_t){0.0, -4.0});
+    create_physics_collision(scene, ball, left, 1.0);
+    create_physics_collision(scene, ball, right, 1.0);
+    for (int i = 0; i < 30; i++) {
+        scene_tick(scene, 1.0 / 60.0);
+        CHECK(vec_get_length(body_get_velocity(ball)) <= 4.0 + 1e-12);
+    }
+    CHECK(body_get_velocity(ball).y > 0.0); /* it bounced */
+    scene_free(scene);
+}
+
 static void physics_handler_with_infinite_masses(void) {
     /* One INFINITY: the reduced mass is the other body's mass, so a wall
      * reflects the normal velocity (e = 1) and does not move. */
@@ -1082,6 +1103,7 @@ static void bad_input_aborts_with_message(void) {
 }
 
 TEST_SUITE(forces, TEST_CASE(spring_is_hooke_with_rest_length_zero),
+           TEST_CASE(a_ball_meeting_two_pegs_in_one_tick_gains_no_energy),
            TEST_CASE(spring_oscillator_matches_the_cosine),
            TEST_CASE(gravity_follows_the_inverse_square_law),
            TEST_CASE(gravity_is_left_out_when_it_cannot_be_applied),

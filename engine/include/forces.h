@@ -88,6 +88,11 @@ void create_destructive_collision(scene_t *scene, body_t *body1, body_t *body2);
  * (the other body's mass when one is INFINITY); body2 gets the opposite
  * impulse. The elasticity is force_const. aux is unused. An impulse that is
  * not finite stops the program, naming this function.
+ *
+ * u is the velocity with the impulses already added in this tick, so a
+ * body that meets two others in one tick bounces off each in turn (applied
+ * twice from its old velocity, the impulses added energy); a pair that is
+ * no longer approaching along the axis (u_a - u_b <= 0) gets none.
  */
 void physics_collision_handler(body_t *body1, body_t *body2, vector_t axis, void *aux,
                                double force_const);

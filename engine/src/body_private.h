@@ -88,6 +88,11 @@ static inline void body_push(body_t *body, vector_t force) {
     }
 }
 
+/* The velocity with the impulses accumulated for the step applied. */
+static inline vector_t body_velocity_after_impulses(const body_t *body) {
+    return vec_add(body->velocity, vec_multiply(body->inverse_mass, body->impulse));
+}
+
 /* Clears the force, torque and impulses accumulated for the step. */
 static inline void body_clear_accumulators(body_t *body) {
     body->force = VEC_ZERO;

@@ -425,8 +425,12 @@ void physics_collision_handler(body_t *body1, body_t *body2, vector_t axis, void
             "elasticity must be finite and >= 0 (got %g)", force_const);
     if (isinf(body1->mass) && isinf(body2->mass)) return; /* neither can move */
     double mu = reduced_mass(body1, body2);
-    double u1 = vec_dot(body1->velocity, axis);
-    double u2 = vec_dot(body2->velocity, axis);
+    /* The velocities as this tick's impulses left them: a body that meets
+     * two others in one tick bounces off each in turn, not twice from its
+     * old velocity (which added energy: a ball between two pegs). */
+    double u1 = vec_dot(body_velocity_after_impulses(body1), axis);
+    double u2 = vec_dot(body_velocity_after_impulses(body2), axis);
+    if (u1 - u2 <= 0.0) return; /* already parting along the axis */
     vector_t impulse = vec_multiply(mu * (1.0 + force_const) * (u2 - u1), axis);
     /* Checked here so that the message names this function, not
      * body_add_impulse. */
