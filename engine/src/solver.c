@@ -5,6 +5,7 @@
 #include "solver_wide.h"
 
 const double SOLVER_RESTITUTION_THRESHOLD = 1.0;
+const double SOLVER_FREE_RESTITUTION_THRESHOLD = 1e-3;
 const double SOLVER_LINEAR_SLOP = 0.001;
 const double SOLVER_SLOP_FRACTION = 0.01;
 /* 0.2 is Box2D's; 0.4 collapses a 40-row pyramid (measured). */
@@ -65,6 +66,19 @@ static double time_of_impact(double s, double v, double a, double dt) {
     return best <= dt ? best : -1.0;
 }
 
+/* The approach speed (m/s) from which an elastic contact bounces: lower for
+ * a pair that nothing accelerates (solver.h). Inelastic contacts keep the
+ * ordinary threshold, which also decides which of their approaches are
+ * timed as impacts. */
+static inline double bounce_threshold(double restitution, const solver_state_t *sa,
+                                      const solver_state_t *sb) {
+    if (restitution > 0.0 && sa->acceleration.x == 0.0 && sa->acceleration.y == 0.0 &&
+        sb->acceleration.x == 0.0 && sb->acceleration.y == 0.0) {
+        return SOLVER_FREE_RESTITUTION_THRESHOLD;
+    }
+    return SOLVER_RESTITUTION_THRESHOLD;
+}
+
 /*
  * The lower bound on a point's end-of-step relative normal velocity.
  *
@@ -113,7 +127,7 @@ static bool set_target(solver_point_t *p, vector_t r_a, vector_t r_b, vector_t n
      * impact, timed, does. */
     double closing =
         w > 0.0 ? min_of((-p->separation / dt - vec_dot(normal, drift)) / w, 0.0) : -INFINITY;
-    if (tau >= 0.0 && vi < -SOLVER_RESTITUTION_THRESHOLD) {
+    if (tau >= 0.0 && vi < -bounce_threshold(restitution, sa, sb)) {
         p->impact_time = tau;
         double after = an * (dt - tau);
         if (restitution > 0.0 && -restitution * vi + after >= 0.0) {
@@ -290,9 +304,9 @@ static double approach_of(const solver_point_t *p, double vn) {
 
 /* Whether an approach calls for a bounce: a pending impact until it has
  * bounced, a touching point while it approaches faster than the threshold. */
-static bool needs_bounce(const solver_point_t *p, double approach) {
+static bool needs_bounce(const solver_point_t *p, double approach, double threshold) {
     if (!isnan(p->impact_offset)) return approach < 0.0;
-    return approach < -SOLVER_RESTITUTION_THRESHOLD;
+    return approach < -threshold;
 }
 
 /*
@@ -353,15 +367,17 @@ static void impact_friction(solver_contact_t *c, solver_velocity_t *a, solver_ve
  * energy by -(1 - e^2) x.K.x / 2: e^2 of the approach energy returns, never
  * more. Returns whether it applied an impulse.
  */
-static bool bounce_contact(solver_contact_t *c, solver_velocity_t *velocities) {
+static bool bounce_contact(solver_contact_t *c, solver_velocity_t *velocities,
+                           const solver_state_t *states) {
     solver_velocity_t a = velocities[c->a], b = velocities[c->b];
+    double threshold = bounce_threshold(c->restitution, &states[c->a], &states[c->b]);
     double approach[2] = {NAN, NAN};
     bool wanted = false;
     for (int i = 0; i < c->point_count; i++) {
         const solver_point_t *p = &c->points[i];
         double vn = relative_along(&a, &b, c->normal, p->rn_a, p->rn_b);
         approach[i] = approach_of(p, vn);
-        wanted |= !isnan(approach[i]) && needs_bounce(p, approach[i]);
+        wanted |= !isnan(approach[i]) && needs_bounce(p, approach[i], threshold);
     }
     if (!wanted) return false;
     double x[2];
@@ -397,11 +413,13 @@ static bool bounce_contact(solver_contact_t *c, solver_velocity_t *velocities) {
  * off). Contacts without elasticity skip it.
  */
 static void collision_pass(solver_contact_t *contacts, size_t count, solver_velocity_t *velocities,
-                           int passes) {
+                           const solver_state_t *states, int passes) {
     for (int pass = 0; pass < passes; pass++) {
         bool applied = false;
         for (size_t i = 0; i < count; i++) {
-            if (contacts[i].restitution > 0.0) applied |= bounce_contact(&contacts[i], velocities);
+            if (contacts[i].restitution > 0.0) {
+                applied |= bounce_contact(&contacts[i], velocities, states);
+            }
         }
         if (!applied) return;
     }
@@ -587,7 +605,8 @@ void solver_solve(solver_wide_t *wide, shock_t *shock, solver_contact_t *contact
         warm_start(&contacts[wide->loose[i]], velocities);
     }
     if (any_elastic) {
-        collision_pass(contacts, contact_count, velocities, settings->velocity_iterations);
+        collision_pass(contacts, contact_count, velocities, bodies->states,
+                       settings->velocity_iterations);
     }
     /* Shock propagation before the last iteration, which then spreads its
      * pushes back over both bodies of each contact (shock.h). */
