@@ -113,6 +113,9 @@ typedef struct {
     uint32_t a, b;           /* body rows */
     int point_count;
     bool block;
+    /* The two points are an incident edge's own ends (manifold_features_t),
+     * so the block solve may take a worse condition (solver.c). */
+    bool edge_ends;
     vector_t normal;         /* unit, from a toward b; the tangent is perp(normal) */
     double friction, restitution;
     double slop;             /* overlap the position pass leaves alone (m): solver_contact_slop */
