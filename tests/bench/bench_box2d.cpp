@@ -14,7 +14,9 @@
  *   box2d           all defaults, every scene;
  *   box2d-nosleep   sleeping off (SetAllowSleeping(false)) on the scenes
  *                   where bodies come to rest (pile, pyramid, stack2,
- *                   overlap) and orbit, since our engine has no sleeping (in
+ *                   overlap, and the stability scenes column, heavytop,
+ *                   drop, coincide, settle, scaled, far) and orbit, since
+ *                   our engine's benchmark variant runs without sleeping (in
  *                   orbit the heavy body moves at 0.01 m/s, under Box2D's
  *                   sleep tolerance, and loses its velocity every time it
  *                   falls asleep);
@@ -245,7 +247,7 @@ const bench_ops_t box2d_ops = {
 };
 
 const bench_ops_t box2d_nosleep_ops = {
-    "box2d-nosleep",   "pile,pyramid,stack2,overlap,orbit", 0,
+    "box2d-nosleep",   "pile,pyramid,stack2,overlap,orbit,column,heavytop,drop,coincide,settle,scaled,far", 0,
     0,                 b2_describe_none,              b2_world_new_nosleep,
     b2_world_free,     b2_add_static_box,             b2_add_body,
     b2_set_velocity,   b2_add_gravity_pair,           b2_step,
