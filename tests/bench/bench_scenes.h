@@ -309,9 +309,10 @@ static inline void pyramid_run(const bench_ops_t *ops, const bench_case_t *c, be
     pyramid_result_t r;
     out->step_ms = pyramid_generic(ops, &cfg, &r, 0);
     snprintf(out->quality, sizeof out->quality,
-             "top_drop=%.4g max_penetration=%.4g steps=%d kinetic_energy=%.4g standing=%d",
+             "top_drop=%.4g max_penetration=%.4g steps=%d kinetic_energy=%.4g standing=%d "
+             "top_drift=%.4g",
              r.top_drop, r.max_penetration, cfg.steps, r.kinetic_energy,
-             r.top_drop > -0.5 && fabs(r.top_drift) < 0.5);
+             r.top_drop > -0.5 && fabs(r.top_drift) < 0.5, r.top_drift);
 }
 
 /* ---- bounce(e) ----

@@ -428,7 +428,10 @@ static void springs_section(void) {
         "or, for a scheme with no stable step, unstable everywhere with its energy factor within "
         "5% of theory (on the factor minus 1). Our springs are `create_spring` (rest length 0) "
         "and, for damping, `create_drag` on the moving body; the peers' fixed end sits 1 m away "
-        "with a 1 m rest length, the same linear force along the spring.");
+        "with a 1 m rest length, the same linear force along the spring.\n\n"
+        "![Energy factor per step of an undamped spring against omega dt: each integrator's "
+        "theory (lines; symplectic Euler's lies under velocity Verlet's) and this engine's "
+        "runs (dots), with the peers' runs](stability/springs.svg)");
     const spring_case_t cases[] = {
         {"spring", SCENE_SPRING, 0.0, 0.0},
         {"spring", SCENE_SPRING, 0.1, 0.1},
@@ -626,7 +629,7 @@ static void mass_section(void) {
          "is 1.5 times heavier than a support leaves 0.027 J at r = 100 and collapses r = 1000 "
          "too; holding the heavy body by all its supports at once (a small projected "
          "Gauss-Seidel, lower bodies still) changes little (2.0 J). No contained change fixed it; "
-         "it stays an open problem (docs/stability.md's last section).\n");
+         "it stays an open problem (Open problems, below).\n");
 
     /* seed-style pair collisions */
     t = new_table(
@@ -879,10 +882,10 @@ static const char *pyramid_text(const char *line, bool *ok, bool *rests) {
     bool at_rest = num(line, "kinetic_energy") < 1e-3;
     if (ok) *ok = standing && fabs(num(line, "top_drop")) < 0.01 && num(line, "max_penetration") < 0.01;
     if (rests) *rests = at_rest;
-    snprintf(buffers[next], CELL, "%s, %s: top drop %s m, deepest %s m, KE %s J",
+    snprintf(buffers[next], CELL, "%s, %s: top drop %s m, drift %s m, deepest %s m, KE %s J",
              standing ? "upright" : "FALLEN", at_rest ? "at rest" : "MOVING",
-             G(num(line, "top_drop")), G(num(line, "max_penetration")),
-             G(num(line, "kinetic_energy")));
+             G(num(line, "top_drop")), G(num(line, "top_drift")),
+             G(num(line, "max_penetration")), G(num(line, "kinetic_energy")));
     return buffers[next];
 }
 
@@ -919,7 +922,7 @@ static const char *const PYRAMID_LIMIT_NOTE =
     "But the benchmark's own pile(10000) run goes from 0.274 to 0.381 m, past its 0.30 bound, "
     "and the pyramids' tops at 10 s from 0.08 and 0.65 mm down to 0.96 and 1.4 mm; the rule "
     "for this work is that every benchmark figure holds, so the band is not applied and the "
-    "trade is left to decide (docs/stability.md's open problems). The same single run of "
+    "trade is left to decide (Open problems, below). The same single run of "
     "pile(10000) reads 0.27 to 0.36 m over seeds with the engine unchanged, so it cannot tell "
     "a better solver from a worse one.\n";
 
@@ -930,8 +933,9 @@ static void stacks_section(void) {
         s, NULL,
         "`column(20)`: 20 unit boxes one on another, each shifted up to 1 cm sideways, 60 s. "
         "`pyramid(40)`: 820 unit boxes, 60 s. Verdicts: the column upright with kinetic energy "
-        "under 1e-6 J and the top drifted under 1 cm; the pyramid upright, top down by less than "
-        "1 cm, kinetic energy under 1e-3 J. `pile(N)`: the benchmark's pile (N polygons of 3 to 8 "
+        "under 1e-6 J and the top drifted under 1 cm; the pyramid upright, its top within 1 cm "
+        "of its height and the deepest penetration under 1 cm (asserted), at rest when its "
+        "kinetic energy is under 1e-3 J (reported). `pile(N)`: the benchmark's pile (N polygons of 3 to 8 "
         "sides dropped into a container) for 70 s: its motion from 60 s on; verdict: total "
         "kinetic energy under 0.5 J and momentum under 1 N s, with sleeping off (with sleeping on "
         "reported). `pile(10000)`: the deepest penetration at 10 s, at most 0.30 m.",
@@ -1282,12 +1286,14 @@ static void child_body_init(const void *arg) {
     body_free(b);
 }
 
-/* Drops the shape (at 1.5 m, turned 0.3 rad) on a floor for 5 s; exits 0
- * when every state stayed finite and it ended at rest, 3 otherwise. */
+/* Drops the shape (at 1.5 m, turned 0.3 rad) on a floor for 10 s, sleeping
+ * off (a sleeping body would hide a slow roll); exits 0 when every state
+ * stayed finite and it ended at rest, 3 otherwise. */
 static void child_simulate(const void *arg) {
     scene_t *scene = scene_init();
     scene_set_gravity(scene, (vector_t){0, -10});
     scene_set_contacts_enabled(scene, true);
+    scene_set_sleeping(scene, false);
     rgb_color_t gray = {0.5, 0.5, 0.5};
     scene_add_body(scene, body_init(polygon_make_box((vector_t){0, -0.5}, 20, 0.5), INFINITY, gray));
     list_t *shape = shape_of(*(const int *)arg);
@@ -1296,7 +1302,7 @@ static void child_simulate(const void *arg) {
     body_set_rotation(b, 0.3);
     scene_add_body(scene, b);
     bool finite = true;
-    for (int i = 0; i < 300; i++) {
+    for (int i = 0; i < 600; i++) {
         scene_tick(scene, 1.0 / 60);
         vector_t c = body_get_centroid(b), v = body_get_velocity(b);
         finite &= isfinite(c.x) && isfinite(c.y) && isfinite(v.x) && isfinite(v.y) &&
@@ -1349,8 +1355,9 @@ static void input_section(void) {
         s, "Shapes",
         "Each shape goes to polygon_check (the soft answer), to body_init in a child process "
         "(which must refuse it with the same words, or accept it), and, when accepted, is "
-        "dropped turned by 0.3 rad on a floor for 5 s: every state finite and at rest after. "
-        "Verdict: the answer docs/api.md documents, and no NaN later.",
+        "dropped 1 m, turned by 0.3 rad, on a floor for 10 s with sleeping off: every state "
+        "finite and at rest after (slower than 1 mm/s). Verdict: the answer docs/api.md "
+        "documents, and no NaN later.",
         "input", "documented answer", "polygon_check", "body_init, and the drop when accepted",
         "verdict", NULL);
     const shape_case_t shapes[] = {
@@ -1398,7 +1405,7 @@ static void input_section(void) {
             int sim = in_child(child_simulate, &c->kind, sim_message, sizeof sim_message, &sim_status);
             double ms = bench_now_ms() - t0;
             ok = problem == NULL && how == 0 && sim == 0 && sim_status == 0;
-            set_cell(r, 3, "accepted%s; the drop: %s (%s ms for 300 steps)",
+            set_cell(r, 3, "accepted%s; the drop: %s (%s ms for 600 steps)",
                      c->kind == 3 ? ", stored counter-clockwise" : "",
                      sim == 0 && sim_status == 0 ? "finite, at rest" : (sim == 0 ? "NOT AT REST OR NOT FINITE" : sim_message),
                      G(ms));
@@ -1658,6 +1665,97 @@ static void longrun_section(void) {
 
 /* ==== output ==== */
 
+static const char *const OPEN_PROBLEMS =
+    "## Open problems\n\n"
+    "What this suite found and did not fix, each with its figure above:\n\n"
+    "- **Heavy bodies on light supports jitter** (Mass ratios, heavytop): a box 10 to 1000 "
+    "times heavier than the two boxes holding it never comes to rest (0.34 m/s at r = 100). "
+    "Cause: the shock propagation pass's one-sided pushes. Tried and measured: without the "
+    "pass, the pass skipped for heavy bodies, the heavy body held by all its supports at once; "
+    "none both keeps r = 1000 standing and settles r = 100.\n"
+    "- **The 40-row pyramid never comes to rest** (Stacks and piles): same cause; a 0.5 mm/s "
+    "dead band in the pass settles it with the piles statistically unchanged, but moves the "
+    "benchmark's single pile(10000) run past 0.30 m and the pyramid tops by about a "
+    "millimetre; not applied, for the team to weigh.\n"
+    "- **Small bodies need a short step** (Size and place): a 1 cm pyramid at 1/60 s falls (as "
+    "both peers'); from 1/120 s it stands. The step must resolve a body's fall, dt <~ "
+    "sqrt(s / g) / 4.\n"
+    "- **Far from the origin**: the pyramid is as at the origin to 1e10 m and jitters at 1e12 "
+    "m (doubles 0.12 mm apart against a 1 mm slop); Chipmunk2D, with a 5 mm slop, still "
+    "rests there, and Box2D's floats give out at 1e6 m.\n"
+    "- **Polygons of about 90000 sides and more roll** on a floor (Degenerate shapes): past "
+    "the block solve's condition bound the edge's ends are solved one at a time again.\n"
+    "- **pile(4000) creeps** (known before this suite): at 60-70 s hundreds of bodies still "
+    "move faster than 1 cm/s with and without the shock pass (measured in a scratch copy: "
+    "157 to 1201 of them, total kinetic energy 0.03 to 0.5 J, the fastest at 0.7 m/s "
+    "rolling down the heap's surface); pile(2000), the case asked for, settles far inside its "
+    "bounds here. A rebuild of pile(2000) with masses from polygon_area instead of the "
+    "benchmark's formula (a different chaotic run) peaked at 0.031 J and 0.82 N s over "
+    "60-70 s: inside the bounds, with less margin.\n"
+    "- **Sleeping stops slow free flight**: with sleeping on, a body that feels no force and "
+    "no gravity and moves slower than 0.01 m/s for half a second is put to sleep with "
+    "velocity 0, as scene.h documents for resting islands; in a zero-gravity scene that "
+    "removes momentum (two boxes meeting at 1 cm/s stopped dead; the suite's free-flight "
+    "tests run with sleeping off).\n\n";
+
+/* The energy factor per step against omega dt for each integrator, undamped:
+ * the theory's curves on a fine grid and the measured points (the zeta = 0
+ * spring's lines), for gnuplot (stability.sh draws them when it can). */
+static void write_plot(const char *dir) {
+    char path[1024];
+    snprintf(path, sizeof path, "%s/springs.dat", dir);
+    FILE *f = fopen(path, "w");
+    if (f == NULL) return;
+    fprintf(f, "# omega_dt");
+    for (int i = 0; i < INTEGRATOR_COUNT; i++) fprintf(f, " %s", integrator_key(i));
+    fprintf(f, "\n");
+    for (int k = 1; k <= 300; k++) {
+        double theta = 0.01 * k;
+        fprintf(f, "%g", theta);
+        for (int i = 0; i < INTEGRATOR_COUNT; i++) fprintf(f, " %.6g", theory_growth(i, theta, 0.0));
+        fprintf(f, "\n");
+    }
+    fclose(f);
+    snprintf(path, sizeof path, "%s/springs-measured.dat", dir);
+    f = fopen(path, "w");
+    if (f == NULL) return;
+    static const char *const samples[7] = {"0.1", "0.5", "1", "1.5", "2", "2.5", "3"};
+    fprintf(f, "# omega_dt, then the measured energy factor per step of each integrator, chipmunk, box2d\n");
+    for (int k = 0; k < 7; k++) {
+        char key[32];
+        snprintf(key, sizeof key, "growth_%s", samples[k]);
+        fprintf(f, "%s", samples[k]);
+        for (int i = 0; i < INTEGRATOR_COUNT; i++) {
+            fprintf(f, " %.6g", num(find("ours", "spring", 0.0, "integrator", integrator_key(i)), key));
+        }
+        fprintf(f, " %.6g %.6g\n", num(find("chipmunk", "spring", 0.0, NULL, NULL), key),
+                num(find("box2d", "spring", 0.0, NULL, NULL), key));
+    }
+    fclose(f);
+    snprintf(path, sizeof path, "%s/plots.gp", dir);
+    f = fopen(path, "w");
+    if (f == NULL) return;
+    fprintf(f,
+            "# gnuplot plots.gp (in docs/stability): the energy factor per step of an undamped "
+            "spring against omega dt.\n"
+            "set terminal svg size 800,500 font 'sans,12'\n"
+            "set output 'springs.svg'\n"
+            "set logscale y\nset yrange [0.1:100]\nset xrange [0:3]\n"
+            "set xlabel 'omega dt'\nset ylabel 'energy factor per step'\n"
+            "set key top left\nset grid\n"
+            "plot ");
+    for (int i = 0; i < INTEGRATOR_COUNT; i++) {
+        fprintf(f, "'springs.dat' using 1:%d with lines lc %d title '%s (theory)', ", i + 2, i + 1,
+                integrator_get_name(i));
+        fprintf(f, "'springs-measured.dat' using 1:%d with points pt 7 lc %d notitle, ", i + 2,
+                i + 1);
+    }
+    fprintf(f, "'springs-measured.dat' using 1:8 with points pt 4 lc rgb 'black' title "
+               "'Chipmunk2D (measured)', 'springs-measured.dat' using 1:9 with points pt 6 lc "
+               "rgb 'gray40' title 'Box2D 2.4 (measured)'\n");
+    fclose(f);
+}
+
 /* A cell for a markdown table: '|' would end it. */
 static void put_cell(FILE *f, const char *text) {
     fputc(' ', f);
@@ -1728,6 +1826,21 @@ static void write_doc(const char *path, double seconds) {
         }
         fprintf(f, "\n\n");
     }
+    fprintf(f, "| section | verdicts held | limits written up |\n|---|---|---|\n");
+    for (int i = 0; i < section_count; i++) {
+        int held = 0, asserted = 0, limits = 0;
+        for (int k = 0; k < sections[i].table_count; k++) {
+            const table_t *t = sections[i].tables[k];
+            for (int j = 0; j < t->row_count; j++) {
+                asserted += t->rows[j].asserted;
+                held += t->rows[j].asserted && t->rows[j].pass;
+            }
+            for (const char *p = t->notes; (p = strstr(p, "**Limit")) != NULL; p++) limits++;
+        }
+        fprintf(f, "| %d. %s | %d of %d | %d |\n", i + 1, sections[i].title, held, asserted,
+                limits);
+    }
+    fprintf(f, "\n");
     for (int i = 0; i < section_count; i++) {
         const section_t *s = &sections[i];
         fprintf(f, "## %d. %s\n\n", i + 1, s->title);
@@ -1750,10 +1863,13 @@ static void write_doc(const char *path, double seconds) {
             if (t->notes[0]) fprintf(f, "%s\n", t->notes);
         }
     }
+    fprintf(f, "%s", OPEN_PROBLEMS);
     fprintf(f, "## Reproducing\n\n"
-               "`make stability` (about ten minutes on two cores: this engine's cases in one "
-               "process while the peers' programs run beside it); `make check` runs "
-               "`build/stability/stability --quick --check` (about a minute). Every scene of "
+               "`make stability` (about two minutes on two cores: this engine's cases in one "
+               "process while the peers' programs run beside it; the million-step run is half "
+               "a minute of it); `make check` runs `build/stability/stability --quick --check` "
+               "(about 20 s: the same cases but a coarser spring sweep, 10^5 steps for the "
+               "long run and no pile(10000)). Every scene of "
                "the peers' columns can be run alone, e.g. `build/bench/bench_box2d --scene "
                "stack2 --runs 1`; this engine's with `build/bench/bench_engine --scene stack2 "
                "--runs 1 [--integrator rk4]`.\n");
@@ -1881,7 +1997,10 @@ int main(int argc, char **argv) {
     }
     double seconds = (bench_now_ms() - run_started) / 1000.0;
     if (doc_path) write_doc(doc_path, seconds);
-    if (out_dir) write_csv(out_dir);
+    if (out_dir) {
+        write_csv(out_dir);
+        write_plot(out_dir);
+    }
     if (raw_path) write_raw(raw_path);
     int passed, failed;
     count_verdicts(&passed, &failed);

@@ -60,4 +60,9 @@ run_peers 2>"$out/peers.log" &
 build/stability/stability --peers "$peers" --doc docs/stability.md --out docs/stability \
     --raw docs/stability/lines.txt
 wait
+if command -v gnuplot >/dev/null 2>&1; then
+    (cd docs/stability && gnuplot plots.gp) && echo "stability: drew docs/stability/springs.svg" >&2
+else
+    echo "stability: gnuplot missing: docs/stability/springs.svg not redrawn (apt-get install gnuplot-nox)" >&2
+fi
 echo "stability: wrote docs/stability.md" >&2
