@@ -3,6 +3,7 @@
 # make run        installs the sandbox's Debian packages when it can, builds and starts it
 # make bench      the benchmark scenes (docs/bench.md)
 # make report     numerical error against run time (docs/accuracy.md)
+# make stability  stiff and extreme cases beside theory and the peers (docs/stability.md)
 
 CC ?= cc
 CSTD := -std=c11 -D_POSIX_C_SOURCE=200809L -D_DEFAULT_SOURCE
@@ -77,6 +78,7 @@ CHECK_PROGRAMS := build/tests/engine_tests tests/check_examples.sh tests/report/
 -include tests/bench/bench.mk
 -include tests/report/report.mk
 -include tests/fuzz/fuzz.mk
+-include tests/stability/stability.mk
 
 check: $(CHECK_PROGRAMS) build/libengine.a build/report/accuracy
 	@tests/run_all.sh $(CHECK_PROGRAMS)

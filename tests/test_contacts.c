@@ -733,6 +733,31 @@ static void bad_solver_settings_abort(void) {
     scene_free(scene);
 }
 
+/* Regular polygons of 1000 and 10000 sides (1 m across) set on a floor,
+ * turned by a third of an edge, sleeping off: they stay where they are.
+ * The two ends of a resting edge are 3 mm (0.3 mm) apart, too close for
+ * the ordinary block solve; one at a time, the first end took the whole
+ * load every step and the 1000-gon rolled away at 0.6 m/s after 10 s. */
+static void fine_polygons_rest_on_a_floor(void) {
+    const size_t sides[] = {1000, 10000};
+    for (size_t i = 0; i < 2; i++) {
+        scene_t *scene = contact_scene();
+        scene_set_sleeping(scene, false);
+        add_ground(scene, 20.0);
+        double apothem = 0.5 * cos(M_PI / (double)sides[i]);
+        body_t *wheel = body_init(polygon_make_regular(sides[i], 0.5, (vector_t){0, apothem},
+                                                       -0.5 * M_PI + M_PI / (double)sides[i]),
+                                  1.0, GREY);
+        body_set_rotation(wheel, 2.0 * M_PI / (3.0 * (double)sides[i]));
+        scene_add_body(scene, wheel);
+        run(scene, 600, DT);
+        CHECK(fabs(body_get_centroid(wheel).x) < 0.001);
+        CHECK(vec_get_length(body_get_velocity(wheel)) < 1e-6);
+        CHECK(fabs(body_get_angular_velocity(wheel)) < 1e-6);
+        scene_free(scene);
+    }
+}
+
 TEST_SUITE(contacts, TEST_CASE(box_comes_to_rest_on_floor), TEST_CASE(column_of_ten_boxes_stands),
            TEST_CASE(plank_with_more_contacts_than_colours_rests),
            TEST_CASE(pyramid_of_forty_stands_ten_seconds), TEST_CASE(friction_stopping_distance),
@@ -751,4 +776,4 @@ TEST_SUITE(contacts, TEST_CASE(box_comes_to_rest_on_floor), TEST_CASE(column_of_
            TEST_CASE(overlaps_are_pushed_apart_no_faster_than_the_push_speed),
            TEST_CASE(long_steps_push_at_most_the_step_bound),
            TEST_CASE(centimetre_boxes_rest_shallow), TEST_CASE(hundred_metre_boxes_rest_still),
-           TEST_CASE(bad_solver_settings_abort));
+           TEST_CASE(bad_solver_settings_abort), TEST_CASE(fine_polygons_rest_on_a_floor));

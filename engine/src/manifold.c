@@ -74,6 +74,10 @@ typedef struct {
     uint32_t feature;
 } clip_vertex_t;
 
+/* The feature of a point made by a clipping cut, one per side plane: out
+ * of the range of vertex indices, the same low byte in the ids. */
+static const uint32_t CUT_FEATURE[2] = {0xffffff80u, 0xffffff81u};
+
 /* Keeps the part of segment in[0..1] where dot(direction, p) <= offset.
  * Returns how many points are left (0 to 2); a point made by the cut gets
  * `cut_feature`. */
@@ -116,13 +120,17 @@ manifold_t manifold_collide(body_t *a, body_t *b, double margin, manifold_featur
     /* Clip to the slab between the side planes of the reference edge. */
     vector_t tangent = vec_normalize(vec_subtract(v2, v1));
     clip_vertex_t once[2], twice[2];
-    if (clip_segment(segment, once, vec_negate(tangent), -vec_dot(tangent, v1), 0x80) < 2) {
+    if (clip_segment(segment, once, vec_negate(tangent), -vec_dot(tangent, v1), CUT_FEATURE[0]) <
+        2) {
         return manifold;
     }
-    if (clip_segment(once, twice, tangent, vec_dot(tangent, v2), 0x81) < 2) return manifold;
+    if (clip_segment(once, twice, tangent, vec_dot(tangent, v2), CUT_FEATURE[1]) < 2) {
+        return manifold;
+    }
 
     uint32_t base = (flip ? 1u << 24 : 0u) | (uint32_t)ref_edge << 16 | (uint32_t)inc_edge << 8;
     features->flip = flip;
+    features->edge_ends = twice[0].feature < CUT_FEATURE[0] && twice[1].feature < CUT_FEATURE[0];
     features->point_count = 2;
     features->normal = reference->local_normals[ref_edge];
     features->face_point = reference->local_vertices[ref_edge];

@@ -44,6 +44,9 @@ typedef struct {
  */
 typedef struct {
     bool flip; /* the reference face is b's */
+    /* Both points are the incident edge's own ends (no clipping cut it):
+     * the edge lies on the reference face. */
+    bool edge_ends;
     int point_count;
     vector_t normal;     /* reference frame */
     vector_t face_point; /* reference frame */

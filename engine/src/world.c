@@ -262,6 +262,7 @@ static void add_contact(world_t *world, body_t *a, body_t *b, uint64_t key,
     contact->restitution = max_of(a->elasticity, b->elasticity);
     contact->slop = solver_contact_slop(a->radius, b->radius);
     contact->point_count = manifold->point_count;
+    contact->edge_ends = features->edge_ends && manifold->point_count == 2;
     for (int i = 0; i < manifold->point_count; i++) {
         solver_point_t *point = &contact->points[i];
         anchor->r_a[i] = vec_subtract(manifold->points[i].point, a->centroid);

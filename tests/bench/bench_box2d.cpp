@@ -14,7 +14,9 @@
  *   box2d           all defaults, every scene;
  *   box2d-nosleep   sleeping off (SetAllowSleeping(false)) on the scenes
  *                   where bodies come to rest (pile, pyramid, stack2,
- *                   overlap) and orbit, since our engine has no sleeping (in
+ *                   overlap, and the stability scenes column, heavytop,
+ *                   drop, coincide, settle, scaled, far) and orbit, since
+ *                   our engine's benchmark variant runs without sleeping (in
  *                   orbit the heavy body moves at 0.01 m/s, under Box2D's
  *                   sleep tolerance, and loses its velocity every time it
  *                   falls asleep);
@@ -213,20 +215,44 @@ double b2_pair_penetration(void *world, int body1, int body2) {
     return pen;
 }
 
+/* b2DistanceJoint as a spring: rest length `rest`, no limits (minimum 0,
+ * which Box2D raises to b2_linearSlop; maximum FLT_MAX), stiffness k and
+ * damping c: a soft constraint solved with the velocity iterations. */
+void b2_add_spring(void *world, int body1, int body2, double k, double damping, double rest) {
+    B2World *w = static_cast<B2World *>(world);
+    b2Body *a = w->bodies[(size_t)body1], *b = w->bodies[(size_t)body2];
+    b2DistanceJointDef def;
+    def.Initialize(a, b, a->GetWorldCenter(), b->GetWorldCenter());
+    def.length = (float)rest;
+    def.minLength = 0.0f;
+    def.maxLength = FLT_MAX;
+    def.stiffness = (float)k;
+    def.damping = (float)damping;
+    def.collideConnected = false;
+    w->world.CreateJoint(&def);
+}
+
+void b2_set_angular_velocity(void *world, int body, double omega) {
+    B2World *w = static_cast<B2World *>(world);
+    w->bodies[(size_t)body]->SetAngularVelocity((float)omega);
+}
+
 const bench_ops_t box2d_ops = {
     "box2d",         NULL,          0,
     0,               b2_describe,   b2_world_new,
     b2_world_free,   b2_add_static_box, b2_add_body,
     b2_set_velocity, b2_add_gravity_pair, b2_step,
     b2_get_state,    b2_max_penetration, b2_pair_penetration,
+    b2_add_spring,   b2_set_angular_velocity, 1.0,
 };
 
 const bench_ops_t box2d_nosleep_ops = {
-    "box2d-nosleep",   "pile,pyramid,stack2,overlap,orbit", 0,
+    "box2d-nosleep",   "pile,pyramid,stack2,overlap,orbit,column,heavytop,drop,coincide,settle,scaled,far", 0,
     0,                 b2_describe_none,              b2_world_new_nosleep,
     b2_world_free,     b2_add_static_box,             b2_add_body,
     b2_set_velocity,   b2_add_gravity_pair,           b2_step,
     b2_get_state,      b2_max_penetration,            b2_pair_penetration,
+    b2_add_spring,     b2_set_angular_velocity,       1.0,
 };
 
 const bench_ops_t box2d_discrete_ops = {
@@ -235,6 +261,7 @@ const bench_ops_t box2d_discrete_ops = {
     b2_world_free,    b2_add_static_box, b2_add_body,
     b2_set_velocity,  b2_add_gravity_pair, b2_step,
     b2_get_state,     b2_max_penetration, b2_pair_penetration,
+    b2_add_spring,    b2_set_angular_velocity, 1.0,
 };
 
 } // namespace

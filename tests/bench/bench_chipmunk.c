@@ -35,6 +35,8 @@ typedef struct {
     int count, capacity;
     cp_pair_t pairs[4];
     int pair_count;
+    cpConstraint **constraints;
+    int constraint_count, constraint_capacity;
 } cp_world_t;
 
 /* A new cpSpace. The first one a debug build of Chipmunk makes prints a
@@ -103,6 +105,11 @@ static void cp_free_shape(cpBody *body, cpShape *shape, void *data) {
 
 static void cp_world_free(void *world) {
     cp_world_t *w = (cp_world_t *)world;
+    for (int i = 0; i < w->constraint_count; i++) {
+        cpSpaceRemoveConstraint(w->space, w->constraints[i]);
+        cpConstraintFree(w->constraints[i]);
+    }
+    free(w->constraints);
     for (int i = 0; i < w->count; i++) {
         cpBodyEachShape(w->bodies[i], cp_free_shape, w->space);
         cpSpaceRemoveBody(w->space, w->bodies[i]);
@@ -253,12 +260,36 @@ static double cp_pair_penetration(void *world, int body1, int body2) {
     return q.penetration;
 }
 
+/* cpDampedSpring: the spring force from the positions at the start of
+ * the step's velocity update (Chipmunk moves the bodies first), its
+ * damping solved with the velocity iterations (an exponential decay of the
+ * relative velocity along the spring). */
+static void cp_add_spring(void *world, int body1, int body2, double k, double damping,
+                          double rest) {
+    cp_world_t *w = (cp_world_t *)world;
+    cpConstraint *spring = cpSpaceAddConstraint(
+        w->space, cpDampedSpringNew(w->bodies[body1], w->bodies[body2], cpvzero, cpvzero, rest,
+                                    k, damping));
+    if (w->constraint_count == w->constraint_capacity) {
+        w->constraint_capacity = w->constraint_capacity ? 2 * w->constraint_capacity : 8;
+        w->constraints = (cpConstraint **)realloc(
+            w->constraints, sizeof(cpConstraint *) * (size_t)w->constraint_capacity);
+    }
+    w->constraints[w->constraint_count++] = spring;
+}
+
+static void cp_set_angular_velocity(void *world, int body, double omega) {
+    cp_world_t *w = (cp_world_t *)world;
+    cpBodySetAngularVelocity(w->bodies[body], omega);
+}
+
 static const bench_ops_t chipmunk_ops = {
     "chipmunk",          NULL,           1, 1, cp_describe,
     cp_world_new,        cp_world_free,  cp_add_static_box,
     cp_add_body,         cp_set_velocity, cp_add_gravity_pair,
     cp_step,             cp_get_state,   cp_max_penetration,
-    cp_pair_penetration,
+    cp_pair_penetration, cp_add_spring,  cp_set_angular_velocity,
+    1.0,
 };
 
 int main(int argc, char **argv) {

@@ -44,6 +44,15 @@
 static int bench_iterations = 0;
 /* --variant: run only the variant of this name; NULL runs them all. */
 static const char *bench_variant = NULL;
+/* --steps: the number of steps of the scenes that run a fixed count (pile,
+ * pyramid, column, stack2, overlap and the stability scenes that say so);
+ * 0 keeps each scene's own. */
+static int bench_steps = 0;
+
+/* A scene's step count: --steps when given, else its own. */
+static inline int bench_step_count(int own) {
+    return bench_steps > 0 ? bench_steps : own;
+}
 
 /* pile(N) */
 #define PILE_STEPS 600
@@ -238,6 +247,20 @@ typedef struct bench_ops {
     double (*max_penetration)(void *world);
     /* The same restricted to the pair (body1, body2); 0 when not in contact. */
     double (*pair_penetration)(void *world, int body1, int body2);
+    /* A spring between the two bodies' centroids: force k (length - rest)
+     * along the line between them, and a damping force c times their
+     * relative velocity (along that line, or in every direction for an
+     * engine whose damping is a drag: same thing for motion along the
+     * spring), from the next step on. body1 may be static. */
+    void (*add_spring)(void *world, int body1, int body2, double k, double damping, double rest);
+    void (*set_angular_velocity)(void *world, int body, double omega);
+    /* The rest length (m) this engine's springs need: 0 for a zero-length
+     * spring; the spring scenes then put the spring's fixed end that far
+     * from the moving one, so the force along the line is the same linear
+     * function for every engine (Box2D's distance joint clamps its length
+     * to at least 5 mm, and both peers' springs lose their direction when
+     * the two ends meet). */
+    double spring_rest;
 } bench_ops_t;
 
 /* Polygon area (m^2) of a shape: mass = area at density 1. */
