@@ -65,6 +65,12 @@ size_t sleep_time_bodies(const sleep_step_t *step) {
     return ready;
 }
 
+bool sleep_is_check_step(sleep_t *sleep) {
+    if (++sleep->steps < SLEEP_CHECK_STEPS) return false;
+    sleep->steps = 0;
+    return true;
+}
+
 /* Joins the rows into islands over the touching links; an island is ready
  * when every body has been slow for SLEEP_TIME and its contacts settled. */
 static void build_islands(sleep_t *sleep, const sleep_step_t *step, const sleep_link_t *links,

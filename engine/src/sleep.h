@@ -35,6 +35,7 @@ typedef struct {
     size_t count, capacity;
     double widest; /* the widest box in the index (m) */
     size_t slept;  /* bodies put to sleep since the index was built */
+    unsigned steps; /* since islands were last joined */
     uint32_t *parent;
     size_t parent_capacity;
     struct sleep_island *islands;
@@ -78,6 +79,11 @@ typedef struct {
  * slow for SLEEP_TIME. When none has, no island can sleep: the caller need
  * not list its contacts for sleep_islands. */
 size_t sleep_time_bodies(const sleep_step_t *step);
+
+/* Islands are joined at most every SLEEP_CHECK_STEPS steps: true when
+ * this is such a step (and counts it). */
+enum { SLEEP_CHECK_STEPS = 8 };
+bool sleep_is_check_step(sleep_t *sleep);
 
 /* Puts to sleep the islands whose every body is ready, joined over the
  * touching links. */

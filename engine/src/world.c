@@ -382,14 +382,16 @@ static bool is_settled(const solver_contact_t *c) {
     return true;
 }
 
-/* Hands the step to sleep.c; the touching contacts are listed only when
- * some body has been slow long enough for its island to sleep. */
+/* Hands the step to sleep.c; the touching contacts are listed and the
+ * islands joined only when some body has been slow long enough for its
+ * island to sleep, and then every SLEEP_CHECK_STEPS steps (a pile whose
+ * bottom rests and top creeps would pay for islands at every step). */
 static void update_sleep(world_t *world, body_t **bodies, size_t count, double dt,
                          body_t **all_bodies, size_t all_count) {
     sleep_step_t step = {bodies,          world->velocities, world->displacements,
                          world->states,   world->proxies,    count,
                          dt,              CONTACT_MARGIN};
-    if (sleep_time_bodies(&step) > 0) {
+    if (sleep_time_bodies(&step) > 0 && sleep_is_check_step(&world->sleep)) {
         memory_reserve((void **)&world->links, &world->link_capacity, world->contact_count,
                        sizeof(sleep_link_t));
         size_t link_count = 0;
