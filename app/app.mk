@@ -59,7 +59,7 @@ endif
 APP_UNIT_SRC := tests/app_units.c app/text.c app/stats_text.c app/step_clock.c app/layout.c \
                 app/energy_drift.c app/integrator_choice.c app/presets.c app/scene_text.c \
                 app/sandbox_scene.c
-build/tests/app_units: $(APP_UNIT_SRC) $(wildcard app/*.h) $(GAMES_HDR) app/app.mk \
+build/tests/app_units: $(APP_UNIT_SRC) tests/app_expect.h $(wildcard app/*.h) $(GAMES_HDR) app/app.mk \
                        build/libengine-san.a $(GAMES_SAN_OBJ)
 	@mkdir -p $(dir $@)
 	$(CC) $(CSTD) $(WARN) -O1 -g $(SAN) -Iapp -Iapp/games -Iengine/include $(APP_UNIT_SRC) \
@@ -69,7 +69,7 @@ build/tests/app_units: $(APP_UNIT_SRC) $(wildcard app/*.h) $(GAMES_HDR) app/app.
 # link no SDL, but the sanitized engine, to load the scene files the sandbox
 # saves (scene_file_load), and the list of presets.
 APP_SMOKE_SRC := tests/app_smoke.c tests/app_image.c app/layout.c app/presets.c
-build/tests/app_smoke: $(APP_SMOKE_SRC) tests/app_image.h app/palette.h app/layout.h \
+build/tests/app_smoke: $(APP_SMOKE_SRC) tests/app_image.h tests/app_expect.h app/palette.h app/layout.h \
                        app/presets.h app/app.mk build/libengine-san.a $(APP_SMOKE_DEPS)
 	@mkdir -p $(dir $@)
 	$(CC) $(CSTD) $(WARN) -O1 -g $(SAN) $(APP_SMOKE_DEFS) -Iapp -Itests -Iengine/include \

@@ -41,22 +41,7 @@
 #define SIZE_FLAG "800x600"
 
 static const char *sandbox_path = "./sandbox";
-static int failures; /* of the current test */
-
-static void fail(const char *format, ...) {
-    va_list args;
-    va_start(args, format);
-    printf("    ");
-    vprintf(format, args);
-    printf("\n");
-    va_end(args);
-    failures++;
-}
-
-#define EXPECT(condition, ...)                                                               \
-    do {                                                                                     \
-        if (!(condition)) fail(__VA_ARGS__);                                                 \
-    } while (0)
+#include "app_expect.h"
 
 /* ---- running the sandbox ---- */
 
@@ -78,13 +63,13 @@ static void run_sandbox(run_t *run, int timeout_s, const char *const *args) {
 
     int fds[2];
     if (pipe(fds) != 0) {
-        fail("pipe: %s", strerror(errno));
+        app_fail("pipe: %s", strerror(errno));
         return;
     }
     fflush(stdout);
     pid_t child = fork();
     if (child < 0) {
-        fail("fork: %s", strerror(errno));
+        app_fail("fork: %s", strerror(errno));
         return;
     }
     if (child == 0) {
@@ -117,13 +102,13 @@ static void run_sandbox(run_t *run, int timeout_s, const char *const *args) {
         if (waited > timeout_s * 100) {
             kill(child, SIGKILL);
             waitpid(child, &status, 0);
-            fail("the sandbox did not exit within %d s", timeout_s);
+            app_fail("the sandbox did not exit within %d s", timeout_s);
             return;
         }
         nanosleep(&pause, NULL);
     }
     if (WIFSIGNALED(status)) {
-        fail("the sandbox died with signal %d; output:\n%s", WTERMSIG(status), run->output);
+        app_fail("the sandbox died with signal %d; output:\n%s", WTERMSIG(status), run->output);
         return;
     }
     run->status = WEXITSTATUS(status);
@@ -133,7 +118,7 @@ static void run_sandbox(run_t *run, int timeout_s, const char *const *args) {
 static bool write_file(const char *path, const char *text) {
     FILE *file = fopen(path, "w");
     if (file == NULL) {
-        fail("cannot write %s: %s", path, strerror(errno));
+        app_fail("cannot write %s: %s", path, strerror(errno));
         return false;
     }
     fputs(text, file);
@@ -212,7 +197,7 @@ typedef struct {
 static bool map_world(const image_t *image, world_map_t *map) {
     if (!image_bounds(image, is_static_color, &map->left, &map->top, &map->right,
                       &map->bottom)) {
-        fail("no container (static colour) in the screenshot");
+        app_fail("no container (static colour) in the screenshot");
         return false;
     }
     map->scale = (map->right - map->left + 1) / 30.0;
@@ -252,7 +237,7 @@ static bool run_script_at(const char *name, const char *size, const char *script
     for (int i = 0; i < 6 && extra != NULL && extra[i] != NULL; i++) args[7 + i] = extra[i];
     run_sandbox(run, 60, args);
     if (run->status != 0) {
-        fail("the sandbox exited with %d; output:\n%s", run->status, run->output);
+        app_fail("the sandbox exited with %d; output:\n%s", run->status, run->output);
         return false;
     }
     return true;
@@ -267,7 +252,7 @@ static bool run_script(const char *name, const char *script, const char *const *
 static bool load_shot(const char *name, image_t *image) {
     char why[512];
     if (image_read(tmp_path(name, ".bmp"), image, why, sizeof why)) return true;
-    fail("%s", why);
+    app_fail("%s", why);
     return false;
 }
 
@@ -547,7 +532,7 @@ static bool legend_state(const image_t *image, const char *name, char *state,
                          &x, &title_y, NULL) ||
         !image_find_text(image, name, layout.sidebar.x, title_y + 1, image->width,
                          image->height, &x, &y, NULL)) {
-        fail("no legend line '%s' under the title OVERLAYS", name);
+        app_fail("no legend line '%s' under the title OVERLAYS", name);
         return false;
     }
     int end = image->width - LAYOUT_PAD;
@@ -559,7 +544,7 @@ static bool legend_state(const image_t *image, const char *name, char *state,
             return true;
         }
     }
-    fail("the legend line '%s' ends in neither 'on' nor 'off'", name);
+    app_fail("the legend line '%s' ends in neither 'on' nor 'off'", name);
     return false;
 }
 
@@ -765,7 +750,7 @@ static void test_png_screenshots_are_png(void) {
     image_t png, bmp;
     char why[512];
     if (!image_read(png_path, &png, why, sizeof why)) {
-        fail("%s", why);
+        app_fail("%s", why);
         return;
     }
     if (image_read(tmp_path("same", ".bmp"), &bmp, why, sizeof why)) {
@@ -773,7 +758,7 @@ static void test_png_screenshots_are_png(void) {
         EXPECT(differ == 0, "the PNG and the BMP of one frame differ in %ld pixels", differ);
         image_free(&bmp);
     } else {
-        fail("%s", why);
+        app_fail("%s", why);
     }
     image_free(&png);
 }
@@ -890,7 +875,7 @@ static void test_bad_scripts_are_refused(void) {
 static void test_help_lists_every_readme_key(void) {
     char *readme = read_text_file("README.md");
     if (readme == NULL) {
-        fail("cannot read README.md");
+        app_fail("cannot read README.md");
         return;
     }
     run_t run;
@@ -1064,7 +1049,7 @@ typedef struct {
 static bool find_plot(const image_t *image, plot_t *plot) {
     int x, y;
     if (!find_in_panel(image, "INTEGRATOR", "-5 s", &x, &y, NULL)) {
-        fail("no '-5 s' under the drift chart");
+        app_fail("no '-5 s' under the drift chart");
         return false;
     }
     plot->left = x;
@@ -1274,7 +1259,7 @@ static void test_presets_open_from_the_command_line(void) {
         run_t run;
         run_sandbox(&run, 60, args);
         if (run.status != 0) {
-            fail("%s: exit status %d:\n%s", presets.paths[i], run.status, run.output);
+            app_fail("%s: exit status %d:\n%s", presets.paths[i], run.status, run.output);
             continue;
         }
         image_t image;
@@ -1404,7 +1389,7 @@ static long scene_file_bodies(const char *path, char *game, size_t game_size) {
     scene_file_error_t error;
     scene_file_t *file = scene_file_load(path, &error);
     if (file == NULL) {
-        fail("%s", error.message);
+        app_fail("%s", error.message);
         return -1;
     }
     long bodies = (long)scene_bodies(scene_file_get_scene(file));
@@ -1629,7 +1614,7 @@ static void check_doc_picture(const char *doc, const char *marker, const char *d
     int n = 0;
     char *copy = doc_command(doc, marker, words, 30, &n);
     if (copy == NULL) {
-        fail("docs/sandbox.md has no './sandbox ...' line with '%s'", marker);
+        app_fail("docs/sandbox.md has no './sandbox ...' line with '%s'", marker);
         return;
     }
     char shot[256], diff[256];
@@ -1655,14 +1640,14 @@ static void check_doc_picture(const char *doc, const char *marker, const char *d
     run_sandbox(&run, 60, args);
     free(copy);
     if (run.status != 0) {
-        fail("the documented command for %s exited with %d:\n%s", picture, run.status,
+        app_fail("the documented command for %s exited with %d:\n%s", picture, run.status,
              run.output);
         return;
     }
     image_t fresh, committed;
     char why[512];
     if (!image_read(picture, &committed, why, sizeof why)) {
-        fail("%s", why);
+        app_fail("%s", why);
         return;
     }
     if (image_read(shot, &fresh, why, sizeof why)) {
@@ -1675,7 +1660,7 @@ static void check_doc_picture(const char *doc, const char *marker, const char *d
                picture, differ, allowed, diff);
         image_free(&fresh);
     } else {
-        fail("%s", why);
+        app_fail("%s", why);
     }
     image_free(&committed);
 }
@@ -1683,7 +1668,7 @@ static void check_doc_picture(const char *doc, const char *marker, const char *d
 static void test_docs_pictures_regenerate(void) {
     char *doc = read_text_file("docs/sandbox.md");
     if (doc == NULL) {
-        fail("cannot read docs/sandbox.md");
+        app_fail("cannot read docs/sandbox.md");
         return;
     }
     check_doc_picture(doc, "--script app/scripts/demo.txt", NULL, NULL, "docs/sandbox.png");
@@ -1773,11 +1758,11 @@ int main(int argc, char **argv) {
     size_t passed = 0, failed = 0;
     for (size_t i = 0; i < TEST_COUNT; i++) {
         if (filter != NULL && strstr(TESTS[i].name, filter) == NULL) continue;
-        failures = 0;
+        app_failures = 0;
         TESTS[i].run();
-        printf("%s %s\n", failures == 0 ? "PASS" : "FAIL", TESTS[i].name);
+        printf("%s %s\n", app_failures == 0 ? "PASS" : "FAIL", TESTS[i].name);
         fflush(stdout);
-        if (failures == 0) passed++;
+        if (app_failures == 0) passed++;
         else failed++;
     }
     printf("%zu passed, %zu failed\n", passed, failed);

@@ -26,22 +26,7 @@
 #include "step_clock.h"
 #include "text.h"
 
-static int failures;
-
-static void fail(const char *format, ...) {
-    va_list args;
-    va_start(args, format);
-    printf("    ");
-    vprintf(format, args);
-    printf("\n");
-    va_end(args);
-    failures++;
-}
-
-#define EXPECT(condition, ...)                                                               \
-    do {                                                                                     \
-        if (!(condition)) fail(__VA_ARGS__);                                                 \
-    } while (0)
+#include "app_expect.h"
 
 static void expect_number(double value, int decimals, size_t width, const char *expected) {
     char out[32];
@@ -154,7 +139,7 @@ static void test_clock_keeps_real_time_through_late_frames(void) {
         requested += dt;
         int steps = step_clock_advance(&clock, dt);
         EXPECT(steps <= STEP_CLOCK_MAX_STEPS, "frame %d ran %d steps", frame, steps);
-        if (failures > 0) return;
+        if (app_failures > 0) return;
     }
     /* Behind by at most the steps the last late frame still owes. */
     EXPECT(requested - clock.simulated <= STEP_CLOCK_MAX_STEPS * STEP_CLOCK_STEP,
@@ -557,7 +542,7 @@ static void test_scene_files_open_and_refusals_keep_the_scene(void) {
     for (size_t i = 0; i < presets.count; i++) {
         const char *path = presets.paths[i];
         if (!sandbox_open(&sandbox, path, error, sizeof(error))) {
-            fail("%s is refused: %s", path, error);
+            app_fail("%s is refused: %s", path, error);
             continue;
         }
         scene_file_view_t view = scene_file_get_view(sandbox.file);
@@ -621,7 +606,7 @@ static void test_grabbed_body_destroyed_is_let_go(void) {
     char error[600];
     sandbox_init(&sandbox, 1);
     if (!sandbox_open(&sandbox, "assets/scenes/space_invaders.scene", error, sizeof(error))) {
-        fail("space_invaders.scene: %s", error);
+        app_fail("space_invaders.scene: %s", error);
         sandbox_free(&sandbox);
         return;
     }
@@ -665,7 +650,7 @@ static void test_energy_counts_springs_and_newton(void) {
     char error[600];
     sandbox_init(&sandbox, 1);
     if (!sandbox_open(&sandbox, "assets/scenes/orbits.scene", error, sizeof(error))) {
-        fail("orbits.scene: %s", error);
+        app_fail("orbits.scene: %s", error);
         sandbox_free(&sandbox);
         return;
     }
@@ -691,7 +676,7 @@ static void test_energy_counts_springs_and_newton(void) {
                "stiff_spring: potential %g J, expected %g J", totals.potential,
                0.5 * spring.constant * d * d);
     } else {
-        fail("stiff_spring.scene: %s", error);
+        app_fail("stiff_spring.scene: %s", error);
     }
     sandbox_free(&sandbox);
 }
@@ -728,10 +713,10 @@ static const unit_test_t TESTS[] = {
 int main(void) {
     size_t passed = 0, failed = 0;
     for (size_t i = 0; i < sizeof(TESTS) / sizeof(TESTS[0]); i++) {
-        failures = 0;
+        app_failures = 0;
         TESTS[i].run();
-        printf("%s %s\n", failures == 0 ? "PASS" : "FAIL", TESTS[i].name);
-        if (failures == 0) passed++;
+        printf("%s %s\n", app_failures == 0 ? "PASS" : "FAIL", TESTS[i].name);
+        if (app_failures == 0) passed++;
         else failed++;
     }
     printf("%zu passed, %zu failed\n", passed, failed);

@@ -273,7 +273,8 @@ bool sf_build(scene_file_t *file, sf_lexer_t *lexer) {
 
 /* ---- Live ----------------------------------------------------------------- */
 
-void sf_collect(scene_file_t *file) {
+/* Drops the forces whose bodies the scene has freed. */
+static void drop_orphan_forces(scene_file_t *file) {
     size_t kept = 0;
     for (size_t i = 0; i < file->instance_count; i++) {
         sf_instance_t *instance = &file->instances[i];
@@ -282,12 +283,16 @@ void sf_collect(scene_file_t *file) {
         file->instances[kept++] = *instance;
     }
     file->instance_count = kept;
+}
+
+void sf_collect(scene_file_t *file) {
+    drop_orphan_forces(file);
     sf_doc_t *doc = &file->doc;
     for (size_t i = 0; i < doc->body_count; i++) {
         if (doc->bodies[i].record != NULL && doc->bodies[i].record->body == NULL)
             doc->bodies[i].record = NULL;
     }
-    kept = 0;
+    size_t kept = 0;
     for (size_t i = 0; i < file->record_count; i++) {
         sf_record_t *record = file->records[i];
         if (record->body == NULL) {
@@ -302,15 +307,8 @@ void sf_collect(scene_file_t *file) {
 }
 
 size_t scene_file_force_count(scene_file_t *file) {
-    size_t kept = 0;
-    for (size_t i = 0; i < file->instance_count; i++) {
-        sf_instance_t *instance = &file->instances[i];
-        if (instance->body1->body == NULL) continue;
-        if (instance->body2 != NULL && instance->body2->body == NULL) continue;
-        file->instances[kept++] = *instance;
-    }
-    file->instance_count = kept;
-    return kept;
+    drop_orphan_forces(file);
+    return file->instance_count;
 }
 
 scene_file_force_t scene_file_get_force(scene_file_t *file, size_t index) {
