@@ -204,7 +204,26 @@ static void a_sleeping_pair_does_not_fire_again(void) {
     scene_free(scene);
 }
 
-TEST_SUITE(sleep, TEST_CASE(settled_pile_falls_asleep),
+/* Falling asleep and waking again, once warm, allocate nothing: the index
+ * and the island arrays keep their size. */
+static void sleeping_and_waking_allocate_nothing_once_warm(void) {
+    scene_t *scene = sleep_scene();
+    body_t *boxes[3];
+    add_stack(scene, 0.0, boxes, 3);
+    run(scene, 120);
+    size_t before = 0;
+    for (int cycle = 0; cycle < 3; cycle++) {
+        if (cycle == 2) before = engine_allocation_count();
+        body_set_velocity(boxes[2], (vector_t){0.3, 0.0});
+        CHECK(count_asleep(boxes, 3) == 0);
+        run(scene, 240);
+        CHECK(count_asleep(boxes, 3) == 3);
+    }
+    CHECK(engine_allocation_count() == before);
+    scene_free(scene);
+}
+
+TEST_SUITE(sleep, TEST_CASE(sleeping_and_waking_allocate_nothing_once_warm), TEST_CASE(settled_pile_falls_asleep),
            TEST_CASE(a_dropped_body_wakes_its_island_only),
            TEST_CASE(removing_a_support_wakes_what_rested_on_it),
            TEST_CASE(no_body_sleeps_in_mid_air), TEST_CASE(setters_wake_the_island),
