@@ -40,17 +40,20 @@ static uint32_t find_root(uint32_t *parent, uint32_t i) {
     return i;
 }
 
-/* Slow: its velocities and its displacement over the step (which holds
- * the position correction, a motion without velocity) within the
- * tolerances, the linear one shrunk for small bodies (a centimetre box
- * at 0.01 m/s would still be settling). */
+/* Slow: its velocities within the tolerances, the linear one shrunk for
+ * small bodies (a centimetre box at 0.01 m/s would still be settling), and
+ * the position pass's pushes within a fifth of them. */
 static bool is_slow(const solver_velocity_t *row, const solver_displacement_t *moved, double dt,
                     body_t *body) {
     double linear = fmin(SLEEP_LINEAR_SPEED, SLEEP_SIZE_RATE * body->radius);
-    double speed2 = fmax(vec_get_length_squared(row->v),
-                         vec_get_length_squared(moved->dx) / (dt * dt));
-    double spin = fmax(fabs(row->w), fabs(moved->dtheta) / dt);
-    bool slow = speed2 <= linear * linear && spin <= SLEEP_ANGULAR_SPEED;
+    /* The position pass's pushes (the displacement beyond the velocity's)
+     * are held to a fifth of the tolerances: a stack still pushing its
+     * overlaps out creeps slower than the velocities would show. */
+    double pushed = 5.0 * vec_get_length(vec_subtract(moved->dx, vec_multiply(dt, row->v))) / dt;
+    double turned = 5.0 * fabs(moved->dtheta - dt * row->w) / dt;
+    double speed = fmax(vec_get_length(row->v), pushed);
+    double spin = fmax(fabs(row->w), turned);
+    bool slow = speed <= linear && spin <= SLEEP_ANGULAR_SPEED;
     body->sleep_time = slow ? body->sleep_time + dt : 0.0;
     return body->sleep_time >= SLEEP_TIME;
 }
@@ -72,7 +75,7 @@ bool sleep_is_check_step(sleep_t *sleep) {
 }
 
 /* Joins the rows into islands over the touching links; an island is ready
- * when every body has been slow for SLEEP_TIME and its contacts settled. */
+ * when every body has been slow for SLEEP_TIME. */
 static void build_islands(sleep_t *sleep, const sleep_step_t *step, const sleep_link_t *links,
                           size_t link_count) {
     memory_reserve((void **)&sleep->parent, &sleep->parent_capacity, step->count,
@@ -93,10 +96,6 @@ static void build_islands(sleep_t *sleep, const sleep_step_t *step, const sleep_
     }
     for (size_t k = 0; k < link_count; k++) {
         body_t *a = step->bodies[links[k].a], *b = step->bodies[links[k].b];
-        if (!links[k].settled) {
-            sleep->islands[find_root(sleep->parent, links[k].a)].ready = false;
-            sleep->islands[find_root(sleep->parent, links[k].b)].ready = false;
-        }
         /* Resting on a body that does not move (a floor, a wall). */
         if (body_is_movable(a) && !body_is_movable(b)) {
             sleep->islands[find_root(sleep->parent, links[k].a)].supported = true;

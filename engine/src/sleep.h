@@ -67,12 +67,9 @@ typedef struct {
     double margin;
 } sleep_step_t;
 
-/* Two rows whose contact touches this step; settled when its overlap is
- * within what the position pass leaves alone (an island still pushing an
- * overlap out, with no velocity, must not sleep before it is out). */
+/* Two rows whose contact touches this step. */
 typedef struct {
     uint32_t a, b;
-    bool settled;
 } sleep_link_t;
 
 /* Advances each movable body's sleep timer; returns how many have been

@@ -373,15 +373,6 @@ static bool is_touching(const solver_contact_t *c) {
     return false;
 }
 
-/* Overlap the position pass is still pushing out: deeper than half again
- * its slop. */
-static bool is_settled(const solver_contact_t *c) {
-    for (int j = 0; j < c->point_count; j++) {
-        if (c->points[j].separation < -1.5 * c->slop) return false;
-    }
-    return true;
-}
-
 /* Hands the step to sleep.c; the touching contacts are listed and the
  * islands joined only when some body has been slow long enough for its
  * island to sleep, and then every SLEEP_CHECK_STEPS steps (a pile whose
@@ -398,7 +389,7 @@ static void update_sleep(world_t *world, body_t **bodies, size_t count, double d
         for (size_t i = 0; i < world->contact_count; i++) {
             const solver_contact_t *c = &world->contacts[i];
             if (is_touching(c)) {
-                world->links[link_count++] = (sleep_link_t){c->a, c->b, is_settled(c)};
+                world->links[link_count++] = (sleep_link_t){c->a, c->b};
             }
         }
         sleep_islands(&world->sleep, &step, world->links, link_count);
