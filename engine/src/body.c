@@ -241,8 +241,7 @@ void body_set_color(body_t *body, rgb_color_t color) {
 void body_add_force(body_t *body, vector_t force) {
     REQUIRE_NOT_NULL(body);
     REQUIRE_FINITE_VECTOR(force);
-    body->force = vec_add(body->force, force);
-    if (force.x != 0.0 || force.y != 0.0) body_wake(body);
+    body_push(body, force);
 }
 
 void body_add_impulse(body_t *body, vector_t impulse) {
@@ -263,9 +262,8 @@ void body_add_force_at(body_t *body, vector_t force, vector_t point) {
     REQUIRE_NOT_NULL(body);
     REQUIRE_FINITE_VECTOR(force);
     REQUIRE_FINITE_VECTOR(point);
-    body->force = vec_add(body->force, force);
     body->torque += vec_cross(vec_subtract(point, body->centroid), force);
-    if (force.x != 0.0 || force.y != 0.0) body_wake(body);
+    body_push(body, force);
 }
 
 void body_add_impulse_at(body_t *body, vector_t impulse, vector_t point) {

@@ -74,8 +74,8 @@ struct body {
 /* Wakes the body and every body of its sleeping island. */
 void body_wake(body_t *body);
 
-/* body_add_force for the force creators of forces.c, which check their
- * forces themselves: a nonzero push keeps the body awake. */
+/* Adds a force already checked (body_add_force checks the caller's;
+ * forces.c checks its own): a nonzero push keeps the body awake. */
 static inline void body_push(body_t *body, vector_t force) {
     body->force.x += force.x;
     body->force.y += force.y;
