@@ -69,6 +69,57 @@ static void settled_pile_falls_asleep(void) {
 
 /* Two stacks 20 m apart sleep; a box dropped on one wakes that one alone,
  * which goes back to sleep once the box rests on it. */
+/* A box sliding on ice sleeps below the tolerance speed (5 cm/s for its
+ * size) and never above it, though a resting body's velocity may jitter by
+ * a step of gravity (17 cm/s) and still count as slow: what counts beyond
+ * that is how far the body goes. */
+static void sliding_sleeps_only_below_the_tolerance(void) {
+    const double speeds[2] = {0.04, 0.06};
+    for (int k = 0; k < 2; k++) {
+        scene_t *scene = sleep_scene();
+        body_set_friction(scene_get_body(scene, 0), 0.0);
+        body_t *box = add_box(scene, 0.0, 0.5);
+        body_set_friction(box, 0.0);
+        run(scene, 10);
+        body_set_velocity(box, (vector_t){speeds[k], 0.0});
+        run(scene, 180);
+        CHECK(body_is_sleeping(box) == (k == 0));
+        if (k == 1) CHECK_NEAR(body_get_velocity(box).x, speeds[k], 1e-9);
+        scene_free(scene);
+    }
+}
+
+/* Without gravity nothing presses a body: one gliding at 3 cm/s keeps
+ * gliding, under the tolerance for a body in free motion (1 cm/s). */
+static void slow_free_flight_keeps_moving(void) {
+    scene_t *scene = scene_init();
+    scene_set_contacts_enabled(scene, true);
+    body_t *box = add_box(scene, 0.0, 0.0);
+    body_set_velocity(box, (vector_t){0.03, 0.0});
+    run(scene, 180);
+    CHECK(!body_is_sleeping(box));
+    CHECK_NEAR(body_get_centroid(box).x, 0.03 * 180 * DT, 1e-9);
+    scene_free(scene);
+}
+
+/* Twenty boxes stacked 10 cm into each other: the position pass lifts the
+ * column for half a minute, and it may not sleep while it rises faster than
+ * 5 mm/s. It sleeps 4.8 cm under the top's resting height (19.497 m); with
+ * only the 5 cm/s tolerance it slept 31 cm under. */
+static void a_column_sleeps_only_once_pushed_apart(void) {
+    scene_t *scene = sleep_scene();
+    body_t *boxes[20];
+    for (int j = 0; j < 20; j++) boxes[j] = add_box(scene, 0.0, 0.5 + 0.9 * j);
+    int step = 0;
+    while (step < 3600 && !body_is_sleeping(boxes[19])) {
+        scene_tick(scene, DT);
+        step++;
+    }
+    CHECK(body_is_sleeping(boxes[19]));
+    CHECK(body_get_centroid(boxes[19]).y > 19.497 - 0.06);
+    scene_free(scene);
+}
+
 static void a_dropped_body_wakes_its_island_only(void) {
     scene_t *scene = sleep_scene();
     body_t *left[3], *right[3];
@@ -224,6 +275,9 @@ static void sleeping_and_waking_allocate_nothing_once_warm(void) {
 }
 
 TEST_SUITE(sleep, TEST_CASE(sleeping_and_waking_allocate_nothing_once_warm), TEST_CASE(settled_pile_falls_asleep),
+           TEST_CASE(sliding_sleeps_only_below_the_tolerance),
+           TEST_CASE(slow_free_flight_keeps_moving),
+           TEST_CASE(a_column_sleeps_only_once_pushed_apart),
            TEST_CASE(a_dropped_body_wakes_its_island_only),
            TEST_CASE(removing_a_support_wakes_what_rested_on_it),
            TEST_CASE(no_body_sleeps_in_mid_air), TEST_CASE(setters_wake_the_island),

@@ -207,9 +207,13 @@ bool scene_get_contacts_enabled(scene_t *scene);
 
 /*
  * Sleeping (default on; it acts only while world contacts are on): an
- * island of touching bodies whose every body has moved slower than 0.01 m/s
- * and 2 degrees/s for 0.5 s, and that rests on a body of infinite mass (or
- * feels no force and no gravity), is taken out of the step: no integration,
+ * island of touching bodies whose every body has been slow for 0.5 s, and
+ * that rests on a body of infinite mass (or feels no force and no gravity),
+ * is taken out of the step. Slow: over each half second the body moved
+ * (counting its rim's turn) under 0.01 m/s, or 0.05 m/s when gravity or a
+ * force pulls it but then rose against the pull under 0.005 m/s, with
+ * velocities within that plus one step of its pull (all less for bodies
+ * under half a metre across). Out of the step means no integration,
  * no contacts, no solving, its velocities 0 (body_is_sleeping). It wakes
  * when a moving body comes within a step of it, when a pose, velocity,
  * nonzero force, torque or impulse is set on one of its bodies, or when one

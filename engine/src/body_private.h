@@ -60,9 +60,12 @@ struct body {
     uint32_t solver_index;
     /* Sleeping (sleep.c): asleep bodies are left out of the step; the
      * bodies of one sleeping island are linked in a circle by sleep_next
-     * (NULL when awake); sleep_time is how long the body has been slow (s). */
+     * (NULL when awake); sleep_time is how long the body has been slow (s),
+     * sleep_anchor and sleep_anchor_angle where it was sleep_window (s) ago. */
     bool asleep;
-    double sleep_time;
+    double sleep_time, sleep_window;
+    vector_t sleep_anchor;
+    double sleep_anchor_angle;
     struct body *sleep_next;
     /* Set by the contact pipeline: the contacts this body had as body a in
      * step contact_step of its world, at [contact_first, contact_first +

@@ -5,11 +5,18 @@
 #include "broadphase.h"
 #include "memory.h"
 
-/* Box2D's tolerances (0.01 m/s, 2 degrees/s, half a second). */
+/* Box2D v2's tolerance and time for a body in free motion (0.01 m/s, half a
+ * second); a body that gravity or a force pulls, and that can rest only
+ * pressed on others, gets five times more, Box2D v3's 0.05 m/s: a pile's
+ * bodies creep by millimetres a second long after it has come to rest
+ * (docs/design.md, Sleeping). */
 const double SLEEP_LINEAR_SPEED = 0.01;
-const double SLEEP_ANGULAR_SPEED = 2.0 * M_PI / 180.0;
 const double SLEEP_TIME = 0.5;
-/* The linear tolerance is at most this many body radii per second. */
+static const double SLEEP_PRESSED_FACTOR = 5.0;
+/* But it may rise against that pull (an overlapping stack being pushed
+ * apart) at only half the free tolerance. */
+static const double SLEEP_RISE_SHARE = 0.5;
+/* The tolerance is at most this many body radii per second. */
 static const double SLEEP_SIZE_RATE = 0.02;
 
 struct sleep_entry {
@@ -40,21 +47,42 @@ static uint32_t find_root(uint32_t *parent, uint32_t i) {
     return i;
 }
 
-/* Slow: its velocities within the tolerances, the linear one shrunk for
- * small bodies (a centimetre box at 0.01 m/s would still be settling), and
- * the position pass's pushes within a fifth of them. */
-static bool is_slow(const solver_velocity_t *row, const solver_displacement_t *moved, double dt,
-                    body_t *body) {
+/* Starts the window over which the body's drift is measured. */
+static void anchor_at(body_t *body) {
+    body->sleep_anchor = body->centroid;
+    body->sleep_anchor_angle = body->angle;
+    body->sleep_window = 0.0;
+}
+
+/* Slow: over each SLEEP_TIME the body has moved no farther than the
+ * tolerance speed covers in that time (its rim's motion counted with its
+ * centroid's), and no higher against its pull than SLEEP_RISE_SHARE of the
+ * free tolerance; its velocities stay within the tolerance plus what one
+ * step of its free acceleration adds. A deep pile's solve leaves each body a
+ * velocity of that order that the next step takes back (Chipmunk's idle
+ * speed is the same dt |g|), so what counts is how far the body goes. The
+ * tolerance shrinks for small bodies (a centimetre box at 1 cm/s is still
+ * settling). */
+static bool is_slow(const solver_velocity_t *row, const solver_displacement_t *moved,
+                    const solver_state_t *state, double dt, body_t *body) {
     double linear = fmin(SLEEP_LINEAR_SPEED, SLEEP_SIZE_RATE * body->radius);
-    /* The position pass's pushes (the displacement beyond the velocity's)
-     * are held to a fifth of the tolerances: a stack still pushing its
-     * overlaps out creeps slower than the velocities would show. */
-    double pushed = 5.0 * vec_get_length(vec_subtract(moved->dx, vec_multiply(dt, row->v))) / dt;
-    double turned = 5.0 * fabs(moved->dtheta - dt * row->w) / dt;
-    double speed = fmax(vec_get_length(row->v), pushed);
-    double spin = fmax(fabs(row->w), turned);
-    bool slow = speed <= linear && spin <= SLEEP_ANGULAR_SPEED;
-    body->sleep_time = slow ? body->sleep_time + dt : 0.0;
+    double jitter = dt * vec_get_length(state->acceleration);
+    double tolerance = jitter > 0.0 ? SLEEP_PRESSED_FACTOR * linear : linear;
+    if (vec_get_length(row->v) + body->radius * fabs(row->w) > tolerance + jitter) {
+        body->sleep_time = 0.0;
+        return false;
+    }
+    if (body->sleep_time == 0.0 || body->sleep_window >= SLEEP_TIME) anchor_at(body);
+    vector_t drift = vec_subtract(vec_add(body->centroid, moved->dx), body->sleep_anchor);
+    double turn = body->angle + moved->dtheta - body->sleep_anchor_angle;
+    double moved_by = vec_get_length(drift) + body->radius * fabs(turn);
+    double rise = jitter > 0.0 ? -vec_dot(drift, state->acceleration) * dt / jitter : 0.0;
+    if (moved_by > tolerance * SLEEP_TIME || rise > SLEEP_RISE_SHARE * linear * SLEEP_TIME) {
+        anchor_at(body);
+        body->sleep_time = 0.0;
+    }
+    body->sleep_window += dt;
+    body->sleep_time += dt;
     return body->sleep_time >= SLEEP_TIME;
 }
 
@@ -63,7 +91,8 @@ size_t sleep_time_bodies(const sleep_step_t *step) {
     for (size_t i = 0; i < step->count; i++) {
         body_t *body = step->bodies[i];
         if (!body_is_movable(body) || body->removed) continue;
-        ready += is_slow(&step->velocities[i], &step->displacements[i], step->dt, body);
+        ready += is_slow(&step->velocities[i], &step->displacements[i], &step->states[i], step->dt,
+                         body);
     }
     return ready;
 }

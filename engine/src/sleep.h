@@ -26,9 +26,10 @@
 #include "broadphase.h"
 #include "solver.h"
 
-/* Below these speeds (m/s, rad/s; the linear one less for bodies under
- * half a metre) for SLEEP_TIME (s) a body may sleep. */
-extern const double SLEEP_LINEAR_SPEED, SLEEP_ANGULAR_SPEED, SLEEP_TIME;
+/* Moving slower than this (m/s at its rim, less for bodies under half a
+ * metre, five times more for a body gravity or a force pulls) for SLEEP_TIME (s)
+ * a body may sleep. */
+extern const double SLEEP_LINEAR_SPEED, SLEEP_TIME;
 
 typedef struct {
     struct sleep_entry *entries;
