@@ -482,6 +482,7 @@ int main(int argc, char **argv) {
     }
     if (o.stats) print_stats(&app, seconds_since(loop_start));
     stepper_stop(stepper);
+    render_free();
     app_free(&app);
     script_free(script);
     video_close(&video);
