@@ -166,6 +166,40 @@ static void test_clock_forgives_a_stall(void) {
            "forgave %.4f s", clock.forgiven);
 }
 
+/* A machine whose step takes 10 ms while drawing takes 8 ms (5000 bodies on
+ * two shared cores): one step fits a 60 Hz frame. Held to it, every frame
+ * runs one step, however late the frames come, and the debt never builds:
+ * no spiral. A budget that fits the frame's two steps changes nothing. */
+static void test_clock_held_to_the_frame_budget(void) {
+    EXPECT(step_clock_budget(1.0 / 60.0, 0.008, 0.010) == 1, "budget at 10 ms a step: %d",
+           step_clock_budget(1.0 / 60.0, 0.008, 0.010));
+    EXPECT(step_clock_budget(1.0 / 60.0, 0.003, 0.003) == 4, "budget at 3 ms a step: %d",
+           step_clock_budget(1.0 / 60.0, 0.003, 0.003));
+    EXPECT(step_clock_budget(1.0 / 60.0, 0.050, 0.010) == 1, "a frame over budget stops it");
+    EXPECT(step_clock_budget(1.0 / 60.0, 0.008, 0.0) == 0, "no step measured: a budget");
+    step_clock_t clock = {0};
+    for (int frame = 0; frame < 600; frame++) {
+        double dt = frame % 2 ? 1.0 / 60.0 : 0.040; /* frames late too */
+        int steps = step_clock_advance_within(&clock, dt, 1);
+        EXPECT(steps == 1, "frame %d ran %d steps on a budget of 1", frame, steps);
+        EXPECT(clock.owed <= STEP_CLOCK_STEP, "frame %d: %.4f s owed", frame, clock.owed);
+        if (app_failures > 0) return;
+    }
+    EXPECT(clock.held == 600, "%lu of 600 frames counted as held", clock.held);
+    EXPECT(fabs(clock.simulated - 600 * STEP_CLOCK_STEP) < 1e-9, "simulated %.4f s",
+           clock.simulated);
+    step_clock_t fits = {0};
+    double requested = 0.0;
+    for (int frame = 0; frame < 600; frame++) {
+        requested += 1.0 / 60.0;
+        step_clock_advance_within(&fits, 1.0 / 60.0, 2);
+    }
+    EXPECT(fits.held == 0 && fits.forgiven == 0.0, "a budget of 2 held %lu frames, forgave %g s",
+           fits.held, fits.forgiven);
+    EXPECT(fabs(requested - fits.simulated) <= STEP_CLOCK_STEP, "simulated %.4f s for %.4f s",
+           fits.simulated, requested);
+}
+
 /* A scene file's own timestep: the clock keeps real time at 60 frames per
  * second for steps of 1/1000 s to 1/30 s, runs up to 1/30 s of steps a frame
  * (never fewer than 4 steps), and a step longer than the debt limit still
@@ -803,6 +837,7 @@ static const unit_test_t TESTS[] = {
     {"app_units.clock_keeps_real_time_through_late_frames",
      test_clock_keeps_real_time_through_late_frames},
     {"app_units.clock_forgives_a_stall", test_clock_forgives_a_stall},
+    {"app_units.clock_held_to_the_frame_budget", test_clock_held_to_the_frame_budget},
     {"app_units.layout_leaves_the_view_free", test_layout_leaves_the_view_free},
     {"app_units.energy_drift_from_its_reference", test_energy_drift_from_its_reference},
     {"app_units.energy_drift_chart_window_and_scale", test_energy_drift_chart_window_and_scale},
