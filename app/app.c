@@ -299,7 +299,8 @@ int app_plan_steps(app_t *app, double frame_dt) {
     if (!app->paused) {
         impulse_trail_age(&app->trail, frame_dt);
         app->requested_time += frame_dt * app->time_scale;
-        steps = step_clock_advance(&app->clock, frame_dt * app->time_scale);
+        steps = step_clock_advance_within(&app->clock, frame_dt * app->time_scale,
+                                          app->step_budget);
     }
     if (app->step_once) {
         app->step_once = false;

@@ -117,6 +117,7 @@ typedef struct {
     energy_drift_t drift;
     app_timing_t timing;
     step_clock_t clock;
+    int step_budget;       /* the most steps this frame may run; 0: no budget */
     double requested_time; /* simulated seconds the frames asked for (for --stats) */
 
     /* A short status line ("elasticity of body set to 0.80"), shown a while;
@@ -142,8 +143,9 @@ bool app_in_view(const app_t *app, vector_t pixel);
 
 /* The physics for a frame of frame_dt seconds of display time: the step
  * clock is owed frame_dt times the time scale and gives the steps to run now
- * (step_clock.h; none while paused, but a requested single step); ages the
- * impulse trail. Returns how many steps to run. */
+ * (step_clock.h; none while paused, but a requested single step), at most
+ * step_budget of them; ages the impulse trail. Returns how many steps to
+ * run. */
 int app_plan_steps(app_t *app, double frame_dt);
 
 /* Runs that many steps, recording their impulses into the trail. Touches

@@ -1,5 +1,4 @@
 #include "draw.h"
-#include "raster.h"
 #include <SDL2_gfxPrimitives.h>
 #include <SDL2_gfxPrimitives_font.h>
 #include <math.h>
@@ -10,45 +9,6 @@ Sint16 draw_coord(double pixel) {
     if (!(pixel > -30000.0)) return -30000;
     if (pixel > 30000.0) return 30000;
     return (Sint16)lround(pixel);
-}
-
-void draw_arrow(SDL_Renderer *renderer, vector_t tail, vector_t head, palette_rgb_t color,
-                Uint8 alpha, int width) {
-    vector_t d = vec_subtract(head, tail);
-    double length = vec_get_length(d);
-    if (!(length >= 1.0) || alpha == 0) return;
-    vector_t u = vec_multiply(1.0 / length, d);
-    vector_t n = vec_perpendicular(u);
-    double head_length = fmin(0.5 * length, 6.0 + 2.0 * width);
-    double head_half = 0.55 * head_length;
-    vector_t base = vec_subtract(head, vec_multiply(head_length, u));
-    vector_t left = vec_add(base, vec_multiply(head_half, n));
-    vector_t right = vec_subtract(base, vec_multiply(head_half, n));
-    bool shaft = length - head_length >= 1.0;
-    if (alpha == 255 && raster_direct()) {
-        /* Opaque arrows (the axes: thousands in a pile) straight into the
-         * canvas: the shaft as a thin quadrilateral, the head a triangle. */
-        SDL_RenderFlush(renderer);
-        if (shaft) {
-            vector_t side = vec_multiply(0.5 * (width < 1 ? 1 : width), n);
-            vector_t quad[4] = {vec_add(tail, side), vec_add(base, side),
-                                vec_subtract(base, side), vec_subtract(tail, side)};
-            raster_fill(quad, 4, color);
-        }
-        vector_t triangle[3] = {head, left, right};
-        raster_fill(triangle, 3, color);
-        return;
-    }
-    if (shaft && width <= 1) {
-        lineRGBA(renderer, draw_coord(tail.x), draw_coord(tail.y), draw_coord(base.x),
-                 draw_coord(base.y), color.r, color.g, color.b, alpha);
-    } else if (shaft) {
-        thickLineRGBA(renderer, draw_coord(tail.x), draw_coord(tail.y), draw_coord(base.x),
-                      draw_coord(base.y), (Uint8)width, color.r, color.g, color.b, alpha);
-    }
-    filledTrigonRGBA(renderer, draw_coord(head.x), draw_coord(head.y), draw_coord(left.x),
-                     draw_coord(left.y), draw_coord(right.x), draw_coord(right.y), color.r,
-                     color.g, color.b, alpha);
 }
 
 static SDL_Surface *text_canvas;

@@ -12,11 +12,6 @@
 /* Pixel coordinates clamped to what SDL2_gfx's Sint16 can hold. */
 Sint16 draw_coord(double pixel);
 
-/* An arrow from tail to head (pixels) with a shaft `width` pixels wide and a
- * head scaled to the arrow (at most half its length). */
-void draw_arrow(SDL_Renderer *renderer, vector_t tail, vector_t head, palette_rgb_t color,
-                Uint8 alpha, int width);
-
 /* Text goes straight into canvas (a 32-bit surface that renderer draws
  * into) when it is not NULL, else through the renderer. */
 void draw_set_canvas(SDL_Renderer *renderer, SDL_Surface *canvas);

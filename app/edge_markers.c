@@ -1,5 +1,6 @@
 #include "edge_markers.h"
 #include <math.h>
+#include "batch.h"
 #include "raster.h"
 
 static palette_rgb_t rgb_of(rgb_color_t c) {
@@ -15,15 +16,20 @@ static bool off_view(const camera_t *camera, body_t *body) {
     return high.x < 0 || low.x >= camera->width || low.y < 0 || high.y >= camera->height;
 }
 
+static batch_t markers;
+
+void edge_markers_free(void) {
+    batch_free(&markers);
+}
+
 /* A triangle at `at` pointing along unit vector `dir`. */
-static void draw_marker(vector_t at, vector_t dir, palette_rgb_t color) {
+static void add_marker(vector_t at, vector_t dir, palette_rgb_t color) {
     vector_t side = vec_perpendicular(dir);
     vector_t tip = vec_add(at, vec_multiply(10.0, dir));
     vector_t back = vec_subtract(at, vec_multiply(6.0, dir));
     vector_t triangle[3] = {tip, vec_add(back, vec_multiply(8.0, side)),
                             vec_subtract(back, vec_multiply(8.0, side))};
-    raster_fill(triangle, 3, color);
-    raster_outline(triangle, 3, PALETTE_GRAB);
+    batch_outlined(&markers, triangle, 3, color, PALETTE_GRAB);
 }
 
 void edge_markers_draw(SDL_Renderer *renderer, SDL_Surface *canvas, app_t *app) {
@@ -31,7 +37,7 @@ void edge_markers_draw(SDL_Renderer *renderer, SDL_Surface *canvas, app_t *app) 
     scene_t *scene = app->sandbox.scene;
     const double inset = EDGE_MARKER_INSET;
     if (camera->width <= 2 * inset || camera->height <= 2 * inset) return;
-    raster_begin(renderer, canvas);
+    batch_clear(&markers);
     for (size_t i = 0; i < scene_bodies(scene); i++) {
         body_t *body = scene_get_body(scene, i);
         if (body_is_removed(body) || sandbox_is_static(body) || !off_view(camera, body)) continue;
@@ -42,7 +48,8 @@ void edge_markers_draw(SDL_Renderer *renderer, SDL_Surface *canvas, app_t *app) 
         vector_t d = vec_subtract(target, at);
         double length = vec_get_length(d);
         if (!(length > 0.0) || !isfinite(length)) continue;
-        draw_marker(at, vec_multiply(1.0 / length, d), rgb_of(body_get_color(body)));
+        add_marker(at, vec_multiply(1.0 / length, d), rgb_of(body_get_color(body)));
     }
-    raster_end();
+    raster_begin(renderer, canvas);
+    raster_batch(&markers);
 }

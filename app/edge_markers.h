@@ -9,6 +9,9 @@
 
 void edge_markers_draw(SDL_Renderer *renderer, SDL_Surface *canvas, app_t *app);
 
+/* Frees the markers' batch, kept from frame to frame (at exit). */
+void edge_markers_free(void);
+
 /* How far inside the view's edge a marker sits (pixels). */
 #define EDGE_MARKER_INSET 14
 

@@ -3,26 +3,15 @@
 #include <stdbool.h>
 #include <stdlib.h>
 
-#define BUCKETS 16
-
-typedef struct {
-    palette_rgb_t color;
-    SDL_Rect *spans;
-    size_t count, capacity;
-} bucket_t;
-
 static struct {
     SDL_Renderer *renderer;
     SDL_Surface *canvas;
     int width, height;
-    bucket_t buckets[BUCKETS];
-    size_t used;
 } raster;
 
 void raster_begin(SDL_Renderer *renderer, SDL_Surface *canvas) {
     raster.renderer = renderer;
     raster.canvas = canvas != NULL && canvas->format->BytesPerPixel == 4 ? canvas : NULL;
-    raster.used = 0;
     if (raster.canvas != NULL) {
         SDL_RenderFlush(renderer);
         raster.width = canvas->w;
@@ -30,49 +19,6 @@ void raster_begin(SDL_Renderer *renderer, SDL_Surface *canvas) {
     } else if (SDL_GetRendererOutputSize(renderer, &raster.width, &raster.height) != 0) {
         raster.width = raster.height = 0;
     }
-}
-
-bool raster_direct(void) {
-    return raster.canvas != NULL;
-}
-
-static void flush_buckets(void) {
-    SDL_SetRenderDrawBlendMode(raster.renderer, SDL_BLENDMODE_NONE);
-    for (size_t i = 0; i < raster.used; i++) {
-        bucket_t *b = &raster.buckets[i];
-        if (b->count == 0) continue;
-        SDL_SetRenderDrawColor(raster.renderer, b->color.r, b->color.g, b->color.b, 255);
-        SDL_RenderFillRects(raster.renderer, b->spans, (int)b->count);
-        b->count = 0;
-    }
-    raster.used = 0;
-}
-
-void raster_end(void) {
-    if (raster.canvas == NULL) flush_buckets();
-}
-
-static bucket_t *bucket_for(palette_rgb_t color) {
-    for (size_t i = 0; i < raster.used; i++) {
-        palette_rgb_t c = raster.buckets[i].color;
-        if (c.r == color.r && c.g == color.g && c.b == color.b) return &raster.buckets[i];
-    }
-    if (raster.used == BUCKETS) flush_buckets();
-    bucket_t *b = &raster.buckets[raster.used++];
-    b->color = color;
-    b->count = 0;
-    return b;
-}
-
-static void add_span(bucket_t *b, int x0, int x1, int y) {
-    if (b->count == b->capacity) {
-        size_t capacity = b->capacity ? 2 * b->capacity : 4096;
-        SDL_Rect *grown = realloc(b->spans, capacity * sizeof(SDL_Rect));
-        if (grown == NULL) return;
-        b->spans = grown;
-        b->capacity = capacity;
-    }
-    b->spans[b->count++] = (SDL_Rect){x0, y, x1 - x0 + 1, 1};
 }
 
 static Uint32 *row_of(int y) {
@@ -105,7 +51,8 @@ static double chain_x(const vector_t *p, int n, int step, int *edge, int bottom,
     return dy > 0.0 ? p[a].x + (yc - p[a].y) * (p[b].x - p[a].x) / dy : p[a].x;
 }
 
-void raster_fill(const vector_t *p, int n, palette_rgb_t color) {
+/* Scan-converts a convex polygon straight into the canvas. */
+static void canvas_fill(const vector_t *p, int n, palette_rgb_t color) {
     if (n < 3 || raster.width <= 0) return;
     int top = 0, bottom = 0;
     for (int i = 1; i < n; i++) {
@@ -116,13 +63,7 @@ void raster_fill(const vector_t *p, int n, palette_rgb_t color) {
     if (!(min_y < raster.height) || !(max_y >= 0)) return;
     int y0 = min_y < 0 ? 0 : ceil_int(min_y - 0.5);
     int y1 = max_y >= raster.height ? raster.height - 1 : floor_int(max_y - 0.5);
-    Uint32 pixel = 0;
-    bucket_t *bucket = NULL;
-    if (raster.canvas != NULL) {
-        pixel = SDL_MapRGB(raster.canvas->format, color.r, color.g, color.b);
-    } else {
-        bucket = bucket_for(color);
-    }
+    Uint32 pixel = SDL_MapRGB(raster.canvas->format, color.r, color.g, color.b);
     /* The two chains from the top vertex down to the bottom one. */
     int forward = top, backward = top;
     for (int y = y0; y <= y1; y++) {
@@ -137,11 +78,7 @@ void raster_fill(const vector_t *p, int n, palette_rgb_t color) {
         if (x0 < 0) x0 = 0;
         if (x1 > raster.width - 1) x1 = raster.width - 1;
         if (x0 > x1) continue;
-        if (bucket != NULL) {
-            add_span(bucket, x0, x1, y);
-        } else {
-            SDL_memset4(row_of(y) + x0, pixel, (size_t)(x1 - x0 + 1));
-        }
+        SDL_memset4(row_of(y) + x0, pixel, (size_t)(x1 - x0 + 1));
     }
 }
 
@@ -205,7 +142,7 @@ static void canvas_line(double fx0, double fy0, double fx1, double fy1, Uint32 p
     }
 }
 
-void raster_outline(const vector_t *p, int n, palette_rgb_t color) {
+static void outline(const vector_t *p, int n, palette_rgb_t color) {
     if (n < 2 || raster.width <= 0) return;
     if (raster.canvas != NULL) {
         Uint32 pixel = SDL_MapRGB(raster.canvas->format, color.r, color.g, color.b);
@@ -225,4 +162,43 @@ void raster_outline(const vector_t *p, int n, palette_rgb_t color) {
     SDL_SetRenderDrawBlendMode(raster.renderer, SDL_BLENDMODE_NONE);
     SDL_SetRenderDrawColor(raster.renderer, color.r, color.g, color.b, 255);
     SDL_RenderDrawLines(raster.renderer, points, n + 1);
+}
+
+/* A run's vertices back in double precision, for the scan converter. */
+static int run_pixels(const batch_t *batch, const batch_run_t *run, vector_t *p) {
+    for (int k = 0; k < run->count; k++) {
+        const batch_vertex_t *v = &batch->vertices[run->first + k];
+        p[k] = (vector_t){v->x, v->y};
+    }
+    return run->count;
+}
+
+/* Every triangle in one call, blended when any is translucent. */
+static void geometry_fill(const batch_t *batch) {
+    SDL_SetRenderDrawBlendMode(raster.renderer,
+                               batch->translucent ? SDL_BLENDMODE_BLEND : SDL_BLENDMODE_NONE);
+    const batch_vertex_t *v = batch->vertices;
+    SDL_RenderGeometryRaw(raster.renderer, NULL, &v->x, sizeof(*v), (const SDL_Color *)&v->r,
+                          sizeof(*v), NULL, 0, (int)batch->vertex_count, batch->indices,
+                          (int)batch->index_count, sizeof(int));
+    /* The outlines below may go straight into the canvas: after the fills. */
+    SDL_RenderFlush(raster.renderer);
+}
+
+void raster_batch(const batch_t *batch) {
+    if (batch->run_count == 0 || raster.width <= 0) return;
+    vector_t p[BATCH_MAX_POLYGON];
+    if (raster.canvas != NULL && !batch->translucent) {
+        for (size_t i = 0; i < batch->run_count; i++) {
+            const batch_run_t *run = &batch->runs[i];
+            const batch_vertex_t *v = &batch->vertices[run->first];
+            canvas_fill(p, run_pixels(batch, run, p), (palette_rgb_t){v->r, v->g, v->b});
+        }
+    } else {
+        geometry_fill(batch);
+    }
+    for (size_t i = 0; i < batch->run_count; i++) {
+        const batch_run_t *run = &batch->runs[i];
+        if (run->outlined) outline(p, run_pixels(batch, run, p), run->outline);
+    }
 }

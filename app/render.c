@@ -2,11 +2,12 @@
 #include <SDL2_gfxPrimitives.h>
 #include <math.h>
 #include <stdlib.h>
+#include "batch.h"
 #include "draw.h"
 #include "edge_markers.h"
 #include "raster.h"
 
-#define MAX_VERTICES 64
+#define MAX_VERTICES BATCH_MAX_POLYGON
 #define IMPULSE_MAX_PIXELS 200.0
 
 static palette_rgb_t rgb_of(rgb_color_t c) {
@@ -38,42 +39,39 @@ static void draw_grid(SDL_Renderer *renderer, const camera_t *camera) {
     }
 }
 
+/* Kept across frames so that once warm a frame allocates nothing. */
+static batch_t body_batch, arrow_batch, impulse_batch;
+
+void render_free(void) {
+    batch_free(&body_batch);
+    batch_free(&arrow_batch);
+    batch_free(&impulse_batch);
+    edge_markers_free();
+}
+
+/* Every body in view, fill and outline, in one batch: each body's polygon
+ * is read and taken to pixels once. */
 static void draw_bodies(SDL_Renderer *renderer, SDL_Surface *canvas, app_t *app,
                         body_t *hovered) {
     scene_t *scene = app->sandbox.scene;
     const camera_t *camera = &app->camera;
-    vector_t pixels[MAX_VERTICES];
+    vector_t pixels[BATCH_MAX_POLYGON];
     bool dim_sleeping = app->overlays[OVERLAY_SLEEPING];
-    raster_begin(renderer, canvas);
-    /* Fills first; the outlines go on top. */
-    for (int pass = 0; pass < 2; pass++) {
-        for (size_t i = 0; i < scene_bodies(scene); i++) {
-            body_t *body = scene_get_body(scene, i);
-            if (body_is_removed(body)) continue;
-            polygon_t polygon = body_get_polygon(body);
-            int n = polygon.count < MAX_VERTICES ? (int)polygon.count : MAX_VERTICES;
-            double min_x = INFINITY, max_x = -INFINITY, min_y = INFINITY, max_y = -INFINITY;
-            for (int k = 0; k < n; k++) {
-                pixels[k] = camera_to_pixel(camera, polygon.vertices[k]);
-                min_x = fmin(min_x, pixels[k].x);
-                max_x = fmax(max_x, pixels[k].x);
-                min_y = fmin(min_y, pixels[k].y);
-                max_y = fmax(max_y, pixels[k].y);
-            }
-            if (max_x < 0 || max_y < 0 || min_x >= camera->width || min_y >= camera->height) {
-                continue;
-            }
-            palette_rgb_t fill = rgb_of(body_get_color(body));
-            if (dim_sleeping && body_is_sleeping(body)) fill = palette_sleeping(fill);
-            if (pass == 0) {
-                raster_fill(pixels, n, fill);
-            } else {
-                raster_outline(pixels, n, body == hovered ? PALETTE_GRAB : lighter(fill, 0.45));
-            }
-        }
-        if (pass == 0) raster_end();
+    batch_clear(&body_batch);
+    for (size_t i = 0; i < scene_bodies(scene); i++) {
+        body_t *body = scene_get_body(scene, i);
+        if (body_is_removed(body)) continue;
+        polygon_t polygon = body_get_polygon(body);
+        int n = polygon.count < BATCH_MAX_POLYGON ? (int)polygon.count : BATCH_MAX_POLYGON;
+        for (int k = 0; k < n; k++) pixels[k] = camera_to_pixel(camera, polygon.vertices[k]);
+        if (!batch_polygon_visible(pixels, n, camera->width, camera->height)) continue;
+        palette_rgb_t fill = rgb_of(body_get_color(body));
+        if (dim_sleeping && body_is_sleeping(body)) fill = palette_sleeping(fill);
+        batch_outlined(&body_batch, pixels, n, fill,
+                       body == hovered ? PALETTE_GRAB : lighter(fill, 0.45));
     }
-    raster_end();
+    raster_begin(renderer, canvas);
+    raster_batch(&body_batch);
 }
 
 /* The scene file's springs: a zigzag between the centroids they pull
@@ -171,15 +169,15 @@ static void draw_bounds(SDL_Renderer *renderer, app_t *app) {
     }
 }
 
-static void draw_velocities(SDL_Renderer *renderer, app_t *app) {
+static void draw_velocities(app_t *app) {
     scene_t *scene = app->sandbox.scene;
     for (size_t i = 0; i < scene_bodies(scene); i++) {
         body_t *body = scene_get_body(scene, i);
         if (body_is_removed(body) || sandbox_is_static(body)) continue;
         vector_t c = body_get_centroid(body);
         vector_t tip = vec_add(c, vec_multiply(RENDER_VELOCITY_SCALE, body_get_velocity(body)));
-        draw_arrow(renderer, camera_to_pixel(&app->camera, c), camera_to_pixel(&app->camera, tip),
-                   PALETTE_VELOCITY, 255, 1);
+        batch_arrow(&arrow_batch, camera_to_pixel(&app->camera, c),
+                    camera_to_pixel(&app->camera, tip), PALETTE_VELOCITY, 255, 1);
     }
 }
 
@@ -213,7 +211,7 @@ static double body_extent(const camera_t *camera, body_t *body) {
     return 0.5 * camera_length_to_pixels(camera, fmin(box.max.x - box.min.x, box.max.y - box.min.y));
 }
 
-static void draw_axes(SDL_Renderer *renderer, app_t *app) {
+static void draw_axes(app_t *app) {
     scene_t *scene = app->sandbox.scene;
     for (size_t i = 0; i < scene_contact_count(scene); i++) {
         const contact_t *contact = scene_get_contact(scene, i);
@@ -225,7 +223,8 @@ static void draw_axes(SDL_Renderer *renderer, app_t *app) {
         vector_t tail = camera_to_pixel(&app->camera, contact_anchor(contact));
         /* World y is up, pixel y is down. */
         vector_t dir = {contact->axis.x, -contact->axis.y};
-        draw_arrow(renderer, tail, vec_add(tail, vec_multiply(length, dir)), PALETTE_AXIS, 255, 2);
+        batch_arrow(&arrow_batch, tail, vec_add(tail, vec_multiply(length, dir)), PALETTE_AXIS,
+                    255, 2);
     }
 }
 
@@ -251,7 +250,7 @@ static void draw_points(SDL_Renderer *renderer, app_t *app) {
     }
 }
 
-static void draw_impulses(SDL_Renderer *renderer, app_t *app) {
+static void draw_impulses(app_t *app) {
     for (size_t i = 0; i < app->trail.count; i++) {
         const impulse_mark_t *mark = impulse_trail_get(&app->trail, i);
         double fade = 1.0 - mark->age / IMPULSE_TRAIL_SECONDS;
@@ -266,7 +265,7 @@ static void draw_impulses(SDL_Renderer *renderer, app_t *app) {
         if (length > IMPULSE_MAX_PIXELS) {
             head = vec_add(tail, vec_multiply(IMPULSE_MAX_PIXELS / length, arrow));
         }
-        draw_arrow(renderer, tail, head, PALETTE_IMPULSE, (Uint8)lround(255.0 * fade), 3);
+        batch_arrow(&impulse_batch, tail, head, PALETTE_IMPULSE, (Uint8)lround(255.0 * fade), 4);
     }
 }
 
@@ -279,10 +278,24 @@ void render_world(SDL_Renderer *renderer, SDL_Surface *canvas, app_t *app, body_
     draw_bodies(renderer, canvas, app, hovered);
     draw_springs(renderer, app);
     if (app->overlays[OVERLAY_BOUNDS]) draw_bounds(renderer, app);
-    if (app->overlays[OVERLAY_VELOCITIES]) draw_velocities(renderer, app);
+    /* The velocities and the axes: opaque arrows, over the bounds and
+     * under the centroids, as they always were. */
+    batch_clear(&arrow_batch);
+    if (app->overlays[OVERLAY_VELOCITIES]) {
+        draw_velocities(app);
+        raster_begin(renderer, canvas);
+        raster_batch(&arrow_batch);
+        batch_clear(&arrow_batch);
+    }
     if (app->overlays[OVERLAY_CENTROIDS]) draw_centroids(renderer, app);
-    if (app->overlays[OVERLAY_AXES]) draw_axes(renderer, app);
-    if (app->overlays[OVERLAY_IMPULSES]) draw_impulses(renderer, app);
+    if (app->overlays[OVERLAY_AXES]) draw_axes(app);
+    raster_begin(renderer, canvas);
+    raster_batch(&arrow_batch);
+    /* The impulses fade: translucent, so through SDL_RenderGeometry. */
+    batch_clear(&impulse_batch);
+    if (app->overlays[OVERLAY_IMPULSES]) draw_impulses(app);
+    raster_begin(renderer, canvas);
+    raster_batch(&impulse_batch);
     if (app->overlays[OVERLAY_POINTS]) draw_points(renderer, app);
     draw_grab(renderer, app);
     draw_preview(renderer, app);

@@ -15,6 +15,9 @@
  * (the bodies are then written straight into it), else NULL. */
 void render_world(SDL_Renderer *renderer, SDL_Surface *canvas, app_t *app, body_t *hovered);
 
+/* Frees the buffers kept from frame to frame (at exit). */
+void render_free(void);
+
 /* The length (m) of a velocity arrow per m/s. */
 #define RENDER_VELOCITY_SCALE 0.1
 

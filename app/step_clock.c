@@ -1,5 +1,6 @@
 #include "step_clock.h"
 #include <math.h>
+#include <stdbool.h>
 
 double step_clock_step(const step_clock_t *clock) {
     return clock->step > 0.0 ? clock->step : STEP_CLOCK_STEP;
@@ -16,14 +17,30 @@ void step_clock_set_step(step_clock_t *clock, double step) {
 }
 
 int step_clock_advance(step_clock_t *clock, double dt) {
+    return step_clock_advance_within(clock, dt, 0);
+}
+
+int step_clock_budget(double period, double other, double per_step) {
+    if (!(per_step > 0.0)) return 0;
+    double fit = floor((period - other) / per_step);
+    return fit < 1.0 ? 1 : (int)fmin(fit, 100000.0);
+}
+
+int step_clock_advance_within(step_clock_t *clock, double dt, int budget) {
     double step = step_clock_step(clock);
     int max_steps = step_clock_max_steps(clock);
+    bool held = budget > 0 && budget < max_steps && clock->owed + dt >= (budget + 1) * step;
+    if (held) max_steps = budget;
     double max_debt = fmax(STEP_CLOCK_MAX_DEBT, step);
     clock->owed += dt;
     int steps = 0;
     while (clock->owed >= step && steps < max_steps) {
         clock->owed -= step;
         steps++;
+    }
+    if (held) {
+        clock->held++;
+        max_debt = step;
     }
     if (clock->owed > max_debt) {
         clock->forgiven += clock->owed - max_debt;

@@ -29,10 +29,29 @@ typedef struct {
     double simulated; /* simulated seconds run so far */
     double forgiven;  /* simulated seconds dropped after stalls */
     double step;      /* seconds per step; 0: STEP_CLOCK_STEP */
+    unsigned long held; /* frames whose steps the frame budget cut */
 } step_clock_t;
 
 /* Adds dt simulated seconds; returns the steps to run now. */
 int step_clock_advance(step_clock_t *clock, double dt);
+
+/*
+ * The same, running at most `budget` steps (0: no budget; see
+ * step_clock_budget). A frame the budget cuts is counted in `held`, and
+ * what it owes beyond one step is forgiven at once: a machine that cannot
+ * run the physics in real time slows the simulation down, frame after
+ * frame at the budget, rather than keep a debt that would have every
+ * following frame run the most steps (frames longer still: a spiral).
+ */
+int step_clock_advance_within(step_clock_t *clock, double dt, int budget);
+
+/*
+ * The steps that fit a frame of `period` seconds when the rest of the frame
+ * (drawing) takes `other` seconds and a step `per_step` seconds (recent
+ * measurements): at least 1, so the simulation never stops; 0 (no budget)
+ * while a step has not been measured.
+ */
+int step_clock_budget(double period, double other, double per_step);
 
 /* The clock's step (s). */
 double step_clock_step(const step_clock_t *clock);

@@ -6,7 +6,8 @@
  * (app/integrator_choice.c, against the engine), the list of scenes
  * PageDown and PageUp go through (app/presets.c), the SCENE panel's words
  * (app/scene_text.c), and the sandbox's scenes from scene files
- * (app/sandbox_scene.c with the game rules, against the sanitized engine).
+ * (app/sandbox_scene.c with the game rules, against the sanitized engine),
+ * and the geometry batch the renderer draws in one call (app/batch.c).
  * Ends with "N passed, N failed" like every test program make check runs.
  * Run from the repository root (it reads assets/scenes/).
  */
@@ -15,6 +16,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "batch.h"
 #include "energy_drift.h"
 #include "integrator_choice.h"
 #include "layout.h"
@@ -162,6 +164,40 @@ static void test_clock_forgives_a_stall(void) {
            later, expected);
     EXPECT(fabs(clock.forgiven - (2.0 - STEP_CLOCK_MAX_DEBT - 4 * STEP_CLOCK_STEP)) < 1e-9,
            "forgave %.4f s", clock.forgiven);
+}
+
+/* A machine whose step takes 10 ms while drawing takes 8 ms (5000 bodies on
+ * two shared cores): one step fits a 60 Hz frame. Held to it, every frame
+ * runs one step, however late the frames come, and the debt never builds:
+ * no spiral. A budget that fits the frame's two steps changes nothing. */
+static void test_clock_held_to_the_frame_budget(void) {
+    EXPECT(step_clock_budget(1.0 / 60.0, 0.008, 0.010) == 1, "budget at 10 ms a step: %d",
+           step_clock_budget(1.0 / 60.0, 0.008, 0.010));
+    EXPECT(step_clock_budget(1.0 / 60.0, 0.003, 0.003) == 4, "budget at 3 ms a step: %d",
+           step_clock_budget(1.0 / 60.0, 0.003, 0.003));
+    EXPECT(step_clock_budget(1.0 / 60.0, 0.050, 0.010) == 1, "a frame over budget stops it");
+    EXPECT(step_clock_budget(1.0 / 60.0, 0.008, 0.0) == 0, "no step measured: a budget");
+    step_clock_t clock = {0};
+    for (int frame = 0; frame < 600; frame++) {
+        double dt = frame % 2 ? 1.0 / 60.0 : 0.040; /* frames late too */
+        int steps = step_clock_advance_within(&clock, dt, 1);
+        EXPECT(steps == 1, "frame %d ran %d steps on a budget of 1", frame, steps);
+        EXPECT(clock.owed <= STEP_CLOCK_STEP, "frame %d: %.4f s owed", frame, clock.owed);
+        if (app_failures > 0) return;
+    }
+    EXPECT(clock.held == 600, "%lu of 600 frames counted as held", clock.held);
+    EXPECT(fabs(clock.simulated - 600 * STEP_CLOCK_STEP) < 1e-9, "simulated %.4f s",
+           clock.simulated);
+    step_clock_t fits = {0};
+    double requested = 0.0;
+    for (int frame = 0; frame < 600; frame++) {
+        requested += 1.0 / 60.0;
+        step_clock_advance_within(&fits, 1.0 / 60.0, 2);
+    }
+    EXPECT(fits.held == 0 && fits.forgiven == 0.0, "a budget of 2 held %lu frames, forgave %g s",
+           fits.held, fits.forgiven);
+    EXPECT(fabs(requested - fits.simulated) <= STEP_CLOCK_STEP, "simulated %.4f s for %.4f s",
+           fits.simulated, requested);
 }
 
 /* A scene file's own timestep: the clock keeps real time at 60 frames per
@@ -681,6 +717,113 @@ static void test_energy_counts_springs_and_newton(void) {
     sandbox_free(&sandbox);
 }
 
+/* k vertices of a regular polygon of radius r about c (pixels). */
+static void regular(vector_t *out, int k, vector_t c, double r) {
+    for (int i = 0; i < k; i++) {
+        double a = 2.0 * M_PI * i / k;
+        out[i] = (vector_t){c.x + r * cos(a), c.y + r * sin(a)};
+    }
+}
+
+static void test_batch_counts_triangles_of_polygons(void) {
+    batch_t batch = {0};
+    const palette_rgb_t color = {1, 2, 3};
+    vector_t p[BATCH_MAX_POLYGON];
+    for (int k = 3; k <= 8; k++) {
+        batch_clear(&batch);
+        const int n = 1000;
+        for (int i = 0; i < n; i++) {
+            regular(p, k, (vector_t){10.0 + i, 20.0}, 4.0);
+            EXPECT(batch_outlined(&batch, p, k, color, color), "polygon %d of %d refused", i, k);
+        }
+        EXPECT(batch.vertex_count == (size_t)(n * k), "%d %d-gons: %zu vertices, expected %d", n,
+               k, batch.vertex_count, n * k);
+        EXPECT(batch.index_count == (size_t)(n * 3 * (k - 2)),
+               "%d %d-gons: %zu indices, expected %d", n, k, batch.index_count, n * 3 * (k - 2));
+        EXPECT(batch.run_count == (size_t)n, "%zu runs, expected %d", batch.run_count, n);
+        /* Each polygon's fan: (first, first + j, first + j + 1). */
+        bool fans = true;
+        for (int i = 0; i < n && fans; i++) {
+            for (int j = 1; j + 1 < k; j++) {
+                const int *t = &batch.indices[(size_t)(i * (k - 2) + j - 1) * 3];
+                fans = fans && t[0] == i * k && t[1] == i * k + j && t[2] == i * k + j + 1;
+            }
+        }
+        EXPECT(fans, "%d-gons: the indices are not each polygon's fan", k);
+        EXPECT(!batch.translucent && !batch.failed, "opaque polygons made the batch translucent");
+    }
+    EXPECT(!batch_polygon(&batch, p, 2, color, 255), "a polygon of 2 vertices was accepted");
+    EXPECT(!batch_polygon(&batch, p, BATCH_MAX_POLYGON + 1, color, 255),
+           "a polygon over BATCH_MAX_POLYGON vertices was accepted");
+    batch_free(&batch);
+}
+
+static void test_batch_allocates_nothing_once_warm(void) {
+    batch_t batch = {0};
+    vector_t p[6];
+    batch_vertex_t *vertices = NULL;
+    int *indices = NULL;
+    batch_run_t *runs = NULL;
+    for (int frame = 0; frame < 3; frame++) {
+        batch_clear(&batch);
+        for (int i = 0; i < 5000; i++) {
+            regular(p, 6, (vector_t){i % 100, i / 100}, 2.0);
+            batch_outlined(&batch, p, 6, (palette_rgb_t){9, 9, 9}, (palette_rgb_t){0, 0, 0});
+        }
+        if (frame > 0) {
+            EXPECT(batch.vertices == vertices && batch.indices == indices && batch.runs == runs,
+                   "frame %d: the same 5000 hexagons moved the batch's buffers", frame);
+        }
+        vertices = batch.vertices;
+        indices = batch.indices;
+        runs = batch.runs;
+    }
+    batch_free(&batch);
+    EXPECT(batch.vertices == NULL && batch.vertex_capacity == 0, "batch_free kept a buffer");
+}
+
+static void test_batch_arrows_and_alpha(void) {
+    batch_t batch = {0};
+    const palette_rgb_t c = {255, 0, 255};
+    EXPECT(batch_arrow(&batch, (vector_t){0, 0}, (vector_t){100, 0}, c, 255, 3),
+           "a long arrow was refused");
+    EXPECT(batch.run_count == 2 && batch.vertex_count == 7 && batch.index_count == 9,
+           "a long arrow: %zu runs, %zu vertices, %zu indices; expected a quad and a triangle",
+           batch.run_count, batch.vertex_count, batch.index_count);
+    batch_clear(&batch);
+    batch_arrow(&batch, (vector_t){0, 0}, (vector_t){1.5, 0}, c, 255, 3);
+    EXPECT(batch.run_count == 1 && batch.vertex_count == 3, "a 1.5 px arrow: only its head");
+    batch_clear(&batch);
+    EXPECT(!batch_arrow(&batch, (vector_t){0, 0}, (vector_t){0.5, 0}, c, 255, 3) &&
+               !batch_arrow(&batch, (vector_t){0, 0}, (vector_t){50, 0}, c, 0, 3) &&
+               !batch_arrow(&batch, (vector_t){0, 0}, (vector_t){NAN, 0}, c, 255, 3),
+           "an arrow under a pixel, invisible or not finite was drawn");
+    EXPECT(batch.vertex_count == 0, "refused arrows left %zu vertices", batch.vertex_count);
+    batch_arrow(&batch, (vector_t){0, 0}, (vector_t){50, 0}, c, 128, 3);
+    EXPECT(batch.translucent && batch.vertices[0].a == 128, "alpha 128 is not translucent");
+    batch_clear(&batch);
+    EXPECT(!batch.translucent, "batch_clear kept the batch translucent");
+    batch_free(&batch);
+}
+
+static void test_batch_culls_what_is_out_of_view(void) {
+    vector_t p[4];
+    const int w = 800, h = 600;
+    regular(p, 4, (vector_t){400, 300}, 5.0);
+    EXPECT(batch_polygon_visible(p, 4, w, h), "a polygon in the middle was culled");
+    regular(p, 4, (vector_t){-3, 300}, 5.0);
+    EXPECT(batch_polygon_visible(p, 4, w, h), "a polygon across the left edge was culled");
+    const vector_t outside[4] = {{-10, 300}, {810, 300}, {400, -10}, {400, 610}};
+    for (int i = 0; i < 4; i++) {
+        regular(p, 4, outside[i], 5.0);
+        EXPECT(!batch_polygon_visible(p, 4, w, h), "a polygon at (%g, %g) was not culled",
+               outside[i].x, outside[i].y);
+    }
+    regular(p, 4, (vector_t){400, 300}, 5.0);
+    p[2].x = NAN;
+    EXPECT(!batch_polygon_visible(p, 4, w, h), "a polygon with a NaN vertex was not culled");
+}
+
 typedef struct {
     const char *name;
     void (*run)(void);
@@ -694,6 +837,7 @@ static const unit_test_t TESTS[] = {
     {"app_units.clock_keeps_real_time_through_late_frames",
      test_clock_keeps_real_time_through_late_frames},
     {"app_units.clock_forgives_a_stall", test_clock_forgives_a_stall},
+    {"app_units.clock_held_to_the_frame_budget", test_clock_held_to_the_frame_budget},
     {"app_units.layout_leaves_the_view_free", test_layout_leaves_the_view_free},
     {"app_units.energy_drift_from_its_reference", test_energy_drift_from_its_reference},
     {"app_units.energy_drift_chart_window_and_scale", test_energy_drift_chart_window_and_scale},
@@ -708,6 +852,10 @@ static const unit_test_t TESTS[] = {
      test_scene_files_open_and_refusals_keep_the_scene},
     {"app_units.grabbed_body_destroyed_is_let_go", test_grabbed_body_destroyed_is_let_go},
     {"app_units.energy_counts_springs_and_newton", test_energy_counts_springs_and_newton},
+    {"app_units.batch_counts_triangles_of_polygons", test_batch_counts_triangles_of_polygons},
+    {"app_units.batch_allocates_nothing_once_warm", test_batch_allocates_nothing_once_warm},
+    {"app_units.batch_arrows_and_alpha", test_batch_arrows_and_alpha},
+    {"app_units.batch_culls_what_is_out_of_view", test_batch_culls_what_is_out_of_view},
 };
 
 int main(void) {
