@@ -7,6 +7,7 @@
 #                       this engine's ms per step over each other engine's
 #   make bench-build    builds whichever of the three programs can be built
 #   make bench-stages   what a scene pays for the stages it leaves out (docs/leave-out.md)
+#   make bench-scale    pile(N) from 1000 to 40000 bodies, with the peers (docs/scale.md)
 #
 # Options for the programs: make bench BENCH_ARGS="--quick" or
 # BENCH_ARGS="--scene pile --size 4000 --runs 3" (see tests/bench/bench_scenes.h).
@@ -26,12 +27,16 @@ BENCH_PROGRAMS = $(BENCH_DIR)/bench_engine \
 	$(if $(BENCH_HAVE_CHIPMUNK),$(BENCH_DIR)/bench_chipmunk) \
 	$(if $(BENCH_HAVE_BOX2D),$(BENCH_DIR)/bench_box2d)
 
-.PHONY: bench bench-compare bench-compare-run bench-build bench-stages
+.PHONY: bench bench-compare bench-compare-run bench-build bench-stages bench-scale
 
 $(BENCH_DIR)/bench_engine: tests/bench/bench_engine.c $(BENCH_HDR) build/libengine.a
 	@mkdir -p $(dir $@)
 	$(CC) $(BENCH_CFLAGS) -Iengine/include -DBENCH_ENGINE_VERSION='"$(BENCH_ENGINE_VERSION)"' \
 		$< build/libengine.a -lm -o $@
+
+$(BENCH_DIR)/bench_scale: tests/bench/bench_scale.c $(BENCH_HDR) build/libengine.a
+	@mkdir -p $(dir $@)
+	$(CC) $(BENCH_CFLAGS) -Iengine/include $< build/libengine.a -lm -o $@
 
 $(BENCH_DIR)/bench_chipmunk: tests/bench/bench_chipmunk.c $(BENCH_HDR)
 	@mkdir -p $(dir $@)
@@ -63,3 +68,7 @@ $(BENCH_DIR)/bench_stages: tests/bench/bench_stages.c build/libengine.a
 
 bench-stages: $(BENCH_DIR)/bench_stages
 	$(BENCH_DIR)/bench_stages docs/leave-out.md
+
+bench-scale: $(BENCH_DIR)/bench_scale
+	@$(MAKE) --no-print-directory bench-build
+	tests/bench/scale.sh docs/scale.md
