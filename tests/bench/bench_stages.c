@@ -206,20 +206,19 @@ static double hand_orbit_ms(int steps, double dt, double *x_end) {
     return (cpu_seconds() - start) * 1e3 / steps;
 }
 
-static void compare_hand_loop(FILE *md) {
-    const int steps = 1000000;
+static void compare_hand_loop(int steps, int runs, FILE *md) {
     const double dt = 1e-4;
     double hand[RUNS], ours[RUNS], x_hand = 0.0, x_ours = 0.0;
-    for (int r = 0; r < RUNS; r++) {
+    for (int r = 0; r < runs; r++) {
         hand[r] = hand_orbit_ms(steps, dt, &x_hand);
         world_t world = {scene_init(), false};
         build_orbit(&world);
         ours[r] = step_ms(&world, steps, dt);
         x_ours = body_get_centroid(scene_get_body(world.scene, 1)).x;
         scene_free(world.scene);
-        fprintf(stderr, "\r  %-24s run %d/%d", "orbit against a loop", r + 1, RUNS);
+        fprintf(stderr, "\r  %-24s run %d/%d", "orbit against a loop", r + 1, runs);
     }
-    double h = median(hand, RUNS), o = median(ours, RUNS);
+    double h = median(hand, runs), o = median(ours, runs);
     fprintf(md, "\n| orbit (2 bodies, %d steps) | ns per step | |\n|---|---|---|\n", steps);
     fprintf(md, "| hand-written loop | %.1f | |\n| scene_tick | %.1f | %.2f times the loop%s |\n",
             h * 1e6, o * 1e6, o / h, x_hand == x_ours ? "; same final position to the bit" : "");
@@ -259,6 +258,14 @@ static void build_pile_1000(world_t *world) {
 }
 
 int main(int argc, char **argv) {
+    /* --orbit STEPS: the orbit against the hand loop alone, once, on stdout,
+     * for a profiler (valgrind --tool=callgrind counts each side's
+     * instructions under hand_orbit_ms and step_ms). */
+    if (argc > 2 && strcmp(argv[1], "--orbit") == 0) {
+        compare_hand_loop(atoi(argv[2]), 1, stdout);
+        fputc('\n', stderr);
+        return 0;
+    }
     const char *path = argc > 1 ? argv[1] : "docs/leave-out.md";
     FILE *md = fopen(path, "w");
     if (md == NULL) {
@@ -289,7 +296,7 @@ int main(int argc, char **argv) {
                 "a thousand bodies or so, through the whole depth, still move faster than the "
                 "sleep tolerance (docs/stability.md, open problems); with 16 it comes to rest "
                 "and sleeps.\n");
-    compare_hand_loop(md);
+    compare_hand_loop(1000000, RUNS, md);
     fclose(md);
     fprintf(stderr, "\nbench_stages: wrote %s\n", path);
     return 0;
