@@ -259,6 +259,13 @@ static void compare_hand_loop(int steps, int runs, FILE *md) {
     fprintf(md, "| the same loop in the engine's order of operations | %.1f | %.2f times the loop%s |\n",
             e * 1e6, e / h, x_ordered == x_ours ? "; same final position as scene_tick to the bit" : "");
     fprintf(md, "| scene_tick | %.1f | %.2f times the loop |\n", o * 1e6, o / h);
+    fprintf(md, "\nWhat scene_tick adds to the loop in the engine's order: the step of any "
+                "body (docs/design.md) adds gravity, the impulses and the seed scheme's "
+                "share of the old velocity, zeros here but on the chain from one position to "
+                "the next; forces reach the integrator through the bodies' accumulators; and "
+                "it runs about ten times the loop's instructions (`valgrind --tool=callgrind "
+                "build/bench/bench_stages --orbit 100000`), which a core shared with another "
+                "thread feels: the scene_tick row can move by a quarter from run to run.\n");
 }
 
 /* A pile settled with sleeping off (every body stepped) against the same
