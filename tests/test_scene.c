@@ -559,6 +559,27 @@ static void warm_tick_allocates_nothing(void) {
     scene_free(scene);
 }
 
+/* Without world contacts a one-stage scheme moves each body as it works out
+ * its motion, storing none: not even the first tick allocates. */
+static void one_stage_tick_without_contacts_stores_no_motions(void) {
+    const integrator_t one_stage[3] = {INTEGRATOR_SEED, INTEGRATOR_EXPLICIT_EULER,
+                                       INTEGRATOR_SYMPLECTIC_EULER};
+    for (int k = 0; k < 3; k++) {
+        scene_t *scene = scene_init();
+        scene_set_integrator(scene, one_stage[k]);
+        body_t *a = tagged_box(0, VEC_ZERO, 1000.0), *b = tagged_box(1, (vector_t){10, 0}, 1.0);
+        scene_add_body(scene, a);
+        scene_add_body(scene, b);
+        body_set_velocity(b, (vector_t){0, 10});
+        create_newtonian_gravity(scene, 1.0, a, b);
+        size_t before = engine_allocation_count();
+        scene_tick(scene, 0.01);
+        CHECK(engine_allocation_count() == before);
+        CHECK(body_get_velocity(b).x < 0.0 && body_get_centroid(b).y > 0.0);
+        scene_free(scene);
+    }
+}
+
 /* Programmer errors. */
 
 static scene_t *scene_of_two(void) {
@@ -751,5 +772,7 @@ TEST_SUITE(scene, TEST_CASE(init_is_empty_with_documented_defaults),
            TEST_CASE(gravity_accelerates_finite_masses_only),
            TEST_CASE(integrators_follow_their_formulas),
            TEST_CASE(uniform_circular_motion_from_a_centripetal_force),
-           TEST_CASE(warm_tick_allocates_nothing), TEST_CASE(bad_input_aborts_with_message),
+           TEST_CASE(warm_tick_allocates_nothing),
+           TEST_CASE(one_stage_tick_without_contacts_stores_no_motions),
+           TEST_CASE(bad_input_aborts_with_message),
            TEST_CASE(non_finite_state_after_a_step_aborts_naming_the_body));

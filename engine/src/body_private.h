@@ -129,14 +129,19 @@ static inline body_motion_t body_motion(const body_t *body) {
                            body->angular_impulse};
 }
 
-/* Whether pose and velocities are finite. 0 x is 0 for finite x and NaN
+/* Whether a pose and velocities are finite. 0 x is 0 for finite x and NaN
  * otherwise, and a sum of zeros cannot overflow: one test for six values in
  * the per-body path of every step (paired to shorten the chain of adds). */
-static inline bool body_motion_is_finite(const body_t *body) {
-    double zero = (0.0 * body->centroid.x + 0.0 * body->centroid.y) +
-                  (0.0 * body->velocity.x + 0.0 * body->velocity.y) +
-                  (0.0 * body->angle + 0.0 * body->angular_velocity);
+static inline bool body_state_is_finite(vector_t centroid, double angle, vector_t velocity,
+                                        double angular_velocity) {
+    double zero = (0.0 * centroid.x + 0.0 * centroid.y) + (0.0 * velocity.x + 0.0 * velocity.y) +
+                  (0.0 * angle + 0.0 * angular_velocity);
     return zero == 0.0;
+}
+
+static inline bool body_motion_is_finite(const body_t *body) {
+    return body_state_is_finite(body->centroid, body->angle, body->velocity,
+                                body->angular_velocity);
 }
 
 /* Writes into message which of the body's pose and velocities is not finite

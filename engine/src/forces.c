@@ -82,10 +82,12 @@ static void newtonian_gravity(void *data) {
     double distance = vec_get_length(r);
     if (distance < GRAVITY_MIN_DISTANCE) return;
     double m1 = aux->body1->mass, m2 = aux->body2->mass;
-    if (isinf(m1) || isinf(m2)) return; /* the pull would be infinite (documented) */
     double magnitude = aux->constant * m1 * m2 / (distance * distance);
     vector_t force = vec_multiply(magnitude / distance, r);
     if (!vec_is_finite(force)) {
+        /* An INFINITY mass makes it inf or NaN: the pull would be infinite
+         * and is left out (documented), tested here off the common path. */
+        if (isinf(m1) || isinf(m2)) return;
         /* G m1 m2 overflows long before the force does for huge masses. */
         double scaled = aux->constant * (m1 / distance) * (m2 / distance);
         force = vec_multiply(scaled, vec_multiply(1.0 / distance, r));

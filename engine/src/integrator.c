@@ -94,15 +94,6 @@ double integrator_oscillator_growth(integrator_t integrator, double theta) {
     return radius * radius;
 }
 
-int integrator_stage_count(integrator_t integrator) {
-    switch (integrator) {
-    case INTEGRATOR_VELOCITY_VERLET: return 2;
-    case INTEGRATOR_RK4:
-    case INTEGRATOR_SYMPLECTIC4: return 4;
-    default: return 1;
-    }
-}
-
 /* Position and angle, or their rates, of one body: the schemes treat the
  * three degrees of freedom alike. */
 typedef struct {
@@ -180,7 +171,7 @@ static dof_t acceleration_of(const body_t *body, vector_t gravity) {
 /* The free motion of the one-stage schemes: the velocity changes by the
  * force over dt and by the impulses, the position by the mean of the two
  * velocities weighted by w. */
-static void predict_one_stage(const body_t *body, double dt, vector_t gravity, double w,
+static inline void predict_one_stage(const body_t *body, double dt, vector_t gravity, double w,
                               integrator_motion_t *motion) {
     dof_t a = acceleration_of(body, gravity);
     motion->acceleration = (vector_t){a.x, a.y};
@@ -369,7 +360,7 @@ void integrator_predict(const integrator_step_t *step, body_t **bodies, size_t c
     (*stages)->begun = 0;
 }
 
-void integrator_apply(body_t *body, const integrator_motion_t *motion) {
+static inline void apply_motion(body_t *body, const integrator_motion_t *motion) {
     /* A body that did not move keeps its cached world polygon (walls). */
     if (motion->displacement.x != 0.0 || motion->displacement.y != 0.0 || motion->rotation != 0.0) {
         body->centroid = vec_add(body->centroid, motion->displacement);
@@ -378,4 +369,58 @@ void integrator_apply(body_t *body, const integrator_motion_t *motion) {
     }
     body->velocity = motion->velocity;
     body->angular_velocity = motion->angular_velocity;
+}
+
+void integrator_apply(body_t *body, const integrator_motion_t *motion) {
+    apply_motion(body, motion);
+}
+
+/* Moves body i by motion and clears its accumulators; when the result does
+ * not fit a double, writes the outcome and leaves them (they explain it).
+ * The result is checked in registers: reading back the fields just written
+ * can wait for the stores to retire, which stalls the whole step. */
+static inline bool move_body(body_t *body, const integrator_motion_t *motion, size_t i,
+                             integrator_outcome_t *outcome) {
+    vector_t start = body->centroid;
+    bool finite = body_state_is_finite(vec_add(start, motion->displacement),
+                                       body->angle + motion->rotation, motion->velocity,
+                                       motion->angular_velocity);
+    apply_motion(body, motion);
+    if (!finite) {
+        outcome->failed = i;
+        outcome->failed_start = start;
+        return false;
+    }
+    body_clear_accumulators(body);
+    return true;
+}
+
+integrator_outcome_t integrator_move(const integrator_step_t *step, body_t **bodies,
+                                     size_t count, const integrator_motion_t *motions) {
+    integrator_outcome_t outcome = {count, VEC_ZERO, false};
+    if (motions != NULL) {
+        for (size_t i = 0; i < count; i++) {
+            body_t *body = bodies[i];
+            if (body->removed) {
+                outcome.removed = true;
+            } else if (!move_body(body, &motions[i], i, &outcome)) {
+                break;
+            }
+        }
+        return outcome;
+    }
+    /* In locals: the stores to the bodies could otherwise alias *step. */
+    const double dt = step->dt, w = integrator_position_weight(step->integrator);
+    const vector_t gravity = step->gravity;
+    for (size_t i = 0; i < count; i++) {
+        body_t *body = bodies[i];
+        integrator_motion_t motion;
+        if (body->removed) {
+            outcome.removed = true;
+            continue;
+        }
+        predict_one_stage(body, dt, gravity, w, &motion);
+        if (!move_body(body, &motion, i, &outcome)) break;
+    }
+    return outcome;
 }

@@ -68,8 +68,16 @@ double integrator_position_weight(integrator_t integrator);
  * spectral radius squared): 1 where it is stable and symplectic. */
 double integrator_oscillator_growth(integrator_t integrator, double theta);
 
-/* The number of force evaluations a step of the scheme makes. */
-int integrator_stage_count(integrator_t integrator);
+/* The number of force evaluations a step of the scheme makes (inline: the
+ * scene asks at every tick). */
+static inline int integrator_stage_count(integrator_t integrator) {
+    switch (integrator) {
+    case INTEGRATOR_VELOCITY_VERLET: return 2;
+    case INTEGRATOR_RK4:
+    case INTEGRATOR_SYMPLECTIC4: return 4;
+    default: return 1;
+    }
+}
 
 /* Calls the force creators again with the bodies at a later stage's trial
  * pose and velocities (scene.h says which creators run there). */
@@ -105,9 +113,32 @@ typedef struct {
 void integrator_predict(const integrator_step_t *step, body_t **bodies, size_t count,
                         integrator_motion_t *motions, integrator_stages_t **stages);
 
-/* The integrate stage for one body: moves it by motion and gives it the
- * motion's velocities. The caller checks the result and then clears the
- * body's accumulators (which explain a result that overflowed). */
+/* Moves one body by motion and gives it the motion's velocities (body_tick;
+ * the scene moves its bodies with integrator_move). The caller checks the
+ * result and then clears the body's accumulators (which explain a result
+ * that overflowed). */
 void integrator_apply(body_t *body, const integrator_motion_t *motion);
+
+/* What the integrate stage found. */
+typedef struct {
+    /* The first body whose pose or velocity no longer fits a double, or the
+     * count when none: it is moved but keeps its accumulators, which
+     * explain the result (body_explain_non_finite); later bodies are not
+     * moved. */
+    size_t failed;
+    vector_t failed_start; /* that body's centroid before the step */
+    bool removed;          /* some body is marked removed (those are not moved) */
+} integrator_outcome_t;
+
+/*
+ * The integrate stage: moves each body not marked removed by motions[i]
+ * (integrator_predict's, as the world changed it) and clears its
+ * accumulators. With motions NULL, for a one-stage scheme when nothing
+ * acts between the forces and the move (no world contacts), each body's
+ * free motion is computed as it is moved: one pass over the bodies, the
+ * motion never stored.
+ */
+integrator_outcome_t integrator_move(const integrator_step_t *step, body_t **bodies,
+                                     size_t count, const integrator_motion_t *motions);
 
 #endif // #ifndef INTEGRATOR_H

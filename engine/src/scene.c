@@ -337,16 +337,23 @@ static void stage_forces_again(void *context) {
     }
 }
 
-/* Stage 1: the forces, and from them each body's free motion. */
-static void stage_motion(scene_t *scene, double dt) {
-    integrator_begin(scene->integrator, scene->bodies, scene->body_count, &scene->stages);
+/* Stage 1: the forces, and from them each body's free motion when
+ * something needs it before the bodies move: the world's contacts change
+ * it, and a multi-stage scheme evaluates the forces again. Otherwise the
+ * integrate stage works it out as it moves each body; NULL is returned. */
+static const integrator_motion_t *stage_motion(scene_t *scene, integrator_step_t *step) {
+    bool one_stage = integrator_stage_count(scene->integrator) == 1;
+    if (!one_stage) {
+        integrator_begin(scene->integrator, scene->bodies, scene->body_count, &scene->stages);
+    }
     if (scene->force_count > 0) stage_forces(scene);
+    if (one_stage && scene->world == NULL) return NULL;
     memory_reserve((void **)&scene->motions, &scene->motion_capacity, scene->body_count,
                    sizeof(integrator_motion_t));
-    integrator_step_t step = {scene->integrator, dt, scene->gravity,
-                              scene->stage_force_count > 0 ? stage_forces_again : NULL, scene};
-    integrator_predict(&step, scene->bodies, scene->body_count, scene->motions, &scene->stages);
+    step->evaluate = scene->stage_force_count > 0 ? stage_forces_again : NULL;
+    integrator_predict(step, scene->bodies, scene->body_count, scene->motions, &scene->stages);
     scene->stage = 0;
+    return scene->motions;
 }
 
 /* A body whose pose or velocity no longer fits a double stops the tick:
@@ -381,20 +388,14 @@ static void fail_integrate(const scene_t *scene, size_t index, vector_t start) {
 
 /* Stage 3. Returns whether any body is marked removed (those are not
  * advanced: they are freed next). */
-static bool stage_integrate(scene_t *scene) {
-    bool removed = false;
-    for (size_t i = 0; i < scene->body_count; i++) {
-        body_t *body = scene->bodies[i];
-        if (body->removed) {
-            removed = true;
-            continue;
-        }
-        vector_t start = body->centroid;
-        integrator_apply(body, &scene->motions[i]);
-        if (!body_motion_is_finite(body)) fail_integrate(scene, i, start);
-        body_clear_accumulators(body);
+static bool stage_integrate(scene_t *scene, const integrator_step_t *step,
+                            const integrator_motion_t *motions) {
+    integrator_outcome_t outcome =
+        integrator_move(step, scene->bodies, scene->body_count, motions);
+    if (outcome.failed < scene->body_count) {
+        fail_integrate(scene, outcome.failed, outcome.failed_start);
     }
-    return removed;
+    return outcome.removed;
 }
 
 static bool depends_on_removed_body(const force_entry_t *entry) {
@@ -458,12 +459,14 @@ void scene_tick(scene_t *scene, double dt) {
         return;
     }
     scene->stage_force_count = 0;
-    stage_motion(scene, dt);
+    integrator_step_t step = {scene->integrator, dt, scene->gravity, NULL, scene};
+    const integrator_motion_t *motions = stage_motion(scene, &step);
     if (scene->world != NULL && scene->body_count > 0) {
-        world_step_t step = {dt, integrator_position_weight(scene->integrator), scene->sleeping};
+        world_step_t world_step = {dt, integrator_position_weight(scene->integrator),
+                                   scene->sleeping};
         scene->world_ops->step(scene->world, scene->bodies, scene->motions, scene->body_count,
-                               &step, &scene->stats);
+                               &world_step, &scene->stats);
         scene->record_needs_world = true;
     }
-    if (stage_integrate(scene)) stage_reap(scene);
+    if (stage_integrate(scene, &step, motions)) stage_reap(scene);
 }

@@ -185,9 +185,12 @@ static void build_orbit_scene(world_t *world) {
 }
 
 /* Two bodies under Newtonian gravity, symplectic Euler, by hand: the same
- * arithmetic as the engine's orbit scene, which ends at the same bits. */
-static double hand_orbit_ms(int steps, double dt, double *x_end) {
-    double xa = 0, ya = 0, vxa = 0, vya = 0, xb = 10, yb = 0, vxb = 0, vyb = 10;
+ * physics as the engine's orbit scene written as plainly as it goes, in its
+ * own order of operations (one division for m1 m2 / r^3, then by each
+ * mass), so it does not end at the engine's bits. The time to beat. */
+static double hand_orbit_ms(const vector_t at[2], int steps, double dt, double *x_end) {
+    double xa = at[0].x, ya = at[0].y, vxa = 0, vya = 0, xb = at[1].x, yb = at[1].y;
+    double vxb = 0, vyb = 10;
     const double ma = 1000, mb = 1;
     double start = cpu_seconds();
     for (int i = 0; i < steps; i++) {
@@ -206,23 +209,63 @@ static double hand_orbit_ms(int steps, double dt, double *x_end) {
     return (cpu_seconds() - start) * 1e3 / steps;
 }
 
-static void compare_hand_loop(FILE *md) {
-    const int steps = 1000000;
+/* The same loop in the engine's order of operations: the force G m1 m2 /
+ * r^2, divided by r, along r; each acceleration the force times the inverse
+ * mass. It ends at the engine's bits, which shows that the engine does this
+ * arithmetic (the step of docs/design.md with no gravity, impulse or contact
+ * adds only zeros) and how much of the gap that order costs. */
+static double engine_order_orbit_ms(const vector_t at[2], int steps, double dt,
+                                    double *x_end) {
+    double xa = at[0].x, ya = at[0].y, vxa = 0, vya = 0, xb = at[1].x, yb = at[1].y;
+    double vxb = 0, vyb = 10;
+    const double G = 1, ma = 1000, mb = 1, inverse_ma = 1 / ma, inverse_mb = 1 / mb;
+    double start = cpu_seconds();
+    for (int i = 0; i < steps; i++) {
+        double dx = xb - xa, dy = yb - ya, r = sqrt(dx * dx + dy * dy);
+        double k = G * ma * mb / (r * r) / r, fx = k * dx, fy = k * dy;
+        vxa += dt * (inverse_ma * fx);
+        vya += dt * (inverse_ma * fy);
+        vxb -= dt * (inverse_mb * fx);
+        vyb -= dt * (inverse_mb * fy);
+        xa += dt * vxa;
+        ya += dt * vya;
+        xb += dt * vxb;
+        yb += dt * vyb;
+    }
+    *x_end = xb;
+    return (cpu_seconds() - start) * 1e3 / steps;
+}
+
+static void compare_hand_loop(int steps, int runs, FILE *md) {
     const double dt = 1e-4;
-    double hand[RUNS], ours[RUNS], x_hand = 0.0, x_ours = 0.0;
-    for (int r = 0; r < RUNS; r++) {
-        hand[r] = hand_orbit_ms(steps, dt, &x_hand);
+    double hand[RUNS], ordered[RUNS], ours[RUNS], x_hand = 0.0, x_ordered = 0.0, x_ours = 0.0;
+    for (int r = 0; r < runs; r++) {
         world_t world = {scene_init(), false};
         build_orbit(&world);
+        /* The loops start where the engine put the bodies: a box's centroid
+         * is computed, (2^-56, 2^-56) for the one at the origin. */
+        const vector_t start[2] = {body_get_centroid(scene_get_body(world.scene, 0)),
+                                   body_get_centroid(scene_get_body(world.scene, 1))};
+        hand[r] = hand_orbit_ms(start, steps, dt, &x_hand);
+        ordered[r] = engine_order_orbit_ms(start, steps, dt, &x_ordered);
         ours[r] = step_ms(&world, steps, dt);
         x_ours = body_get_centroid(scene_get_body(world.scene, 1)).x;
         scene_free(world.scene);
-        fprintf(stderr, "\r  %-24s run %d/%d", "orbit against a loop", r + 1, RUNS);
+        fprintf(stderr, "\r  %-24s run %d/%d", "orbit against a loop", r + 1, runs);
     }
-    double h = median(hand, RUNS), o = median(ours, RUNS);
+    double h = median(hand, runs), e = median(ordered, runs), o = median(ours, runs);
     fprintf(md, "\n| orbit (2 bodies, %d steps) | ns per step | |\n|---|---|---|\n", steps);
-    fprintf(md, "| hand-written loop | %.1f | |\n| scene_tick | %.1f | %.2f times the loop%s |\n",
-            h * 1e6, o * 1e6, o / h, x_hand == x_ours ? "; same final position to the bit" : "");
+    fprintf(md, "| hand-written loop | %.1f | |\n", h * 1e6);
+    fprintf(md, "| the same loop in the engine's order of operations | %.1f | %.2f times the loop%s |\n",
+            e * 1e6, e / h, x_ordered == x_ours ? "; same final position as scene_tick to the bit" : "");
+    fprintf(md, "| scene_tick | %.1f | %.2f times the loop |\n", o * 1e6, o / h);
+    fprintf(md, "\nWhat scene_tick adds to the loop in the engine's order: the step of any "
+                "body (docs/design.md) adds gravity, the impulses and the seed scheme's "
+                "share of the old velocity, zeros here but on the chain from one position to "
+                "the next; forces reach the integrator through the bodies' accumulators; and "
+                "it runs about ten times the loop's instructions (`valgrind --tool=callgrind "
+                "build/bench/bench_stages --orbit 100000`), which a core shared with another "
+                "thread feels: the scene_tick row can move by a quarter from run to run.\n");
 }
 
 /* A pile settled with sleeping off (every body stepped) against the same
@@ -255,6 +298,14 @@ static void build_pile_1000(world_t *world) {
 }
 
 int main(int argc, char **argv) {
+    /* --orbit STEPS: the orbit against the hand loop alone, once, on stdout,
+     * for a profiler (valgrind --tool=callgrind counts each side's
+     * instructions under hand_orbit_ms and step_ms). */
+    if (argc > 2 && strcmp(argv[1], "--orbit") == 0) {
+        compare_hand_loop(atoi(argv[2]), 1, stdout);
+        fputc('\n', stderr);
+        return 0;
+    }
     const char *path = argc > 1 ? argv[1] : "docs/leave-out.md";
     FILE *md = fopen(path, "w");
     if (md == NULL) {
@@ -280,7 +331,7 @@ int main(int argc, char **argv) {
                 "awake / asleep |\n|---|---|---|---|\n");
     compare_sleeping(1000, md);
     compare_sleeping(4000, md);
-    compare_hand_loop(md);
+    compare_hand_loop(1000000, RUNS, md);
     fclose(md);
     fprintf(stderr, "\nbench_stages: wrote %s\n", path);
     return 0;
