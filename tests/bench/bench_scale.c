@@ -27,9 +27,13 @@ typedef struct {
 } scale_probe_t;
 
 static scale_probe_t probe;
+static int probe_outside;
 
+/* Bytes handed out by malloc: from the heap and, for large blocks, mapped
+ * on their own. */
 static size_t heap_in_use(void) {
-    return mallinfo2().uordblks;
+    struct mallinfo2 info = mallinfo2();
+    return info.uordblks + info.hblkhd;
 }
 
 static void *scale_world_new(double gy, int contacts, int capacity) {
@@ -51,6 +55,7 @@ static void scale_step(void *world, double dt) {
 typedef struct {
     int bodies;
     double ms, points, bytes_per_body, bytes_per_contact;
+    int outside; /* bodies outside the container at the end (pile_run's figure) */
 } scale_row_t;
 
 static int compare_doubles(const void *a, const void *b) {
@@ -71,10 +76,13 @@ static scale_row_t measure(int bodies, int runs) {
         bench_run_t run;
         pile_run(&ops, &c, &run);
         ms[r] = run.step_ms;
+        const char *outside = strstr(run.quality, "outside=");
+        probe_outside = outside != NULL ? atoi(outside + strlen("outside=")) : -1;
         fprintf(stderr, "\r  pile(%d) run %d/%d: %.3f ms/step   ", bodies, r + 1, runs, ms[r]);
     }
     qsort(ms, (size_t)runs, sizeof(double), compare_doubles);
-    scale_row_t row = {bodies, ms[runs / 2], probe.contact_points / probe.steps, 0.0, 0.0};
+    scale_row_t row = {bodies, ms[runs / 2], probe.contact_points / probe.steps, 0.0, 0.0,
+                       probe_outside};
     row.bytes_per_body = (double)(probe.heap_built - probe.heap_empty) / bodies;
     row.bytes_per_contact =
         probe.last_contacts > 0 ? (double)(probe.heap_end - probe.heap_built) / probe.last_contacts
@@ -113,12 +121,12 @@ int main(int argc, char **argv) {
     }
     fprintf(stderr, "\n");
     printf("| N | ms per step | contact points per step | us per contact point | heap bytes "
-           "per body (built) | heap grown by stepping, per contact |\n"
-           "|---|---|---|---|---|---|\n");
+           "per body (built) | heap grown by stepping, per contact | outside at the end |\n"
+           "|---|---|---|---|---|---|---|\n");
     for (int i = 0; i < SIZE_COUNT; i++) {
-        printf("| %d | %.4g | %.0f | %.4g | %.0f | %.0f |\n", rows[i].bodies, rows[i].ms,
+        printf("| %d | %.4g | %.0f | %.4g | %.0f | %.0f | %d |\n", rows[i].bodies, rows[i].ms,
                rows[i].points, 1e3 * per_point[i], rows[i].bytes_per_body,
-               rows[i].bytes_per_contact);
+               rows[i].bytes_per_contact, rows[i].outside);
     }
     printf("\nFitted exponents (least squares on logs, N = %d to %d): ms per step grows as "
            "N^%.2f (N^%.2f from 1000 to 10000), ms per contact point as N^%.2f.\n",

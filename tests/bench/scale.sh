@@ -27,7 +27,12 @@ done
     echo "Heap bytes come from glibc's mallinfo2: per body, what adding the bodies took"
     echo "(body, polygon, scene arrays); per contact, what the first to the last step"
     echo "added (broadphase, contact and solver buffers, per-body rows included) over"
-    echo "the last step's contacts."
+    echo "the last step's contacts (capacities grow by doubling, so this moves by up"
+    echo "to a factor of two from one N to the next)."
+    echo
+    echo "The scene defines pile(N) for N up to 10000. Past about 15000 bodies the heap"
+    echo "rises above the container's 200 m walls and bodies spill over them: the"
+    echo "*outside* column counts the bodies whose centre ends outside the container."
     echo
     cat "$tmp.ours"
     echo
@@ -41,12 +46,14 @@ done
         return ""
     }
     { e = field("engine"); if (!(e in seen)) { seen[e] = 1; order[++n] = e }
-      count[e]++; size[e, count[e]] = field("size"); ms[e, count[e]] = field("mean_ms") }
+      count[e]++; size[e, count[e]] = field("size"); ms[e, count[e]] = field("mean_ms")
+      out[e, count[e]] = field("outside") + 0 }
     END {
         for (k = 1; k <= n; k++) {
             e = order[k]; line = "| " e; sx = sy = sxx = sxy = 0; m = count[e]
             for (i = 1; i <= m; i++) {
-                line = line " | " ms[e, i]; lx = log(size[e, i]); ly = log(ms[e, i])
+                cell = ms[e, i]; if (out[e, i] > 0) cell = cell " (" out[e, i] " outside)"
+                line = line " | " cell; lx = log(size[e, i]); ly = log(ms[e, i])
                 sx += lx; sy += ly; sxx += lx * lx; sxy += lx * ly
             }
             printf "%s | N^%.2f |\n", line, (m * sxy - sx * sy) / (m * sxx - sx * sx)
