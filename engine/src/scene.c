@@ -47,6 +47,7 @@ struct scene {
     world_t *world;
     const world_ops_t *world_ops;
     size_t velocity_iterations, position_iterations;
+    size_t workers;
 
     /* Seed collisions are recorded as they happen; world contacts are
      * appended the first time the record is read after a tick. */
@@ -62,6 +63,7 @@ scene_t *scene_init(void) {
     scene->sleeping = true;
     scene->velocity_iterations = 8;
     scene->position_iterations = 4;
+    scene->workers = 1;
     return scene;
 }
 
@@ -256,6 +258,19 @@ void scene_set_solver_iterations(scene_t *scene, size_t velocity_iterations,
     if (scene->world != NULL) {
         scene->world_ops->set_iterations(scene->world, velocity_iterations, position_iterations);
     }
+}
+
+void scene_set_workers(scene_t *scene, size_t workers) {
+    REQUIRE_NOT_NULL(scene);
+    REQUIRE(workers >= 1 && workers <= SCENE_MAX_WORKERS, "workers must be in [1, %d] (got %zu)",
+            SCENE_MAX_WORKERS, workers);
+    scene->workers = workers;
+    if (scene->world != NULL) scene->world_ops->set_workers(scene->world, workers);
+}
+
+size_t scene_get_workers(const scene_t *scene) {
+    REQUIRE_NOT_NULL(scene);
+    return scene->workers;
 }
 
 /* Stage 5, on demand: a scene nobody observes pays nothing for its record. */

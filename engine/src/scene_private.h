@@ -25,6 +25,7 @@ typedef struct {
     void (*free)(world_t *world);
     void (*set_iterations)(world_t *world, size_t velocity_iterations,
                            size_t position_iterations);
+    void (*set_workers)(world_t *world, size_t workers);
     void (*step)(world_t *world, body_t **bodies, integrator_motion_t *motions, size_t count,
                  const world_step_t *step, scene_stats_t *stats);
     size_t (*contact_count)(const world_t *world);

@@ -26,6 +26,11 @@ void world_free(world_t *world);
 
 void world_set_iterations(world_t *world, size_t velocity_iterations, size_t position_iterations);
 
+/* The threads a step uses (scene_set_workers; >= 1): the caller's and
+ * workers - 1 of the world's own, started at the first step that needs them
+ * and stopped here when the count changes, and by world_free. */
+void world_set_workers(world_t *world, size_t workers);
+
 typedef struct {
     double dt;
     /* integrator_position_weight of the scene's integrator */
