@@ -13,8 +13,11 @@
 #include <stdbool.h>
 #include "solver_wide.h"
 
-/* solver_wide_mark_fixed over every batch. */
-void solver_split_mark_fixed(solver_wide_t *wide, const solver_velocity_t *rows);
+/* solver_wide_pack and then solver_wide_mark_fixed over every batch. */
+void solver_split_pack(solver_wide_t *wide, const solver_contact_t *contacts,
+                       const solver_velocity_t *rows);
+/* solver_wide_store_range over every batch. */
+void solver_split_store(const solver_wide_t *wide, solver_contact_t *contacts);
 
 void solver_split_warm_start(solver_wide_t *wide, solver_velocity_t *rows);
 void solver_split_iterate(solver_wide_t *wide, solver_velocity_t *rows);

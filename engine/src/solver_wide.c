@@ -590,10 +590,15 @@ void solver_wide_correct_range(solver_wide_t *wide, solver_displacement_t *displ
     }
 }
 
-static void pack_lane(solver_wide_t *wide, const solver_contact_t *c, uint32_t index, int l,
-                      const solver_velocity_t *rows) {
-    solver_batch_t *batch = &wide->batches[wide->batch_count];
-    solver_position_batch_t *position = &wide->position_batches[wide->batch_count];
+/* Where a batch is packed: its index, its first point's and its block's. */
+typedef struct {
+    size_t batch, point, block;
+} pack_at_t;
+
+LANE_INLINE void pack_lane(solver_wide_t *wide, pack_at_t at, const solver_contact_t *c, uint32_t index,
+                      int l, const solver_velocity_t *rows) {
+    solver_batch_t *batch = &wide->batches[at.batch];
+    solver_position_batch_t *position = &wide->position_batches[at.batch];
     batch->a[l] = position->a[l] = c->a;
     batch->b[l] = position->b[l] = c->b;
     batch->contact[l] = index;
@@ -607,7 +612,7 @@ static void pack_lane(solver_wide_t *wide, const solver_contact_t *c, uint32_t i
     position->rate[l] = solver_position_rate(&rows[c->a], &rows[c->b]);
     position->slop[l] = c->slop;
     if (batch->kind == BATCH_BLOCK) {
-        lane_block_t *k = &wide->blocks[wide->block_count];
+        lane_block_t *k = &wide->blocks[at.block];
         k->k11[l] = c->k11;
         k->k12[l] = c->k12;
         k->k22[l] = c->k22;
@@ -617,7 +622,7 @@ static void pack_lane(solver_wide_t *wide, const solver_contact_t *c, uint32_t i
     }
     for (int i = 0; i < c->point_count; i++) {
         const solver_point_t *p = &c->points[i];
-        lane_point_t *lp = &wide->points[wide->point_count + (size_t)i];
+        lane_point_t *lp = &wide->points[at.point + (size_t)i];
         lp->rn.a[l] = p->rn_a;
         lp->rn.b[l] = p->rn_b;
         lp->rt.a[l] = p->rt_a;
@@ -627,7 +632,7 @@ static void pack_lane(solver_wide_t *wide, const solver_contact_t *c, uint32_t i
         lp->target[l] = p->target;
         lp->normal_impulse[l] = p->normal_impulse;
         lp->tangent_impulse[l] = p->tangent_impulse;
-        solver_position_point_t *pp = &wide->position_points[wide->point_count + (size_t)i];
+        solver_position_point_t *pp = &wide->position_points[at.point + (size_t)i];
         pp->rn.a[l] = p->rn_a;
         pp->rn.b[l] = p->rn_b;
         pp->normal_mass[l] = p->normal_mass;
@@ -636,29 +641,25 @@ static void pack_lane(solver_wide_t *wide, const solver_contact_t *c, uint32_t i
 }
 
 /* Packs order[0 .. count) (at most LANES contacts of one kind) into the
- * next batch, its points and its block. */
-static void load_batch(solver_wide_t *wide, const uint32_t *order, int count, batch_kind_t kind,
-                       const solver_contact_t *contacts, const solver_velocity_t *rows) {
+ * batch, points and block at `at`. */
+LANE_INLINE void load_batch(solver_wide_t *wide, pack_at_t at, const uint32_t *order, int count,
+                       batch_kind_t kind, const solver_contact_t *contacts,
+                       const solver_velocity_t *rows) {
     int points = kind_points(kind);
-    solver_batch_t *batch = &wide->batches[wide->batch_count];
-    solver_position_batch_t *position = &wide->position_batches[wide->batch_count];
+    solver_batch_t *batch = &wide->batches[at.batch];
+    solver_position_batch_t *position = &wide->position_batches[at.batch];
     if (count < LANES) { /* a full batch has every lane written below */
         memset(batch, 0, sizeof *batch);
         memset(position, 0, sizeof *position);
-        memset(&wide->points[wide->point_count], 0, (size_t)points * sizeof(lane_point_t));
-        memset(&wide->position_points[wide->point_count], 0,
+        memset(&wide->points[at.point], 0, (size_t)points * sizeof(lane_point_t));
+        memset(&wide->position_points[at.point], 0,
                (size_t)points * sizeof(solver_position_point_t));
-        if (kind == BATCH_BLOCK) {
-            memset(&wide->blocks[wide->block_count], 0, sizeof(lane_block_t));
-        }
+        if (kind == BATCH_BLOCK) memset(&wide->blocks[at.block], 0, sizeof(lane_block_t));
     }
     batch->lanes = position->lanes = (uint8_t)count;
     batch->kind = (uint8_t)kind;
     position->point_count = (uint8_t)points;
-    for (int l = 0; l < count; l++) pack_lane(wide, &contacts[order[l]], order[l], l, rows);
-    wide->batch_count++;
-    wide->point_count += (size_t)points;
-    wide->block_count += kind == BATCH_BLOCK;
+    for (int l = 0; l < count; l++) pack_lane(wide, at, &contacts[order[l]], order[l], l, rows);
 }
 
 static batch_kind_t kind_of(const solver_contact_t *c) {
@@ -708,26 +709,58 @@ static void reserve(solver_wide_t *wide, size_t count) {
     memory_reserve((void **)&wide->blocks, &wide->block_capacity, batches, sizeof(lane_block_t));
 }
 
+/* Where each group's batches, points and blocks begin, from where its
+ * contacts begin in wide->order (start, GROUPS + 1 entries). */
+static void place_groups(solver_wide_t *wide, const uint32_t *start) {
+    wide->group_batch[0] = wide->group_point[0] = wide->group_block[0] = 0;
+    for (int g = 0; g < GROUPS; g++) {
+        uint32_t batches = (start[g + 1] - start[g] + LANES - 1) / LANES;
+        batch_kind_t kind = (batch_kind_t)(g % BATCH_KINDS);
+        wide->group_batch[g + 1] = wide->group_batch[g] + batches;
+        wide->group_point[g + 1] = wide->group_point[g] + batches * (uint32_t)kind_points(kind);
+        wide->group_block[g + 1] = wide->group_block[g] + (kind == BATCH_BLOCK ? batches : 0);
+    }
+    wide->batch_count = wide->group_batch[GROUPS];
+    wide->point_count = wide->group_point[GROUPS];
+    wide->block_count = wide->group_block[GROUPS];
+}
+
+void solver_wide_pack(solver_wide_t *wide, const solver_contact_t *contacts,
+                      const solver_velocity_t *rows, size_t begin, size_t end) {
+    size_t g = begin < end ? group_of(wide, begin) : 0;
+    for (size_t i = begin; i < end; i++) {
+        while (wide->group_batch[g + 1] <= i) g++;
+        pack_at_t at = {i, first_point(wide, g, i), first_block(wide, g, i)};
+        uint32_t first = wide->group_start[g] + (uint32_t)(i - wide->group_batch[g]) * LANES;
+        uint32_t left = wide->group_start[g + 1] - first;
+        int n = (int)(left < LANES ? left : LANES);
+        load_batch(wide, at, wide->order + first, n, (batch_kind_t)(g % BATCH_KINDS), contacts,
+                   rows);
+    }
+}
+
 void solver_wide_load(solver_wide_t *wide, const solver_contact_t *contacts, size_t count,
                       const solver_velocity_t *rows, size_t body_count) {
     reserve(wide, count);
     coloring_assign(&wide->coloring, contacts, count, rows, body_count, wide->colors);
-    uint32_t start[GROUPS + 1];
+    uint32_t *start = wide->group_start;
     sort_by_color(wide, contacts, count, start);
-    wide->batch_count = wide->point_count = wide->block_count = 0;
+    place_groups(wide, start);
+    if (wide->workers != NULL) {
+        solver_split_pack(wide, contacts, rows);
+        return;
+    }
+    pack_at_t at = {0, 0, 0};
     for (int g = 0; g < GROUPS; g++) {
-        wide->group_batch[g] = (uint32_t)wide->batch_count;
-        wide->group_point[g] = (uint32_t)wide->point_count;
-        wide->group_block[g] = (uint32_t)wide->block_count;
+        batch_kind_t kind = (batch_kind_t)(g % BATCH_KINDS);
         for (uint32_t i = start[g]; i < start[g + 1]; i += LANES) {
             int n = (int)(start[g + 1] - i < LANES ? start[g + 1] - i : LANES);
-            load_batch(wide, wide->order + i, n, (batch_kind_t)(g % BATCH_KINDS), contacts, rows);
+            load_batch(wide, at, wide->order + i, n, kind, contacts, rows);
+            at.batch++;
+            at.point += (size_t)kind_points(kind);
+            at.block += kind == BATCH_BLOCK;
         }
     }
-    wide->group_batch[GROUPS] = (uint32_t)wide->batch_count;
-    wide->group_point[GROUPS] = (uint32_t)wide->point_count;
-    wide->group_block[GROUPS] = (uint32_t)wide->block_count;
-    if (wide->workers != NULL) solver_split_mark_fixed(wide, rows);
 }
 
 void solver_wide_mark_fixed(solver_wide_t *wide, const solver_velocity_t *rows, size_t begin,
@@ -744,9 +777,11 @@ void solver_wide_mark_fixed(solver_wide_t *wide, const solver_velocity_t *rows, 
     }
 }
 
-void solver_wide_store(const solver_wide_t *wide, solver_contact_t *contacts) {
-    const lane_point_t *points = wide->points;
-    for (size_t i = 0; i < wide->batch_count; i++) {
+void solver_wide_store_range(const solver_wide_t *wide, solver_contact_t *contacts, size_t begin,
+                             size_t end) {
+    if (begin == end) return;
+    const lane_point_t *points = wide->points + first_point(wide, group_of(wide, begin), begin);
+    for (size_t i = begin; i < end; i++) {
         const solver_batch_t *batch = &wide->batches[i];
         for (int l = 0; l < batch->lanes; l++) {
             solver_contact_t *c = &contacts[batch->contact[l]];
@@ -757,6 +792,14 @@ void solver_wide_store(const solver_wide_t *wide, solver_contact_t *contacts) {
         }
         points += kind_points((batch_kind_t)batch->kind);
     }
+}
+
+void solver_wide_store(const solver_wide_t *wide, solver_contact_t *contacts) {
+    if (wide->workers != NULL) {
+        solver_split_store(wide, contacts);
+        return;
+    }
+    solver_wide_store_range(wide, contacts, 0, wide->batch_count);
 }
 
 /* Pushes both ends of contact batch->contact[l] onto its bodies' lists. */

@@ -58,8 +58,10 @@ struct solver_wide {
     size_t block_count, block_capacity;
     uint32_t *loose;
     size_t loose_count, loose_capacity;
-    /* Where each group's batches, points and blocks begin (and the end);
-     * a colour's batches are those of its SOLVER_WIDE_KINDS groups. */
+    /* Where each group's contacts (in order), batches, points and blocks
+     * begin (and the end); a colour's batches are those of its
+     * SOLVER_WIDE_KINDS groups. */
+    uint32_t group_start[SOLVER_WIDE_GROUPS + 1];
     uint32_t group_batch[SOLVER_WIDE_GROUPS + 1];
     uint32_t group_point[SOLVER_WIDE_GROUPS + 1];
     uint32_t group_block[SOLVER_WIDE_GROUPS + 1];
@@ -119,9 +121,14 @@ bool solver_wide_link_loaded(const solver_wide_t *wide, uint32_t *first, solver_
 void solver_wide_impulses(const solver_wide_t *wide, solver_slot_t slot, int point_count,
                           double normal[2], double tangent[2]);
 
+/* Packs batches [begin, end) of the contacts solver_wide_load coloured and
+ * placed: solver_wide_load has solver_split.c call it when there are
+ * workers. */
+void solver_wide_pack(solver_wide_t *wide, const solver_contact_t *contacts,
+                      const solver_velocity_t *rows, size_t begin, size_t end);
+
 /* Marks in batches [begin, end) the lanes whose bodies cannot move, which
- * the ranges below must not write: solver_wide_load has solver_split.c do
- * it when there are workers. */
+ * the ranges below must not write: solver_split.c does it after packing. */
 void solver_wide_mark_fixed(solver_wide_t *wide, const solver_velocity_t *rows, size_t begin,
                             size_t end);
 
@@ -138,6 +145,10 @@ void solver_wide_iterate_range(solver_wide_t *wide, solver_velocity_t *rows, siz
                                size_t end);
 void solver_wide_correct_range(solver_wide_t *wide, solver_displacement_t *displacements,
                                size_t begin, size_t end);
+/* solver_wide_store of batches [begin, end) (any batches: each writes its
+ * own contacts). */
+void solver_wide_store_range(const solver_wide_t *wide, solver_contact_t *contacts, size_t begin,
+                             size_t end);
 
 /* Writes the batches' accumulated impulses back to their contacts. */
 void solver_wide_store(const solver_wide_t *wide, solver_contact_t *contacts);
