@@ -213,6 +213,30 @@ BAD_CALL(too_many_workers, {
 BAD_CALL(workers_of_null, scene_set_workers(NULL, 2))
 BAD_CALL(get_workers_of_null, (void)scene_get_workers(NULL))
 
+/* 200 boxes in a row on 2 workers, bodies 170 and 150 far too fast for
+ * dt = 10 s: integration runs on both threads, and the message names body
+ * 150, where one thread stops. */
+static void tick_two_fast_bodies_on_workers(void) {
+    scene_t *scene = scene_init();
+    scene_set_contacts_enabled(scene, true);
+    scene_set_workers(scene, 2);
+    for (int i = 0; i < 200; i++) {
+        body_t *box = body_init(polygon_make_box((vector_t){3.0 * i, 0.0}, 0.5, 0.5), 1.0, GREY);
+        scene_add_body(scene, box);
+    }
+    body_set_velocity(scene_get_body(scene, 170), (vector_t){1e308, 0.0});
+    body_set_velocity(scene_get_body(scene, 150), (vector_t){1e308, 0.0});
+    scene_tick(scene, 10.0);
+}
+
+BAD_CALL(two_fast_bodies_on_workers, tick_two_fast_bodies_on_workers())
+
+static void a_failed_integration_names_the_first_body(void) {
+    CHECK_DIES(two_fast_bodies_on_workers, NULL, "engine error in scene_tick:",
+               "integrate stage", "body 150 (centroid (450, 0) before the step)",
+               "position is not finite");
+}
+
 static void bad_worker_counts_are_refused(void) {
     CHECK_DIES(zero_workers, NULL, "scene_set_workers", "workers must be in [1, 64] (got 0)");
     CHECK_DIES(too_many_workers, NULL, "scene_set_workers", "(got 65)");
@@ -266,4 +290,5 @@ TEST_SUITE(workers, TEST_CASE(any_worker_count_gives_the_same_bytes),
            TEST_CASE(workers_set_before_contacts_are_kept),
            TEST_CASE(sleeping_with_workers_gives_the_same_bytes),
            TEST_CASE(warm_step_with_workers_allocates_nothing),
+           TEST_CASE(a_failed_integration_names_the_first_body),
            TEST_CASE(bad_worker_counts_are_refused), TEST_CASE(pool_visits_every_index_once));

@@ -231,12 +231,15 @@ void scene_set_solver_iterations(scene_t *scene, size_t velocity_iterations,
  * Workers (default 1): the threads a step of world contacts runs on, the
  * calling thread and workers - 1 of the scene's own, in [1,
  * SCENE_MAX_WORKERS]; anything else stops the program ("workers must be in
- * [1, 64] (got 0)"). Spread over them: the narrowphase, each colour of the
- * solver's batched contacts (the colours one after another), and the loops
- * over bodies that load the solver and hand its results back. The rest
- * runs on the calling thread as with one worker: the force creators, the
- * collision handlers and everything else a scene calls back, the
- * broadphase, the contacts no colour could take, integration and sleeping.
+ * [1, 64] (got 0)"). Spread over them: the broadphase's search of its
+ * grid cells, the narrowphase, preparing the contacts and packing them into
+ * colour batches, each colour of batches (the colours one after another),
+ * the loops over bodies that load the solver and take its results, and
+ * integration (stage 3). The rest runs on the calling thread as with one
+ * worker: the force creators, the collision handlers and everything else a
+ * scene calls back, the colouring, the contacts no colour could take, the
+ * restitution pass, shock propagation and sleeping. A body whose motion is
+ * not finite stops the program with the message one worker gives.
  * Results are bit-identical for any worker count: every number is computed
  * by the same operations in the same order, whichever thread computes it.
  * The threads start at the first step that needs them (none while world

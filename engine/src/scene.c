@@ -8,6 +8,7 @@
 #include "integrator.h"
 #include "memory.h"
 #include "scene_private.h"
+#include "workers.h"
 #include "world.h"
 
 typedef struct {
@@ -394,22 +395,75 @@ static void fail_integrate(const scene_t *scene, size_t index, vector_t start) {
                 index, start.x, start.y, what, springs);
 }
 
-/* Stage 3. Returns whether any body is marked removed (those are not
- * advanced: they are freed next). */
-static bool stage_integrate(scene_t *scene) {
-    bool removed = false;
-    for (size_t i = 0; i < scene->body_count; i++) {
+/* What integrating a run of bodies found: a body marked removed, and the
+ * first body whose motion is not finite (SIZE_MAX: none) with its centroid
+ * before the step. */
+typedef struct {
+    bool removed;
+    size_t failed;
+    vector_t start;
+} integrated_t;
+
+static const integrated_t INTEGRATED_NOTHING = {false, SIZE_MAX, {0.0, 0.0}};
+
+/* Integrates bodies [begin, end), up to the first that fails. */
+static integrated_t integrate_range(scene_t *scene, size_t begin, size_t end) {
+    integrated_t found = INTEGRATED_NOTHING;
+    for (size_t i = begin; i < end; i++) {
         body_t *body = scene->bodies[i];
         if (body->removed) {
-            removed = true;
+            found.removed = true;
             continue;
         }
         vector_t start = body->centroid;
         integrator_apply(body, &scene->motions[i]);
-        if (!body_motion_is_finite(body)) fail_integrate(scene, i, start);
+        if (!body_motion_is_finite(body)) {
+            found.failed = i;
+            found.start = start;
+            return found;
+        }
         body_clear_accumulators(body);
     }
-    return removed;
+    return found;
+}
+
+/* stage_integrate over the world's workers: each body is its own, and the
+ * chunks' findings are joined in chunk order, so the body a failure names
+ * is the one a single thread stops at. */
+typedef struct {
+    scene_t *scene;
+    integrated_t found[WORKERS_MAX_CHUNKS];
+} integrate_split_t;
+
+static void integrate_chunk(void *context, size_t chunk, size_t begin, size_t end) {
+    integrate_split_t *split = context;
+    split->found[chunk] = integrate_range(split->scene, begin, end);
+}
+
+static integrated_t integrate_split(scene_t *scene) {
+    integrate_split_t split;
+    split.scene = scene;
+    for (size_t k = 0; k < WORKERS_MAX_CHUNKS; k++) split.found[k] = INTEGRATED_NOTHING;
+    scene->world_ops->for_bodies(scene->world, scene->body_count, integrate_chunk, &split);
+    integrated_t found = INTEGRATED_NOTHING;
+    for (size_t k = 0; k < WORKERS_MAX_CHUNKS; k++) {
+        found.removed |= split.found[k].removed;
+        if (found.failed == SIZE_MAX && split.found[k].failed != SIZE_MAX) {
+            found.failed = split.found[k].failed;
+            found.start = split.found[k].start;
+        }
+    }
+    return found;
+}
+
+/* Stage 3. Returns whether any body is marked removed (those are not
+ * advanced: they are freed next). */
+static bool stage_integrate(scene_t *scene) {
+    integrated_t found = scene->world != NULL && scene->workers > 1
+                             ? integrate_split(scene)
+                             : integrate_range(scene, 0, scene->body_count);
+    if (found.failed != SIZE_MAX) fail_integrate(scene, found.failed, found.start);
+    return found.removed;
 }
 
 static bool depends_on_removed_body(const force_entry_t *entry) {

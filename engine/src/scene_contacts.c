@@ -5,8 +5,9 @@
 #include "world.h"
 
 static const world_ops_t WORLD_OPS = {
-    world_free,        world_set_iterations, world_set_workers,  world_step,
-    world_contact_count, world_get_contact,  world_pair_collides, world_pair_contact,
+    world_free,         world_set_iterations, world_set_workers,   world_for_bodies,
+    world_step,         world_contact_count,  world_get_contact,   world_pair_collides,
+    world_pair_contact,
 };
 
 void scene_set_contacts_enabled(scene_t *scene, bool enabled) {

@@ -1,5 +1,6 @@
 #include "workers.h"
 #include <pthread.h>
+#include <sched.h>
 #include <stdatomic.h>
 #include <stdbool.h>
 #include <stdint.h>
@@ -11,9 +12,13 @@
  * machine leaves its share to the others, few enough that taking a chunk
  * costs nothing next to running it. */
 static const size_t CHUNKS_PER_WORKER = 8;
-/* Spins (each a pause of a few tens of cycles) before a parked thread
- * sleeps: about the gap between two loops of one step. */
-static const unsigned SPINS_BEFORE_SLEEP = 1u << 14;
+/* A waiting thread spins this many pauses (each a few tens of cycles:
+ * about the gap between two loops of a step), then yields the processor
+ * this many times, in case a thread of the pool waits for it to run (the
+ * machine may have fewer free cores than threads), and then a parked thread
+ * sleeps until the next call. */
+static const unsigned SPINS = 1u << 11;
+static const unsigned YIELDS_BEFORE_SLEEP = 1u << 7;
 
 /*
  * The call in progress is published in `state`: its number in the high 32
@@ -69,10 +74,14 @@ static void run_chunks(workers_t *workers) {
 /* Waits until a call newer than `seen` is published (or the pool stops);
  * returns its state. */
 static uint64_t await_call(workers_t *workers, uint32_t seen) {
-    for (unsigned spin = 0; spin < SPINS_BEFORE_SLEEP; spin++) {
+    for (unsigned spin = 0; spin < SPINS + YIELDS_BEFORE_SLEEP; spin++) {
         uint64_t state = atomic_load(&workers->state);
         if (call_number(state) != seen || atomic_load(&workers->quit)) return state;
-        pause_briefly();
+        if (spin < SPINS) {
+            pause_briefly();
+        } else {
+            sched_yield();
+        }
     }
     pthread_mutex_lock(&workers->lock);
     atomic_fetch_add(&workers->sleepers, 1);
@@ -167,8 +176,13 @@ static void publish(workers_t *workers) {
 static void finish(workers_t *workers) {
     uint64_t state = atomic_fetch_or(&workers->state, CLOSED);
     size_t joined = (size_t)(state & JOINED);
-    while (atomic_load_explicit(&workers->finished, memory_order_acquire) < joined) {
-        pause_briefly();
+    for (unsigned spin = 0; atomic_load_explicit(&workers->finished, memory_order_acquire) < joined;
+         spin++) {
+        if (spin < SPINS) {
+            pause_briefly();
+        } else {
+            sched_yield();
+        }
     }
 }
 

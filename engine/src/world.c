@@ -163,6 +163,15 @@ void world_set_workers(world_t *world, size_t workers) {
     workers_free(world->workers);
     world->workers = workers > 1 ? workers_init(workers) : NULL;
     world->wide.workers = world->workers;
+    broadphase_set_workers(world->broadphase, world->workers);
+}
+
+void world_for_bodies(world_t *world, size_t count, workers_fn_t fn, void *context) {
+    if (world->workers == NULL) {
+        fn(context, 0, 0, count);
+        return;
+    }
+    workers_for(world->workers, count, fn, context);
 }
 
 static uint64_t pair_key(const body_t *a, const body_t *b) {

@@ -18,6 +18,7 @@
 #include "body.h"
 #include "integrator.h"
 #include "scene.h"
+#include "workers.h"
 
 typedef struct world world_t;
 
@@ -30,6 +31,10 @@ void world_set_iterations(world_t *world, size_t velocity_iterations, size_t pos
  * workers - 1 of the world's own, started at the first step that needs them
  * and stopped here when the count changes, and by world_free. */
 void world_set_workers(world_t *world, size_t workers);
+
+/* fn over the chunks of [0, count) on the world's threads (workers.h), for
+ * the scene's loops over bodies; on the caller's alone with 1 worker. */
+void world_for_bodies(world_t *world, size_t count, workers_fn_t fn, void *context);
 
 typedef struct {
     double dt;
