@@ -257,7 +257,8 @@ WORLD_INLINE void load_body(world_t *world, body_t *body, const integrator_motio
 typedef struct {
     world_t *world;
     body_t **bodies;
-    integrator_motion_t *motions;
+    const integrator_motion_t *free_motions; /* loading reads them */
+    integrator_motion_t *motions;            /* writing back fills them */
     double dt;
 } body_loop_t;
 
@@ -265,7 +266,7 @@ static void load_chunk(void *context, size_t chunk, size_t begin, size_t end) {
     const body_loop_t *loop = context;
     (void)chunk;
     for (size_t i = begin; i < end; i++) {
-        load_body(loop->world, loop->bodies[i], &loop->motions[i], i, loop->dt);
+        load_body(loop->world, loop->bodies[i], &loop->free_motions[i], i, loop->dt);
     }
 }
 
@@ -274,7 +275,7 @@ static void load_bodies(world_t *world, body_t **bodies, const integrator_motion
                         size_t count, const world_step_t *step) {
     reserve_rows(world, count);
     if (world->workers != NULL) {
-        body_loop_t loop = {world, bodies, (integrator_motion_t *)motions, step->dt};
+        body_loop_t loop = {world, bodies, motions, NULL, step->dt};
         workers_for(world->workers, count, load_chunk, &loop);
         return;
     }
@@ -527,7 +528,7 @@ static void write_back_chunk(void *context, size_t chunk, size_t begin, size_t e
 
 static void write_back(world_t *world, integrator_motion_t *motions, size_t count) {
     if (world->workers != NULL) {
-        body_loop_t loop = {world, NULL, motions, 0.0};
+        body_loop_t loop = {world, NULL, NULL, motions, 0.0};
         workers_for(world->workers, count, write_back_chunk, &loop);
         return;
     }
