@@ -234,8 +234,9 @@ void scene_set_solver_iterations(scene_t *scene, size_t velocity_iterations,
  * [1, 64] (got 0)"). Spread over them: the broadphase's search of its
  * grid cells, the narrowphase, preparing the contacts and packing them into
  * colour batches, each colour of batches (the colours one after another),
- * the loops over bodies that load the solver and take its results, and
- * integration (stage 3). The rest runs on the calling thread as with one
+ * the loops over bodies that load the solver and take its results, the
+ * free motions of the one-stage integrators (stage 1, after the force
+ * creators) and integration (stage 3). The rest runs on the calling thread as with one
  * worker: the force creators, the collision handlers and everything else a
  * scene calls back, the colouring, the contacts no colour could take, the
  * restitution pass, shock propagation and sleeping. A body whose motion is

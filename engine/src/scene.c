@@ -353,6 +353,24 @@ static void stage_forces_again(void *context) {
     }
 }
 
+/* Whether the loops over bodies run on the world's workers. */
+static bool splits_bodies(const scene_t *scene) {
+    return scene->world != NULL && scene->workers > 1;
+}
+
+/* The one-stage schemes' free motions over the world's workers: no force
+ * creator runs in them, and each body's motion is its own. */
+typedef struct {
+    const integrator_step_t *step;
+    scene_t *scene;
+} predict_split_t;
+
+static void predict_chunk(void *context, size_t chunk, size_t begin, size_t end) {
+    const predict_split_t *split = context;
+    (void)chunk;
+    integrator_predict_range(split->step, split->scene->bodies, split->scene->motions, begin, end);
+}
+
 /* Stage 1: the forces, and from them each body's free motion. */
 static void stage_motion(scene_t *scene, double dt) {
     integrator_begin(scene->integrator, scene->bodies, scene->body_count, &scene->stages);
@@ -361,7 +379,13 @@ static void stage_motion(scene_t *scene, double dt) {
                    sizeof(integrator_motion_t));
     integrator_step_t step = {scene->integrator, dt, scene->gravity,
                               scene->stage_force_count > 0 ? stage_forces_again : NULL, scene};
-    integrator_predict(&step, scene->bodies, scene->body_count, scene->motions, &scene->stages);
+    if (splits_bodies(scene) && integrator_stage_count(scene->integrator) == 1) {
+        predict_split_t split = {&step, scene};
+        scene->world_ops->for_bodies(scene->world, scene->body_count, predict_chunk, &split);
+    } else {
+        integrator_predict(&step, scene->bodies, scene->body_count, scene->motions,
+                           &scene->stages);
+    }
     scene->stage = 0;
 }
 
@@ -459,9 +483,8 @@ static integrated_t integrate_split(scene_t *scene) {
 /* Stage 3. Returns whether any body is marked removed (those are not
  * advanced: they are freed next). */
 static bool stage_integrate(scene_t *scene) {
-    integrated_t found = scene->world != NULL && scene->workers > 1
-                             ? integrate_split(scene)
-                             : integrate_range(scene, 0, scene->body_count);
+    integrated_t found = splits_bodies(scene) ? integrate_split(scene)
+                                              : integrate_range(scene, 0, scene->body_count);
     if (found.failed != SIZE_MAX) fail_integrate(scene, found.failed, found.start);
     return found.removed;
 }
