@@ -4,6 +4,7 @@
 # make bench      the benchmark scenes (docs/bench.md)
 # make report     numerical error against run time (docs/accuracy.md)
 # make stability  stiff and extreme cases beside theory and the peers (docs/stability.md)
+# make tsan       the threaded tests (scene_set_workers) under ThreadSanitizer
 
 CC ?= cc
 CSTD := -std=c11 -D_POSIX_C_SOURCE=200809L -D_DEFAULT_SOURCE
@@ -32,7 +33,7 @@ TEST_SRC := $(wildcard tests/test_*.c) tests/test.c tests/main.c tests/reference
 	tests/scene_file_check.c
 TEST_SAN_OBJ := $(patsubst tests/%.c,build/tests/%.o,$(TEST_SRC))
 
-.PHONY: all check clean
+.PHONY: all check clean tsan
 all: build/libengine.a
 
 build/engine/%.o: engine/src/%.c $(ENGINE_HDR)
@@ -67,7 +68,7 @@ build/tests/%.o: tests/%.c tests/test.h tests/suites.h tests/reference.h tests/s
 	$(CC) $(CSTD) $(WARN) -O1 -g $(SAN) -Iengine/include -Iengine/src -Itests -Iapp/games -c $< -o $@
 
 build/tests/engine_tests: $(TEST_SAN_OBJ) $(GAMES_SAN_OBJ) build/libengine-san.a
-	$(CC) $(SAN) $^ -lm -o $@
+	$(CC) $(SAN) $^ -pthread -lm -o $@
 
 # Programs `make check` runs; app/app.mk adds the sandbox's smoke tests.
 # check_examples.sh builds tests/examples/ (and the README's example) against
@@ -82,6 +83,23 @@ CHECK_PROGRAMS := build/tests/engine_tests tests/check_examples.sh tests/report/
 
 check: $(CHECK_PROGRAMS) build/libengine.a build/report/accuracy
 	@tests/run_all.sh $(CHECK_PROGRAMS)
+
+# make tsan: the test program built with ThreadSanitizer (whole, so the
+# engine's threads and the tests' calls are seen together), running the
+# suites that step scenes on several workers; any race report fails it.
+TSAN := -fsanitize=thread -fno-omit-frame-pointer
+TSAN_SUITES ?= workers
+build/tsan/engine_tests: $(ENGINE_SRC) $(SCENEFILE_SRC) $(GAMES_SRC) $(TEST_SRC) $(ENGINE_HDR) \
+		$(SCENEFILE_HDR) $(GAMES_HDR) tests/test.h tests/suites.h
+	@mkdir -p $(dir $@)
+	$(CC) $(CSTD) $(WARN) -O1 -g $(TSAN) -Iengine/include -Iengine/src -Itests -Iapp/games \
+		$(ENGINE_SRC) $(SCENEFILE_SRC) $(GAMES_SRC) $(TEST_SRC) -pthread -lm -o $@
+
+tsan: build/tsan/engine_tests
+	@for suite in $(TSAN_SUITES); do \
+		TSAN_OPTIONS="halt_on_error=1 exitcode=66 second_deadlock_stack=1" \
+			build/tsan/engine_tests $$suite || exit 1; \
+	done
 
 clean:
 	rm -rf build sandbox

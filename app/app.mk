@@ -32,7 +32,7 @@ build/app/%.o: app/%.c $(APP_HDR) $(wildcard engine/include/*.h) app/app.mk
 	$(CC) $(CSTD) $(WARN) $(OPT) -Iengine/include -Iapp/games $(SANDBOX_CFLAGS) -c $< -o $@
 
 sandbox: $(APP_OBJ) $(APP_GAMES_OBJ) build/libengine.a
-	$(CC) $(APP_OBJ) $(APP_GAMES_OBJ) build/libengine.a $(SANDBOX_LIBS) -lm -o $@
+	$(CC) $(APP_OBJ) $(APP_GAMES_OBJ) build/libengine.a $(SANDBOX_LIBS) -pthread -lm -o $@
 
 APP_SMOKE_DEPS := sandbox
 # The smoke tests read the app's 8x8 font (SDL2_gfx's header) to find text in
@@ -64,7 +64,7 @@ build/tests/app_units: $(APP_UNIT_SRC) tests/app_expect.h $(wildcard app/*.h) $(
                        build/libengine-san.a $(GAMES_SAN_OBJ)
 	@mkdir -p $(dir $@)
 	$(CC) $(CSTD) $(WARN) -O1 -g $(SAN) -Iapp -Iapp/games -Iengine/include $(APP_UNIT_SRC) \
-	    $(GAMES_SAN_OBJ) build/libengine-san.a -lm -o $@
+	    $(GAMES_SAN_OBJ) build/libengine-san.a -pthread -lm -o $@
 
 # The smoke tests drive ./sandbox from outside and read its screenshots; they
 # link no SDL, but the sanitized engine, to load the scene files the sandbox
@@ -74,7 +74,7 @@ build/tests/app_smoke: $(APP_SMOKE_SRC) tests/app_image.h tests/app_expect.h app
                        app/presets.h app/app.mk build/libengine-san.a $(APP_SMOKE_DEPS)
 	@mkdir -p $(dir $@)
 	$(CC) $(CSTD) $(WARN) -O1 -g $(SAN) $(APP_SMOKE_DEFS) -Iapp -Itests -Iengine/include \
-	    $(APP_SMOKE_SRC) build/libengine-san.a $(APP_SMOKE_LIBS) -lm -o $@
+	    $(APP_SMOKE_SRC) build/libengine-san.a $(APP_SMOKE_LIBS) -pthread -lm -o $@
 
 CHECK_PROGRAMS += build/tests/app_units build/tests/app_smoke
 

@@ -163,6 +163,7 @@ void sandbox_show(sandbox_t *sandbox, sandbox_loaded_t *loaded, bool keep_integr
     }
     scene_set_integrator(scene, sandbox->integrator);
     scene_set_sleeping(scene, sandbox->sleeping_on);
+    scene_set_workers(scene, SANDBOX_WORKERS);
     sandbox->rng = sandbox->seed * 2654435769ULL + 0x9E3779B97F4A7C15ULL;
     if (sandbox->rng == 0) sandbox->rng = 1;
     sandbox->next_color = 0;

@@ -538,6 +538,8 @@ static void test_default_scene_is_a_scene_file(void) {
     EXPECT(sandbox.step == 1.0 / 120.0 && sandbox.gravity_on &&
                scene_get_gravity(scene).y == -SANDBOX_GRAVITY,
            "step %g, gravity %g", sandbox.step, scene_get_gravity(scene).y);
+    EXPECT(scene_get_workers(scene) == SANDBOX_WORKERS && SANDBOX_WORKERS == 2,
+           "the sandbox steps on %zu workers", scene_get_workers(scene));
     const char *problem = NULL;
     list_t *shape = sandbox_make_shape(&sandbox, (shape_choice_t){SHAPE_BOX, 0, 0.5}, &problem);
     vector_t placed;
@@ -588,6 +590,8 @@ static void test_scene_files_open_and_refusals_keep_the_scene(void) {
                "%s: opened as \"%s\", step %g", path, sandbox.name, sandbox.step);
         EXPECT((sandbox.game != NULL) == (scene_file_get_game(sandbox.file)[0] != '\0'),
                "%s: the game %s started", path, sandbox.game != NULL ? "" : "not");
+        EXPECT(scene_get_workers(sandbox.scene) == SANDBOX_WORKERS, "%s: %zu workers", path,
+               scene_get_workers(sandbox.scene));
         for (int step = 0; step < 30; step++) sandbox_step(&sandbox);
     }
     EXPECT(sandbox_open(&sandbox, "assets/scenes/orbits.scene", error, sizeof(error)) &&

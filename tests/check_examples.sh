@@ -1,7 +1,7 @@
 #!/bin/sh
 # Builds each program in tests/examples/ against the release library with
 # nothing but the public headers (cc -std=c11 -Iengine/include ...
-# build/libengine.a -lm), runs it, and checks that README.md shows every line
+# build/libengine.a -pthread -lm), runs it, and checks that README.md shows every line
 # of each example it quotes (falling_hexagon.c), so the README cannot drift
 # from code that compiles. Ends with "N passed, N failed".
 passed=0
@@ -10,7 +10,7 @@ CC=${CC:-cc}
 mkdir -p build/examples
 for source in tests/examples/*.c; do
     name=$(basename "$source" .c)
-    if $CC -std=c11 -Wall -Wextra -Werror -Iengine/include "$source" build/libengine.a -lm \
+    if $CC -std=c11 -Wall -Wextra -Werror -Iengine/include "$source" build/libengine.a -pthread -lm \
         -o "build/examples/$name" && output=$("build/examples/$name"); then
         echo "$output" | sed 's/^/    /'
         echo "PASS examples.$name"
@@ -34,8 +34,9 @@ else
 fi
 # A program of bodies, forces and seed collisions links none of the world
 # contact pipeline (scene_contacts.c is its only door); one that enables
-# world contacts does, which shows the check can see them.
-contact_symbols='broadphase_|manifold_|coloring_|solver_|shock_|world_step'
+# world contacts does, which shows the check can see them. The worker
+# threads (workers.c) come only with the world.
+contact_symbols='broadphase_|manifold_|coloring_|solver_|shock_|world_step|workers_'
 linked() {
     nm "$1" 2>/dev/null | grep -E " [TtDdRrBb] ($contact_symbols)" | head -n 3
 }

@@ -232,6 +232,33 @@ void scene_set_solver_iterations(scene_t *scene, size_t velocity_iterations,
                                  size_t position_iterations);
 
 /*
+ * Workers (default 1): the threads a step of world contacts runs on, the
+ * calling thread and workers - 1 of the scene's own, in [1,
+ * SCENE_MAX_WORKERS]; anything else stops the program ("workers must be in
+ * [1, 64] (got 0)"). Spread over them: the broadphase's search of its
+ * grid cells, the narrowphase, preparing the contacts and packing them into
+ * colour batches, each colour of batches (the colours one after another),
+ * the loops over bodies that load the solver and take its results, the
+ * free motions of the one-stage integrators (stage 1, after the force
+ * creators) and integration (stage 3). The rest runs on the calling thread as with one
+ * worker: the force creators, the collision handlers and everything else a
+ * scene calls back, the colouring, the contacts no colour could take, the
+ * restitution pass, shock propagation and sleeping. A body whose motion is
+ * not finite stops the program with the message one worker gives.
+ * Results are bit-identical for any worker count: every number is computed
+ * by the same operations in the same order, whichever thread computes it.
+ * The threads start at the first step that needs them (none while world
+ * contacts are off or with 1 worker), wait between steps without using the
+ * processor for long, and stop when the count changes or the scene is
+ * freed; a step allocates nothing for them. It may be changed between
+ * ticks at any time. More workers than the machine has cores only slows a
+ * step down.
+ */
+#define SCENE_MAX_WORKERS 64
+void scene_set_workers(scene_t *scene, size_t workers);
+size_t scene_get_workers(const scene_t *scene);
+
+/*
  * The step's record: every contact touching or about to touch at the last
  * scene_tick (world contacts with their impulses) and every seed collision
  * whose handler ran in it, except those naming a body freed at the end of

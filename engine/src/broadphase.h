@@ -46,6 +46,12 @@ void broadphase_free(broadphase_t *broadphase);
 size_t broadphase_find_pairs(broadphase_t *broadphase, const broadphase_proxy_t *proxies,
                              size_t count, const broadphase_pair_t **pairs, size_t *tests);
 
+/* The threads that share the search of the grid's cells (scene_set_workers;
+ * NULL, the default: the caller alone). The pairs come out the same, in the
+ * same order. */
+typedef struct workers workers_t;
+void broadphase_set_workers(broadphase_t *broadphase, workers_t *workers);
+
 /* Whether the filters of two proxies allow them to touch. */
 bool broadphase_filters_allow(const broadphase_proxy_t *a, const broadphase_proxy_t *b);
 

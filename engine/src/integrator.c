@@ -334,13 +334,18 @@ static void finish_stages(const stage_row_t *row, double dt, double w,
     motion->acceleration = (vector_t){(row->run.x - row->u0.x) / dt, (row->run.y - row->u0.y) / dt};
 }
 
+void integrator_predict_range(const integrator_step_t *step, body_t **bodies,
+                              integrator_motion_t *motions, size_t begin, size_t end) {
+    double w = integrator_position_weight(step->integrator);
+    for (size_t i = begin; i < end; i++) {
+        predict_one_stage(bodies[i], step->dt, step->gravity, w, &motions[i]);
+    }
+}
+
 void integrator_predict(const integrator_step_t *step, body_t **bodies, size_t count,
                         integrator_motion_t *motions, integrator_stages_t **stages) {
     if (integrator_stage_count(step->integrator) == 1) {
-        double w = integrator_position_weight(step->integrator);
-        for (size_t i = 0; i < count; i++) {
-            predict_one_stage(bodies[i], step->dt, step->gravity, w, &motions[i]);
-        }
+        integrator_predict_range(step, bodies, motions, 0, count);
         return;
     }
     size_t begun = *stages != NULL ? (*stages)->begun : 0;

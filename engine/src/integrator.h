@@ -113,6 +113,12 @@ typedef struct {
 void integrator_predict(const integrator_step_t *step, body_t **bodies, size_t count,
                         integrator_motion_t *motions, integrator_stages_t **stages);
 
+/* integrator_predict for bodies [begin, end) of a one-stage scheme
+ * (integrator_stage_count 1), which calls no force creator: each body's
+ * motion is its own, so ranges may run on several threads at once. */
+void integrator_predict_range(const integrator_step_t *step, body_t **bodies,
+                              integrator_motion_t *motions, size_t begin, size_t end);
+
 /* Moves one body by motion and gives it the motion's velocities (body_tick;
  * the scene moves its bodies with integrator_move). The caller checks the
  * result and then clears the body's accumulators (which explain a result

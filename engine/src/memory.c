@@ -1,33 +1,39 @@
 #include "memory.h"
+#include <stdatomic.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include "check.h"
 #include "engine.h"
 
-static size_t allocation_count = 0;
+/* Atomic: the worker threads of scene_set_workers grow their own buffers. */
+static atomic_size_t allocation_count = 0;
 
 size_t engine_allocation_count(void) {
-    return allocation_count;
+    return atomic_load_explicit(&allocation_count, memory_order_relaxed);
+}
+
+static void count_allocation(void) {
+    atomic_fetch_add_explicit(&allocation_count, 1, memory_order_relaxed);
 }
 
 void *memory_alloc(size_t size) {
     void *block = malloc(size == 0 ? 1 : size);
     REQUIRE(block != NULL, "out of memory allocating %zu bytes", size);
-    allocation_count++;
+    count_allocation();
     return block;
 }
 
 void *memory_calloc(size_t count, size_t size) {
     void *block = calloc(count == 0 ? 1 : count, size == 0 ? 1 : size);
     REQUIRE(block != NULL, "out of memory allocating %zu x %zu bytes", count, size);
-    allocation_count++;
+    count_allocation();
     return block;
 }
 
 void *memory_realloc(void *block, size_t size) {
     void *moved = realloc(block, size == 0 ? 1 : size);
     REQUIRE(moved != NULL, "out of memory growing a block to %zu bytes", size);
-    if (moved != block) allocation_count++;
+    if (moved != block) count_allocation();
     return moved;
 }
 

@@ -8,6 +8,7 @@
 #include "integrator.h"
 #include "memory.h"
 #include "scene_private.h"
+#include "workers.h"
 #include "world.h"
 
 typedef struct {
@@ -47,6 +48,7 @@ struct scene {
     world_t *world;
     const world_ops_t *world_ops;
     size_t velocity_iterations, position_iterations;
+    size_t workers;
 
     /* Seed collisions are recorded as they happen; world contacts are
      * appended the first time the record is read after a tick. */
@@ -62,6 +64,7 @@ scene_t *scene_init(void) {
     scene->sleeping = true;
     scene->velocity_iterations = 8;
     scene->position_iterations = 4;
+    scene->workers = 1;
     return scene;
 }
 
@@ -258,6 +261,19 @@ void scene_set_solver_iterations(scene_t *scene, size_t velocity_iterations,
     }
 }
 
+void scene_set_workers(scene_t *scene, size_t workers) {
+    REQUIRE_NOT_NULL(scene);
+    REQUIRE(workers >= 1 && workers <= SCENE_MAX_WORKERS, "workers must be in [1, %d] (got %zu)",
+            SCENE_MAX_WORKERS, workers);
+    scene->workers = workers;
+    if (scene->world != NULL) scene->world_ops->set_workers(scene->world, workers);
+}
+
+size_t scene_get_workers(const scene_t *scene) {
+    REQUIRE_NOT_NULL(scene);
+    return scene->workers;
+}
+
 /* Stage 5, on demand: a scene nobody observes pays nothing for its record. */
 static void publish_world_record(scene_t *scene) {
     if (!scene->record_needs_world) return;
@@ -337,6 +353,24 @@ static void stage_forces_again(void *context) {
     }
 }
 
+/* Whether the loops over bodies run on the world's workers. */
+static bool splits_bodies(const scene_t *scene) {
+    return scene->world != NULL && scene->workers > 1;
+}
+
+/* The one-stage schemes' free motions over the world's workers: no force
+ * creator runs in them, and each body's motion is its own. */
+typedef struct {
+    const integrator_step_t *step;
+    scene_t *scene;
+} predict_split_t;
+
+static void predict_chunk(void *context, size_t chunk, size_t begin, size_t end) {
+    const predict_split_t *split = context;
+    (void)chunk;
+    integrator_predict_range(split->step, split->scene->bodies, split->scene->motions, begin, end);
+}
+
 /* Stage 1: the forces, and from them each body's free motion when
  * something needs it before the bodies move: the world's contacts change
  * it, and a multi-stage scheme evaluates the forces again. Otherwise the
@@ -351,7 +385,12 @@ static const integrator_motion_t *stage_motion(scene_t *scene, integrator_step_t
     memory_reserve((void **)&scene->motions, &scene->motion_capacity, scene->body_count,
                    sizeof(integrator_motion_t));
     step->evaluate = scene->stage_force_count > 0 ? stage_forces_again : NULL;
-    integrator_predict(step, scene->bodies, scene->body_count, scene->motions, &scene->stages);
+    if (splits_bodies(scene) && one_stage) {
+        predict_split_t split = {step, scene};
+        scene->world_ops->for_bodies(scene->world, scene->body_count, predict_chunk, &split);
+    } else {
+        integrator_predict(step, scene->bodies, scene->body_count, scene->motions, &scene->stages);
+    }
     scene->stage = 0;
     return scene->motions;
 }
@@ -386,12 +425,50 @@ static void fail_integrate(const scene_t *scene, size_t index, vector_t start) {
                 index, start.x, start.y, what, springs);
 }
 
+/* The integrate stage over the world's workers (motions are then the
+ * world's): each body is its own, and the chunks' outcomes are joined in
+ * chunk order, so the body a failure names is the one a single thread
+ * stops at. */
+typedef struct {
+    const integrator_step_t *step;
+    scene_t *scene;
+    const integrator_motion_t *motions;
+    integrator_outcome_t found[WORKERS_MAX_CHUNKS];
+    size_t end[WORKERS_MAX_CHUNKS]; /* SIZE_MAX for a chunk the call did not make */
+} integrate_split_t;
+
+static void integrate_chunk(void *context, size_t chunk, size_t begin, size_t end) {
+    integrate_split_t *split = context;
+    split->found[chunk] = integrator_move(split->step, split->scene->bodies + begin, end - begin,
+                                          split->motions + begin);
+    split->found[chunk].failed += begin; /* end when the chunk did not fail */
+    split->end[chunk] = end;
+}
+
+static integrator_outcome_t integrate_split(scene_t *scene, const integrator_step_t *step,
+                                            const integrator_motion_t *motions) {
+    integrate_split_t split = {step, scene, motions, {{0}}, {0}};
+    for (size_t k = 0; k < WORKERS_MAX_CHUNKS; k++) split.end[k] = SIZE_MAX;
+    scene->world_ops->for_bodies(scene->world, scene->body_count, integrate_chunk, &split);
+    integrator_outcome_t outcome = {scene->body_count, VEC_ZERO, false};
+    for (size_t k = 0; k < WORKERS_MAX_CHUNKS && split.end[k] != SIZE_MAX; k++) {
+        outcome.removed |= split.found[k].removed;
+        if (outcome.failed == scene->body_count && split.found[k].failed < split.end[k]) {
+            outcome.failed = split.found[k].failed;
+            outcome.failed_start = split.found[k].failed_start;
+        }
+    }
+    return outcome;
+}
+
 /* Stage 3. Returns whether any body is marked removed (those are not
  * advanced: they are freed next). */
 static bool stage_integrate(scene_t *scene, const integrator_step_t *step,
                             const integrator_motion_t *motions) {
-    integrator_outcome_t outcome =
-        integrator_move(step, scene->bodies, scene->body_count, motions);
+    integrator_outcome_t outcome = splits_bodies(scene) && motions != NULL
+                                       ? integrate_split(scene, step, motions)
+                                       : integrator_move(step, scene->bodies, scene->body_count,
+                                                         motions);
     if (outcome.failed < scene->body_count) {
         fail_integrate(scene, outcome.failed, outcome.failed_start);
     }

@@ -5,8 +5,9 @@
 #include "world.h"
 
 static const world_ops_t WORLD_OPS = {
-    world_free,         world_set_iterations, world_step,         world_contact_count,
-    world_get_contact,  world_pair_collides,  world_pair_contact,
+    world_free,         world_set_iterations, world_set_workers,   world_for_bodies,
+    world_step,         world_contact_count,  world_get_contact,   world_pair_collides,
+    world_pair_contact,
 };
 
 void scene_set_contacts_enabled(scene_t *scene, bool enabled) {
@@ -18,5 +19,7 @@ void scene_set_contacts_enabled(scene_t *scene, bool enabled) {
     }
     size_t velocity_iterations, position_iterations;
     scene_get_iterations(scene, &velocity_iterations, &position_iterations);
-    scene_install_world(scene, world_init(velocity_iterations, position_iterations), &WORLD_OPS);
+    world_t *world = world_init(velocity_iterations, position_iterations);
+    world_set_workers(world, scene_get_workers(scene));
+    scene_install_world(scene, world, &WORLD_OPS);
 }

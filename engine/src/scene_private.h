@@ -5,6 +5,7 @@
 
 #include "contact.h"
 #include "scene.h"
+#include "workers.h"
 #include "world.h"
 
 /* Appends an entry to the record of the tick in progress. */
@@ -25,6 +26,8 @@ typedef struct {
     void (*free)(world_t *world);
     void (*set_iterations)(world_t *world, size_t velocity_iterations,
                            size_t position_iterations);
+    void (*set_workers)(world_t *world, size_t workers);
+    void (*for_bodies)(world_t *world, size_t count, workers_fn_t fn, void *context);
     void (*step)(world_t *world, body_t **bodies, integrator_motion_t *motions, size_t count,
                  const world_step_t *step, scene_stats_t *stats);
     size_t (*contact_count)(const world_t *world);

@@ -3,6 +3,7 @@
 #include "scalar.h"
 #include "shock.h"
 #include "solver_wide.h"
+#include "workers.h"
 
 const double SOLVER_RESTITUTION_THRESHOLD = 1.0;
 const double SOLVER_FREE_RESTITUTION_THRESHOLD = 1e-3;
@@ -171,8 +172,10 @@ static void same_impact_moment(solver_contact_t *c) {
     p1->impact_offset = p2->impact_offset = first;
 }
 
-/* Returns whether a point of c has an impact within the step. */
-static bool prepare(solver_contact_t *c, const solver_anchor_t *anchor,
+/* Returns whether a point of c has an impact within the step. Inlined into
+ * its loop, as it was before the loop could run on workers too (called,
+ * pile(1000) ran 2% more instructions). */
+static inline __attribute__((always_inline)) bool prepare(solver_contact_t *c, const solver_anchor_t *anchor,
                     const solver_velocity_t *velocities, const solver_state_t *states,
                     const solver_settings_t *s) {
     const solver_velocity_t *a = &velocities[c->a], *b = &velocities[c->b];
@@ -572,9 +575,10 @@ static void apply_impact_time(const solver_bodies_t *bodies, size_t i,
 /* Where the integrator will put each body with the solved velocities
  * (with its impact timing, see apply_impact_time), remembered as where the
  * position pass starts from. */
-static void advance(const solver_bodies_t *bodies, const solver_settings_t *s) {
+static void advance(const solver_bodies_t *bodies, const solver_settings_t *s, size_t begin,
+                    size_t end) {
     double w = s->position_weight;
-    for (size_t i = 0; i < bodies->body_count; i++) {
+    for (size_t i = begin; i < end; i++) {
         solver_state_t *state = &bodies->states[i];
         const solver_velocity_t *velocity = &bodies->velocities[i];
         solver_displacement_t *moved = &bodies->displacements[i];
@@ -622,9 +626,9 @@ static double turn_limit(double radius, double most) {
 
 /* Caps what the position pass moved each body in this step (solver.h:
  * SOLVER_MAX_PUSH_SPEED). */
-static void limit_corrections(const solver_bodies_t *bodies, double dt) {
+static void limit_corrections(const solver_bodies_t *bodies, double dt, size_t begin, size_t end) {
     double most = min_of(SOLVER_MAX_PUSH_SPEED * dt, SOLVER_MAX_PUSH);
-    for (size_t i = 0; i < bodies->body_count; i++) {
+    for (size_t i = begin; i < end; i++) {
         const solver_state_t *state = &bodies->states[i];
         solver_displacement_t *moved = &bodies->displacements[i];
         vector_t corrected = vec_subtract(moved->dx, state->dx_advanced);
@@ -641,18 +645,86 @@ static void limit_corrections(const solver_bodies_t *bodies, double dt) {
     }
 }
 
+/* What preparing contacts found: an impact within the step, an elastic
+ * contact. */
+typedef struct {
+    bool impact, elastic;
+} prepared_t;
+
+static prepared_t prepare_range(solver_contact_t *contacts, const solver_anchor_t *anchors,
+                                const solver_bodies_t *bodies, const solver_settings_t *settings,
+                                size_t begin, size_t end) {
+    prepared_t found = {false, false};
+    for (size_t i = begin; i < end; i++) {
+        solver_contact_t *c = &contacts[i];
+        found.impact |= prepare(c, &anchors[i], bodies->velocities, bodies->states, settings);
+        found.elastic |= c->restitution > 0.0;
+    }
+    return found;
+}
+
+/* The loops over contacts and over bodies of solver_solve that the workers
+ * share (scene_set_workers): each contact or body writes only its own, and
+ * what preparing found is gathered per chunk and joined in chunk order. */
+typedef struct {
+    solver_contact_t *contacts;
+    const solver_anchor_t *anchors;
+    const solver_bodies_t *bodies;
+    const solver_settings_t *settings;
+    prepared_t found[WORKERS_MAX_CHUNKS];
+} solve_split_t;
+
+static void prepare_chunk(void *context, size_t chunk, size_t begin, size_t end) {
+    solve_split_t *split = context;
+    split->found[chunk] =
+        prepare_range(split->contacts, split->anchors, split->bodies, split->settings, begin, end);
+}
+
+static void advance_chunk(void *context, size_t chunk, size_t begin, size_t end) {
+    const solve_split_t *split = context;
+    (void)chunk;
+    advance(split->bodies, split->settings, begin, end);
+}
+
+static void limit_chunk(void *context, size_t chunk, size_t begin, size_t end) {
+    const solve_split_t *split = context;
+    (void)chunk;
+    limit_corrections(split->bodies, split->settings->dt, begin, end);
+}
+
+static prepared_t prepare_all(workers_t *workers, solve_split_t *split, size_t contact_count) {
+    if (workers == NULL) {
+        return prepare_range(split->contacts, split->anchors, split->bodies, split->settings, 0,
+                             contact_count);
+    }
+    workers_for(workers, contact_count, prepare_chunk, split);
+    prepared_t found = {false, false};
+    for (size_t k = 0; k < workers_chunks(workers, contact_count); k++) {
+        found.impact |= split->found[k].impact;
+        found.elastic |= split->found[k].elastic;
+    }
+    return found;
+}
+
+/* fn over every body: on the workers when there are. */
+static void for_bodies(workers_t *workers, solve_split_t *split, workers_fn_t fn) {
+    size_t count = split->bodies->body_count;
+    if (workers == NULL) {
+        fn(split, 0, 0, count);
+        return;
+    }
+    workers_for(workers, count, fn, split);
+}
+
 void solver_solve(solver_wide_t *wide, shock_t *shock, solver_contact_t *contacts,
                   const solver_anchor_t *anchors, size_t contact_count,
                   const solver_bodies_t *bodies, const solver_settings_t *settings) {
     solver_velocity_t *velocities = bodies->velocities;
+    solve_split_t split = {contacts, anchors, bodies, settings, {{false, false}}};
     /* A step pays for the collision pass only with an elastic contact, and
      * for timing impacts only with an impact. */
-    bool any_elastic = false, any_impact = false;
-    for (size_t i = 0; i < contact_count; i++) {
-        solver_contact_t *c = &contacts[i];
-        any_impact |= prepare(c, &anchors[i], velocities, bodies->states, settings);
-        any_elastic |= c->restitution > 0.0;
-    }
+    prepared_t found = prepare_all(wide->workers, &split, contact_count);
+    bool any_elastic = found.elastic, any_impact = found.impact;
     solver_wide_load(wide, contacts, contact_count, velocities, bodies->body_count);
     solver_wide_warm_start(wide, velocities);
     for (size_t i = 0; i < wide->loose_count; i++) {
@@ -678,12 +750,12 @@ void solver_solve(solver_wide_t *wide, shock_t *shock, solver_contact_t *contact
     for (size_t i = 0; any_impact && i < contact_count; i++) {
         mark_impacts(&contacts[i], velocities, bodies->states);
     }
-    advance(bodies, settings);
+    for_bodies(wide->workers, &split, advance_chunk);
     for (int iteration = 0; iteration < settings->position_iterations; iteration++) {
         solver_wide_correct_positions(wide, bodies->displacements, iteration % 2 == 1);
         for (size_t i = 0; i < wide->loose_count; i++) {
             solve_position(&contacts[wide->loose[i]], velocities, bodies->displacements);
         }
     }
-    limit_corrections(bodies, settings->dt);
+    for_bodies(wide->workers, &split, limit_chunk);
 }

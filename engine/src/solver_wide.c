@@ -1,6 +1,7 @@
 #include "solver_wide.h"
 #include <string.h>
 #include "memory.h"
+#include "solver_split.h"
 
 enum { LANES = 4 };
 
@@ -55,6 +56,7 @@ struct lane_block {
  * written back.
  */
 typedef enum { BATCH_BLOCK, BATCH_PAIR, BATCH_SINGLE, BATCH_KINDS } batch_kind_t;
+_Static_assert((int)BATCH_KINDS == (int)SOLVER_WIDE_KINDS, "solver_wide.h counts the kinds of batch");
 
 struct solver_batch {
     lane_vector_t normal;
@@ -66,6 +68,8 @@ struct solver_batch {
     uint32_t a[LANES], b[LANES];
     uint32_t contact[LANES];
     uint8_t lanes, kind;
+    /* Bit l: lane l's body a (b) cannot move. */
+    uint8_t fixed_a, fixed_b;
 };
 
 /* The same contacts, with what the position pass needs; their points
@@ -75,6 +79,7 @@ struct solver_position_batch {
     lane_t ma, mb, ia, ib, rate, slop;
     uint32_t a[LANES], b[LANES];
     uint8_t lanes, point_count;
+    uint8_t fixed_a, fixed_b; /* as in solver_batch */
 };
 
 struct solver_position_point {
@@ -188,6 +193,76 @@ LANE_INLINE void scatter(solver_velocity_t *rows, const uint32_t index[LANES], i
     }
 }
 
+/* gather and scatter for threads that share a colour (solver_split.h): a
+ * partial batch reads its lanes one by one, not row 0 for the empty ones,
+ * which another thread may be writing, and the rows of bodies that cannot
+ * move (fixed, a lane mask) are not written, since other batches of the
+ * colour read them. Those rows would be written unchanged. Both kinds of
+ * row begin with the four doubles load_columns reads, the first three
+ * of which a sweep changes. */
+LANE_INLINE lane_quad_t load_lanes(const void *rows, size_t stride, const uint32_t index[LANES],
+                                   int lanes) {
+    double columns[4][LANES] = {{0.0}};
+    for (int l = 0; l < lanes; l++) {
+        double row[4];
+        memcpy(row, (const char *)rows + index[l] * stride, sizeof row);
+        for (int c = 0; c < 4; c++) columns[c][l] = row[c];
+    }
+    return (lane_quad_t){load_lane(columns[0]), load_lane(columns[1]), load_lane(columns[2]),
+                         load_lane(columns[3])};
+}
+
+LANE_INLINE void store_lanes(void *rows, size_t stride, const uint32_t index[LANES], int lanes,
+                             unsigned fixed, lane_quad_t columns) {
+    for (int l = 0; l < lanes; l++) {
+        if (fixed & (1u << l)) continue;
+        double row[3] = {columns.v0[l], columns.v1[l], columns.v2[l]};
+        memcpy((char *)rows + index[l] * stride, row, sizeof row);
+    }
+}
+
+LANE_INLINE lane_body_t gather_shared(const solver_velocity_t *rows, const uint32_t index[LANES],
+                                      int lanes, const lane_t *inverse_inertia) {
+    if (lanes == LANES) return gather(rows, index, inverse_inertia);
+    lane_quad_t columns = load_lanes(rows, sizeof *rows, index, lanes);
+    return (lane_body_t){.vx = columns.v0, .vy = columns.v1, .w = columns.v2,
+                         .inverse_mass = columns.v3, .inverse_inertia = *inverse_inertia};
+}
+
+LANE_INLINE void scatter_shared(solver_velocity_t *rows, const uint32_t index[LANES], int lanes,
+                                unsigned fixed, const lane_body_t *body) {
+    if (lanes == LANES && fixed == 0) {
+        scatter(rows, index, lanes, body);
+        return;
+    }
+    store_lanes(rows, sizeof *rows, index, lanes, fixed,
+                (lane_quad_t){body->vx, body->vy, body->w, body->inverse_mass});
+}
+
+/* The two bodies of batch, gathered for a sweep by one thread or, when
+ * shared, by threads that share its colour; and scattered back. */
+LANE_INLINE void gather_pair(const solver_velocity_t *rows, const solver_batch_t *batch,
+                             bool shared, lane_body_t *a, lane_body_t *b) {
+    if (shared) {
+        *a = gather_shared(rows, batch->a, batch->lanes, &batch->ia);
+        *b = gather_shared(rows, batch->b, batch->lanes, &batch->ib);
+        return;
+    }
+    *a = gather(rows, batch->a, &batch->ia);
+    *b = gather(rows, batch->b, &batch->ib);
+}
+
+LANE_INLINE void scatter_pair(solver_velocity_t *rows, const solver_batch_t *batch, bool shared,
+                              const lane_body_t *a, const lane_body_t *b) {
+    if (shared) {
+        scatter_shared(rows, batch->a, batch->lanes, batch->fixed_a, a);
+        scatter_shared(rows, batch->b, batch->lanes, batch->fixed_b, b);
+        return;
+    }
+    scatter(rows, batch->a, batch->lanes, a);
+    scatter(rows, batch->b, batch->lanes, b);
+}
+
 /* Relative velocity of b over a along direction d, lever terms r.
  * Directions and lever terms go by pointer: vectors passed by value would
  * go through memory on the baseline instruction set. */
@@ -282,37 +357,71 @@ LANE_INLINE void solve_normal_block(const solver_batch_t *batch, lane_point_t *p
  * once for the baseline (two SSE2 instructions); the loader picks the one
  * the processor runs. Neither uses fused multiply-add, so both give the
  * same numbers. Clang 14 leaves calls to such functions undefined at link
- * time, so it builds the baseline only. */
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && defined(__ELF__)
+ * time, so it builds the baseline only; so does ThreadSanitizer (make
+ * tsan), whose instrumented resolver runs before it is set up, and crashes. */
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && defined(__ELF__) && \
+    !defined(__SANITIZE_THREAD__)
 #define LANE_CLONES __attribute__((target_clones("avx2", "default")))
 #else
 #define LANE_CLONES
 #endif
 
-LANE_CLONES
-void solver_wide_warm_start(solver_wide_t *wide, solver_velocity_t *rows) {
-    const lane_point_t *points = wide->points;
-    for (size_t i = 0; i < wide->batch_count; i++) {
+/* Where batch `batch` (in group g) finds its first point and its block. */
+static size_t first_point(const solver_wide_t *wide, size_t g, size_t batch) {
+    return wide->group_point[g] + (batch - wide->group_batch[g]) * kind_points(g % BATCH_KINDS);
+}
+
+static size_t first_block(const solver_wide_t *wide, size_t g, size_t batch) {
+    return wide->group_block[g] + (g % BATCH_KINDS == BATCH_BLOCK ? batch - wide->group_batch[g] : 0);
+}
+
+/* The group that holds batch `batch`. */
+static size_t group_of(const solver_wide_t *wide, size_t batch) {
+    size_t g = 0;
+    while (wide->group_batch[g + 1] <= batch) g++;
+    return g;
+}
+
+LANE_INLINE void warm_batches(solver_wide_t *wide, solver_velocity_t *rows, size_t begin,
+                              size_t end, const lane_point_t *points, bool shared) {
+    for (size_t i = begin; i < end; i++) {
         const solver_batch_t *batch = &wide->batches[i];
-        lane_body_t a = gather(rows, batch->a, &batch->ia), b = gather(rows, batch->b, &batch->ib);
+        lane_body_t a, b;
+        gather_pair(rows, batch, shared, &a, &b);
         lane_vector_t tangent = {-batch->normal.y, batch->normal.x};
         int count = kind_points((batch_kind_t)batch->kind);
         for (int k = 0; k < count; k++, points++) {
             apply_along(&a, &b, &batch->normal, &points->rn, &points->normal_impulse);
             apply_along(&a, &b, &tangent, &points->rt, &points->tangent_impulse);
         }
-        scatter(rows, batch->a, batch->lanes, &a);
-        scatter(rows, batch->b, batch->lanes, &b);
+        scatter_pair(rows, batch, shared, &a, &b);
     }
 }
 
 LANE_CLONES
-void solver_wide_iterate(solver_wide_t *wide, solver_velocity_t *rows) {
-    lane_point_t *points = wide->points;
-    const lane_block_t *blocks = wide->blocks;
-    for (size_t i = 0; i < wide->batch_count; i++) {
+void solver_wide_warm_start(solver_wide_t *wide, solver_velocity_t *rows) {
+    if (wide->workers != NULL) {
+        solver_split_warm_start(wide, rows);
+        return;
+    }
+    warm_batches(wide, rows, 0, wide->batch_count, wide->points, false);
+}
+
+LANE_CLONES
+void solver_wide_warm_start_range(solver_wide_t *wide, solver_velocity_t *rows, size_t begin,
+                                  size_t end) {
+    if (begin == end) return;
+    size_t g = group_of(wide, begin);
+    warm_batches(wide, rows, begin, end, wide->points + first_point(wide, g, begin), true);
+}
+
+LANE_INLINE void iterate_batches(solver_wide_t *wide, solver_velocity_t *rows, size_t begin,
+                                 size_t end, lane_point_t *points, const lane_block_t *blocks,
+                                 bool shared) {
+    for (size_t i = begin; i < end; i++) {
         const solver_batch_t *batch = &wide->batches[i];
-        lane_body_t a = gather(rows, batch->a, &batch->ia), b = gather(rows, batch->b, &batch->ib);
+        lane_body_t a, b;
+        gather_pair(rows, batch, shared, &a, &b);
         switch (batch->kind) {
         case BATCH_BLOCK:
             solve_friction(batch, points, 2, &a, &b);
@@ -330,9 +439,26 @@ void solver_wide_iterate(solver_wide_t *wide, solver_velocity_t *rows) {
             points += 1;
             break;
         }
-        scatter(rows, batch->a, batch->lanes, &a);
-        scatter(rows, batch->b, batch->lanes, &b);
+        scatter_pair(rows, batch, shared, &a, &b);
     }
+}
+
+LANE_CLONES
+void solver_wide_iterate(solver_wide_t *wide, solver_velocity_t *rows) {
+    if (wide->workers != NULL) {
+        solver_split_iterate(wide, rows);
+        return;
+    }
+    iterate_batches(wide, rows, 0, wide->batch_count, wide->points, wide->blocks, false);
+}
+
+LANE_CLONES
+void solver_wide_iterate_range(solver_wide_t *wide, solver_velocity_t *rows, size_t begin,
+                               size_t end) {
+    if (begin == end) return;
+    size_t g = group_of(wide, begin);
+    iterate_batches(wide, rows, begin, end, wide->points + first_point(wide, g, begin),
+                    wide->blocks + first_block(wide, g, begin), true);
 }
 
 /* The bodies' displacements in a batch, lane by lane. */
@@ -387,9 +513,38 @@ LANE_INLINE void correct_batch(const solver_position_batch_t *batch,
     }
 }
 
+/* gather_shared and scatter_shared for the displacements. */
+LANE_INLINE lane_displacement_t gather_displacements_shared(const solver_displacement_t *rows,
+                                                            const uint32_t index[LANES],
+                                                            int lanes) {
+    if (lanes == LANES) return gather_displacements(rows, index);
+    lane_quad_t columns = load_lanes(rows, sizeof *rows, index, lanes);
+    return (lane_displacement_t){.dx = columns.v0, .dy = columns.v1, .dtheta = columns.v2,
+                                 .radius = columns.v3};
+}
+
+LANE_INLINE void scatter_displacements_shared(solver_displacement_t *rows,
+                                              const uint32_t index[LANES], int lanes,
+                                              unsigned fixed, const lane_displacement_t *moved) {
+    if (lanes == LANES && fixed == 0) {
+        scatter_displacements(rows, index, lanes, moved);
+        return;
+    }
+    store_lanes(rows, sizeof *rows, index, lanes, fixed,
+                (lane_quad_t){moved->dx, moved->dy, moved->dtheta, moved->radius});
+}
+
 LANE_INLINE void correct_one(const solver_position_batch_t *batch,
                              const solver_position_point_t *points,
-                             solver_displacement_t *displacements) {
+                             solver_displacement_t *displacements, bool shared) {
+    if (shared) {
+        lane_displacement_t a = gather_displacements_shared(displacements, batch->a, batch->lanes);
+        lane_displacement_t b = gather_displacements_shared(displacements, batch->b, batch->lanes);
+        correct_batch(batch, points, &a, &b);
+        scatter_displacements_shared(displacements, batch->a, batch->lanes, batch->fixed_a, &a);
+        scatter_displacements_shared(displacements, batch->b, batch->lanes, batch->fixed_b, &b);
+        return;
+    }
     lane_displacement_t a = gather_displacements(displacements, batch->a);
     lane_displacement_t b = gather_displacements(displacements, batch->b);
     correct_batch(batch, points, &a, &b);
@@ -400,12 +555,16 @@ LANE_INLINE void correct_one(const solver_position_batch_t *batch,
 LANE_CLONES
 void solver_wide_correct_positions(solver_wide_t *wide, solver_displacement_t *displacements,
                                    bool backward) {
+    if (wide->workers != NULL) {
+        solver_split_correct_positions(wide, displacements, backward);
+        return;
+    }
     size_t count = wide->batch_count;
     if (!backward) {
         const solver_position_point_t *points = wide->position_points;
         for (size_t i = 0; i < count; i++) {
             const solver_position_batch_t *batch = &wide->position_batches[i];
-            correct_one(batch, points, displacements);
+            correct_one(batch, points, displacements, false);
             points += batch->point_count;
         }
         return;
@@ -414,14 +573,32 @@ void solver_wide_correct_positions(solver_wide_t *wide, solver_displacement_t *d
     for (size_t i = count; i-- > 0;) {
         const solver_position_batch_t *batch = &wide->position_batches[i];
         points -= batch->point_count;
-        correct_one(batch, points, displacements);
+        correct_one(batch, points, displacements, false);
     }
 }
 
-static void pack_lane(solver_wide_t *wide, const solver_contact_t *c, uint32_t index, int l,
-                      const solver_velocity_t *rows) {
-    solver_batch_t *batch = &wide->batches[wide->batch_count];
-    solver_position_batch_t *position = &wide->position_batches[wide->batch_count];
+LANE_CLONES
+void solver_wide_correct_range(solver_wide_t *wide, solver_displacement_t *displacements,
+                               size_t begin, size_t end) {
+    if (begin == end) return;
+    const solver_position_point_t *points =
+        wide->position_points + first_point(wide, group_of(wide, begin), begin);
+    for (size_t i = begin; i < end; i++) {
+        const solver_position_batch_t *batch = &wide->position_batches[i];
+        correct_one(batch, points, displacements, true);
+        points += batch->point_count;
+    }
+}
+
+/* Where a batch is packed: its index, its first point's and its block's. */
+typedef struct {
+    size_t batch, point, block;
+} pack_at_t;
+
+LANE_INLINE void pack_lane(solver_wide_t *wide, pack_at_t at, const solver_contact_t *c, uint32_t index,
+                      int l, const solver_velocity_t *rows) {
+    solver_batch_t *batch = &wide->batches[at.batch];
+    solver_position_batch_t *position = &wide->position_batches[at.batch];
     batch->a[l] = position->a[l] = c->a;
     batch->b[l] = position->b[l] = c->b;
     batch->contact[l] = index;
@@ -435,7 +612,7 @@ static void pack_lane(solver_wide_t *wide, const solver_contact_t *c, uint32_t i
     position->rate[l] = solver_position_rate(&rows[c->a], &rows[c->b]);
     position->slop[l] = c->slop;
     if (batch->kind == BATCH_BLOCK) {
-        lane_block_t *k = &wide->blocks[wide->block_count];
+        lane_block_t *k = &wide->blocks[at.block];
         k->k11[l] = c->k11;
         k->k12[l] = c->k12;
         k->k22[l] = c->k22;
@@ -445,7 +622,7 @@ static void pack_lane(solver_wide_t *wide, const solver_contact_t *c, uint32_t i
     }
     for (int i = 0; i < c->point_count; i++) {
         const solver_point_t *p = &c->points[i];
-        lane_point_t *lp = &wide->points[wide->point_count + (size_t)i];
+        lane_point_t *lp = &wide->points[at.point + (size_t)i];
         lp->rn.a[l] = p->rn_a;
         lp->rn.b[l] = p->rn_b;
         lp->rt.a[l] = p->rt_a;
@@ -455,7 +632,7 @@ static void pack_lane(solver_wide_t *wide, const solver_contact_t *c, uint32_t i
         lp->target[l] = p->target;
         lp->normal_impulse[l] = p->normal_impulse;
         lp->tangent_impulse[l] = p->tangent_impulse;
-        solver_position_point_t *pp = &wide->position_points[wide->point_count + (size_t)i];
+        solver_position_point_t *pp = &wide->position_points[at.point + (size_t)i];
         pp->rn.a[l] = p->rn_a;
         pp->rn.b[l] = p->rn_b;
         pp->normal_mass[l] = p->normal_mass;
@@ -464,29 +641,25 @@ static void pack_lane(solver_wide_t *wide, const solver_contact_t *c, uint32_t i
 }
 
 /* Packs order[0 .. count) (at most LANES contacts of one kind) into the
- * next batch, its points and its block. */
-static void load_batch(solver_wide_t *wide, const uint32_t *order, int count, batch_kind_t kind,
-                       const solver_contact_t *contacts, const solver_velocity_t *rows) {
+ * batch, points and block at `at`. */
+LANE_INLINE void load_batch(solver_wide_t *wide, pack_at_t at, const uint32_t *order, int count,
+                       batch_kind_t kind, const solver_contact_t *contacts,
+                       const solver_velocity_t *rows) {
     int points = kind_points(kind);
-    solver_batch_t *batch = &wide->batches[wide->batch_count];
-    solver_position_batch_t *position = &wide->position_batches[wide->batch_count];
+    solver_batch_t *batch = &wide->batches[at.batch];
+    solver_position_batch_t *position = &wide->position_batches[at.batch];
     if (count < LANES) { /* a full batch has every lane written below */
         memset(batch, 0, sizeof *batch);
         memset(position, 0, sizeof *position);
-        memset(&wide->points[wide->point_count], 0, (size_t)points * sizeof(lane_point_t));
-        memset(&wide->position_points[wide->point_count], 0,
+        memset(&wide->points[at.point], 0, (size_t)points * sizeof(lane_point_t));
+        memset(&wide->position_points[at.point], 0,
                (size_t)points * sizeof(solver_position_point_t));
-        if (kind == BATCH_BLOCK) {
-            memset(&wide->blocks[wide->block_count], 0, sizeof(lane_block_t));
-        }
+        if (kind == BATCH_BLOCK) memset(&wide->blocks[at.block], 0, sizeof(lane_block_t));
     }
     batch->lanes = position->lanes = (uint8_t)count;
     batch->kind = (uint8_t)kind;
     position->point_count = (uint8_t)points;
-    for (int l = 0; l < count; l++) pack_lane(wide, &contacts[order[l]], order[l], l, rows);
-    wide->batch_count++;
-    wide->point_count += (size_t)points;
-    wide->block_count += kind == BATCH_BLOCK;
+    for (int l = 0; l < count; l++) pack_lane(wide, at, &contacts[order[l]], order[l], l, rows);
 }
 
 static batch_kind_t kind_of(const solver_contact_t *c) {
@@ -536,24 +709,79 @@ static void reserve(solver_wide_t *wide, size_t count) {
     memory_reserve((void **)&wide->blocks, &wide->block_capacity, batches, sizeof(lane_block_t));
 }
 
+/* Where each group's batches, points and blocks begin, from where its
+ * contacts begin in wide->order (start, GROUPS + 1 entries). */
+static void place_groups(solver_wide_t *wide, const uint32_t *start) {
+    wide->group_batch[0] = wide->group_point[0] = wide->group_block[0] = 0;
+    for (int g = 0; g < GROUPS; g++) {
+        uint32_t batches = (start[g + 1] - start[g] + LANES - 1) / LANES;
+        batch_kind_t kind = (batch_kind_t)(g % BATCH_KINDS);
+        wide->group_batch[g + 1] = wide->group_batch[g] + batches;
+        wide->group_point[g + 1] = wide->group_point[g] + batches * (uint32_t)kind_points(kind);
+        wide->group_block[g + 1] = wide->group_block[g] + (kind == BATCH_BLOCK ? batches : 0);
+    }
+    wide->batch_count = wide->group_batch[GROUPS];
+    wide->point_count = wide->group_point[GROUPS];
+    wide->block_count = wide->group_block[GROUPS];
+}
+
+void solver_wide_pack(solver_wide_t *wide, const solver_contact_t *contacts,
+                      const solver_velocity_t *rows, size_t begin, size_t end) {
+    size_t g = begin < end ? group_of(wide, begin) : 0;
+    for (size_t i = begin; i < end; i++) {
+        while (wide->group_batch[g + 1] <= i) g++;
+        pack_at_t at = {i, first_point(wide, g, i), first_block(wide, g, i)};
+        uint32_t first = wide->group_start[g] + (uint32_t)(i - wide->group_batch[g]) * LANES;
+        uint32_t left = wide->group_start[g + 1] - first;
+        int n = (int)(left < LANES ? left : LANES);
+        load_batch(wide, at, wide->order + first, n, (batch_kind_t)(g % BATCH_KINDS), contacts,
+                   rows);
+    }
+}
+
 void solver_wide_load(solver_wide_t *wide, const solver_contact_t *contacts, size_t count,
                       const solver_velocity_t *rows, size_t body_count) {
     reserve(wide, count);
     coloring_assign(&wide->coloring, contacts, count, rows, body_count, wide->colors);
-    uint32_t start[GROUPS + 1];
+    uint32_t *start = wide->group_start;
     sort_by_color(wide, contacts, count, start);
-    wide->batch_count = wide->point_count = wide->block_count = 0;
+    place_groups(wide, start);
+    if (wide->workers != NULL) {
+        solver_split_pack(wide, contacts, rows);
+        return;
+    }
+    pack_at_t at = {0, 0, 0};
     for (int g = 0; g < GROUPS; g++) {
+        batch_kind_t kind = (batch_kind_t)(g % BATCH_KINDS);
         for (uint32_t i = start[g]; i < start[g + 1]; i += LANES) {
             int n = (int)(start[g + 1] - i < LANES ? start[g + 1] - i : LANES);
-            load_batch(wide, wide->order + i, n, (batch_kind_t)(g % BATCH_KINDS), contacts, rows);
+            load_batch(wide, at, wide->order + i, n, kind, contacts, rows);
+            at.batch++;
+            at.point += (size_t)kind_points(kind);
+            at.block += kind == BATCH_BLOCK;
         }
     }
 }
 
-void solver_wide_store(const solver_wide_t *wide, solver_contact_t *contacts) {
-    const lane_point_t *points = wide->points;
-    for (size_t i = 0; i < wide->batch_count; i++) {
+void solver_wide_mark_fixed(solver_wide_t *wide, const solver_velocity_t *rows, size_t begin,
+                            size_t end) {
+    for (size_t i = begin; i < end; i++) {
+        solver_batch_t *batch = &wide->batches[i];
+        uint8_t fixed_a = 0, fixed_b = 0;
+        for (int l = 0; l < batch->lanes; l++) {
+            fixed_a |= (uint8_t)(solver_row_is_static(&rows[batch->a[l]]) << l);
+            fixed_b |= (uint8_t)(solver_row_is_static(&rows[batch->b[l]]) << l);
+        }
+        batch->fixed_a = wide->position_batches[i].fixed_a = fixed_a;
+        batch->fixed_b = wide->position_batches[i].fixed_b = fixed_b;
+    }
+}
+
+void solver_wide_store_range(const solver_wide_t *wide, solver_contact_t *contacts, size_t begin,
+                             size_t end) {
+    if (begin == end) return;
+    const lane_point_t *points = wide->points + first_point(wide, group_of(wide, begin), begin);
+    for (size_t i = begin; i < end; i++) {
         const solver_batch_t *batch = &wide->batches[i];
         for (int l = 0; l < batch->lanes; l++) {
             solver_contact_t *c = &contacts[batch->contact[l]];
@@ -564,6 +792,14 @@ void solver_wide_store(const solver_wide_t *wide, solver_contact_t *contacts) {
         }
         points += kind_points((batch_kind_t)batch->kind);
     }
+}
+
+void solver_wide_store(const solver_wide_t *wide, solver_contact_t *contacts) {
+    if (wide->workers != NULL) {
+        solver_split_store(wide, contacts);
+        return;
+    }
+    solver_wide_store_range(wide, contacts, 0, wide->batch_count);
 }
 
 /* Pushes both ends of contact batch->contact[l] onto its bodies' lists. */

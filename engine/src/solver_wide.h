@@ -33,6 +33,11 @@ typedef struct solver_position_batch solver_position_batch_t;
 typedef struct solver_position_point solver_position_point_t;
 typedef struct lane_point lane_point_t;
 typedef struct lane_block lane_block_t;
+typedef struct workers workers_t;
+
+/* The batches fall in groups, one per colour and kind of contact (two-point
+ * block, two-point, one-point), in this order. */
+enum { SOLVER_WIDE_KINDS = 3, SOLVER_WIDE_GROUPS = SOLVER_WIDE_KINDS * COLORING_MAX_COLORS };
 
 struct solver_wide {
     coloring_t coloring;
@@ -53,6 +58,16 @@ struct solver_wide {
     size_t block_count, block_capacity;
     uint32_t *loose;
     size_t loose_count, loose_capacity;
+    /* Where each group's contacts (in order), batches, points and blocks
+     * begin (and the end); a colour's batches are those of its
+     * SOLVER_WIDE_KINDS groups. */
+    uint32_t group_start[SOLVER_WIDE_GROUPS + 1];
+    uint32_t group_batch[SOLVER_WIDE_GROUPS + 1];
+    uint32_t group_point[SOLVER_WIDE_GROUPS + 1];
+    uint32_t group_block[SOLVER_WIDE_GROUPS + 1];
+    /* The threads that share each colour's batches (solver_split.h); NULL:
+     * the caller alone. */
+    workers_t *workers;
 };
 
 void solver_wide_free(solver_wide_t *wide);
@@ -105,6 +120,35 @@ bool solver_wide_link_loaded(const solver_wide_t *wide, uint32_t *first, solver_
  * normal and tangent at each of its point_count points. */
 void solver_wide_impulses(const solver_wide_t *wide, solver_slot_t slot, int point_count,
                           double normal[2], double tangent[2]);
+
+/* Packs batches [begin, end) of the contacts solver_wide_load coloured and
+ * placed: solver_wide_load has solver_split.c call it when there are
+ * workers. */
+void solver_wide_pack(solver_wide_t *wide, const solver_contact_t *contacts,
+                      const solver_velocity_t *rows, size_t begin, size_t end);
+
+/* Marks in batches [begin, end) the lanes whose bodies cannot move, which
+ * the ranges below must not write: solver_split.c does it after packing. */
+void solver_wide_mark_fixed(solver_wide_t *wide, const solver_velocity_t *rows, size_t begin,
+                            size_t end);
+
+/* The sweeps above over batches [begin, end) only, which must lie in one
+ * colour, for solver_split.c: several threads may sweep ranges of one
+ * colour at once, since no two of its batches share a body that can move,
+ * and these neither write the rows of bodies that cannot move nor read a
+ * row for an empty lane. A range gives its bodies the bytes the whole
+ * sweep would (the rows of bodies that cannot move hold no -0.0, which a
+ * write of theirs could turn to +0.0: world.c's load_body). */
+void solver_wide_warm_start_range(solver_wide_t *wide, solver_velocity_t *rows, size_t begin,
+                                  size_t end);
+void solver_wide_iterate_range(solver_wide_t *wide, solver_velocity_t *rows, size_t begin,
+                               size_t end);
+void solver_wide_correct_range(solver_wide_t *wide, solver_displacement_t *displacements,
+                               size_t begin, size_t end);
+/* solver_wide_store of batches [begin, end) (any batches: each writes its
+ * own contacts). */
+void solver_wide_store_range(const solver_wide_t *wide, solver_contact_t *contacts, size_t begin,
+                             size_t end);
 
 /* Writes the batches' accumulated impulses back to their contacts. */
 void solver_wide_store(const solver_wide_t *wide, solver_contact_t *contacts);

@@ -12,6 +12,7 @@
 #include "shock.h"
 #include "sleep.h"
 #include "solver_wide.h"
+#include "workers.h"
 
 /* Every body's box is enlarged by how far it can move in a step plus this
  * (m), so a contact is found a step before it forms. 5 mm rather than 1 cm:
@@ -28,6 +29,15 @@ static const double CONTACT_MARGIN = 0.005;
  * 0.01 rad, with the same penetrations and the same pyramid (measured). */
 static const double REUSE_DISTANCE = 0.01;
 static const double REUSE_ANGLE = 0.02;
+
+/* For the per-pair and per-body functions that one thread's loops and the
+ * workers' chunks share, and what they call: inlined into each, as the
+ * one-thread loops had them (called, pile(1000) ran 3% more instructions). */
+#if defined(__GNUC__)
+#define WORLD_INLINE static inline __attribute__((always_inline))
+#else
+#define WORLD_INLINE static inline
+#endif
 
 /* Where b is as seen from a: b's centroid in a's frame and the angle
  * between them. */
@@ -46,6 +56,15 @@ typedef struct {
     manifold_features_t features;
     relative_pose_t pose;
 } contact_source_t;
+
+/* What the narrowphase finds for one pair: its manifold and features,
+ * the pose they were found at, and last step's contact (SIZE_MAX: none). */
+typedef struct {
+    manifold_t manifold;
+    manifold_features_t features;
+    relative_pose_t pose;
+    size_t old;
+} pair_result_t;
 
 struct world {
     broadphase_t *broadphase;
@@ -92,6 +111,14 @@ struct world {
     size_t active_capacity, active_motion_capacity, active_index_capacity;
     sleep_link_t *links;
     size_t link_capacity;
+
+    /* The threads of scene_set_workers (NULL: the caller's alone), and the
+     * threaded narrowphase's results, one per pair, and contacts per chunk
+     * (narrowphase_split). */
+    workers_t *workers;
+    pair_result_t *results;
+    size_t result_capacity;
+    size_t chunk_first[WORKERS_MAX_CHUNKS + 1];
 };
 
 world_t *world_init(size_t velocity_iterations, size_t position_iterations) {
@@ -120,12 +147,31 @@ void world_free(world_t *world) {
     memory_free(world->active_motions);
     memory_free(world->active_index);
     memory_free(world->links);
+    workers_free(world->workers);
+    memory_free(world->results);
     memory_free(world);
 }
 
 void world_set_iterations(world_t *world, size_t velocity_iterations, size_t position_iterations) {
     world->velocity_iterations = (int)velocity_iterations;
     world->position_iterations = (int)position_iterations;
+}
+
+void world_set_workers(world_t *world, size_t workers) {
+    size_t now = world->workers != NULL ? workers_count(world->workers) : 1;
+    if (workers == now) return;
+    workers_free(world->workers);
+    world->workers = workers > 1 ? workers_init(workers) : NULL;
+    world->wide.workers = world->workers;
+    broadphase_set_workers(world->broadphase, world->workers);
+}
+
+void world_for_bodies(world_t *world, size_t count, workers_fn_t fn, void *context) {
+    if (world->workers == NULL) {
+        fn(context, 0, 0, count);
+        return;
+    }
+    workers_for(world->workers, count, fn, context);
 }
 
 static uint64_t pair_key(const body_t *a, const body_t *b) {
@@ -148,7 +194,7 @@ static void reserve_rows(world_t *world, size_t count) {
  * grow (what rotation and the contact margin add). Only the direction of
  * motion is enlarged, so bodies moving together, like a falling grid, do not
  * pair, while a body and whatever lies ahead of it do. */
-static aabb_t swept_box(aabb_t bounds, double dt, const solver_state_t *state, double grow) {
+WORLD_INLINE aabb_t swept_box(aabb_t bounds, double dt, const solver_state_t *state, double grow) {
     vector_t d1 = vec_multiply(dt, state->v_start), d2 = vec_multiply(dt, state->v_free);
     return (aabb_t){
         {bounds.min.x + min_of(0.0, min_of(d1.x, d2.x)) - grow,
@@ -167,43 +213,73 @@ static void set_filter(broadphase_proxy_t *proxy, const body_t *body) {
     proxy->group = body->group;
 }
 
+/* Loads body i's rows for the solver and its broadphase proxy. */
+WORLD_INLINE void load_body(world_t *world, body_t *body, const integrator_motion_t *motion, size_t i,
+                      double dt) {
+    body->solver_index = (uint32_t)i;
+    body_update_world(body);
+    solver_state_t *state = &world->states[i];
+    solver_velocity_t *velocity = &world->velocities[i];
+    state->v_start = body->velocity;
+    state->w_start = body->angular_velocity;
+    state->v_free = motion->velocity;
+    state->w_free = motion->angular_velocity;
+    state->drift = motion->drift;
+    state->spin_drift = motion->spin_drift;
+    state->acceleration = motion->acceleration;
+    state->impact_time = -1.0;
+    state->pushing_contacts = 0;
+    world->displacements[i].radius = body->radius;
+    velocity->v = state->v_free;
+    velocity->w = state->w_free;
+    velocity->inverse_mass = body->inverse_mass;
+    velocity->inverse_inertia = body->inverse_inertia;
+    if (solver_row_is_static(velocity)) {
+        /* No -0.0 in a row the solver never changes: its sweeps write such
+         * a row unchanged but for turning -0.0 to +0.0, or, sharing a
+         * colour over threads, not at all (solver_wide.h). */
+        velocity->v = vec_add(velocity->v, (vector_t){0.0, 0.0});
+        velocity->w += 0.0;
+    }
+
+    /* How far any point of the body can move this step, bounded: the
+     * narrowphase keeps speculative points up to this far apart. */
+    double speed = max_of(vec_get_length(state->v_start), vec_get_length(state->v_free));
+    double spin = max_of(fabs(state->w_start), fabs(state->w_free)) * body->radius;
+    world->margins[i] = dt * (speed + spin) + CONTACT_MARGIN;
+    broadphase_proxy_t *proxy = &world->proxies[i];
+    proxy->box = swept_box(body->bounds, dt, state, dt * spin + CONTACT_MARGIN);
+    set_filter(proxy, body);
+    if (body->removed) proxy->category = 0;
+}
+
+/* The arguments of a loop over bodies split over the workers. */
+typedef struct {
+    world_t *world;
+    body_t **bodies;
+    const integrator_motion_t *free_motions; /* loading reads them */
+    integrator_motion_t *motions;            /* writing back fills them */
+    double dt;
+} body_loop_t;
+
+static void load_chunk(void *context, size_t chunk, size_t begin, size_t end) {
+    const body_loop_t *loop = context;
+    (void)chunk;
+    for (size_t i = begin; i < end; i++) {
+        load_body(loop->world, loop->bodies[i], &loop->free_motions[i], i, loop->dt);
+    }
+}
+
 /* Loads each body's rows for the solver and its broadphase proxy. */
 static void load_bodies(world_t *world, body_t **bodies, const integrator_motion_t *motions,
                         size_t count, const world_step_t *step) {
     reserve_rows(world, count);
-    double dt = step->dt;
-    for (size_t i = 0; i < count; i++) {
-        body_t *body = bodies[i];
-        body->solver_index = (uint32_t)i;
-        body_update_world(body);
-        solver_state_t *state = &world->states[i];
-        solver_velocity_t *velocity = &world->velocities[i];
-        const integrator_motion_t *motion = &motions[i];
-        state->v_start = body->velocity;
-        state->w_start = body->angular_velocity;
-        state->v_free = motion->velocity;
-        state->w_free = motion->angular_velocity;
-        state->drift = motion->drift;
-        state->spin_drift = motion->spin_drift;
-        state->acceleration = motion->acceleration;
-        state->impact_time = -1.0;
-        state->pushing_contacts = 0;
-        world->displacements[i].radius = body->radius;
-        velocity->v = state->v_free;
-        velocity->w = state->w_free;
-        velocity->inverse_mass = body->inverse_mass;
-        velocity->inverse_inertia = body->inverse_inertia;
-
-        /* How far any point of the body can move this step, bounded: the
-         * narrowphase keeps speculative points up to this far apart. */
-        double speed = max_of(vec_get_length(state->v_start), vec_get_length(state->v_free));
-        double spin = max_of(fabs(state->w_start), fabs(state->w_free)) * body->radius;
-        world->margins[i] = dt * (speed + spin) + CONTACT_MARGIN;
-        broadphase_proxy_t *proxy = &world->proxies[i];
-        proxy->box = swept_box(body->bounds, dt, state, dt * spin + CONTACT_MARGIN);
-        set_filter(proxy, body);
-        if (body->removed) proxy->category = 0;
+    if (world->workers != NULL) {
+        body_loop_t loop = {world, bodies, motions, NULL, step->dt};
+        workers_for(world->workers, count, load_chunk, &loop);
+        return;
     }
+    for (size_t i = 0; i < count; i++) load_body(world, bodies[i], &motions[i], i, step->dt);
 }
 
 /* The contact of the pair with this key among the contacts body a had as
@@ -227,7 +303,7 @@ static size_t find_old(const world_t *world, const body_t *a, uint64_t key) {
 }
 
 /* Copies last step's impulses to the points that are the same features. */
-static void warm_from_old(solver_contact_t *contact, const solver_contact_t *old) {
+WORLD_INLINE void warm_from_old(solver_contact_t *contact, const solver_contact_t *old) {
     for (int i = 0; i < contact->point_count; i++) {
         for (int j = 0; j < old->point_count; j++) {
             if (contact->points[i].id != old->points[j].id) continue;
@@ -247,10 +323,10 @@ static bool pose_is_close(relative_pose_t now, relative_pose_t then) {
            fabs(now.angle - then.angle) < REUSE_ANGLE;
 }
 
-static void add_contact(world_t *world, body_t *a, body_t *b, uint64_t key,
-                        const manifold_t *manifold, const manifold_features_t *features,
-                        relative_pose_t pose, const solver_contact_t *old) {
-    size_t n = world->contact_count; /* narrowphase reserved a contact per pair */
+/* Writes contact n of the step from the pair's result. */
+WORLD_INLINE void add_contact(world_t *world, size_t n, body_t *a, body_t *b,
+                        const pair_result_t *found) {
+    const manifold_t *manifold = &found->manifold;
     solver_contact_t *contact = &world->contacts[n];
     solver_anchor_t *anchor = &world->anchors[n];
     contact_source_t *source = &world->sources[n];
@@ -262,7 +338,7 @@ static void add_contact(world_t *world, body_t *a, body_t *b, uint64_t key,
     contact->restitution = max_of(a->elasticity, b->elasticity);
     contact->slop = solver_contact_slop(a->radius, b->radius);
     contact->point_count = manifold->point_count;
-    contact->edge_ends = features->edge_ends && manifold->point_count == 2;
+    contact->edge_ends = found->features.edge_ends && manifold->point_count == 2;
     for (int i = 0; i < manifold->point_count; i++) {
         solver_point_t *point = &contact->points[i];
         anchor->r_a[i] = vec_subtract(manifold->points[i].point, a->centroid);
@@ -272,13 +348,36 @@ static void add_contact(world_t *world, body_t *a, body_t *b, uint64_t key,
         point->normal_impulse = point->tangent_impulse = 0.0;
         source->points[i] = manifold->points[i].point;
     }
-    source->key = key;
+    source->key = pair_key(a, b);
     source->body_a = a;
     source->body_b = b;
-    source->features = *features;
-    source->pose = pose;
-    if (old != NULL) warm_from_old(contact, old);
-    world->contact_count++;
+    source->features = found->features;
+    source->pose = found->pose;
+    if (found->old != SIZE_MAX) warm_from_old(contact, &world->old_contacts[found->old]);
+}
+
+/* The manifold of the broadphase's pair (a, b), reusing last step's
+ * features while the pose stays close. Reads the world only. */
+WORLD_INLINE void collide_pair(const world_t *world, body_t *a, body_t *b, const broadphase_pair_t *pair,
+                         pair_result_t *found) {
+    double margin = world->margins[pair->a] + world->margins[pair->b];
+    size_t old = find_old(world, a, pair_key(a, b));
+    found->old = old;
+    found->pose = relative_pose(a, b);
+    if (old != SIZE_MAX && pose_is_close(found->pose, world->old_sources[old].pose)) {
+        found->features = world->old_sources[old].features;
+        found->pose = world->old_sources[old].pose; /* measure drift from where they were found */
+        found->manifold = manifold_evaluate(&found->features, a, b, margin);
+    } else {
+        found->manifold = manifold_collide(a, b, margin, &found->features);
+    }
+}
+
+/* Tells body a where its group of this step's contacts lies. */
+WORLD_INLINE void place_group(const world_t *world, body_t *a, size_t first, size_t end) {
+    a->contact_first = (uint32_t)first;
+    a->contact_count = (uint32_t)(end - first);
+    a->contact_step = world->step_number;
 }
 
 /* The contacts of the pairs whose body a is pairs[0].a; returns how many
@@ -287,32 +386,84 @@ static void add_contact(world_t *world, body_t *a, body_t *b, uint64_t key,
 static size_t collide_group(world_t *world, body_t **bodies, const broadphase_pair_t *pairs,
                             size_t pair_count) {
     body_t *a = bodies[pairs[0].a];
-    uint32_t first = (uint32_t)world->contact_count;
+    size_t first = world->contact_count;
     size_t n = 0;
     for (; n < pair_count && pairs[n].a == pairs[0].a; n++) {
         body_t *b = bodies[pairs[n].b];
-        double margin = world->margins[pairs[n].a] + world->margins[pairs[n].b];
-        uint64_t key = pair_key(a, b);
-        size_t old = find_old(world, a, key);
-        relative_pose_t pose = relative_pose(a, b);
-        manifold_features_t features;
-        manifold_t manifold;
-        if (old != SIZE_MAX && pose_is_close(pose, world->old_sources[old].pose)) {
-            features = world->old_sources[old].features;
-            pose = world->old_sources[old].pose; /* measure drift from where they were found */
-            manifold = manifold_evaluate(&features, a, b, margin);
-        } else {
-            manifold = manifold_collide(a, b, margin, &features);
-        }
-        if (manifold.point_count > 0) {
-            add_contact(world, a, b, key, &manifold, &features, pose,
-                        old != SIZE_MAX ? &world->old_contacts[old] : NULL);
-        }
+        pair_result_t found;
+        collide_pair(world, a, b, &pairs[n], &found);
+        if (found.manifold.point_count > 0) add_contact(world, world->contact_count++, a, b, &found);
     }
-    a->contact_first = first;
-    a->contact_count = (uint32_t)(world->contact_count - first);
-    a->contact_step = world->step_number;
+    place_group(world, a, first, world->contact_count);
     return n;
+}
+
+/*
+ * The narrowphase over threads (scene_set_workers), in two passes over the
+ * same chunks of pairs, each cut where a group of body a ends so that a
+ * group is one chunk's: the first finds each pair's manifold into the
+ * pair's own result and counts its chunk's contacts; the second, once the
+ * counts are summed in chunk order, writes each chunk's contacts from the
+ * index the chunks before it leave. The contacts come out in the order,
+ * and with the bytes, that collide_group gives them.
+ */
+typedef struct {
+    world_t *world;
+    body_t **bodies;
+    const broadphase_pair_t *pairs;
+    size_t pair_count;
+} split_t;
+
+/* The first pair at or after i that starts a group. */
+static size_t group_start(const broadphase_pair_t *pairs, size_t count, size_t i) {
+    while (i > 0 && i < count && pairs[i].a == pairs[i - 1].a) i++;
+    return i;
+}
+
+static void collide_chunk(void *context, size_t chunk, size_t begin, size_t end) {
+    const split_t *split = context;
+    world_t *world = split->world;
+    size_t made = 0;
+    end = group_start(split->pairs, split->pair_count, end);
+    for (size_t i = group_start(split->pairs, split->pair_count, begin); i < end; i++) {
+        const broadphase_pair_t *pair = &split->pairs[i];
+        collide_pair(world, split->bodies[pair->a], split->bodies[pair->b], pair,
+                     &world->results[i]);
+        made += world->results[i].manifold.point_count > 0;
+    }
+    world->chunk_first[chunk + 1] = made;
+}
+
+static void emit_chunk(void *context, size_t chunk, size_t begin, size_t end) {
+    const split_t *split = context;
+    world_t *world = split->world;
+    const broadphase_pair_t *pairs = split->pairs;
+    size_t n = world->chunk_first[chunk];
+    end = group_start(pairs, split->pair_count, end);
+    for (size_t i = group_start(pairs, split->pair_count, begin); i < end;) {
+        body_t *a = split->bodies[pairs[i].a];
+        size_t first = n;
+        for (uint32_t group = pairs[i].a; i < end && pairs[i].a == group; i++) {
+            const pair_result_t *found = &world->results[i];
+            if (found->manifold.point_count > 0) {
+                add_contact(world, n++, a, split->bodies[pairs[i].b], found);
+            }
+        }
+        place_group(world, a, first, n);
+    }
+}
+
+static void narrowphase_split(world_t *world, body_t **bodies, const broadphase_pair_t *pairs,
+                              size_t pair_count) {
+    memory_reserve((void **)&world->results, &world->result_capacity, pair_count,
+                   sizeof(pair_result_t));
+    split_t split = {world, bodies, pairs, pair_count};
+    workers_for(world->workers, pair_count, collide_chunk, &split);
+    size_t chunks = workers_chunks(world->workers, pair_count);
+    world->chunk_first[0] = 0;
+    for (size_t k = 0; k < chunks; k++) world->chunk_first[k + 1] += world->chunk_first[k];
+    workers_for(world->workers, pair_count, emit_chunk, &split);
+    world->contact_count = world->chunk_first[chunks];
 }
 
 /* Last step's contacts become the old ones; this step's are written over
@@ -345,6 +496,10 @@ static void narrowphase(world_t *world, body_t **bodies, const broadphase_pair_t
                    sizeof(contact_source_t));
     memory_reserve((void **)&world->anchors, &world->anchor_capacity, pair_count,
                    sizeof(solver_anchor_t));
+    if (world->workers != NULL) {
+        narrowphase_split(world, bodies, pairs, pair_count);
+        return;
+    }
     for (size_t i = 0; i < pair_count;) {
         i += collide_group(world, bodies, pairs + i, pair_count - i);
     }
@@ -352,8 +507,9 @@ static void narrowphase(world_t *world, body_t **bodies, const broadphase_pair_t
 
 /* Hands the solver's results to the bodies' motions: the velocities it
  * chose and the displacements it moved them by. */
-static void write_back(const world_t *world, integrator_motion_t *motions, size_t count) {
-    for (size_t i = 0; i < count; i++) {
+WORLD_INLINE void write_back_range(const world_t *world, integrator_motion_t *motions, size_t begin,
+                             size_t end) {
+    for (size_t i = begin; i < end; i++) {
         const solver_velocity_t *velocity = &world->velocities[i];
         const solver_displacement_t *moved = &world->displacements[i];
         integrator_motion_t *motion = &motions[i];
@@ -362,6 +518,21 @@ static void write_back(const world_t *world, integrator_motion_t *motions, size_
         motion->displacement = moved->dx;
         motion->rotation = moved->dtheta;
     }
+}
+
+static void write_back_chunk(void *context, size_t chunk, size_t begin, size_t end) {
+    const body_loop_t *loop = context;
+    (void)chunk;
+    write_back_range(loop->world, loop->motions, begin, end);
+}
+
+static void write_back(world_t *world, integrator_motion_t *motions, size_t count) {
+    if (world->workers != NULL) {
+        body_loop_t loop = {world, NULL, NULL, motions, 0.0};
+        workers_for(world->workers, count, write_back_chunk, &loop);
+        return;
+    }
+    write_back_range(world, motions, 0, count);
 }
 
 /* Whether a contact holds its bodies together this step. */

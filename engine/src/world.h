@@ -18,6 +18,7 @@
 #include "body.h"
 #include "integrator.h"
 #include "scene.h"
+#include "workers.h"
 
 typedef struct world world_t;
 
@@ -25,6 +26,15 @@ world_t *world_init(size_t velocity_iterations, size_t position_iterations);
 void world_free(world_t *world);
 
 void world_set_iterations(world_t *world, size_t velocity_iterations, size_t position_iterations);
+
+/* The threads a step uses (scene_set_workers; >= 1): the caller's and
+ * workers - 1 of the world's own, started at the first step that needs them
+ * and stopped here when the count changes, and by world_free. */
+void world_set_workers(world_t *world, size_t workers);
+
+/* fn over the chunks of [0, count) on the world's threads (workers.h), for
+ * the scene's loops over bodies; on the caller's alone with 1 worker. */
+void world_for_bodies(world_t *world, size_t count, workers_fn_t fn, void *context);
 
 typedef struct {
     double dt;

@@ -32,7 +32,7 @@ BENCH_PROGRAMS = $(BENCH_DIR)/bench_engine \
 $(BENCH_DIR)/bench_engine: tests/bench/bench_engine.c $(BENCH_HDR) build/libengine.a
 	@mkdir -p $(dir $@)
 	$(CC) $(BENCH_CFLAGS) -Iengine/include -DBENCH_ENGINE_VERSION='"$(BENCH_ENGINE_VERSION)"' \
-		$< build/libengine.a -lm -o $@
+		$< build/libengine.a -pthread -lm -o $@
 
 $(BENCH_DIR)/bench_scale: tests/bench/bench_scale.c $(BENCH_HDR) build/libengine.a
 	@mkdir -p $(dir $@)
@@ -64,7 +64,7 @@ bench-compare-run: $(BENCH_PROGRAMS)
 # (docs/leave-out.md, about a minute and a half).
 $(BENCH_DIR)/bench_stages: tests/bench/bench_stages.c build/libengine.a
 	@mkdir -p $(dir $@)
-	$(CC) $(BENCH_CFLAGS) -Iengine/include $< build/libengine.a -lm -o $@
+	$(CC) $(BENCH_CFLAGS) -Iengine/include $< build/libengine.a -pthread -lm -o $@
 
 bench-stages: $(BENCH_DIR)/bench_stages
 	$(BENCH_DIR)/bench_stages docs/leave-out.md

@@ -5,7 +5,9 @@
  *
  * Besides bench_scenes.h's options: --integrator NAME (seed,
  * explicit-euler, symplectic-euler, velocity-verlet, rk4, symplectic4)
- * runs every variant but ours-symplectic with that integrator.
+ * runs every variant but ours-symplectic with that integrator; --workers N
+ * (1 to SCENE_MAX_WORKERS, default 1) steps every scene on N threads
+ * (scene_set_workers).
  */
 
 #ifndef BENCH_ENGINE_VERSION
@@ -29,7 +31,8 @@ static int ours_parse_integrator(const char *text) {
 int main(int argc, char **argv) {
     const bench_ops_t *ops[4] = {&ours_ops, &ours_seed_ops, &ours_symplectic_ops,
                                  &ours_sleeping_ops};
-    /* --integrator is this program's own: taken out before bench_main. */
+    /* --integrator and --workers are this program's own: taken out before
+     * bench_main. */
     int kept = 1;
     for (int i = 1; i < argc; i++) {
         if (strcmp(argv[i], "--integrator") == 0 && i + 1 < argc) {
@@ -39,6 +42,16 @@ int main(int argc, char **argv) {
                 return 2;
             }
             printf("# ours: integrator %s\n", integrator_get_name((integrator_t)bench_integrator));
+        } else if (strcmp(argv[i], "--workers") == 0 && i + 1 < argc) {
+            char *end;
+            unsigned long workers = strtoul(argv[++i], &end, 10);
+            if (*end != '\0' || workers < 1 || workers > SCENE_MAX_WORKERS) {
+                fprintf(stderr, "%s: --workers takes 1 to %d, not %s\n", argv[0],
+                        SCENE_MAX_WORKERS, argv[i]);
+                return 2;
+            }
+            bench_workers = (size_t)workers;
+            printf("# ours: %zu workers\n", bench_workers);
         } else {
             argv[kept++] = argv[i];
         }

@@ -38,6 +38,8 @@
 /* The integrator of every scene made after it is set (an integrator_t);
  * -1 keeps the scene's default (seed), and ours-symplectic its own. */
 static int bench_integrator = -1;
+/* The workers of every scene made after it is set (scene_set_workers). */
+static size_t bench_workers = 1;
 
 #ifndef BENCH_ENGINE_VERSION
 #define BENCH_ENGINE_VERSION "unknown"
@@ -86,6 +88,7 @@ static void *ours_world_new_common(double gy, int contacts, int capacity, int se
         scene_set_integrator(w->scene, (integrator_t)bench_integrator);
     }
     if (bench_iterations > 0) scene_set_solver_iterations(w->scene, (size_t)bench_iterations, 4);
+    if (bench_workers > 1) scene_set_workers(w->scene, bench_workers);
     w->capacity = capacity > 0 ? capacity : 4;
     w->bodies = (body_t **)malloc(sizeof(body_t *) * (size_t)w->capacity);
     w->angle0 = (double *)malloc(sizeof(double) * (size_t)w->capacity);

@@ -6,7 +6,7 @@ REPORT_DIR := build/report
 $(REPORT_DIR)/accuracy: tests/report/accuracy.c tests/reference.c tests/reference.h build/libengine.a
 	@mkdir -p $(dir $@)
 	$(CC) $(CSTD) $(WARN) -O2 -Iengine/include -Itests tests/report/accuracy.c tests/reference.c \
-		build/libengine.a -lm -o $@
+		build/libengine.a -pthread -lm -o $@
 
 .PHONY: report report-deps
 # gnuplot (Debian gnuplot-nox) and the peers' headers, installed as root when

@@ -10,7 +10,7 @@ $(STABILITY_DIR)/stability: tests/stability/stability.c tests/stability/theory.h
 		build/libengine.a
 	@mkdir -p $(dir $@)
 	$(CC) $(CSTD) $(WARN) -O2 -Iengine/include -Itests/bench -Itests/stability \
-		-DBENCH_ENGINE_VERSION='"$(BENCH_ENGINE_VERSION)"' $< build/libengine.a -lm -o $@
+		-DBENCH_ENGINE_VERSION='"$(BENCH_ENGINE_VERSION)"' $< build/libengine.a -pthread -lm -o $@
 
 CHECK_PROGRAMS += tests/stability/check_stability.sh
 check: $(STABILITY_DIR)/stability
