@@ -6,6 +6,7 @@
 #include <string.h>
 #include "broadphase.h"
 #include "test.h"
+#include "workers.h"
 
 static uint32_t lcg_state = 12345;
 
@@ -27,9 +28,11 @@ static int compare_pairs(const void *p, const void *q) {
     return a->b < b->b ? -1 : a->b > b->b;
 }
 
-static void finds_exactly_the_overlapping_pairs(void) {
-    enum { COUNT = 600 };
-    static broadphase_proxy_t proxies[COUNT];
+enum { COUNT = 600 };
+
+/* Bodies of three sizes, the largest covering more cells than the grid
+ * takes, with all the filters. */
+static void mixed_proxies(broadphase_proxy_t *proxies) {
     for (int i = 0; i < COUNT; i++) {
         double size = i % 50 == 0 ? 60.0 : i % 7 == 0 ? 6.0 : 1.5;
         proxies[i] = random_proxy(size);
@@ -37,6 +40,11 @@ static void finds_exactly_the_overlapping_pairs(void) {
         proxies[i].group = i % 13 == 0 ? 1 : 0;
         if (i % 17 == 0) proxies[i].mask = 2;
     }
+}
+
+static void finds_exactly_the_overlapping_pairs(void) {
+    static broadphase_proxy_t proxies[COUNT];
+    mixed_proxies(proxies);
     static broadphase_pair_t expected[COUNT * COUNT / 2];
     size_t expected_count = 0;
     for (uint32_t a = 0; a < COUNT; a++) {
@@ -101,6 +109,33 @@ static void an_infinite_box_pairs_with_what_it_overlaps(void) {
     broadphase_free(broadphase);
 }
 
+/* With workers the grid is filled and searched in parts: the pairs, their
+ * order and the test count are still one thread's, large proxies and all. */
+static void workers_find_the_same_pairs_in_the_same_order(void) {
+    static broadphase_proxy_t proxies[COUNT];
+    mixed_proxies(proxies);
+    broadphase_t *alone = broadphase_init();
+    const broadphase_pair_t *expected;
+    size_t expected_tests = 0;
+    size_t expected_count = broadphase_find_pairs(alone, proxies, COUNT, &expected, &expected_tests);
+    for (size_t threads = 2; threads <= 3; threads++) {
+        workers_t *workers = workers_init(threads);
+        broadphase_t *broadphase = broadphase_init();
+        broadphase_set_workers(broadphase, workers);
+        for (int round = 0; round < 2; round++) { /* the second reuses the arrays */
+            const broadphase_pair_t *pairs;
+            size_t tests = 0;
+            size_t count = broadphase_find_pairs(broadphase, proxies, COUNT, &pairs, &tests);
+            CHECK(count == expected_count && tests == expected_tests);
+            CHECK(count == expected_count && memcmp(pairs, expected, count * sizeof *pairs) == 0);
+        }
+        broadphase_free(broadphase);
+        workers_free(workers);
+    }
+    broadphase_free(alone);
+}
+
 TEST_SUITE(broadphase, TEST_CASE(finds_exactly_the_overlapping_pairs),
            TEST_CASE(touching_boxes_pair_and_separate_ones_do_not),
-           TEST_CASE(an_infinite_box_pairs_with_what_it_overlaps));
+           TEST_CASE(an_infinite_box_pairs_with_what_it_overlaps),
+           TEST_CASE(workers_find_the_same_pairs_in_the_same_order));

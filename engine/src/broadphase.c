@@ -34,6 +34,12 @@ struct broadphase {
     broadphase_pair_t *chunk_pairs[WORKERS_MAX_CHUNKS];
     size_t chunk_count[WORKERS_MAX_CHUNKS], chunk_capacity[WORKERS_MAX_CHUNKS];
     size_t chunk_tests[WORKERS_MAX_CHUNKS];
+    /* With workers, the grid is filled by parts of the proxies (fill_split):
+     * each part's entry and large counts, where its large proxies go, and
+     * parts x buckets counts that become each part's next place per bucket. */
+    size_t part_entries[WORKERS_MAX_CHUNKS], part_large[WORKERS_MAX_CHUNKS];
+    uint32_t *part_place;
+    size_t part_place_capacity;
 };
 
 broadphase_t *broadphase_init(void) {
@@ -48,6 +54,7 @@ void broadphase_free(broadphase_t *broadphase) {
     memory_free(broadphase->pairs);
     memory_free(broadphase->pairs_by_a);
     memory_free(broadphase->pair_start);
+    memory_free(broadphase->part_place);
     for (size_t k = 0; k < WORKERS_MAX_CHUNKS; k++) memory_free(broadphase->chunk_pairs[k]);
     memory_free(broadphase);
 }
@@ -109,6 +116,21 @@ static int32_t cell_index(double coordinate, double inverse_size) {
     return truncated - (cell < (double)truncated);
 }
 
+/* The cells a box covers, corners included. */
+typedef struct {
+    int32_t x0, y0, x1, y1;
+} cell_range_t;
+
+static inline cell_range_t cell_range(const aabb_t *box, double inverse_size) {
+    return (cell_range_t){cell_index(box->min.x, inverse_size), cell_index(box->min.y, inverse_size),
+                          cell_index(box->max.x, inverse_size), cell_index(box->max.y, inverse_size)};
+}
+
+/* In double: a huge box's count overflows any integer. */
+static inline double range_cells(cell_range_t r) {
+    return ((double)r.x1 - r.x0 + 1.0) * ((double)r.y1 - r.y0 + 1.0);
+}
+
 /* Writes the (cell, proxy) entries; proxies covering too many cells go to
  * the large list. Returns the number of entries. */
 static size_t fill_entries(broadphase_t *broadphase, const broadphase_proxy_t *proxies,
@@ -117,9 +139,8 @@ static size_t fill_entries(broadphase_t *broadphase, const broadphase_proxy_t *p
     *large_count = 0;
     for (size_t i = 0; i < count; i++) {
         aabb_t box = proxies[i].box;
-        int32_t x0 = cell_index(box.min.x, inverse_size), x1 = cell_index(box.max.x, inverse_size);
-        int32_t y0 = cell_index(box.min.y, inverse_size), y1 = cell_index(box.max.y, inverse_size);
-        double cells = ((double)x1 - x0 + 1.0) * ((double)y1 - y0 + 1.0);
+        cell_range_t r = cell_range(&box, inverse_size);
+        double cells = range_cells(r);
         if (cells > BROADPHASE_MAX_CELLS) {
             memory_reserve((void **)&broadphase->large, &broadphase->large_capacity,
                            *large_count + 1, sizeof(uint32_t));
@@ -130,19 +151,25 @@ static size_t fill_entries(broadphase_t *broadphase, const broadphase_proxy_t *p
             memory_reserve((void **)&broadphase->entries, &broadphase->entry_capacity,
                            n + (size_t)cells, sizeof(cell_entry_t));
         }
-        for (int32_t iy = y0; iy <= y1; iy++) {
-            for (int32_t ix = x0; ix <= x1; ix++) {
-                broadphase->entries[n++] = (cell_entry_t){box, ix, iy, x0, y0, (uint32_t)i, 0};
+        for (int32_t iy = r.y0; iy <= r.y1; iy++) {
+            for (int32_t ix = r.x0; ix <= r.x1; ix++) {
+                broadphase->entries[n++] = (cell_entry_t){box, ix, iy, r.x0, r.y0, (uint32_t)i, 0};
             }
         }
     }
     return n;
 }
 
+/* Enough buckets that cells, which hold several entries, rarely share one. */
+static size_t bucket_count(size_t n) {
+    size_t buckets = 64;
+    while (2 * buckets < n) buckets *= 2;
+    return buckets;
+}
+
 /* Counting sort of the entries by bucket. Returns the bucket count. */
 static size_t sort_entries(broadphase_t *broadphase, size_t n) {
-    size_t buckets = 64;
-    while (2 * buckets < n) buckets *= 2; /* cells hold several entries: few collide */
+    size_t buckets = bucket_count(n);
     uint32_t mask = (uint32_t)(buckets - 1);
     memory_reserve((void **)&broadphase->bucket_start, &broadphase->bucket_capacity, buckets + 1,
                    sizeof(uint32_t));
@@ -164,6 +191,154 @@ static size_t sort_entries(broadphase_t *broadphase, size_t n) {
     for (size_t b = buckets; b > 0; b--) start[b] = start[b - 1];
     start[0] = 0;
     return buckets;
+}
+
+/*
+ * fill_entries and sort_entries over the workers, writing the sorted
+ * entries straight: the proxies are cut into parts; a first pass counts each
+ * part's entries (the bucket count hangs on their total), a second each
+ * part's entries per bucket, and a third writes each part's entries from its
+ * places, its share of each bucket after the earlier parts'. A counting sort
+ * is stable, so this is the one-thread order byte for byte, and the large
+ * list comes out in proxy order too.
+ */
+typedef struct {
+    broadphase_t *broadphase;
+    const broadphase_proxy_t *proxies;
+    size_t count, parts, buckets;
+    double inverse_size;
+} fill_split_t;
+
+/* Parts per worker: few, as the places cost parts x buckets to count. */
+static const size_t PARTS_PER_WORKER = 1;
+
+static inline void part_proxies(const fill_split_t *split, size_t part, size_t *first,
+                                size_t *last) {
+    *first = part * split->count / split->parts;
+    *last = (part + 1) * split->count / split->parts;
+}
+
+static void count_part(void *context, size_t chunk, size_t begin, size_t end) {
+    (void)chunk;
+    const fill_split_t *split = context;
+    for (size_t part = begin; part < end; part++) {
+        size_t first, last, entries = 0, large = 0;
+        part_proxies(split, part, &first, &last);
+        for (size_t i = first; i < last; i++) {
+            double cells = range_cells(cell_range(&split->proxies[i].box, split->inverse_size));
+            if (cells > BROADPHASE_MAX_CELLS) {
+                large++;
+            } else {
+                entries += (size_t)cells;
+            }
+        }
+        split->broadphase->part_entries[part] = entries;
+        split->broadphase->part_large[part] = large;
+    }
+}
+
+/* Counts a part's entries per bucket, and writes its large proxies from
+ * part_large, by then where they start. */
+static void histogram_part(void *context, size_t chunk, size_t begin, size_t end) {
+    (void)chunk;
+    const fill_split_t *split = context;
+    broadphase_t *broadphase = split->broadphase;
+    uint32_t mask = (uint32_t)(split->buckets - 1);
+    for (size_t part = begin; part < end; part++) {
+        uint32_t *counts = broadphase->part_place + part * split->buckets;
+        memset(counts, 0, split->buckets * sizeof(uint32_t));
+        size_t first, last, large = broadphase->part_large[part];
+        part_proxies(split, part, &first, &last);
+        for (size_t i = first; i < last; i++) {
+            cell_range_t r = cell_range(&split->proxies[i].box, split->inverse_size);
+            if (range_cells(r) > BROADPHASE_MAX_CELLS) {
+                broadphase->large[large++] = (uint32_t)i;
+                continue;
+            }
+            for (int32_t iy = r.y0; iy <= r.y1; iy++) {
+                for (int32_t ix = r.x0; ix <= r.x1; ix++) counts[hash_cell(ix, iy, mask)]++;
+            }
+        }
+    }
+}
+
+static void place_part(void *context, size_t chunk, size_t begin, size_t end) {
+    (void)chunk;
+    const fill_split_t *split = context;
+    broadphase_t *broadphase = split->broadphase;
+    uint32_t mask = (uint32_t)(split->buckets - 1);
+    for (size_t part = begin; part < end; part++) {
+        uint32_t *place = broadphase->part_place + part * split->buckets;
+        size_t first, last;
+        part_proxies(split, part, &first, &last);
+        for (size_t i = first; i < last; i++) {
+            aabb_t box = split->proxies[i].box;
+            cell_range_t r = cell_range(&box, split->inverse_size);
+            if (range_cells(r) > BROADPHASE_MAX_CELLS) continue;
+            for (int32_t iy = r.y0; iy <= r.y1; iy++) {
+                for (int32_t ix = r.x0; ix <= r.x1; ix++) {
+                    uint32_t bucket = hash_cell(ix, iy, mask);
+                    broadphase->sorted[place[bucket]++] =
+                        (cell_entry_t){box, ix, iy, r.x0, r.y0, (uint32_t)i, bucket};
+                }
+            }
+        }
+    }
+}
+
+/* Totals the parts' counts; part_large becomes where each part's large
+ * proxies start. Returns the number of entries. */
+static size_t total_parts(broadphase_t *broadphase, size_t parts, size_t *large_count) {
+    size_t n = 0;
+    *large_count = 0;
+    for (size_t k = 0; k < parts; k++) {
+        n += broadphase->part_entries[k];
+        size_t large = broadphase->part_large[k];
+        broadphase->part_large[k] = *large_count;
+        *large_count += large;
+    }
+    return n;
+}
+
+/* Turns the parts' counts into places, ordered by (bucket, part), and
+ * sets where each bucket starts. */
+static void places_from_counts(broadphase_t *broadphase, size_t parts, size_t buckets) {
+    uint32_t running = 0;
+    for (size_t b = 0; b < buckets; b++) {
+        broadphase->bucket_start[b] = running;
+        for (size_t k = 0; k < parts; k++) {
+            uint32_t *place = &broadphase->part_place[k * buckets + b];
+            uint32_t here = *place;
+            *place = running;
+            running += here;
+        }
+    }
+    broadphase->bucket_start[buckets] = running;
+}
+
+/* Returns the bucket count, as sort_entries; *n and *large_count as
+ * fill_entries. */
+static size_t fill_split(broadphase_t *broadphase, const broadphase_proxy_t *proxies,
+                         size_t count, double inverse_size, size_t *n, size_t *large_count) {
+    workers_t *workers = broadphase->workers;
+    size_t parts = workers_count(workers) * PARTS_PER_WORKER;
+    if (parts > WORKERS_MAX_CHUNKS) parts = WORKERS_MAX_CHUNKS;
+    fill_split_t split = {broadphase, proxies, count, parts, 0, inverse_size};
+    workers_for(workers, parts, count_part, &split);
+    *n = total_parts(broadphase, parts, large_count);
+    split.buckets = bucket_count(*n);
+    memory_reserve((void **)&broadphase->large, &broadphase->large_capacity, *large_count,
+                   sizeof(uint32_t));
+    memory_reserve((void **)&broadphase->bucket_start, &broadphase->bucket_capacity,
+                   split.buckets + 1, sizeof(uint32_t));
+    memory_reserve((void **)&broadphase->sorted, &broadphase->sorted_capacity, *n,
+                   sizeof(cell_entry_t));
+    memory_reserve((void **)&broadphase->part_place, &broadphase->part_place_capacity,
+                   parts * split.buckets, sizeof(uint32_t));
+    workers_for(workers, parts, histogram_part, &split);
+    places_from_counts(broadphase, parts, split.buckets);
+    workers_for(workers, parts, place_part, &split);
+    return split.buckets;
 }
 
 #if defined(__SSE2__)
@@ -327,12 +502,13 @@ size_t broadphase_find_pairs(broadphase_t *broadphase, const broadphase_proxy_t 
     broadphase->pair_count = 0;
     broadphase->tests = 0;
     double inverse_size = 1.0 / choose_cell_size(proxies, count);
-    size_t large_count;
-    size_t n = fill_entries(broadphase, proxies, count, inverse_size, &large_count);
-    size_t buckets = sort_entries(broadphase, n);
+    size_t large_count, n, buckets;
     if (broadphase->workers != NULL) {
+        buckets = fill_split(broadphase, proxies, count, inverse_size, &n, &large_count);
         pairs_in_buckets_split(broadphase, proxies, buckets);
     } else {
+        n = fill_entries(broadphase, proxies, count, inverse_size, &large_count);
+        buckets = sort_entries(broadphase, n);
         pairs_in_buckets(broadphase, proxies, buckets);
     }
     if (large_count > 0) pairs_with_large(broadphase, proxies, count, large_count);
