@@ -209,7 +209,8 @@ typedef struct {
     double inverse_size;
 } fill_split_t;
 
-/* Parts per worker: few, as the places cost parts x buckets to count. */
+/* Parts per worker: few, as the places cost parts x buckets to count
+ * (pile(10000) on 2 workers, in alternation: 4 parts each 2% slower). */
 static const size_t PARTS_PER_WORKER = 1;
 
 static inline void part_proxies(const fill_split_t *split, size_t part, size_t *first,
