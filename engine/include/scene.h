@@ -210,8 +210,8 @@ bool scene_get_contacts_enabled(scene_t *scene);
  * island of touching bodies whose every body has been slow for 0.5 s, and
  * that rests on a body of infinite mass (or feels no force and no gravity),
  * is taken out of the step. Slow: over each half second the body moved
- * (counting its rim's turn) under 0.01 m/s, or 0.05 m/s when gravity or a
- * force pulls it but then rose against the pull under 0.005 m/s, with
+ * (counting its rim's turn) under 0.01 m/s, or, when gravity or a force
+ * pulls it, under 0.05 m/s and against the pull under 0.005 m/s, with
  * velocities within that plus one step of its pull (all less for bodies
  * under half a metre across). Out of the step means no integration,
  * no contacts, no solving, its velocities 0 (body_is_sleeping). It wakes
@@ -235,8 +235,8 @@ void scene_set_solver_iterations(scene_t *scene, size_t velocity_iterations,
  * Workers (default 1): the threads a step of world contacts runs on, the
  * calling thread and workers - 1 of the scene's own, in [1,
  * SCENE_MAX_WORKERS]; anything else stops the program ("workers must be in
- * [1, 64] (got 0)"). Spread over them: the broadphase's search of its
- * grid cells, the narrowphase, preparing the contacts and packing them into
+ * [1, 64] (got 0)"). Spread over them: the broadphase's filling, sorting
+ * and search of its grid cells, the narrowphase, preparing the contacts and packing them into
  * colour batches, each colour of batches (the colours one after another),
  * the loops over bodies that load the solver and take its results, the
  * free motions of the one-stage integrators (stage 1, after the force
