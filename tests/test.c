@@ -1,4 +1,5 @@
 #include "test.h"
+#include "engine.h"
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
@@ -24,6 +25,17 @@ bool test_no_leaks(void) {
 #else
     return true;
 #endif
+}
+
+bool test_warm_ticks_allocate_nothing(scene_t *scene, int ticks, double dt) {
+    (void)scene_contact_count(scene);
+    size_t before = engine_allocation_count();
+    bool contacts = true;
+    for (int i = 0; i < ticks; i++) {
+        scene_tick(scene, dt);
+        contacts &= scene_contact_count(scene) > 0;
+    }
+    return contacts && engine_allocation_count() == before;
 }
 
 list_t *test_make_polygon(const vector_t *points, size_t n) {

@@ -13,6 +13,7 @@
 #include <stddef.h>
 #include <stdio.h>
 #include "list.h"
+#include "scene.h"
 #include "vector.h"
 
 typedef struct {
@@ -85,6 +86,10 @@ list_t *test_make_polygon(const vector_t *points, size_t n);
  * always true otherwise). The runner forks each test, so a test sees only
  * its own blocks. */
 bool test_no_leaks(void);
+
+/* Whether `ticks` ticks of dt of a warm scene allocate nothing, every one
+ * of them with contacts in its record (read, so the record has its size). */
+bool test_warm_ticks_allocate_nothing(scene_t *scene, int ticks, double dt);
 
 /* Runs function(argument) in a child process and checks that it aborts with
  * a message on stderr containing every one of the given substrings. */
