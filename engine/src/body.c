@@ -46,34 +46,37 @@ static double shape_moment(const vector_t *vertices, size_t count, double mass,
     return moment;
 }
 
-/* Takes the shape list's vertices into an array, counter-clockwise. */
-static vector_t *take_vertices(list_t *shape, size_t *count, const char *function) {
+/* Takes the shape list's vertices into a new body, counter-clockwise: one
+ * block holds the body and its four vertex arrays (body_private.h). */
+static body_t *take_vertices(list_t *shape, const char *function) {
     const char *problem = polygon_check(shape);
     if (problem != NULL) engine_fail(function, "bad shape: %s", problem);
-    *count = list_size(shape);
-    vector_t *vertices = memory_alloc(*count * sizeof(vector_t));
-    for (size_t i = 0; i < *count; i++) vertices[i] = *(vector_t *)list_get(shape, i);
-    if (polygon_array_signed_area(vertices, *count) < 0.0) {
-        for (size_t i = 0; i < *count / 2; i++) {
+    size_t count = list_size(shape);
+    body_t *body = memory_calloc(1, sizeof(body_t) + 4 * count * sizeof(vector_t));
+    body->count = count;
+    body->world_vertices = body->shape;
+    body->world_normals = body->shape + count;
+    body->local_vertices = body->shape + 2 * count;
+    body->local_normals = body->shape + 3 * count;
+    vector_t *vertices = body->local_vertices;
+    for (size_t i = 0; i < count; i++) vertices[i] = *(vector_t *)list_get(shape, i);
+    if (polygon_array_signed_area(vertices, count) < 0.0) {
+        for (size_t i = 0; i < count / 2; i++) {
             vector_t swap = vertices[i];
-            vertices[i] = vertices[*count - 1 - i];
-            vertices[*count - 1 - i] = swap;
+            vertices[i] = vertices[count - 1 - i];
+            vertices[count - 1 - i] = swap;
         }
     }
     list_free(shape);
-    return vertices;
+    return body;
 }
 
 static body_t *body_create(list_t *shape, double mass, rgb_color_t color, void *info,
                            free_func_t info_freer, const char *function) {
     if (shape == NULL) engine_fail(function, "shape is NULL");
     check_mass(mass, function);
-    body_t *body = memory_calloc(1, sizeof(body_t));
-    body->local_vertices = take_vertices(shape, &body->count, function);
+    body_t *body = take_vertices(shape, function);
     size_t n = body->count;
-    body->local_normals = memory_alloc(n * sizeof(vector_t));
-    body->world_vertices = memory_alloc(n * sizeof(vector_t));
-    body->world_normals = memory_alloc(n * sizeof(vector_t));
 
     body->centroid = polygon_array_centroid(body->local_vertices, n);
     for (size_t i = 0; i < n; i++) {
@@ -115,10 +118,6 @@ void body_free(body_t *body) {
     REQUIRE_NOT_NULL(body);
     body_wake(body);
     if (body->info_freer != NULL) body->info_freer(body->info);
-    memory_free(body->local_vertices);
-    memory_free(body->local_normals);
-    memory_free(body->world_vertices);
-    memory_free(body->world_normals);
     memory_free(body);
 }
 

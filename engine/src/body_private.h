@@ -8,29 +8,50 @@
 #include "body.h"
 
 struct body {
-    /* Shape in the body frame, relative to the centroid, counter-clockwise. */
-    size_t count;
-    vector_t *local_vertices;
-    vector_t *local_normals;
+    /* The fields every step reads for each pair and each body (the
+     * narrowphase, the solver's loading, integration) come first, so that a
+     * pair touches two cache lines of each body rather than five. */
 
-    /* World polygon, recomputed lazily after the pose changes. */
+    /* World polygon, recomputed lazily after the pose changes, with cos and
+     * sin of angle; the arrays lie in this body's own block (shape below). */
+    size_t count;
     vector_t *world_vertices;
     vector_t *world_normals;
-    aabb_t bounds;
-    /* cos and sin of angle, valid with the world polygon. */
-    double rotation_cos, rotation_sin;
-    bool world_valid;
-
-    /* Pose and motion. */
+    /* Pose. */
     vector_t centroid;
     double angle;
-    vector_t velocity;
-    double angular_velocity;
+    double rotation_cos, rotation_sin;
 
-    double mass, inverse_mass;
-    double inertia, inverse_inertia;
+    /* Set by the scene: a number no other body of the scene has had, so
+     * contact caches can match pairs across steps even as indices shift. */
+    uint32_t id;
+    /* Set by the scene each step: the body's row in the solver's arrays. */
+    uint32_t solver_index;
+    /* Set by the contact pipeline: the contacts this body had as body a in
+     * step contact_step of its world, at [contact_first, contact_first +
+     * contact_count) of that step's contact buffer (world.c). */
+    uint32_t contact_first, contact_count;
+    uint64_t contact_step;
     /* Largest distance from the centroid to a vertex (m). */
     double radius;
+    double friction;
+    double elasticity;
+    double inverse_mass, inverse_inertia;
+
+    /* Motion. */
+    vector_t velocity;
+    double angular_velocity;
+    aabb_t bounds;
+    bool world_valid;
+    bool removed;
+    /* Sleeping (sleep.c): asleep bodies are left out of the step; the
+     * bodies of one sleeping island are linked in a circle by sleep_next
+     * (NULL when awake); sleep_time is how long the body has been slow (s),
+     * sleep_anchor and sleep_anchor_angle where it was sleep_window (s) ago. */
+    bool asleep;
+    /* Whether a scene owns the body (a body belongs to one scene, once). */
+    bool in_scene;
+    uint32_t category, mask, group;
 
     /* Accumulated since the last tick. */
     vector_t force;
@@ -38,40 +59,26 @@ struct body {
     vector_t impulse;
     double angular_impulse;
 
-    double elasticity;
-    double friction;
-    uint32_t category, mask, group;
-
-    rgb_color_t color;
-    void *info;
-    free_func_t info_freer;
-    bool removed;
-
-    /* Whether a scene owns the body (a body belongs to one scene, once). */
-    bool in_scene;
-    /* The scene that owns the body or whose force creators name it (before
-     * it is added); NULL for neither. A force creator of one scene must not
-     * read a body that another scene frees. */
-    struct scene *scene;
-    /* Set by the scene: a number no other body of the scene has had, so
-     * contact caches can match pairs across steps even as indices shift. */
-    uint32_t id;
-    /* Set by the scene each step: the body's row in the solver's arrays. */
-    uint32_t solver_index;
-    /* Sleeping (sleep.c): asleep bodies are left out of the step; the
-     * bodies of one sleeping island are linked in a circle by sleep_next
-     * (NULL when awake); sleep_time is how long the body has been slow (s),
-     * sleep_anchor and sleep_anchor_angle where it was sleep_window (s) ago. */
-    bool asleep;
     double sleep_time, sleep_window;
     vector_t sleep_anchor;
     double sleep_anchor_angle;
     struct body *sleep_next;
-    /* Set by the contact pipeline: the contacts this body had as body a in
-     * step contact_step of its world, at [contact_first, contact_first +
-     * contact_count) of that step's contact buffer (world.c). */
-    uint32_t contact_first, contact_count;
-    uint64_t contact_step;
+
+    double mass, inertia;
+    rgb_color_t color;
+    void *info;
+    free_func_t info_freer;
+    /* The scene that owns the body or whose force creators name it (before
+     * it is added); NULL for neither. A force creator of one scene must not
+     * read a body that another scene frees. */
+    struct scene *scene;
+
+    /* Shape in the body frame, relative to the centroid, counter-clockwise. */
+    vector_t *local_vertices;
+    vector_t *local_normals;
+    /* The four arrays of count vectors: world vertices and normals, then
+     * local ones. */
+    vector_t shape[];
 };
 
 /* Wakes the body and every body of its sleeping island. */
