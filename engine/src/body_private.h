@@ -28,10 +28,13 @@ struct body {
     /* Set by the scene each step: the body's row in the solver's arrays. */
     uint32_t solver_index;
     /* Set by the contact pipeline: the contacts this body had as body a in
-     * step contact_step of its world, at [contact_first, contact_first +
-     * contact_count) of that step's contact buffer (world.c). */
+     * the step of its world numbered contact_step (modulo 2^32), at
+     * [contact_first, contact_first + contact_count) of that step's contact
+     * buffer, and its pairs that were apart at [gap_first, gap_first +
+     * gap_count) of the step's gap buffer (world.c). */
     uint32_t contact_first, contact_count;
-    uint64_t contact_step;
+    uint32_t gap_first, gap_count;
+    uint32_t contact_step;
     /* Largest distance from the centroid to a vertex (m). */
     double radius;
     double friction;

@@ -1,6 +1,7 @@
 #include "manifold.h"
 #include <math.h>
 #include "body_private.h"
+#include "scalar.h"
 
 /* Prefer polygon a as the reference unless b's face is clearly better, so
  * the choice (and so the feature ids) does not flicker between steps when
@@ -97,11 +98,14 @@ static int clip_segment(const clip_vertex_t in[2], clip_vertex_t out[2], vector_
     return n;
 }
 
-manifold_t manifold_collide(body_t *a, body_t *b, double margin, manifold_features_t *features) {
+manifold_t manifold_collide(body_t *a, body_t *b, double margin, manifold_features_t *features,
+                            double *separation) {
     manifold_t manifold = {VEC_ZERO, 0, {{VEC_ZERO, 0.0, 0}, {VEC_ZERO, 0.0, 0}}};
     face_separation_t face_a = max_face_separation(a, b, margin);
+    *separation = face_a.separation;
     if (face_a.separation > margin) return manifold;
     face_separation_t face_b = max_face_separation(b, a, margin);
+    *separation = max_of(face_a.separation, face_b.separation);
     if (face_b.separation > margin) return manifold;
 
     bool flip = face_b.separation > face_a.separation + REFERENCE_TOLERANCE;

@@ -57,8 +57,11 @@ typedef struct {
 /* The manifold of two bodies' current polygons (point_count 0 when they are
  * further apart than margin). When it has points, *features receives them,
  * including clipped points beyond the margin (a later evaluate may keep
- * them). Both bodies' world polygons must be up to date. */
-manifold_t manifold_collide(body_t *a, body_t *b, double margin, manifold_features_t *features);
+ * them). *separation receives the largest separation of a face found, a
+ * lower bound on the distance between the polygons when it exceeds margin
+ * (no points then). Both bodies' world polygons must be up to date. */
+manifold_t manifold_collide(body_t *a, body_t *b, double margin, manifold_features_t *features,
+                            double *separation);
 
 /* The manifold the features give at the bodies' current poses. */
 manifold_t manifold_evaluate(const manifold_features_t *features, const body_t *a,

@@ -46,6 +46,18 @@ typedef struct {
     double angle;
 } relative_pose_t;
 
+/* A pair whose boxes overlapped while a face of one polygon kept the other
+ * more than the margin away: that face's separation (m, a lower bound on
+ * the distance between the polygons) at the relative pose it was found at.
+ * While the bodies have since moved against each other by less than the
+ * separation less the step's margin, the pair is still that far apart, and
+ * its separating-axis search is skipped. */
+typedef struct {
+    uint64_t key;
+    relative_pose_t pose;
+    double separation;
+} pair_gap_t;
+
 /* What a contact needs beyond the solver's constraint: who, where, the key
  * that finds it again next step, and its features with the pose they were
  * found at. */
@@ -58,12 +70,15 @@ typedef struct {
 } contact_source_t;
 
 /* What the narrowphase finds for one pair: its manifold and features,
- * the pose they were found at, and last step's contact (SIZE_MAX: none). */
+ * the pose they were found at, and last step's contact (SIZE_MAX: none);
+ * or, when a face kept the polygons apart, the gap (apart true). */
 typedef struct {
     manifold_t manifold;
     manifold_features_t features;
     relative_pose_t pose;
     size_t old;
+    bool apart;
+    pair_gap_t gap;
 } pair_result_t;
 
 struct world {
@@ -94,6 +109,11 @@ struct world {
     contact_source_t *old_sources;
     size_t old_count, old_contact_capacity, old_source_capacity;
 
+    /* This step's and last step's pairs that were apart (pair_gap_t),
+     * grouped by body a as the contacts are. */
+    pair_gap_t *gaps, *old_gaps;
+    size_t gap_count, old_gap_count, gap_capacity, old_gap_capacity;
+
     /* Steps taken, to tell a body's contact group of the last step from an
      * older one. */
     uint64_t step_number;
@@ -119,6 +139,7 @@ struct world {
     pair_result_t *results;
     size_t result_capacity;
     size_t chunk_first[WORKERS_MAX_CHUNKS + 1];
+    size_t chunk_gap_first[WORKERS_MAX_CHUNKS + 1];
 };
 
 world_t *world_init(size_t velocity_iterations, size_t position_iterations) {
@@ -140,6 +161,8 @@ void world_free(world_t *world) {
     memory_free(world->sources);
     memory_free(world->old_contacts);
     memory_free(world->old_sources);
+    memory_free(world->gaps);
+    memory_free(world->old_gaps);
     solver_wide_free(&world->wide);
     shock_free(&world->shock);
     sleep_free(&world->sleep);
@@ -288,7 +311,7 @@ static void load_bodies(world_t *world, body_t **bodies, const integrator_motion
  * skipped, and the key check rejects whatever else lies at its indices. */
 static size_t find_in_step(const contact_source_t *sources, size_t count, uint64_t step,
                            const body_t *a, uint64_t key) {
-    if (a->contact_step != step) return SIZE_MAX;
+    if (a->contact_step != (uint32_t)step) return SIZE_MAX;
     size_t end = (size_t)a->contact_first + a->contact_count;
     if (end > count) return SIZE_MAX;
     for (size_t i = a->contact_first; i < end; i++) {
@@ -300,6 +323,31 @@ static size_t find_in_step(const contact_source_t *sources, size_t count, uint64
 /* Last step's contact of the pair, while this step's are being found. */
 static size_t find_old(const world_t *world, const body_t *a, uint64_t key) {
     return find_in_step(world->old_sources, world->old_count, world->step_number - 1, a, key);
+}
+
+/* Last step's gap of the pair with this key, found as find_old finds its
+ * contact; NULL when the pair was not apart last step. */
+static const pair_gap_t *find_old_gap(const world_t *world, const body_t *a, uint64_t key) {
+    if (a->contact_step != (uint32_t)(world->step_number - 1)) return NULL;
+    size_t end = (size_t)a->gap_first + a->gap_count;
+    if (end > world->old_gap_count) return NULL;
+    for (size_t i = a->gap_first; i < end; i++) {
+        if (world->old_gaps[i].key == key) return &world->old_gaps[i];
+    }
+    return NULL;
+}
+
+/* Whether the pair is still further apart than margin by its gap of last
+ * step: in a's frame, no point of b has moved further than |dp| + r_b |da|
+ * since the gap was found (dp, da: the change of the relative pose), and
+ * in b's frame no point of a further than |dp| + (|p| + r_a) |da|; a
+ * face's separation moves no more than the points do. */
+static bool still_apart(const pair_gap_t *gap, relative_pose_t now, const body_t *a,
+                        const body_t *b, double margin) {
+    double turn = fabs(now.angle - gap->pose.angle);
+    double moved = vec_get_length(vec_subtract(now.position, gap->pose.position)) +
+                   (vec_get_length(now.position) + a->radius + b->radius) * turn;
+    return gap->separation - moved > margin;
 }
 
 /* Copies last step's impulses to the points that are the same features. */
@@ -361,23 +409,40 @@ WORLD_INLINE void add_contact(world_t *world, size_t n, body_t *a, body_t *b,
 WORLD_INLINE void collide_pair(const world_t *world, body_t *a, body_t *b, const broadphase_pair_t *pair,
                          pair_result_t *found) {
     double margin = world->margins[pair->a] + world->margins[pair->b];
-    size_t old = find_old(world, a, pair_key(a, b));
+    uint64_t key = pair_key(a, b);
+    size_t old = find_old(world, a, key);
     found->old = old;
+    found->apart = false;
     found->pose = relative_pose(a, b);
     if (old != SIZE_MAX && pose_is_close(found->pose, world->old_sources[old].pose)) {
         found->features = world->old_sources[old].features;
         found->pose = world->old_sources[old].pose; /* measure drift from where they were found */
         found->manifold = manifold_evaluate(&found->features, a, b, margin);
-    } else {
-        found->manifold = manifold_collide(a, b, margin, &found->features);
+        return;
+    }
+    const pair_gap_t *gap = old == SIZE_MAX ? find_old_gap(world, a, key) : NULL;
+    if (gap != NULL && still_apart(gap, found->pose, a, b, margin)) {
+        found->manifold.point_count = 0;
+        found->apart = true;
+        found->gap = *gap;
+        return;
+    }
+    double separation;
+    found->manifold = manifold_collide(a, b, margin, &found->features, &separation);
+    if (separation > margin) {
+        found->apart = true;
+        found->gap = (pair_gap_t){key, found->pose, separation};
     }
 }
 
-/* Tells body a where its group of this step's contacts lies. */
-WORLD_INLINE void place_group(const world_t *world, body_t *a, size_t first, size_t end) {
+/* Tells body a where its groups of this step's contacts and gaps lie. */
+WORLD_INLINE void place_group(const world_t *world, body_t *a, size_t first, size_t end,
+                              size_t gap_first, size_t gap_end) {
     a->contact_first = (uint32_t)first;
     a->contact_count = (uint32_t)(end - first);
-    a->contact_step = world->step_number;
+    a->gap_first = (uint32_t)gap_first;
+    a->gap_count = (uint32_t)(gap_end - gap_first);
+    a->contact_step = (uint32_t)world->step_number;
 }
 
 /* The contacts of the pairs whose body a is pairs[0].a; returns how many
@@ -386,15 +451,16 @@ WORLD_INLINE void place_group(const world_t *world, body_t *a, size_t first, siz
 static size_t collide_group(world_t *world, body_t **bodies, const broadphase_pair_t *pairs,
                             size_t pair_count) {
     body_t *a = bodies[pairs[0].a];
-    size_t first = world->contact_count;
+    size_t first = world->contact_count, gap_first = world->gap_count;
     size_t n = 0;
     for (; n < pair_count && pairs[n].a == pairs[0].a; n++) {
         body_t *b = bodies[pairs[n].b];
         pair_result_t found;
         collide_pair(world, a, b, &pairs[n], &found);
         if (found.manifold.point_count > 0) add_contact(world, world->contact_count++, a, b, &found);
+        if (found.apart) world->gaps[world->gap_count++] = found.gap;
     }
-    place_group(world, a, first, world->contact_count);
+    place_group(world, a, first, world->contact_count, gap_first, world->gap_count);
     return n;
 }
 
@@ -423,33 +489,36 @@ static size_t group_start(const broadphase_pair_t *pairs, size_t count, size_t i
 static void collide_chunk(void *context, size_t chunk, size_t begin, size_t end) {
     const split_t *split = context;
     world_t *world = split->world;
-    size_t made = 0;
+    size_t made = 0, apart = 0;
     end = group_start(split->pairs, split->pair_count, end);
     for (size_t i = group_start(split->pairs, split->pair_count, begin); i < end; i++) {
         const broadphase_pair_t *pair = &split->pairs[i];
         collide_pair(world, split->bodies[pair->a], split->bodies[pair->b], pair,
                      &world->results[i]);
         made += world->results[i].manifold.point_count > 0;
+        apart += world->results[i].apart;
     }
     world->chunk_first[chunk + 1] = made;
+    world->chunk_gap_first[chunk + 1] = apart;
 }
 
 static void emit_chunk(void *context, size_t chunk, size_t begin, size_t end) {
     const split_t *split = context;
     world_t *world = split->world;
     const broadphase_pair_t *pairs = split->pairs;
-    size_t n = world->chunk_first[chunk];
+    size_t n = world->chunk_first[chunk], g = world->chunk_gap_first[chunk];
     end = group_start(pairs, split->pair_count, end);
     for (size_t i = group_start(pairs, split->pair_count, begin); i < end;) {
         body_t *a = split->bodies[pairs[i].a];
-        size_t first = n;
+        size_t first = n, gap_first = g;
         for (uint32_t group = pairs[i].a; i < end && pairs[i].a == group; i++) {
             const pair_result_t *found = &world->results[i];
             if (found->manifold.point_count > 0) {
                 add_contact(world, n++, a, split->bodies[pairs[i].b], found);
             }
+            if (found->apart) world->gaps[g++] = found->gap;
         }
-        place_group(world, a, first, n);
+        place_group(world, a, first, n, gap_first, g);
     }
 }
 
@@ -460,10 +529,14 @@ static void narrowphase_split(world_t *world, body_t **bodies, const broadphase_
     split_t split = {world, bodies, pairs, pair_count};
     workers_for(world->workers, pair_count, collide_chunk, &split);
     size_t chunks = workers_chunks(world->workers, pair_count);
-    world->chunk_first[0] = 0;
-    for (size_t k = 0; k < chunks; k++) world->chunk_first[k + 1] += world->chunk_first[k];
+    world->chunk_first[0] = world->chunk_gap_first[0] = 0;
+    for (size_t k = 0; k < chunks; k++) {
+        world->chunk_first[k + 1] += world->chunk_first[k];
+        world->chunk_gap_first[k + 1] += world->chunk_gap_first[k];
+    }
     workers_for(world->workers, pair_count, emit_chunk, &split);
     world->contact_count = world->chunk_first[chunks];
+    world->gap_count = world->chunk_gap_first[chunks];
 }
 
 /* Last step's contacts become the old ones; this step's are written over
@@ -483,6 +556,14 @@ static void swap_contact_buffers(world_t *world) {
     world->old_source_capacity = capacity;
     world->old_count = world->contact_count;
     world->contact_count = 0;
+    pair_gap_t *gaps = world->gaps;
+    world->gaps = world->old_gaps;
+    world->old_gaps = gaps;
+    capacity = world->gap_capacity;
+    world->gap_capacity = world->old_gap_capacity;
+    world->old_gap_capacity = capacity;
+    world->old_gap_count = world->gap_count;
+    world->gap_count = 0;
     world->step_number++;
 }
 
@@ -496,6 +577,7 @@ static void narrowphase(world_t *world, body_t **bodies, const broadphase_pair_t
                    sizeof(contact_source_t));
     memory_reserve((void **)&world->anchors, &world->anchor_capacity, pair_count,
                    sizeof(solver_anchor_t));
+    memory_reserve((void **)&world->gaps, &world->gap_capacity, pair_count, sizeof(pair_gap_t));
     if (world->workers != NULL) {
         narrowphase_split(world, bodies, pairs, pair_count);
         return;
