@@ -752,6 +752,37 @@ static void fine_polygons_rest_on_a_floor(void) {
     }
 }
 
+/* A spinning bar's box holds a small block in its corner for many steps
+ * before the bar reaches it: the pair is apart all that time, and the
+ * narrowphase, which remembers such gaps, must still see the turn close
+ * this one (its bound on the motion counts the turn as well as the
+ * relative position). The block comes first, so that the pair's relative
+ * position (the bar's centroid in the block's frame) stays still. */
+static void turning_bar_meets_the_block_it_sweeps_toward(void) {
+    scene_t *scene = scene_init();
+    scene_set_contacts_enabled(scene, true);
+    body_t *block = add_box(scene, 1.2, -1.0, 0.1, 0.1, INFINITY);
+    body_t *bar = add_box(scene, 0.0, 0.0, 2.0, 0.05, 1.0);
+    body_set_rotation(bar, 0.25 * M_PI);
+    body_set_angular_velocity(bar, -2.0);
+    bool met = false;
+    double deepest = 0.0;
+    for (int i = 0; i < 60; i++) {
+        scene_tick(scene, DT);
+        deepest = fmax(deepest, max_penetration(scene));
+        for (size_t k = 0; k < scene_contact_count(scene); k++) {
+            const contact_t *contact = scene_get_contact(scene, k);
+            met |= contact->touching && contact->body1 == block && contact->body2 == bar;
+        }
+    }
+    CHECK(met);
+    CHECK(deepest < 0.01);
+    /* Stopped at the block: the bar did not turn past it (it would reach
+     * -0.25 pi + ... -1.75 rad by now, free). */
+    CHECK(body_get_rotation(bar) > -1.0);
+    scene_free(scene);
+}
+
 TEST_SUITE(contacts, TEST_CASE(box_comes_to_rest_on_floor), TEST_CASE(column_of_ten_boxes_stands),
            TEST_CASE(plank_with_more_contacts_than_colours_rests),
            TEST_CASE(pyramid_of_forty_stands_ten_seconds), TEST_CASE(friction_stopping_distance),
@@ -770,4 +801,5 @@ TEST_SUITE(contacts, TEST_CASE(box_comes_to_rest_on_floor), TEST_CASE(column_of_
            TEST_CASE(overlaps_are_pushed_apart_no_faster_than_the_push_speed),
            TEST_CASE(long_steps_push_at_most_the_step_bound),
            TEST_CASE(centimetre_boxes_rest_shallow), TEST_CASE(hundred_metre_boxes_rest_still),
-           TEST_CASE(bad_solver_settings_abort), TEST_CASE(fine_polygons_rest_on_a_floor));
+           TEST_CASE(bad_solver_settings_abort), TEST_CASE(fine_polygons_rest_on_a_floor),
+           TEST_CASE(turning_bar_meets_the_block_it_sweeps_toward));
