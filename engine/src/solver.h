@@ -83,14 +83,18 @@ typedef struct {
 
 /* One contact point, as the iterations see it. The lever arms r (from each
  * centroid to the point) enter only through r x n and r x t, computed once,
- * so the loops touch nothing else. */
+ * so the loops touch nothing else. What the next step's warm start reads
+ * (the id and the accumulated impulses) comes first. */
 typedef struct {
+    uint32_t id;
+    bool touched;            /* touching, or an impact that has bounced this step */
+    bool lands;              /* an impact after which the point rests on the surface */
+    double normal_impulse;   /* accumulated (N s), >= 0 */
+    double tangent_impulse;  /* accumulated (N s), |.| <= friction * normal */
     double rn_a, rn_b;       /* r_a x normal, r_b x normal */
     double rt_a, rt_b;       /* r_a x tangent, r_b x tangent */
     double normal_mass, tangent_mass;
     double target;           /* lower bound on the end relative normal velocity */
-    double normal_impulse;   /* accumulated (N s), >= 0 */
-    double tangent_impulse;  /* accumulated (N s), |.| <= friction * normal */
     double separation;       /* at the start of the step (m) */
     double impact_time;      /* when the gap closes within the step (s), or < 0 */
     /* What the accelerations add to the relative normal velocity between a
@@ -99,9 +103,6 @@ typedef struct {
     double impact_offset;
     double restitution_impulse; /* normal impulse of the collision pass (N s), >= 0 */
     double restitution_tangent_impulse; /* friction of the collision pass (N s) */
-    uint32_t id;
-    bool touched;            /* touching, or an impact that has bounced this step */
-    bool lands;              /* an impact after which the point rests on the surface */
 } solver_point_t;
 
 /* The lever arms of a contact's points (world, m), used only to prepare. */
@@ -109,6 +110,10 @@ typedef struct {
     vector_t r_a[2], r_b[2];
 } solver_anchor_t;
 
+/* The fields the next step's warm start reads (point_count, then each
+ * point's id and impulses) come first, in two runs of a few words: the
+ * narrowphase reads them from last step's contacts for every pair, and
+ * spread over the contact they cost five cache lines instead of two. */
 typedef struct {
     uint32_t a, b;           /* body rows */
     int point_count;
@@ -116,13 +121,13 @@ typedef struct {
     /* The two points are an incident edge's own ends (manifold_features_t),
      * so the block solve may take a worse condition (solver.c). */
     bool edge_ends;
+    solver_point_t points[2];
     vector_t normal;         /* unit, from a toward b; the tangent is perp(normal) */
     double friction, restitution;
     double slop;             /* overlap the position pass leaves alone (m): solver_contact_slop */
     /* The 2x2 normal effective-mass matrix K and its inverse (block solve). */
     double k11, k12, k22;
     double m11, m12, m22;
-    solver_point_t points[2];
 } solver_contact_t;
 
 typedef struct {
