@@ -435,6 +435,20 @@ WORLD_INLINE void collide_pair(const world_t *world, body_t *a, body_t *b, const
     }
 }
 
+/* How many pairs ahead the narrowphase asks for body b's first two lines:
+ * b is anywhere in the scene, and waiting on it was a third of the time of
+ * evaluating a manifold (pile(4000)). A macro: GCC deems a function of
+ * prefetches alone const and drops its calls. */
+enum { PAIR_AHEAD = 4 };
+#define PREFETCH_BODY_B(bodies, pairs, at, count)                        \
+    do {                                                                 \
+        if ((at) < (count)) {                                            \
+            const char *line_ = (const char *)(bodies)[(pairs)[at].b];   \
+            __builtin_prefetch(line_);                                   \
+            __builtin_prefetch(line_ + 64);                              \
+        }                                                                \
+    } while (0)
+
 /* Tells body a where its groups of this step's contacts and gaps lie. */
 WORLD_INLINE void place_group(const world_t *world, body_t *a, size_t first, size_t end,
                               size_t gap_first, size_t gap_end) {
@@ -454,6 +468,7 @@ static size_t collide_group(world_t *world, body_t **bodies, const broadphase_pa
     size_t first = world->contact_count, gap_first = world->gap_count;
     size_t n = 0;
     for (; n < pair_count && pairs[n].a == pairs[0].a; n++) {
+        PREFETCH_BODY_B(bodies, pairs, n + PAIR_AHEAD, pair_count);
         body_t *b = bodies[pairs[n].b];
         pair_result_t found;
         collide_pair(world, a, b, &pairs[n], &found);
@@ -492,6 +507,7 @@ static void collide_chunk(void *context, size_t chunk, size_t begin, size_t end)
     size_t made = 0, apart = 0;
     end = group_start(split->pairs, split->pair_count, end);
     for (size_t i = group_start(split->pairs, split->pair_count, begin); i < end; i++) {
+        PREFETCH_BODY_B(split->bodies, split->pairs, i + PAIR_AHEAD, split->pair_count);
         const broadphase_pair_t *pair = &split->pairs[i];
         collide_pair(world, split->bodies[pair->a], split->bodies[pair->b], pair,
                      &world->results[i]);
