@@ -651,11 +651,21 @@ typedef struct {
     bool impact, elastic;
 } prepared_t;
 
+/* How many contacts ahead preparing asks for body b's rows: the contacts
+ * come grouped by body a, so b is anywhere in the rows. */
+enum { PREPARE_AHEAD = 4 };
+
 static prepared_t prepare_range(solver_contact_t *contacts, const solver_anchor_t *anchors,
                                 const solver_bodies_t *bodies, const solver_settings_t *settings,
                                 size_t begin, size_t end) {
     prepared_t found = {false, false};
     for (size_t i = begin; i < end; i++) {
+        if (i + PREPARE_AHEAD < end) {
+            const solver_contact_t *ahead = &contacts[i + PREPARE_AHEAD];
+            __builtin_prefetch(&bodies->states[ahead->b]);
+            __builtin_prefetch((const char *)&bodies->states[ahead->b] + 64);
+            __builtin_prefetch(&bodies->velocities[ahead->b]);
+        }
         solver_contact_t *c = &contacts[i];
         found.impact |= prepare(c, &anchors[i], bodies->velocities, bodies->states, settings);
         found.elastic |= c->restitution > 0.0;
