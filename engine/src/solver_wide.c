@@ -689,26 +689,32 @@ static batch_kind_t kind_of(const solver_contact_t *c) {
 
 enum { GROUPS = BATCH_KINDS * COLORING_MAX_COLORS };
 
+_Static_assert((int)GROUPS < (int)COLORING_NONE, "a group fits where its contact's colour was");
+
 /* Orders the contacts by colour, and within a colour by kind; the
  * uncoloured go to the loose list. Fills start (GROUPS + 1 entries) with
- * the group boundaries in wide->order. */
+ * the group boundaries in wide->order. The first pass turns each colour
+ * into its group, so that the second reads a byte per contact rather than
+ * the contact. */
 static void sort_by_color(solver_wide_t *wide, const solver_contact_t *contacts, size_t count,
                           uint32_t *start) {
     memset(start, 0, (GROUPS + 1) * sizeof(uint32_t));
     wide->loose_count = 0;
+    uint8_t *group = wide->colors;
     for (size_t i = 0; i < count; i++) {
-        if (wide->colors[i] == COLORING_NONE) {
+        if (group[i] == COLORING_NONE) {
             wide->loose[wide->loose_count++] = (uint32_t)i;
             continue;
         }
-        start[BATCH_KINDS * wide->colors[i] + kind_of(&contacts[i]) + 1]++;
+        group[i] = (uint8_t)(BATCH_KINDS * group[i] + kind_of(&contacts[i]));
+        start[group[i] + 1]++;
     }
     for (int g = 0; g < GROUPS; g++) start[g + 1] += start[g];
     uint32_t next[GROUPS];
     memcpy(next, start, sizeof next);
     for (size_t i = 0; i < count; i++) {
-        if (wide->colors[i] == COLORING_NONE) continue;
-        wide->order[next[BATCH_KINDS * wide->colors[i] + kind_of(&contacts[i])]++] = (uint32_t)i;
+        if (group[i] == COLORING_NONE) continue;
+        wide->order[next[group[i]]++] = (uint32_t)i;
     }
 }
 

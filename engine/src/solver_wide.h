@@ -41,7 +41,7 @@ enum { SOLVER_WIDE_KINDS = 3, SOLVER_WIDE_GROUPS = SOLVER_WIDE_KINDS * COLORING_
 
 struct solver_wide {
     coloring_t coloring;
-    uint8_t *colors;
+    uint8_t *colors; /* per contact: its colour, then its group (sort_by_color) */
     size_t color_capacity;
     uint32_t *order;
     size_t order_capacity;
