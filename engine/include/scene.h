@@ -243,7 +243,8 @@ void scene_set_solver_iterations(scene_t *scene, size_t velocity_iterations,
  * creators) and integration (stage 3). The rest runs on the calling thread as with one
  * worker: the force creators, the collision handlers and everything else a
  * scene calls back, the colouring, the contacts no colour could take, the
- * restitution pass, shock propagation and sleeping. A body whose motion is
+ * restitution pass, shock propagation (but for its levels of 64 bodies or
+ * more) and sleeping. A body whose motion is
  * not finite stops the program with the message one worker gives.
  * Results are bit-identical for any worker count: every number is computed
  * by the same operations in the same order, whichever thread computes it.

@@ -2,6 +2,7 @@
 #include <math.h>
 #include <string.h>
 #include "memory.h"
+#include "workers.h"
 
 static const uint32_t UNREACHED = UINT32_MAX;
 /* The slot of a loose contact: its impulses are in the contact. */
@@ -215,11 +216,13 @@ enum { PREFETCH_AHEAD = 8 };
  * is the only one (a column), since a body held by two is pulled two ways. */
 static void hold_up(const shock_t *shock, const solver_wide_t *wide,
                     const solver_contact_t *contacts, uint32_t body, uint32_t *held,
-                    uint32_t count, solver_velocity_t *velocities) {
+                    uint32_t count, uint32_t readable, solver_velocity_t *velocities) {
     if (count > 1) sort_sides(held, count);
     for (uint32_t k = 0; k < count; k++) {
         uint32_t side = held[k];
-        PREFETCH_CONTACT(&contacts[held[k + PREFETCH_AHEAD] / 2]);
+        if (k + PREFETCH_AHEAD < readable) {
+            PREFETCH_CONTACT(&contacts[held[k + PREFETCH_AHEAD] / 2]);
+        }
         const solver_contact_t *c = &contacts[side / 2];
         bool upper_is_b = side % 2 == 1; /* the odd side is b's */
         solver_velocity_t *upper = &velocities[body];
@@ -279,23 +282,72 @@ static size_t find_levels(shock_t *shock, const solver_velocity_t *velocities,
     return tail;
 }
 
+/* The bodies queue[begin .. end) held up, each by its supports: hold_up may
+ * read ahead in held as far as the last of these bodies' supports, plus
+ * `past` entries beyond. */
+static void hold_up_range(shock_t *shock, const solver_wide_t *wide,
+                          const solver_contact_t *contacts, solver_velocity_t *velocities,
+                          size_t begin, size_t end, uint32_t past) {
+    uint32_t start = begin > 0 ? shock->support_end[begin - 1] : 0;
+    uint32_t last = end > 0 ? shock->support_end[end - 1] + past : 0;
+    for (size_t q = begin; q < end; q++) {
+        uint32_t stop = shock->support_end[q];
+        if (stop == start) continue;
+        hold_up(shock, wide, contacts, shock->queue[q], shock->held + start, stop - start,
+                last - start, velocities);
+        start = stop;
+    }
+}
+
+/* A level of this many bodies or more is spread over the workers: below
+ * it, the call costs more than the bodies. */
+enum { SPLIT_LEVEL = 64 };
+
+typedef struct {
+    shock_t *shock;
+    const solver_wide_t *wide;
+    const solver_contact_t *contacts;
+    solver_velocity_t *velocities;
+    size_t first; /* the level's first place in the queue */
+} level_split_t;
+
+/* A chunk of one level: hold_up reads ahead no further than the chunk's
+ * own supports, which no other thread sorts. */
+static void level_chunk(void *context, size_t chunk, size_t begin, size_t end) {
+    const level_split_t *split = context;
+    (void)chunk;
+    hold_up_range(split->shock, split->wide, split->contacts, split->velocities,
+                  split->first + begin, split->first + end, 0);
+}
+
 /*
  * Each body held up by its supports, in the order the levels reached the
  * bodies, which is level by level from the ground up: a body's supports
  * are all of the level below, held up before it, so their velocities are
- * final.
+ * final. A body's pass changes its own velocity only, so the bodies of one
+ * level may go in any order, and a large level goes over the workers with
+ * the same result.
  */
 static void propagate(shock_t *shock, const solver_wide_t *wide,
                       const solver_contact_t *contacts, solver_velocity_t *velocities,
                       size_t body_count) {
     size_t reached = find_levels(shock, velocities, body_count);
-    uint32_t start = 0;
-    for (size_t q = 0; q < reached; q++) {
-        uint32_t end = shock->support_end[q];
-        if (end == start) continue;
-        hold_up(shock, wide, contacts, shock->queue[q], shock->held + start, end - start,
-                velocities);
-        start = end;
+    if (wide->workers == NULL) {
+        hold_up_range(shock, wide, contacts, velocities, 0, reached, PREFETCH_AHEAD);
+        return;
+    }
+    level_split_t split = {shock, wide, contacts, velocities, 0};
+    for (size_t q = 0; q < reached;) {
+        uint32_t level = shock->level[shock->queue[q]];
+        size_t end = q + 1;
+        while (end < reached && shock->level[shock->queue[end]] == level) end++;
+        if (end - q >= SPLIT_LEVEL) {
+            split.first = q;
+            workers_for(wide->workers, end - q, level_chunk, &split);
+        } else {
+            hold_up_range(shock, wide, contacts, velocities, q, end, 0);
+        }
+        q = end;
     }
 }
 
