@@ -555,29 +555,27 @@ static void narrowphase_split(world_t *world, body_t **bodies, const broadphase_
     world->gap_count = world->chunk_gap_first[chunks];
 }
 
-/* Last step's contacts become the old ones; this step's are written over
- * the buffers of the step before. */
+/* Exchanges two buffers with their capacities. */
+static void swap_buffers(void **now, size_t *now_capacity, void **old, size_t *old_capacity) {
+    void *buffer = *now;
+    *now = *old;
+    *old = buffer;
+    size_t capacity = *now_capacity;
+    *now_capacity = *old_capacity;
+    *old_capacity = capacity;
+}
+
+/* Last step's contacts and gaps become the old ones; this step's are
+ * written over the buffers of the step before. */
 static void swap_contact_buffers(world_t *world) {
-    solver_contact_t *contacts = world->contacts;
-    world->contacts = world->old_contacts;
-    world->old_contacts = contacts;
-    contact_source_t *sources = world->sources;
-    world->sources = world->old_sources;
-    world->old_sources = sources;
-    size_t capacity = world->contact_capacity;
-    world->contact_capacity = world->old_contact_capacity;
-    world->old_contact_capacity = capacity;
-    capacity = world->source_capacity;
-    world->source_capacity = world->old_source_capacity;
-    world->old_source_capacity = capacity;
+    swap_buffers((void **)&world->contacts, &world->contact_capacity,
+                 (void **)&world->old_contacts, &world->old_contact_capacity);
+    swap_buffers((void **)&world->sources, &world->source_capacity,
+                 (void **)&world->old_sources, &world->old_source_capacity);
+    swap_buffers((void **)&world->gaps, &world->gap_capacity, (void **)&world->old_gaps,
+                 &world->old_gap_capacity);
     world->old_count = world->contact_count;
     world->contact_count = 0;
-    pair_gap_t *gaps = world->gaps;
-    world->gaps = world->old_gaps;
-    world->old_gaps = gaps;
-    capacity = world->gap_capacity;
-    world->gap_capacity = world->old_gap_capacity;
-    world->old_gap_capacity = capacity;
     world->old_gap_count = world->gap_count;
     world->gap_count = 0;
     world->step_number++;
