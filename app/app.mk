@@ -35,6 +35,16 @@ sandbox: $(APP_OBJ) $(APP_GAMES_OBJ) build/libengine.a
 	$(CC) $(APP_OBJ) $(APP_GAMES_OBJ) build/libengine.a $(SANDBOX_LIBS) -pthread -lm -o $@
 
 APP_SMOKE_DEPS := sandbox
+
+# The scan converter's two threads against one (tests/app_raster.c): SDL2
+# only, no window.
+APP_RASTER_SRC := tests/app_raster.c app/raster.c app/batch.c
+build/tests/app_raster: $(APP_RASTER_SRC) tests/app_expect.h app/raster.h app/batch.h \
+                        app/palette.h app/app.mk
+	@mkdir -p $(dir $@)
+	$(CC) $(CSTD) $(WARN) -O1 -g $(SAN) -Iapp -Iengine/include $(SANDBOX_CFLAGS) \
+	    $(APP_RASTER_SRC) $(SANDBOX_LIBS) -pthread -lm -o $@
+CHECK_PROGRAMS += build/tests/app_raster
 # The smoke tests read the app's 8x8 font (SDL2_gfx's header) to find text in
 # screenshots, and PNG files with libpng (a dependency of libsdl2-image-dev).
 APP_SMOKE_DEFS := -DAPP_SMOKE_HAVE_SDL=1 \

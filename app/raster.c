@@ -9,6 +9,13 @@ static struct {
     int width, height;
 } raster;
 
+/* Rows [top, bottom) of the canvas: a thread draws only its own band, so
+ * two threads fill one batch at once and every pixel is still written in
+ * the batch's order. */
+typedef struct {
+    int top, bottom;
+} band_t;
+
 void raster_begin(SDL_Renderer *renderer, SDL_Surface *canvas) {
     raster.renderer = renderer;
     raster.canvas = canvas != NULL && canvas->format->BytesPerPixel == 4 ? canvas : NULL;
@@ -51,8 +58,8 @@ static double chain_x(const vector_t *p, int n, int step, int *edge, int bottom,
     return dy > 0.0 ? p[a].x + (yc - p[a].y) * (p[b].x - p[a].x) / dy : p[a].x;
 }
 
-/* Scan-converts a convex polygon straight into the canvas. */
-static void canvas_fill(const vector_t *p, int n, palette_rgb_t color) {
+/* Scan-converts a convex polygon straight into the band of the canvas. */
+static void canvas_fill(const vector_t *p, int n, palette_rgb_t color, band_t band) {
     if (n < 3 || raster.width <= 0) return;
     int top = 0, bottom = 0;
     for (int i = 1; i < n; i++) {
@@ -60,9 +67,9 @@ static void canvas_fill(const vector_t *p, int n, palette_rgb_t color) {
         if (p[i].y > p[bottom].y) bottom = i;
     }
     double min_y = p[top].y, max_y = p[bottom].y;
-    if (!(min_y < raster.height) || !(max_y >= 0)) return;
-    int y0 = min_y < 0 ? 0 : ceil_int(min_y - 0.5);
-    int y1 = max_y >= raster.height ? raster.height - 1 : floor_int(max_y - 0.5);
+    if (!(min_y < band.bottom) || !(max_y >= band.top)) return;
+    int y0 = min_y < band.top ? band.top : ceil_int(min_y - 0.5);
+    int y1 = max_y >= band.bottom ? band.bottom - 1 : floor_int(max_y - 0.5);
     Uint32 pixel = SDL_MapRGB(raster.canvas->format, color.r, color.g, color.b);
     /* The two chains from the top vertex down to the bottom one. */
     int forward = top, backward = top;
@@ -110,8 +117,11 @@ static bool clip(double *x0, double *y0, double *x1, double *y1, double w, doubl
     return true;
 }
 
-/* Bresenham between two clipped endpoints. */
-static void canvas_line(double fx0, double fy0, double fx1, double fy1, Uint32 pixel) {
+/* Bresenham between two clipped endpoints, the pixels in the band only:
+ * the line is clipped to the canvas, never to the band, so that its pixels
+ * are those of the whole line. */
+static void canvas_line(double fx0, double fy0, double fx1, double fy1, Uint32 pixel,
+                        band_t band) {
     double w = raster.width, h = raster.height;
     bool inside = fx0 >= 0 && fy0 >= 0 && fx1 >= 0 && fy1 >= 0 && fx0 <= w - 1 &&
                   fx1 <= w - 1 && fy0 <= h - 1 && fy1 <= h - 1;
@@ -119,6 +129,9 @@ static void canvas_line(double fx0, double fy0, double fx1, double fy1, Uint32 p
     /* Non-negative now: rounding by truncation. */
     int x0 = (int)(fx0 + 0.5), y0 = (int)(fy0 + 0.5), x1 = (int)(fx1 + 0.5),
         y1 = (int)(fy1 + 0.5);
+    int low = y0 < y1 ? y0 : y1, high = y0 < y1 ? y1 : y0;
+    if (high < band.top || low >= band.bottom) return;
+    bool whole = low >= band.top && high < band.bottom;
     int dx = abs(x1 - x0), dy = -abs(y1 - y0);
     int sx = x0 < x1 ? 1 : -1, sy = y0 < y1 ? 1 : -1;
     int error = dx + dy;
@@ -126,7 +139,7 @@ static void canvas_line(double fx0, double fy0, double fx1, double fy1, Uint32 p
     Uint32 *at = row_of(y0) + x0;
     int step_y = sy * (raster.canvas->pitch / 4);
     for (;;) {
-        *at = pixel;
+        if (whole || (y0 >= band.top && y0 < band.bottom)) *at = pixel;
         if (x0 == x1 && y0 == y1) break;
         int e2 = 2 * error;
         if (e2 >= dy) {
@@ -142,13 +155,13 @@ static void canvas_line(double fx0, double fy0, double fx1, double fy1, Uint32 p
     }
 }
 
-static void outline(const vector_t *p, int n, palette_rgb_t color) {
+static void outline(const vector_t *p, int n, palette_rgb_t color, band_t band) {
     if (n < 2 || raster.width <= 0) return;
     if (raster.canvas != NULL) {
         Uint32 pixel = SDL_MapRGB(raster.canvas->format, color.r, color.g, color.b);
         for (int i = 0; i < n; i++) {
             vector_t a = p[i], b = p[i + 1 < n ? i + 1 : 0];
-            canvas_line(a.x, a.y, b.x, b.y, pixel);
+            canvas_line(a.x, a.y, b.x, b.y, pixel, band);
         }
         return;
     }
@@ -185,20 +198,117 @@ static void geometry_fill(const batch_t *batch) {
     SDL_RenderFlush(raster.renderer);
 }
 
-void raster_batch(const batch_t *batch) {
-    if (batch->run_count == 0 || raster.width <= 0) return;
+/* The batch's fills, then its outlines, in the band. */
+static void draw_band(const batch_t *batch, band_t band) {
     vector_t p[BATCH_MAX_POLYGON];
     if (raster.canvas != NULL && !batch->translucent) {
         for (size_t i = 0; i < batch->run_count; i++) {
             const batch_run_t *run = &batch->runs[i];
             const batch_vertex_t *v = &batch->vertices[run->first];
-            canvas_fill(p, run_pixels(batch, run, p), (palette_rgb_t){v->r, v->g, v->b});
+            canvas_fill(p, run_pixels(batch, run, p), (palette_rgb_t){v->r, v->g, v->b}, band);
         }
-    } else {
-        geometry_fill(batch);
     }
     for (size_t i = 0; i < batch->run_count; i++) {
         const batch_run_t *run = &batch->runs[i];
-        if (run->outlined) outline(p, run_pixels(batch, run, p), run->outline);
+        if (run->outlined) outline(p, run_pixels(batch, run, p), run->outline, band);
     }
+}
+
+/* A second thread that draws the lower band of large batches while the
+ * caller draws the upper one (the physics threads wait while a frame is
+ * drawn). */
+typedef struct {
+    SDL_Thread *thread;
+    SDL_sem *go, *done;
+    const batch_t *batch;
+    band_t band;
+    bool quit, failed;
+} raster_helper_t;
+static raster_helper_t helper;
+static bool split_allowed = true;
+
+void raster_set_split(bool split) {
+    split_allowed = split;
+}
+
+/* Smaller batches stay on the calling thread: handing half of a few
+ * polygons over is not worth a thread's wake-up (a guess, not tuned). */
+enum { RASTER_SPLIT_RUNS = 256 };
+
+static int helper_main(void *unused) {
+    (void)unused;
+    for (;;) {
+        SDL_SemWait(helper.go);
+        if (helper.quit) return 0;
+        draw_band(helper.batch, helper.band);
+        SDL_SemPost(helper.done);
+    }
+}
+
+static bool helper_ready(void) {
+    if (helper.thread != NULL) return true;
+    if (helper.failed) return false;
+    helper.go = SDL_CreateSemaphore(0);
+    helper.done = SDL_CreateSemaphore(0);
+    if (helper.go != NULL && helper.done != NULL) {
+        helper.thread = SDL_CreateThread(helper_main, "raster", NULL);
+    }
+    helper.failed = helper.thread == NULL;
+    return !helper.failed;
+}
+
+void raster_free(void) {
+    if (helper.thread != NULL) {
+        helper.quit = true;
+        SDL_SemPost(helper.go);
+        SDL_WaitThread(helper.thread, NULL);
+    }
+    if (helper.go != NULL) SDL_DestroySemaphore(helper.go);
+    if (helper.done != NULL) SDL_DestroySemaphore(helper.done);
+    helper = (raster_helper_t){0};
+}
+
+/* The row above which about half of the batch's polygons start (to a
+ * sixty-fourth of the height): a pile fills the bottom of the view, so
+ * halving the rows would not halve the work. */
+enum { BALANCE_BUCKETS = 64 };
+
+static int balanced_row(const batch_t *batch) {
+    size_t count[BALANCE_BUCKETS] = {0};
+    double per_row = (double)BALANCE_BUCKETS / raster.height;
+    for (size_t i = 0; i < batch->run_count; i++) {
+        double y = batch->vertices[batch->runs[i].first].y * per_row;
+        int bucket = y < 0.0 ? 0 : y >= BALANCE_BUCKETS ? BALANCE_BUCKETS - 1 : (int)y;
+        count[bucket]++;
+    }
+    size_t above = 0;
+    int bucket = 0;
+    while (bucket < BALANCE_BUCKETS - 1 && 2 * (above + count[bucket]) <= batch->run_count) {
+        above += count[bucket++];
+    }
+    int row = (int)((bucket + 1) / per_row);
+    return row < 1 ? 1 : row >= raster.height ? raster.height - 1 : row;
+}
+
+void raster_batch(const batch_t *batch) {
+    if (batch->run_count == 0 || raster.width <= 0) return;
+    band_t all = {0, raster.height};
+    if (raster.canvas == NULL || batch->translucent) {
+        geometry_fill(batch);
+        if (raster.canvas == NULL) {
+            draw_band(batch, all);
+            return;
+        }
+    }
+    if (!split_allowed || batch->run_count < RASTER_SPLIT_RUNS || raster.height < 2 ||
+        !helper_ready()) {
+        draw_band(batch, all);
+        return;
+    }
+    int middle = balanced_row(batch);
+    helper.batch = batch;
+    helper.band = (band_t){middle, raster.height};
+    SDL_SemPost(helper.go);
+    draw_band(batch, (band_t){0, middle});
+    SDL_SemWait(helper.done);
 }

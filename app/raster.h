@@ -15,6 +15,7 @@
  */
 
 #include <SDL.h>
+#include <stdbool.h>
 #include "batch.h"
 
 /* Batches are drawn into canvas (a 32-bit surface that renderer draws into)
@@ -23,7 +24,15 @@
 void raster_begin(SDL_Renderer *renderer, SDL_Surface *canvas);
 
 /* Draws the batch over what is there, clipped to the canvas or the
- * renderer's output. */
+ * renderer's output. A large batch going into the canvas is drawn by two
+ * threads, each in its own half of the rows: the same pixels as one. */
 void raster_batch(const batch_t *batch);
+
+/* Whether a large batch may go to two threads (true until set): the tests
+ * draw the same batch both ways and compare. */
+void raster_set_split(bool split);
+
+/* Stops the second drawing thread, if one was started. */
+void raster_free(void);
 
 #endif

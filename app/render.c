@@ -47,6 +47,7 @@ void render_free(void) {
     batch_free(&arrow_batch);
     batch_free(&impulse_batch);
     edge_markers_free();
+    raster_free();
 }
 
 /* Every body in view, fill and outline, in one batch: each body's polygon

@@ -1691,12 +1691,8 @@ static void test_docs_pictures_regenerate(void) {
     free(doc);
 }
 
-typedef struct {
-    const char *name;
-    void (*run)(void);
-} smoke_test_t;
 
-static const smoke_test_t TESTS[] = {
+static const app_test_t TESTS[] = {
     {"app_smoke.dropped_bodies_rest_on_floor", test_dropped_bodies_rest_on_floor},
     {"app_smoke.overlays_on_while_colliding", test_overlays_on_while_colliding},
     {"app_smoke.overlays_off_draw_nothing", test_overlays_off_draw_nothing},
@@ -1755,16 +1751,5 @@ int main(int argc, char **argv) {
     mkdir("build", 0755);
     mkdir("build/tests", 0755);
     mkdir(TMP_DIR, 0755);
-    size_t passed = 0, failed = 0;
-    for (size_t i = 0; i < TEST_COUNT; i++) {
-        if (filter != NULL && strstr(TESTS[i].name, filter) == NULL) continue;
-        app_failures = 0;
-        TESTS[i].run();
-        printf("%s %s\n", app_failures == 0 ? "PASS" : "FAIL", TESTS[i].name);
-        fflush(stdout);
-        if (app_failures == 0) passed++;
-        else failed++;
-    }
-    printf("%zu passed, %zu failed\n", passed, failed);
-    return failed == 0 ? 0 : 1;
+    return app_run_tests(TESTS, TEST_COUNT, filter);
 }

@@ -828,12 +828,7 @@ static void test_batch_culls_what_is_out_of_view(void) {
     EXPECT(!batch_polygon_visible(p, 4, w, h), "a polygon with a NaN vertex was not culled");
 }
 
-typedef struct {
-    const char *name;
-    void (*run)(void);
-} unit_test_t;
-
-static const unit_test_t TESTS[] = {
+static const app_test_t TESTS[] = {
     {"app_units.numbers_never_show_negative_zero", test_numbers_never_show_negative_zero},
     {"app_units.large_numbers_shorten_to_fit", test_large_numbers_shorten_to_fit},
     {"app_units.fit_and_wrap", test_fit_and_wrap},
@@ -863,14 +858,5 @@ static const unit_test_t TESTS[] = {
 };
 
 int main(void) {
-    size_t passed = 0, failed = 0;
-    for (size_t i = 0; i < sizeof(TESTS) / sizeof(TESTS[0]); i++) {
-        app_failures = 0;
-        TESTS[i].run();
-        printf("%s %s\n", app_failures == 0 ? "PASS" : "FAIL", TESTS[i].name);
-        if (app_failures == 0) passed++;
-        else failed++;
-    }
-    printf("%zu passed, %zu failed\n", passed, failed);
-    return failed == 0 ? 0 : 1;
+    return app_run_tests(TESTS, sizeof(TESTS) / sizeof(TESTS[0]), NULL);
 }
