@@ -60,6 +60,7 @@ typedef struct {
     double fps;
     double frame_ms;         /* whole frame, events to present */
     double physics_ms;       /* per step */
+    double planned_step_s;   /* per step, as the frame budget plans (step_clock_step_cost) */
     double render_ms;        /* drawing the frame */
     int steps;               /* physics steps in the last frame */
     /* Totals since the start (for --stats). */

@@ -436,7 +436,7 @@ int main(int argc, char **argv) {
         app.step_budget = o.headless ? 0
                                      : step_clock_budget(1.0 / video.refresh_hz,
                                                          app.timing.render_ms / 1000.0,
-                                                         app.timing.physics_ms / 1000.0);
+                                                         app.timing.planned_step_s);
         int steps = app_plan_steps(&app, frame_dt);
         stepper_begin(stepper, steps);
         double present_s = 0.0;
@@ -467,6 +467,7 @@ int main(int argc, char **argv) {
         double frame_s = seconds_since(frame_start);
         t->steps = steps;
         if (steps > 0) t->physics_ms = smooth(t->physics_ms, 1000.0 * physics_s / steps);
+        t->planned_step_s = step_clock_step_cost(t->planned_step_s, physics_s, steps);
         t->render_ms = smooth(t->render_ms, 1000.0 * render_s);
         t->frame_ms = smooth(t->frame_ms, 1000.0 * frame_s);
         t->total_steps += (uint64_t)steps;

@@ -26,6 +26,13 @@ int step_clock_budget(double period, double other, double per_step) {
     return fit < 1.0 ? 1 : (int)fmin(fit, 100000.0);
 }
 
+double step_clock_step_cost(double cost, double seconds, int steps) {
+    if (steps <= 0 || !(seconds >= 0.0)) return cost;
+    double per_step = seconds / steps;
+    if (cost == 0.0) return per_step;
+    return steps >= 2 || per_step < cost ? 0.9 * cost + 0.1 * per_step : cost;
+}
+
 int step_clock_advance_within(step_clock_t *clock, double dt, int budget) {
     double step = step_clock_step(clock);
     int max_steps = step_clock_max_steps(clock);

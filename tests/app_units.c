@@ -166,6 +166,25 @@ static void test_clock_forgives_a_stall(void) {
            "forgave %.4f s", clock.forgiven);
 }
 
+/* A frame held to one step pays the frame's start-up alone; planning with
+ * that cost kept a 5000-body pile held to one step a frame for good. Only
+ * frames of two steps or more raise the cost; a cheaper frame lowers it. */
+static void test_step_cost_is_planned_from_frames_of_two_steps(void) {
+    double cost = step_clock_step_cost(0.0, 0.0049, 1);
+    EXPECT(cost == 0.0049, "the first frame's cost is taken: %g", cost);
+    cost = step_clock_step_cost(0.0040, 0.0080, 2);
+    EXPECT(cost == 0.0040, "two steps of 4 ms keep 4 ms: %g", cost);
+    for (int frame = 0; frame < 100; frame++) cost = step_clock_step_cost(cost, 0.0060, 1);
+    EXPECT(cost == 0.0040, "single steps of 6 ms raised the cost to %g", cost);
+    EXPECT(step_clock_budget(1.0 / 60.0, 0.006, cost) == 2, "two steps no longer fit");
+    for (int frame = 0; frame < 100; frame++) cost = step_clock_step_cost(cost, 0.0120, 2);
+    EXPECT(fabs(cost - 0.006) < 1e-6, "two steps of 6 ms each: the cost is %g", cost);
+    for (int frame = 0; frame < 100; frame++) cost = step_clock_step_cost(cost, 0.0010, 1);
+    EXPECT(fabs(cost - 0.001) < 1e-6, "single steps of 1 ms: the cost is %g", cost);
+    EXPECT(step_clock_step_cost(cost, NAN, 2) == cost, "a NaN time changed the cost");
+    EXPECT(step_clock_step_cost(cost, 0.01, 0) == cost, "a frame of no steps changed the cost");
+}
+
 /* A machine whose step takes 10 ms while drawing takes 8 ms (5000 bodies on
  * two shared cores): one step fits a 60 Hz frame. Held to it, every frame
  * runs one step, however late the frames come, and the debt never builds:
@@ -837,6 +856,8 @@ static const app_test_t TESTS[] = {
      test_clock_keeps_real_time_through_late_frames},
     {"app_units.clock_forgives_a_stall", test_clock_forgives_a_stall},
     {"app_units.clock_held_to_the_frame_budget", test_clock_held_to_the_frame_budget},
+    {"app_units.step_cost_is_planned_from_frames_of_two_steps",
+     test_step_cost_is_planned_from_frames_of_two_steps},
     {"app_units.layout_leaves_the_view_free", test_layout_leaves_the_view_free},
     {"app_units.energy_drift_from_its_reference", test_energy_drift_from_its_reference},
     {"app_units.energy_drift_chart_window_and_scale", test_energy_drift_chart_window_and_scale},
