@@ -86,9 +86,9 @@ static bool is_slow(const solver_velocity_t *row, const solver_displacement_t *m
     return body->sleep_time >= SLEEP_TIME;
 }
 
-size_t sleep_time_bodies(const sleep_step_t *step) {
+size_t sleep_time_bodies(const sleep_step_t *step, size_t begin, size_t end) {
     size_t ready = 0;
-    for (size_t i = 0; i < step->count; i++) {
+    for (size_t i = begin; i < end; i++) {
         body_t *body = step->bodies[i];
         if (!body_is_movable(body) || body->removed) continue;
         ready += is_slow(&step->velocities[i], &step->displacements[i], &step->states[i], step->dt,

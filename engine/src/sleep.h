@@ -73,10 +73,12 @@ typedef struct {
     uint32_t a, b;
 } sleep_link_t;
 
-/* Advances each movable body's sleep timer; returns how many have been
- * slow for SLEEP_TIME. When none has, no island can sleep: the caller need
- * not list its contacts for sleep_islands. */
-size_t sleep_time_bodies(const sleep_step_t *step);
+/* Advances the sleep timer of each movable body of rows [begin, end);
+ * returns how many of them have been slow for SLEEP_TIME. When none of all
+ * the rows has, no island can sleep: the caller need not list its contacts
+ * for sleep_islands. Each row writes only its own body, so ranges may run
+ * on different threads. */
+size_t sleep_time_bodies(const sleep_step_t *step, size_t begin, size_t end);
 
 /* Islands are joined at most every SLEEP_CHECK_STEPS steps: true when
  * this is such a step (and counts it). */

@@ -640,6 +640,25 @@ static bool is_touching(const solver_contact_t *c) {
     return false;
 }
 
+/* The sleep timers over the workers, each chunk counting its ready bodies. */
+typedef struct {
+    const sleep_step_t *step;
+    size_t ready[WORKERS_MAX_CHUNKS];
+} sleep_split_t;
+
+static void time_chunk(void *context, size_t chunk, size_t begin, size_t end) {
+    sleep_split_t *split = context;
+    split->ready[chunk] = sleep_time_bodies(split->step, begin, end);
+}
+
+static size_t time_bodies(world_t *world, const sleep_step_t *step) {
+    sleep_split_t split = {step, {0}};
+    world_for_bodies(world, step->count, time_chunk, &split);
+    size_t ready = 0;
+    for (size_t k = 0; k < WORKERS_MAX_CHUNKS; k++) ready += split.ready[k];
+    return ready;
+}
+
 /* Hands the step to sleep.c; the touching contacts are listed and the
  * islands joined only when some body has been slow long enough for its
  * island to sleep, and then every SLEEP_CHECK_STEPS steps (a pile whose
@@ -649,7 +668,7 @@ static void update_sleep(world_t *world, body_t **bodies, size_t count, double d
     sleep_step_t step = {bodies,          world->velocities, world->displacements,
                          world->states,   world->proxies,    count,
                          dt,              CONTACT_MARGIN};
-    if (sleep_time_bodies(&step) > 0 && sleep_is_check_step(&world->sleep)) {
+    if (time_bodies(world, &step) > 0 && sleep_is_check_step(&world->sleep)) {
         memory_reserve((void **)&world->links, &world->link_capacity, world->contact_count,
                        sizeof(sleep_link_t));
         size_t link_count = 0;
