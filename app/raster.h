@@ -25,7 +25,7 @@ void raster_begin(SDL_Renderer *renderer, SDL_Surface *canvas);
 
 /* Draws the batch over what is there, clipped to the canvas or the
  * renderer's output. A large batch going into the canvas is drawn by two
- * threads, each in its own half of the rows: the same pixels as one. */
+ * threads, each in its own rows: the same pixels as one thread draws. */
 void raster_batch(const batch_t *batch);
 
 /* Whether a large batch may go to two threads (true until set): the tests
