@@ -278,7 +278,7 @@ static int balanced_row(const batch_t *batch) {
     double per_row = (double)BALANCE_BUCKETS / raster.height;
     for (size_t i = 0; i < batch->run_count; i++) {
         double y = batch->vertices[batch->runs[i].first].y * per_row;
-        int bucket = y < 0.0 ? 0 : y >= BALANCE_BUCKETS ? BALANCE_BUCKETS - 1 : (int)y;
+        int bucket = !(y >= 0.0) ? 0 : y >= BALANCE_BUCKETS ? BALANCE_BUCKETS - 1 : (int)y;
         count[bucket]++;
     }
     size_t above = 0;
