@@ -306,6 +306,11 @@ int main(int argc, char **argv) {
         fputc('\n', stderr);
         return 0;
     }
+    if (argc > 2 || (argc == 2 && argv[1][0] == '-')) {
+        fprintf(stderr, "usage: bench_stages [REPORT.md]   (default docs/leave-out.md)\n"
+                        "       bench_stages --orbit STEPS\n");
+        return argc == 2 && strcmp(argv[1], "--help") == 0 ? 0 : 2;
+    }
     const char *path = argc > 1 ? argv[1] : "docs/leave-out.md";
     FILE *md = fopen(path, "w");
     if (md == NULL) {
