@@ -341,8 +341,8 @@ static void bouncy_pile_comes_to_rest(void) {
     scene_free(scene);
 }
 
-/* Deep, the same: 240 polygons 0.2 m across, at the sandbox's elasticity
- * and timestep, fill a 4 m wide container about 5 m high. Bounced after the
+/* Deep, the same: 240 polygons of radius 0.2 m, at the sandbox's elasticity
+ * and timestep, fill a 3 m wide container about 10 m high. Bounced after the
  * warm start, the pile boiled: the velocities warm starting leaves inside a
  * deep pile approach faster than the threshold, and the pass bounced them
  * (at 12 s, 2 m/s and more; the sandbox's 5000 never settled). */
