@@ -38,8 +38,8 @@ APP_SMOKE_DEPS := sandbox
 
 # The scan converter's two threads against one (tests/app_raster.c): SDL2
 # only, no window.
-APP_RASTER_SRC := tests/app_raster.c app/raster.c app/batch.c
-build/tests/app_raster: $(APP_RASTER_SRC) tests/app_expect.h app/raster.h app/batch.h \
+APP_RASTER_SRC := tests/app_raster.c app/raster.c app/batch.c app/job_thread.c
+build/tests/app_raster: $(APP_RASTER_SRC) tests/app_expect.h app/raster.h app/batch.h app/job_thread.h \
                         app/palette.h app/app.mk
 	@mkdir -p $(dir $@)
 	$(CC) $(CSTD) $(WARN) -O1 -g $(SAN) -Iapp -Iengine/include $(SANDBOX_CFLAGS) \

@@ -2,6 +2,7 @@
 #include <math.h>
 #include <stdbool.h>
 #include <stdlib.h>
+#include "job_thread.h"
 
 static struct {
     SDL_Renderer *renderer;
@@ -216,56 +217,41 @@ static void draw_band(const batch_t *batch, band_t band) {
 
 /* A second thread that draws the lower band of large batches while the
  * caller draws the upper one (the physics threads wait while a frame is
- * drawn). */
-typedef struct {
-    SDL_Thread *thread;
-    SDL_sem *go, *done;
-    const batch_t *batch;
-    band_t band;
-    bool quit, failed;
-} raster_helper_t;
-static raster_helper_t helper;
+ * drawn); NULL until the first large batch, or when none can be made. */
+static job_thread_t *helper;
+static bool helper_failed;
 static bool split_allowed = true;
 
 void raster_set_split(bool split) {
     split_allowed = split;
 }
 
+typedef struct {
+    const batch_t *batch;
+    band_t band;
+} band_job_t;
+
+static void draw_band_job(void *context) {
+    const band_job_t *job = context;
+    draw_band(job->batch, job->band);
+}
+
 /* Smaller batches stay on the calling thread: handing half of a few
  * polygons over is not worth a thread's wake-up (a guess, not tuned). */
 enum { RASTER_SPLIT_RUNS = 256 };
 
-static int helper_main(void *unused) {
-    (void)unused;
-    for (;;) {
-        SDL_SemWait(helper.go);
-        if (helper.quit) return 0;
-        draw_band(helper.batch, helper.band);
-        SDL_SemPost(helper.done);
-    }
-}
-
 static bool helper_ready(void) {
-    if (helper.thread != NULL) return true;
-    if (helper.failed) return false;
-    helper.go = SDL_CreateSemaphore(0);
-    helper.done = SDL_CreateSemaphore(0);
-    if (helper.go != NULL && helper.done != NULL) {
-        helper.thread = SDL_CreateThread(helper_main, "raster", NULL);
+    if (helper == NULL && !helper_failed) {
+        helper = job_thread_start("raster");
+        helper_failed = helper == NULL;
     }
-    helper.failed = helper.thread == NULL;
-    return !helper.failed;
+    return helper != NULL;
 }
 
 void raster_free(void) {
-    if (helper.thread != NULL) {
-        helper.quit = true;
-        SDL_SemPost(helper.go);
-        SDL_WaitThread(helper.thread, NULL);
-    }
-    if (helper.go != NULL) SDL_DestroySemaphore(helper.go);
-    if (helper.done != NULL) SDL_DestroySemaphore(helper.done);
-    helper = (raster_helper_t){0};
+    job_thread_stop(helper);
+    helper = NULL;
+    helper_failed = false;
 }
 
 /* The row above which about half of the batch's polygons start (to a
@@ -306,9 +292,8 @@ void raster_batch(const batch_t *batch) {
         return;
     }
     int middle = balanced_row(batch);
-    helper.batch = batch;
-    helper.band = (band_t){middle, raster.height};
-    SDL_SemPost(helper.go);
+    band_job_t lower = {batch, {middle, raster.height}};
+    job_thread_begin(helper, draw_band_job, &lower);
     draw_band(batch, (band_t){0, middle});
-    SDL_SemWait(helper.done);
+    job_thread_finish(helper);
 }
