@@ -6,6 +6,11 @@
 # make stability  stiff and extreme cases beside theory and the peers (docs/stability.md)
 # make tsan       the threaded tests (scene_set_workers) under ThreadSanitizer
 
+# Every build uses all cores unless the command line says otherwise (make -j1).
+ifeq ($(filter -j%,$(MAKEFLAGS)),)
+MAKEFLAGS += -j$(shell nproc 2>/dev/null || echo 2)
+endif
+
 CC ?= cc
 CSTD := -std=c11 -D_POSIX_C_SOURCE=200809L -D_DEFAULT_SOURCE
 WARN := -Wall -Wextra -Werror -Wshadow -Wstrict-prototypes

@@ -89,12 +89,19 @@ build/tests/app_smoke: $(APP_SMOKE_SRC) tests/app_image.h tests/app_expect.h app
 CHECK_PROGRAMS += build/tests/app_units build/tests/app_smoke
 
 # Installs the Debian packages when they are missing (as root; otherwise it
-# prints the command), then builds and starts the sandbox.
+# prints the command), quietly: one line says what and why, apt's output goes
+# to build/apt.log and is shown only when it fails.
 sandbox-deps:
 	@if ! pkg-config --exists $(SANDBOX_PKGS) 2>/dev/null; then \
 	    if [ "$$(id -u)" = 0 ]; then \
-	        echo "Installing $(SANDBOX_APT)"; \
-	        apt-get update && apt-get install -y $(SANDBOX_APT) || exit 1; \
+	        mkdir -p build; \
+	        echo "make run: installing $(SANDBOX_APT) (the sandbox's window, drawing and screenshots) with apt-get; log in build/apt.log"; \
+	        if DEBIAN_FRONTEND=noninteractive apt-get -qq update >build/apt.log 2>&1 && \
+	           DEBIAN_FRONTEND=noninteractive apt-get -qq install -y --no-install-recommends $(SANDBOX_APT) >>build/apt.log 2>&1; then \
+	            echo "make run: installed."; \
+	        else \
+	            tail -n 20 build/apt.log; echo "make run: apt-get failed (build/apt.log has the whole log)"; exit 1; \
+	        fi; \
 	    else \
 	        echo "The sandbox needs SDL2, SDL2_gfx and SDL2_image. Install them with:"; \
 	        echo "    sudo apt-get install -y $(SANDBOX_APT)"; \
