@@ -59,15 +59,18 @@ typedef struct {
 } pair_gap_t;
 
 /* What a contact needs beyond the solver's constraint: who, where, the key
- * that finds it again next step, and its features with the pose they were
- * found at. */
+ * that finds it again next step, its features with the pose they were
+ * found at, and where the pair's contact of the step before lies
+ * (NO_CONTACT: it had none). */
 typedef struct {
     uint64_t key;
     body_t *body_a, *body_b;
     vector_t points[2];
     manifold_features_t features;
     relative_pose_t pose;
+    uint32_t previous;
 } contact_source_t;
+static const uint32_t NO_CONTACT = UINT32_MAX;
 
 /* What the narrowphase finds for one pair: its manifold and features,
  * the pose they were found at, and last step's contact (SIZE_MAX: none);
@@ -108,6 +111,13 @@ struct world {
     solver_contact_t *old_contacts;
     contact_source_t *old_sources;
     size_t old_count, old_contact_capacity, old_source_capacity;
+    /* The contacts of the step before last, read only when the step's
+     * length changes (warm_rescaled). */
+    solver_contact_t *older_contacts;
+    size_t older_contact_capacity;
+    /* The lengths of the last step and of the one before it (s, 0 before
+     * there was one); this step's over last step's, and over their sum. */
+    double last_dt, older_dt, warm_ratio, warm_share;
 
     /* This step's and last step's pairs that were apart (pair_gap_t),
      * grouped by body a as the contacts are. */
@@ -160,6 +170,7 @@ void world_free(world_t *world) {
     memory_free(world->anchors);
     memory_free(world->sources);
     memory_free(world->old_contacts);
+    memory_free(world->older_contacts);
     memory_free(world->old_sources);
     memory_free(world->gaps);
     memory_free(world->old_gaps);
@@ -350,8 +361,54 @@ static bool still_apart(const pair_gap_t *gap, relative_pose_t now, const body_t
     return gap->separation - moved > margin;
 }
 
-/* Copies last step's impulses to the points that are the same features. */
-WORLD_INLINE void warm_from_old(solver_contact_t *contact, const solver_contact_t *old) {
+/* The point of contact c that is the feature id; NULL when it has none. */
+static const solver_point_t *same_point(const solver_contact_t *c, uint32_t id) {
+    for (int j = 0; j < c->point_count; j++) {
+        if (c->points[j].id == id) return &c->points[j];
+    }
+    return NULL;
+}
+
+/*
+ * Last step's impulses carried into a step of another length. An impulse
+ * is a force times its step, so what carries over is the point's force:
+ * its impulses of the last two steps over their summed length, times this
+ * step's dt (a point of one step: its impulses times the ratio of the
+ * steps). Last step's force alone also holds the impulse that stopped what
+ * the step before left moving, and times the ratio that impulse returns as
+ * a kick that grows from step to step (docs/api.md, Step size).
+ */
+static void warm_rescaled(const world_t *world, solver_contact_t *contact, size_t old_index) {
+    const solver_contact_t *old = &world->old_contacts[old_index];
+    uint32_t previous = world->old_sources[old_index].previous;
+    const solver_contact_t *older =
+        previous != NO_CONTACT ? &world->older_contacts[previous] : NULL;
+    for (int i = 0; i < contact->point_count; i++) {
+        solver_point_t *point = &contact->points[i];
+        const solver_point_t *last = same_point(old, point->id);
+        if (last == NULL) continue;
+        const solver_point_t *before = older != NULL ? same_point(older, point->id) : NULL;
+        if (before != NULL) {
+            point->normal_impulse =
+                world->warm_share * (last->normal_impulse + before->normal_impulse);
+            point->tangent_impulse =
+                world->warm_share * (last->tangent_impulse + before->tangent_impulse);
+        } else {
+            point->normal_impulse = world->warm_ratio * last->normal_impulse;
+            point->tangent_impulse = world->warm_ratio * last->tangent_impulse;
+        }
+    }
+}
+
+/* Copies last step's impulses to the points that are the same features;
+ * rescaled when this step is not as long as the last (warm_rescaled). */
+WORLD_INLINE void warm_from_old(const world_t *world, solver_contact_t *contact,
+                                size_t old_index) {
+    if (world->warm_ratio != 1.0) {
+        warm_rescaled(world, contact, old_index);
+        return;
+    }
+    const solver_contact_t *old = &world->old_contacts[old_index];
     for (int i = 0; i < contact->point_count; i++) {
         for (int j = 0; j < old->point_count; j++) {
             if (contact->points[i].id != old->points[j].id) continue;
@@ -401,7 +458,8 @@ WORLD_INLINE void add_contact(world_t *world, size_t n, body_t *a, body_t *b,
     source->body_b = b;
     source->features = found->features;
     source->pose = found->pose;
-    if (found->old != SIZE_MAX) warm_from_old(contact, &world->old_contacts[found->old]);
+    source->previous = found->old != SIZE_MAX ? (uint32_t)found->old : NO_CONTACT;
+    if (found->old != SIZE_MAX) warm_from_old(world, contact, found->old);
 }
 
 /* The manifold of the broadphase's pair (a, b), reusing last step's
@@ -565,11 +623,14 @@ static void swap_buffers(void **now, size_t *now_capacity, void **old, size_t *o
     *old_capacity = capacity;
 }
 
-/* Last step's contacts and gaps become the old ones; this step's are
- * written over the buffers of the step before. */
+/* Last step's contacts and gaps become the old ones, and the old contacts
+ * the older; this step's are written over the buffers of the step before
+ * (the contacts' over those of two steps before). */
 static void swap_contact_buffers(world_t *world) {
     swap_buffers((void **)&world->contacts, &world->contact_capacity,
                  (void **)&world->old_contacts, &world->old_contact_capacity);
+    swap_buffers((void **)&world->contacts, &world->contact_capacity,
+                 (void **)&world->older_contacts, &world->older_contact_capacity);
     swap_buffers((void **)&world->sources, &world->source_capacity,
                  (void **)&world->old_sources, &world->old_source_capacity);
     swap_buffers((void **)&world->gaps, &world->gap_capacity, (void **)&world->old_gaps,
@@ -726,8 +787,19 @@ static size_t gather_awake(world_t *world, body_t **bodies, const integrator_mot
     return active;
 }
 
+/* The ratios by which warm starting rescales last step's impulses when
+ * this step's dt differs (warm_rescaled); the ratio is exactly 1 for an
+ * equal dt, and the impulses are then copied unchanged. */
+static void time_step(world_t *world, double dt) {
+    world->warm_ratio = world->last_dt > 0.0 ? dt / world->last_dt : 1.0;
+    world->warm_share = world->last_dt > 0.0 ? dt / (world->last_dt + world->older_dt) : 1.0;
+    world->older_dt = world->last_dt;
+    world->last_dt = dt;
+}
+
 void world_step(world_t *world, body_t **bodies, integrator_motion_t *motions, size_t count,
                 const world_step_t *step, scene_stats_t *stats) {
+    time_step(world, step->dt);
     /* Nobody asleep: every body is in the step, with nothing to gather. */
     if (!step->sleeping || !sleep_any(&world->sleep)) {
         run_pipeline(world, bodies, motions, count, step, stats, bodies, count);

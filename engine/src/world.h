@@ -9,8 +9,9 @@
  * stay readable until the next step.
  *
  * It keeps last step's contacts, keyed by the pair's body ids, to warm-start
- * this step's with their impulses. All arrays are reused: a warm step
- * allocates nothing.
+ * this step's with their impulses, and the contacts of the step before, so
+ * that a step of another length starts from their force instead (world.c,
+ * warm_rescaled). All arrays are reused: a warm step allocates nothing.
  */
 
 #include <stdbool.h>
