@@ -934,6 +934,10 @@ BAD_CALL(gravity_nan_g, create_newtonian_gravity(scene_init(), NAN, any_body(), 
 BAD_CALL(spring_null_body, create_spring(scene_init(), 1.0, any_body(), NULL))
 BAD_CALL(spring_negative_k, create_spring(scene_init(), -2.0, any_body(), any_body()))
 BAD_CALL(spring_infinite_k, create_spring(scene_init(), INFINITY, any_body(), any_body()))
+BAD_CALL(spring_to_itself, {
+    body_t *body = any_body();
+    create_spring(scene_init(), 1.0, body, body);
+})
 BAD_CALL(drag_null_body, create_drag(scene_init(), 1.0, NULL))
 BAD_CALL(drag_null_scene, create_drag(NULL, 1.0, any_body()))
 BAD_CALL(drag_negative_gamma, create_drag(scene_init(), -0.5, any_body()))
@@ -1073,6 +1077,8 @@ static void bad_input_aborts_with_message(void) {
     CHECK_DIES(spring_null_body, NULL, "engine error in create_spring:", "body2 is NULL");
     CHECK_DIES(spring_negative_k, NULL, "engine error in create_spring:", "k", "got -2");
     CHECK_DIES(spring_infinite_k, NULL, "engine error in create_spring:", "k", "inf");
+    CHECK_DIES(spring_to_itself, NULL, "engine error in create_spring:",
+               "a spring cannot join a body to itself");
     CHECK_DIES(drag_null_body, NULL, "engine error in create_drag:", "body is NULL");
     CHECK_DIES(drag_null_scene, NULL, "engine error in create_drag:", "scene is NULL");
     CHECK_DIES(drag_negative_gamma, NULL, "engine error in create_drag:", "gamma", "got -0.5");

@@ -20,8 +20,9 @@
  * naming the pair (scene.h). */
 void create_newtonian_gravity(scene_t *scene, double G, body_t *body1, body_t *body2);
 
-/* A Hooke spring of constant k (N/m, >= 0) and rest length 0 between the two
- * centroids: each body is pulled toward the other with k |x2 - x1|. With
+/* A Hooke spring of constant k (N/m, >= 0) and rest length 0 between the
+ * centroids of two distinct bodies (a spring from a body to itself is
+ * refused): each body is pulled toward the other with k |x2 - x1|. With
  * m the reduced mass m1 m2 / (m1 + m2) (the finite one against INFINITY) and
  * omega = sqrt(k / m), the seed and explicit Euler integrators multiply its
  * energy at every step by 1 + (omega dt)^2 / 2 (more once omega dt > 4) and

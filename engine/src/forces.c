@@ -226,6 +226,7 @@ void create_spring(scene_t *scene, double k, body_t *body1, body_t *body2) {
     REQUIRE_NOT_NULL(body1);
     REQUIRE_NOT_NULL(body2);
     REQUIRE(isfinite(k) && k >= 0.0, "k must be finite and >= 0 (got %g)", k);
+    REQUIRE(body1 != body2, "a spring cannot join a body to itself");
     claim_pair(scene, body1, body2, __func__);
     add_pair_force_creator(scene, spring, k, body1, body2);
 }
