@@ -495,8 +495,8 @@ void sandbox_step(sandbox_t *sandbox) {
 }
 
 /* The potential energy of the file's springs (1/2 k (d - L)^2, d the
- * distance between the centroids, L the rest length) and Newtonian gravity (-G m1 m2 / r between bodies
- * of finite mass, as forces.h applies it). */
+ * distance between the centroids, L the rest length) and Newtonian gravity
+ * (-G m1 m2 / r between bodies of finite mass, as forces.h applies it). */
 static double force_potential(scene_file_t *file) {
     double energy = 0.0;
     size_t count = scene_file_force_count(file);

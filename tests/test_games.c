@@ -44,6 +44,16 @@ static game_input_t idle(scene_file_t *file) {
     return (game_input_t){0.0, false};
 }
 
+/* Bodies with the tag, not marked removed. */
+static int count_tagged(scene_t *scene, const char *tag) {
+    int n = 0;
+    for (size_t i = 0; i < scene_bodies(scene); i++) {
+        body_t *body = scene_get_body(scene, i);
+        n += !body_is_removed(body) && game_body_has_tag(body, tag);
+    }
+    return n;
+}
+
 static double clamp_unit(double x) {
     return x < -1.0 ? -1.0 : x > 1.0 ? 1.0 : x;
 }
@@ -153,6 +163,40 @@ static void space_invaders_is_lost_by_a_still_gun(void) {
     scene_file_free(file);
 }
 
+static void space_invaders_gun_has_three_lives(void) {
+    /* A still gun under the bombs: three lives, one lost per bomb that
+     * reaches it; each hit clears the bombs in flight and the gun plays on
+     * (still in the scene, still playing) until the third, which loses the
+     * game with the gun in place. */
+    scene_file_t *file = load("assets/scenes/space_invaders.scene");
+    scene_t *scene = scene_file_get_scene(file);
+    double dt = scene_file_get_timestep(file);
+    char error[256];
+    game_t *game = game_start(file, error, sizeof error);
+    CHECK(game != NULL);
+    if (game == NULL) return;
+    CHECK(game_status(game).lives == 3);
+    int lives = 3, hits = 0;
+    for (double t = 0; t < 300 && game_status(game).outcome == GAME_PLAYING; t += dt) {
+        scene_tick(scene, dt);
+        game_update(game, (game_input_t){0}, dt);
+        game_status_t status = game_status(game);
+        if (status.lives == lives) continue;
+        hits++;
+        CHECK(status.lives == lives - 1);
+        lives = status.lives;
+        CHECK(count_tagged(scene, "bomb") == 0);
+        body_t *gun = scene_file_find_body(file, "player");
+        CHECK(gun != NULL && !body_is_removed(gun));
+        CHECK(status.outcome == (lives > 0 ? GAME_PLAYING : GAME_LOST));
+        CHECK(status.remaining == 32); /* the invaders were never shot */
+    }
+    CHECK(hits == 3);
+    CHECK(game_status(game).outcome == GAME_LOST && game_status(game).lives == 0);
+    game_free(game);
+    scene_file_free(file);
+}
+
 static void space_invaders_march_down_and_shoot(void) {
     /* Five seconds in: the formation has moved sideways, bombs have fallen
      * (spawned from the bomb template, tagged bomb) and the gun's shots fly. */
@@ -182,15 +226,6 @@ static void space_invaders_march_down_and_shoot(void) {
 }
 
 /* ---- Pegs and the interface ----------------------------------------------- */
-
-static int count_tagged(scene_t *scene, const char *tag) {
-    int n = 0;
-    for (size_t i = 0; i < scene_bodies(scene); i++) {
-        body_t *body = scene_get_body(scene, i);
-        n += !body_is_removed(body) && game_body_has_tag(body, tag);
-    }
-    return n;
-}
 
 static void pegs_drops_a_ball_every_second_and_freezes_it_where_it_lands(void) {
     /* The first ball: at the drop point (76 m up, within 0.5 m of the
@@ -320,6 +355,8 @@ TEST_SUITE(games, TEST_CASE(breakout_is_won_by_a_paddle_under_the_ball),
            TEST_CASE(breakout_is_lost_by_a_still_paddle),
            TEST_CASE(space_invaders_is_won_by_aimed_fire),
            TEST_CASE(space_invaders_is_lost_by_a_still_gun),
-           TEST_CASE(space_invaders_march_down_and_shoot), TEST_CASE(pegs_drops_a_ball_every_second_and_freezes_it_where_it_lands),
+           TEST_CASE(space_invaders_gun_has_three_lives),
+           TEST_CASE(space_invaders_march_down_and_shoot),
+           TEST_CASE(pegs_drops_a_ball_every_second_and_freezes_it_where_it_lands),
            TEST_CASE(pegs_clears_a_full_board),
            TEST_CASE(games_refuse_scenes_they_cannot_play));

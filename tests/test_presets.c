@@ -120,8 +120,8 @@ static void pegs_keep_every_ball_on_the_board(scene_file_t *file) {
             if (body_is_removed(body) || !(ball || tagged(body, "frozen"))) continue;
             falling += ball;
             vector_t at = body_get_centroid(body);
-            double margin = fmin(fmin(inside_wall(left, middle, at), inside_wall(right, middle, at)),
-                                 at.y);
+            double margin = fmin(inside_wall(left, middle, at), inside_wall(right, middle, at));
+            margin = fmin(margin, at.y); /* the floor's top is at y = 0 */
             worst = fmin(worst, margin);
             CHECK(margin > radius - slack);
         }
@@ -203,7 +203,8 @@ static void newtons_cradle_passes_the_blow_along_and_repeats(scene_file_t *file)
             }
         }
         for (int i = 1; i < 4; i++) {
-            middle = fmax(middle, vec_get_length(vec_subtract(body_get_centroid(ball[i]), rest[i])));
+            vector_t moved = vec_subtract(body_get_centroid(ball[i]), rest[i]);
+            middle = fmax(middle, vec_get_length(moved));
         }
     }
     CHECK(swings[0] >= 2 && swings[1] >= 2);
