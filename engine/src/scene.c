@@ -42,6 +42,9 @@ struct scene {
     size_t stage_force_count;
     /* The dt of the tick in progress, for the message of one that fails. */
     double dt;
+    /* "scene_tick" or "scene_free" while one runs (and calls back), else
+     * NULL: what may not be called back into then (scene_require_idle). */
+    const char *running;
 
     /* The world contact pipeline and its functions; NULL while contacts
      * are off. */
@@ -99,12 +102,30 @@ static void release_unowned_bodies(scene_t *scene) {
     }
 }
 
+void scene_require_idle(const scene_t *scene, const char *function, const char *instead) {
+    if (scene->running == NULL) return;
+    engine_fail(function,
+                "called inside %s of the same scene (by a force creator, collision handler or "
+                "freer it ran), which is still using the scene; %s",
+                scene->running, instead);
+}
+
+/* A body the scene owns, freed by the scene (body_free refuses a body that
+ * is still a scene's). */
+static void free_owned_body(body_t *body) {
+    body->scene = NULL;
+    body->in_scene = false;
+    body_free(body);
+}
+
 void scene_free(scene_t *scene) {
     REQUIRE_NOT_NULL(scene);
+    scene_require_idle(scene, __func__, "free the scene after scene_tick returns");
+    scene->running = "scene_free";
     scene_install_world(scene, NULL, NULL);
     release_unowned_bodies(scene);
     for (size_t i = 0; i < scene->force_count; i++) force_entry_free(&scene->forces[i]);
-    for (size_t i = 0; i < scene->body_count; i++) body_free(scene->bodies[i]);
+    for (size_t i = 0; i < scene->body_count; i++) free_owned_body(scene->bodies[i]);
     memory_free(scene->forces);
     memory_free(scene->bodies);
     memory_free(scene->record);
@@ -185,6 +206,9 @@ void scene_claim_body(scene_t *scene, body_t *body, const char *name, const char
     body->scene = scene;
 }
 
+/* What scene_require_idle says for the settings a tick is running with. */
+static const char *const SETTING_ADVICE = "change the setting between ticks";
+
 void scene_set_gravity(scene_t *scene, vector_t gravity) {
     REQUIRE_NOT_NULL(scene);
     REQUIRE_FINITE_VECTOR(gravity);
@@ -198,6 +222,7 @@ vector_t scene_get_gravity(scene_t *scene) {
 
 void scene_set_integrator(scene_t *scene, integrator_t integrator) {
     REQUIRE_NOT_NULL(scene);
+    scene_require_idle(scene, __func__, SETTING_ADVICE);
     REQUIRE((unsigned)integrator < INTEGRATOR_COUNT, "unknown integrator %d", (int)integrator);
     scene->integrator = integrator;
 }
@@ -220,6 +245,7 @@ static void wake_all(scene_t *scene) {
 
 void scene_set_sleeping(scene_t *scene, bool enabled) {
     REQUIRE_NOT_NULL(scene);
+    scene_require_idle(scene, __func__, SETTING_ADVICE);
     scene->sleeping = enabled;
     if (!enabled) wake_all(scene);
 }
@@ -250,6 +276,7 @@ bool scene_get_contacts_enabled(scene_t *scene) {
 void scene_set_solver_iterations(scene_t *scene, size_t velocity_iterations,
                                  size_t position_iterations) {
     REQUIRE_NOT_NULL(scene);
+    scene_require_idle(scene, __func__, SETTING_ADVICE);
     REQUIRE(velocity_iterations >= 1 && velocity_iterations <= 1000,
             "velocity_iterations must be in [1, 1000] (got %zu)", velocity_iterations);
     REQUIRE(position_iterations >= 1 && position_iterations <= 1000,
@@ -263,6 +290,7 @@ void scene_set_solver_iterations(scene_t *scene, size_t velocity_iterations,
 
 void scene_set_workers(scene_t *scene, size_t workers) {
     REQUIRE_NOT_NULL(scene);
+    scene_require_idle(scene, __func__, SETTING_ADVICE);
     REQUIRE(workers >= 1 && workers <= SCENE_MAX_WORKERS, "workers must be in [1, %d] (got %zu)",
             SCENE_MAX_WORKERS, workers);
     scene->workers = workers;
@@ -513,7 +541,7 @@ static void stage_reap(scene_t *scene) {
     for (size_t i = 0; i < scene->body_count; i++) {
         body_t *body = scene->bodies[i];
         if (body->removed) {
-            body_free(body);
+            free_owned_body(body);
             scene->stats.removed_bodies++;
         } else {
             scene->bodies[kept++] = body;
@@ -522,9 +550,7 @@ static void stage_reap(scene_t *scene) {
     scene->body_count = kept;
 }
 
-void scene_tick(scene_t *scene, double dt) {
-    REQUIRE_NOT_NULL(scene);
-    REQUIRE(isfinite(dt) && dt >= 0.0, "dt must be finite and >= 0 (got %g)", dt);
+static void tick(scene_t *scene, double dt) {
     scene->record_count = 0;
     scene->record_needs_world = false;
     scene->stats = (scene_stats_t){0};
@@ -546,4 +572,13 @@ void scene_tick(scene_t *scene, double dt) {
         scene->record_needs_world = true;
     }
     if (stage_integrate(scene, &step, motions)) stage_reap(scene);
+}
+
+void scene_tick(scene_t *scene, double dt) {
+    REQUIRE_NOT_NULL(scene);
+    scene_require_idle(scene, __func__, "tick the scene again after scene_tick returns");
+    REQUIRE(isfinite(dt) && dt >= 0.0, "dt must be finite and >= 0 (got %g)", dt);
+    scene->running = __func__;
+    tick(scene, dt);
+    scene->running = NULL;
 }

@@ -8,6 +8,11 @@
 #include "workers.h"
 #include "world.h"
 
+/* Stops the program, naming `function`, when it was called back from
+ * inside scene_tick or scene_free of this scene, which are still using it;
+ * `instead` says what to do. */
+void scene_require_idle(const scene_t *scene, const char *function, const char *instead);
+
 /* Appends an entry to the record of the tick in progress. */
 void scene_record_contact(scene_t *scene, const contact_t *entry);
 
