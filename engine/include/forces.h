@@ -64,11 +64,17 @@ typedef void (*collision_handler_t)(body_t *body1, body_t *body2, vector_t axis,
  *   stage 1 of the tick after the step in which the pair first touched: one
  *   step late, the world having already stopped or bounced them (the
  *   velocities the handler sees are those after the impact). The pair has
- *   parted when it has no world contact, or every point of it is more than
- *   1 mm apart (bodies moving on together hover within rounding of zero
- *   separation). A pair already touching when the collision is created
- *   collides at the first tick whose previous step found it touching (the
- *   second tick of a new scene).
+ *   parted, and may fire again, once its polygons are further apart than a
+ *   tenth of the smaller body's radius (the largest distance from its
+ *   centroid to a vertex) at the reads of two ticks in a row. So a landing
+ *   is one meeting: bodies moving on together hover within rounding of
+ *   zero separation, and a polygon that lands on a corner and tips onto a
+ *   face lifts off less than that (dropped from up to ten radii); a
+ *   bounce, or a pair pulled apart and pushed together again, is a new
+ *   one. While either body sleeps the pair keeps its state. A pair already
+ *   touching when the collision is created collides at the first tick
+ *   whose previous step found it touching (the second tick of a new
+ *   scene).
  */
 void create_collision(scene_t *scene, body_t *body1, body_t *body2,
                       collision_handler_t handler, void *aux, double force_const);

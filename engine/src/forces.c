@@ -7,6 +7,7 @@
 #include "body_private.h"
 #include "check.h"
 #include "collision.h"
+#include "collision_private.h"
 #include "forces_private.h"
 #include "integrator.h"
 #include "memory.h"
@@ -276,8 +277,10 @@ typedef struct {
     void *aux;
     double force_const;
     bool colliding;
-    /* The pair slept at the last step, which computed no contact for it. */
-    bool slept;
+    /* With world contacts: the reads in a row (stage 1 of successive ticks)
+     * that found the colliding pair apart by more than its parting
+     * distance. */
+    int apart_reads;
 } collision_aux_t;
 
 /* The vertex of `body` deepest along -axis: where body2 reaches furthest into
@@ -325,20 +328,31 @@ static void seed_collision(collision_aux_t *aux) {
     record_seed_collision(aux, info, body2_impulse_before);
 }
 
-/* With world contacts, a pair counts as parted (its handler may fire again)
- * once every point of its contact is further apart than this (m), or it has
- * no contact. Not at any positive separation: bodies that move on together
- * after a meeting hover at separations of rounding size (1e-16 m) on either
- * side of zero, which would call the handler again every few steps. 1 mm is
- * the overlap the solver leaves between resting bodies (its slop): far
- * above rounding, and bodies parting faster than 6 cm/s open more than that
- * in one step of 1/60 s. */
-static const double PARTING_DISTANCE = 0.001;
+/* With world contacts, a colliding pair has parted (its handler may fire
+ * again) once it is further apart than PARTING_FRACTION of the smaller
+ * body's radius at PARTING_READS reads in a row. Not at any positive
+ * separation: bodies moving on together after a meeting hover at rounding
+ * size on either side of zero, and a polygon that lands on a corner and
+ * tips onto a face lifts off for a few steps (a rocking block's hop, which
+ * grows with the body: up to 6% of its radius when dropped from five
+ * radii). Two reads in a row: a single step's flicker is not a parting. */
+static const double PARTING_FRACTION = 0.1;
+static const int PARTING_READS = 2;
 
-static bool parted(const contact_t *contact) {
-    for (size_t i = 0; i < contact->point_count; i++) {
-        if (contact->separation[i] <= PARTING_DISTANCE) return false;
+static double parting_distance(const body_t *body1, const body_t *body2) {
+    return PARTING_FRACTION * fmin(body1->radius, body2->radius);
+}
+
+/* One read of a colliding pair that is not touching: counts the reads it
+ * has been apart; returns whether it has now parted. */
+static bool read_parted(collision_aux_t *aux) {
+    double gap = collision_separation(aux->body1, aux->body2);
+    if (!(gap > parting_distance(aux->body1, aux->body2))) {
+        aux->apart_reads = 0;
+        return false;
     }
+    if (++aux->apart_reads < PARTING_READS) return false;
+    aux->apart_reads = 0;
     return true;
 }
 
@@ -348,23 +362,18 @@ static bool parted(const contact_t *contact) {
  * instead, read from the last step (this is stage 1, before this step's
  * contacts exist). */
 static void world_collision(collision_aux_t *aux) {
-    /* A sleeping pair keeps its state: no contact is computed for it, nor
-     * in the step it slept through when it wakes. */
-    if (aux->body1->asleep || aux->body2->asleep) {
-        aux->slept = true;
-        return;
-    }
+    /* A sleeping pair keeps its state: no contact is computed for it. */
+    if (aux->body1->asleep || aux->body2->asleep) return;
     contact_t contact;
     bool found = scene_world_pair_contact(aux->scene, aux->body1, aux->body2, &contact);
-    if (aux->slept) {
-        aux->slept = false;
-        if (!found) return;
-    }
     if (!found || !contact.touching) {
-        /* Apart by no more than PARTING_DISTANCE: still together. */
-        if (!found || parted(&contact)) aux->colliding = false;
+        /* The parting is judged on the poses, not on the last step's
+         * contact: a pair that slept through it, or too far apart for a
+         * speculative contact, has none. */
+        if (aux->colliding && read_parted(aux)) aux->colliding = false;
         return;
     }
+    aux->apart_reads = 0;
     if (aux->colliding) return;
     aux->colliding = true;
     vector_t body2_impulse_before = aux->body2->impulse;
@@ -397,7 +406,7 @@ void create_collision(scene_t *scene, body_t *body1, body_t *body2,
     REQUIRE(body1 != body2, "a body cannot collide with itself");
     claim_pair(scene, body1, body2, __func__);
     collision_aux_t *collision = memory_alloc(sizeof(collision_aux_t));
-    *collision = (collision_aux_t){scene, body1, body2, handler, aux, force_const, false, false};
+    *collision = (collision_aux_t){scene, body1, body2, handler, aux, force_const, false, 0};
     scene_add_bodies_force_creator(scene, collision_force_creator, collision,
                                    bodies_list(body1, body2), memory_free);
 }
