@@ -11,13 +11,8 @@
 #include "workers.h"
 #include "world.h"
 
-typedef struct {
-    force_creator_t forcer;
-    void *aux;
-    free_func_t freer;
-    /* The bodies the force creator depends on; NULL for none. */
-    list_t *bodies;
-} force_entry_t;
+/* A force creator, as scene_add_creator takes it (scene_private.h). */
+typedef scene_creator_t force_entry_t;
 
 struct scene {
     body_t **bodies;
@@ -170,11 +165,15 @@ void scene_remove_body(scene_t *scene, size_t index) {
     body_remove(scene->bodies[index]);
 }
 
-static void add_force_entry(scene_t *scene, force_creator_t forcer, void *aux, list_t *bodies,
-                            free_func_t freer) {
+void scene_add_creator(scene_t *scene, const scene_creator_t *creator) {
     memory_reserve((void **)&scene->forces, &scene->force_capacity, scene->force_count + 1,
                    sizeof(force_entry_t));
-    scene->forces[scene->force_count++] = (force_entry_t){forcer, aux, freer, bodies};
+    scene->forces[scene->force_count++] = *creator;
+}
+
+static void add_force_entry(scene_t *scene, force_creator_t forcer, void *aux, list_t *bodies,
+                            free_func_t freer) {
+    scene_add_creator(scene, &(scene_creator_t){forcer, aux, freer, bodies, false, NULL});
 }
 
 void scene_add_force_creator(scene_t *scene, force_creator_t forcer, void *aux,
@@ -199,6 +198,20 @@ void scene_add_bodies_force_creator(scene_t *scene, force_creator_t forcer, void
         }
     }
     add_force_entry(scene, forcer, aux, bodies, freer);
+}
+
+void scene_require_added(const scene_t *scene, const body_t *body, const char *function,
+                         const char *name, size_t index) {
+    char label[64];
+    if (index == SIZE_MAX) {
+        snprintf(label, sizeof label, "%s", name);
+    } else {
+        snprintf(label, sizeof label, "%s[%zu]", name, index);
+    }
+    if (body == NULL) engine_fail(function, "%s is NULL", label);
+    if (!body->in_scene || body->scene != scene) {
+        engine_fail(function, "%s is not in the scene (add it with scene_add_body first)", label);
+    }
 }
 
 void scene_claim_body(scene_t *scene, body_t *body, const char *name, const char *function) {
@@ -340,6 +353,18 @@ void scene_record_contact(scene_t *scene, const contact_t *entry) {
     scene->record[scene->record_count++] = *entry;
 }
 
+void scene_count_broadphase_tests(scene_t *scene, size_t tests) {
+    scene->stats.broadphase_tests += tests;
+}
+
+size_t scene_world_contact_count(const scene_t *scene) {
+    return scene->world != NULL ? scene->world_ops->contact_count(scene->world) : 0;
+}
+
+contact_t scene_world_get_contact(const scene_t *scene, size_t index) {
+    return scene->world_ops->get_contact(scene->world, index);
+}
+
 bool scene_world_resolves(const scene_t *scene, const body_t *body1, const body_t *body2) {
     return scene->world != NULL && scene->world_ops->pair_collides(body1, body2);
 }
@@ -377,7 +402,7 @@ static void stage_forces_again(void *context) {
     scene->stage++;
     for (size_t i = 0; i < scene->stage_force_count; i++) {
         const force_entry_t *entry = &scene->forces[i];
-        if (!forces_is_event(entry->forcer)) entry->forcer(entry->aux);
+        if (!entry->event) entry->forcer(entry->aux);
     }
 }
 
@@ -528,6 +553,7 @@ static void stage_reap(scene_t *scene) {
     size_t kept = 0;
     for (size_t i = 0; i < scene->force_count; i++) {
         force_entry_t *entry = &scene->forces[i];
+        if (entry->forget != NULL) entry->forget(entry->aux);
         if (depends_on_removed_body(entry)) {
             force_entry_free(entry);
         } else {
