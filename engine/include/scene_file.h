@@ -140,8 +140,9 @@ typedef struct {
  * engine force creator for all its pairs; the pairs are worked out as they
  * are read). In file order: statement by statement, then by the bodies' order
  * in the file (spawned bodies last). The count is valid, and get takes an
- * index below it, until the next scene_tick or spawn; reading the indices in
- * order costs a step each, any other index a walk from the start. */
+ * index below it, until the next scene_tick or spawn (get counts again
+ * when a body was made or freed since); reading the indices in order costs
+ * a step each, any other index a walk from the start. */
 size_t scene_file_force_count(scene_file_t *file);
 scene_file_force_t scene_file_get_force(scene_file_t *file, size_t index);
 

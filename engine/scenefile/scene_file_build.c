@@ -64,6 +64,7 @@ static void record_freed(void *info) {
     sf_record_t *record = info;
     record->body = NULL;
     record->file->freed_records++;
+    record->file->listing_fresh = false;
 }
 
 static bool spec_in_group(const sf_body_t *spec, size_t group) {
@@ -110,6 +111,7 @@ static sf_record_t *make_body(scene_file_t *file, size_t spec_index, vector_t po
     sf_reserve((void **)&file->records, &file->record_capacity, file->record_count + 1,
                sizeof(sf_record_t *));
     file->records[file->record_count++] = record;
+    file->listing_fresh = false;
     return record;
 }
 

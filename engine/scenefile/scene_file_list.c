@@ -101,6 +101,7 @@ size_t scene_file_force_count(scene_file_t *file) {
     }
     free(scratch);
     file->listed = count;
+    file->listing_fresh = true;
     file->cursor.valid = false;
     return count;
 }
@@ -113,6 +114,7 @@ scene_file_force_t scene_file_get_force(scene_file_t *file, size_t index) {
         [STATEMENT_PHYSICS] = SCENE_FILE_PHYSICS_COLLISION,
         [STATEMENT_DESTRUCTIVE] = SCENE_FILE_DESTRUCTIVE_COLLISION,
     };
+    if (!file->listing_fresh) scene_file_force_count(file);
     if (index >= file->listed) return (scene_file_force_t){0};
     sf_cursor_t *c = &file->cursor;
     /* Read in order, each force is one step on; any other index starts

@@ -281,9 +281,11 @@ struct scene_file {
     sf_instance_t *instances; /* in statement order */
     size_t instance_count, instance_capacity;
     sf_engine_group_t *groups; /* one per statement */
-    /* The listing: its length at the last scene_file_force_count, the
-     * cursor and the members of the statement it is in. */
+    /* The listing: its length at the last scene_file_force_count (while
+     * listing_fresh: no body made or freed since), the cursor and the
+     * members of the statement it is in. */
     size_t listed;
+    bool listing_fresh;
     sf_cursor_t cursor;
     sf_record_t **side1, **side2;
     size_t side1_capacity, side2_capacity;
