@@ -295,6 +295,34 @@ static void the_two_sets_pair_as_documented(void) {
     scene_free(scene);
 }
 
+/* Once warm, a step of a scene with a gravity and a collision group over
+ * all its bodies allocates nothing, with world contacts on (a box of balls
+ * under gravity, the world's rule) and off (the seed's). */
+static void a_warm_step_allocates_nothing(void) {
+    for (int contacts = 0; contacts < 2; contacts++) {
+        body_t *bodies[BALLS + 4];
+        size_t n = 0;
+        scene_t *scene = box_of_balls(contacts, bodies, &n);
+        scene_set_sleeping(scene, false);
+        list_t *all = list_init(n, NULL);
+        for (size_t i = 0; i < n; i++) list_add(all, bodies[i]);
+        call_log_t *log = calloc(1, sizeof *log);
+        log->scene = scene;
+        create_collision_group(scene, all, all, logging_handler, log, 0.9);
+        create_newtonian_gravity_group(scene, 1e-3, all);
+        list_free(all);
+        for (int tick = 0; tick < 240; tick++) scene_tick(scene, 1.0 / 60);
+        int calls = log->calls;
+        size_t before = engine_allocation_count();
+        for (int tick = 0; tick < 120; tick++) scene_tick(scene, 1.0 / 60);
+        CHECK(engine_allocation_count() == before);
+        /* Off, the balls still meet; on, they rest in a pile. */
+        CHECK(contacts ? scene_contact_count(scene) > 0 : log->calls > calls);
+        free(log);
+        scene_free(scene);
+    }
+}
+
 /* ---- Growth ------------------------------------------------------------------- */
 
 typedef struct {
@@ -425,6 +453,6 @@ static void bad_input_aborts_with_message(void) {
 
 TEST_SUITE(force_groups, TEST_CASE(gravity_group_applies_the_pairwise_forces_bit_for_bit),
            TEST_CASE(collision_group_calls_what_the_pairwise_creators_call),
-           TEST_CASE(the_two_sets_pair_as_documented),
+           TEST_CASE(the_two_sets_pair_as_documented), TEST_CASE(a_warm_step_allocates_nothing),
            TEST_CASE(loading_all_pairs_grows_with_the_bodies),
            TEST_CASE(bad_input_aborts_with_message));

@@ -158,6 +158,23 @@ static void refused_calls_stop_with_a_message(void) {
     }
 }
 
+/* A freer that registers another force creator (as a game might, to
+ * replace what it lost), counting its calls. */
+typedef struct {
+    scene_t *scene;
+    int calls;
+} replacer_t;
+
+static void count_force(void *aux) {
+    ((replacer_t *)aux)->calls++;
+}
+
+static void replacing_freer(void *aux) {
+    replacer_t *r = aux;
+    /* Enough creators to move the scene's array of them. */
+    for (int i = 0; i < 40; i++) scene_add_force_creator(r->scene, count_force, r, NULL);
+}
+
 /* A force creator that turns gravity on at its first call. */
 typedef struct {
     scene_t *scene;
@@ -212,6 +229,26 @@ static void allowed_calls_act_as_documented(void) {
     CHECK_VEC(body_get_centroid(other_body), 0, 1, 1e-12);
     scene_free(spawner.scene);
     scene_free(spawner.other);
+
+    /* A freer run by the reap, or by scene_free, may register force
+     * creators: they run from the next tick (and are freed with the
+     * scene). */
+    scene = scene_init();
+    body_t *doomed = added(scene, box_at(VEC_ZERO, 1.0));
+    replacer_t replacer = {scene, 0};
+    list_t *bodies = list_init(1, NULL);
+    list_add(bodies, doomed);
+    scene_add_bodies_force_creator(scene, count_force, &replacer, bodies, replacing_freer);
+    body_remove(doomed);
+    scene_tick(scene, 0.1);
+    CHECK(replacer.calls == 1);
+    scene_tick(scene, 0.1);
+    CHECK(replacer.calls == 41);
+    scene_t *freed = scene_init();
+    replacer_t at_free = {freed, 0};
+    scene_add_force_creator(freed, count_force, &at_free, replacing_freer);
+    scene_free(freed);
+    scene_free(scene);
 
     /* A body named by a force creator and never added is the caller's
      * again once that scene is freed. */

@@ -4,7 +4,6 @@
  * members' bounding boxes (the seed's rule needs an overlap) and from the
  * world's touching contacts; the pairs already colliding are kept with
  * their state. A step costs the members and those pairs, not every pair. */
-#include <stdlib.h>
 #include "body_private.h"
 #include "body_set.h"
 #include "broadphase.h"
@@ -99,11 +98,31 @@ static void add_touching(collision_group_t *group) {
 }
 
 /* By body1's place, then body2's; a pair's known entry before the others. */
-static int compare_pairs(const void *x, const void *y) {
-    const group_pair_t *a = x, *b = y;
-    if (a->first != b->first) return a->first < b->first ? -1 : 1;
-    if (a->second != b->second) return a->second < b->second ? -1 : 1;
-    return (int)b->known - (int)a->known;
+static bool before(const group_pair_t *a, const group_pair_t *b) {
+    if (a->first != b->first) return a->first < b->first;
+    if (a->second != b->second) return a->second < b->second;
+    return a->known && !b->known;
+}
+
+static void sift_down(group_pair_t *pairs, size_t root, size_t count) {
+    for (size_t child = 2 * root + 1; child < count; root = child, child = 2 * root + 1) {
+        if (child + 1 < count && before(&pairs[child], &pairs[child + 1])) child++;
+        if (!before(&pairs[root], &pairs[child])) return;
+        group_pair_t swap = pairs[root];
+        pairs[root] = pairs[child];
+        pairs[child] = swap;
+    }
+}
+
+/* Heapsort: in place, so a step allocates nothing (qsort may). */
+static void sort_pairs(group_pair_t *pairs, size_t count) {
+    for (size_t i = count / 2; i-- > 0;) sift_down(pairs, i, count);
+    for (size_t end = count; end-- > 1;) {
+        group_pair_t swap = pairs[0];
+        pairs[0] = pairs[end];
+        pairs[end] = swap;
+        sift_down(pairs, 0, end);
+    }
 }
 
 static void collision_group_read(void *data) {
@@ -112,9 +131,7 @@ static void collision_group_read(void *data) {
     for (size_t i = 0; i < group->pair_count; i++) add_candidate(group, group->pairs[i]);
     add_overlapping(group);
     add_touching(group);
-    if (group->candidate_count > 1) {
-        qsort(group->candidates, group->candidate_count, sizeof(group_pair_t), compare_pairs);
-    }
+    sort_pairs(group->candidates, group->candidate_count);
     memory_reserve((void **)&group->pairs, &group->pair_capacity, group->candidate_count,
                    sizeof(group_pair_t));
     group->pair_count = 0;

@@ -74,9 +74,10 @@ static void free_body_list(list_t *bodies) {
     list_free(bodies);
 }
 
-static void force_entry_free(force_entry_t *entry) {
-    if (entry->freer != NULL) entry->freer(entry->aux);
-    free_body_list(entry->bodies);
+/* By value: its freer may add force creators, which moves the array. */
+static void force_entry_free(force_entry_t entry) {
+    if (entry.freer != NULL) entry.freer(entry.aux);
+    free_body_list(entry.bodies);
 }
 
 /* Whether the body is another scene's, owned or named by its force
@@ -119,7 +120,7 @@ void scene_free(scene_t *scene) {
     scene->running = "scene_free";
     scene_install_world(scene, NULL, NULL);
     release_unowned_bodies(scene);
-    for (size_t i = 0; i < scene->force_count; i++) force_entry_free(&scene->forces[i]);
+    for (size_t i = 0; i < scene->force_count; i++) force_entry_free(scene->forces[i]);
     for (size_t i = 0; i < scene->body_count; i++) free_owned_body(scene->bodies[i]);
     memory_free(scene->forces);
     memory_free(scene->bodies);
@@ -552,12 +553,13 @@ static void forget_removed_in_record(scene_t *scene) {
 static void stage_reap(scene_t *scene) {
     size_t kept = 0;
     for (size_t i = 0; i < scene->force_count; i++) {
-        force_entry_t *entry = &scene->forces[i];
-        if (entry->forget != NULL) entry->forget(entry->aux);
-        if (depends_on_removed_body(entry)) {
+        /* A copy: a freer may add force creators (they are kept too). */
+        force_entry_t entry = scene->forces[i];
+        if (entry.forget != NULL) entry.forget(entry.aux);
+        if (depends_on_removed_body(&entry)) {
             force_entry_free(entry);
         } else {
-            scene->forces[kept++] = *entry;
+            scene->forces[kept++] = entry;
         }
     }
     scene->force_count = kept;
