@@ -71,7 +71,7 @@ typedef void (*collision_handler_t)(body_t *body1, body_t *body2, vector_t axis,
  *   centroid to a vertex) at the reads of two ticks in a row. So a landing
  *   is one meeting: bodies moving on together hover within rounding of
  *   zero separation, and a polygon that lands on a corner and tips onto a
- *   face lifts off less than that (dropped from up to ten radii); a
+ *   face lifts off less than that (dropped from up to twelve radii); a
  *   bounce, or a pair pulled apart and pushed together again, is a new
  *   one. While either body sleeps the pair keeps its state. A pair already
  *   touching when the collision is created collides at the first tick

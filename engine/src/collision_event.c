@@ -57,8 +57,9 @@ static void seed_collision(const collision_rule_t *rule, body_t *body1, body_t *
  * separation: bodies moving on together after a meeting hover at rounding
  * size on either side of zero, and a polygon that lands on a corner and
  * tips onto a face lifts off for a few steps (a rocking block's hop, which
- * grows with the body: up to 6% of its radius when dropped from five
- * radii). Two reads in a row: a single step's flicker is not a parting. */
+ * grows with the body: up to 8% of its radius when dropped from five
+ * radii, docs/design.md). Two reads in a row: a single step's lift (up to
+ * 12% of a small body's radius) is not a parting. */
 static const double PARTING_FRACTION = 0.1;
 static const int PARTING_READS = 2;
 
