@@ -456,6 +456,11 @@ typedef struct {
     const char *message;
 } bad_file_t;
 
+#define DRAGS_10                                                                             \
+    "drag 1 all\ndrag 1 all\ndrag 1 all\ndrag 1 all\ndrag 1 all\ndrag 1 all\ndrag 1 all\n"        \
+    "drag 1 all\ndrag 1 all\ndrag 1 all\n"
+#define DRAGS_100 DRAGS_10 DRAGS_10 DRAGS_10 DRAGS_10 DRAGS_10 DRAGS_10 DRAGS_10 DRAGS_10 DRAGS_10 DRAGS_10
+
 static const bad_file_t BAD_FILES[] = {
     {"bdoy x { box 1 1 }",
      "t.scene:1:1: expected a statement (body, template, group, gravity, contacts, integrator, "
@@ -595,9 +600,11 @@ static const bad_file_t BAD_FILES[] = {
     {"body a { box 1 1 }\nbody b { box 1 1 }\ncollide a b elastic",
      "t.scene:3:13: expected the kind of collision (physics ELASTICITY, or destructive), found "
      "\"elastic\""},
-    {"body a { box 1 1; repeat 100 100 2 2 }\nnewton 1 all",
-     "t.scene:2:1: expected at most 1000000 force creators from the forces and rules of a file, "
-     "found 49995000 with this newton"},
+    /* A drag per body and statement: 10000 bodies under 101 drags. (A newton
+     * or collide over them all is one force creator.) */
+    {"body a { box 1 1; repeat 100 100 2 2 }\n" DRAGS_100 "drag 1 all",
+     "t.scene:102:1: expected at most 1000000 force creators from the forces and rules of a "
+     "file, found 1010000 with this drag"},
     {"gravity 0 0\n\x01", "t.scene:2:1: expected text, found the control byte 0x01"},
     {"body a { box 1 1; tag \"x\" }", "t.scene:1:23: expected a tag (a letter or '_', then "
                                       "letters, digits, '_', '.' or '-', at most "

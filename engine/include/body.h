@@ -65,7 +65,10 @@ body_t *body_init(list_t *shape, double mass, rgb_color_t color);
 body_t *body_init_with_info(list_t *shape, double mass, rgb_color_t color, void *info,
                             free_func_t info_freer);
 
-/* Frees the body, and its info with its info_freer when there is one. */
+/* Frees the body, and its info with its info_freer when there is one. A
+ * body that a scene owns, or that a force creator of a scene names, is
+ * refused (the program stops): the scene frees it; body_remove it instead,
+ * or free a named body that was never added after scene_free. */
 void body_free(body_t *body);
 
 /* A new list of new vector_t *: the current world vertices, counter-clockwise.

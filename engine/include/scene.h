@@ -50,7 +50,9 @@ typedef void (*force_creator_t)(void *aux);
 scene_t *scene_init(void);
 
 /* Frees the scene, its bodies, and the aux of every force creator that has a
- * freer. */
+ * freer. Not from inside scene_tick or scene_free of the same scene (a
+ * force creator, handler or freer): the program stops, saying to free it
+ * after scene_tick returns. */
 void scene_free(scene_t *scene);
 
 /* The number of bodies, including those marked removed but not yet reaped. */
@@ -109,6 +111,14 @@ void scene_add_bodies_force_creator(scene_t *scene, force_creator_t forcer, void
  * spring too stiff for dt: the seed and explicit Euler integrators add energy
  * to every spring at every step, symplectic Euler is stable for
  * dt < 2 sqrt(m / k) (m the reduced mass of the spring's bodies).
+ *
+ * Calling back from inside the tick (a force creator, collision handler or
+ * freer it runs): scene_tick and scene_free of the same scene, and the
+ * settings the step runs with (scene_set_contacts_enabled, _integrator,
+ * _sleeping, _solver_iterations, _workers), stop the program, saying to
+ * call them after scene_tick returns. scene_set_gravity is allowed and acts
+ * from the next step; adding bodies and force creators and removing bodies
+ * are allowed as described above. Other scenes may be ticked or freed.
  */
 void scene_tick(scene_t *scene, double dt);
 
@@ -271,7 +281,8 @@ const contact_t *scene_get_contact(scene_t *scene, size_t index);
 
 /* Counters of the last scene_tick, for tests and the sandbox's HUD. */
 typedef struct {
-    size_t broadphase_tests;   /* bounding-box comparisons the broadphase made */
+    size_t broadphase_tests;   /* bounding-box comparisons the broadphase made (the
+                                  world's and the collision groups', forces.h) */
     size_t broadphase_pairs;   /* pairs whose bounding boxes overlapped */
     size_t contacts;           /* manifolds with at least one point, speculative
                                   ones included (see contact.h) */

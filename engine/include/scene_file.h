@@ -45,7 +45,7 @@ typedef struct scene_file scene_file_t;
 #define SCENE_FILE_MAX_BODIES 20000
 #define SCENE_FILE_MAX_VERTICES 1000          /* per shape */
 #define SCENE_FILE_MAX_TOTAL_VERTICES 1000000 /* over every body of a file */
-#define SCENE_FILE_MAX_FORCES 1000000         /* force creators made by forces and rules */
+#define SCENE_FILE_MAX_FORCES 1000000         /* force creators made: springs, drags, one per newton or collide */
 
 /* Why a file was refused. `message` is "FILE:LINE:COLUMN: expected WHAT, found
  * WHAT" (lines and columns from 1, columns in bytes), e.g.
@@ -136,9 +136,14 @@ typedef struct {
     body_t *body2;
 } scene_file_force_t;
 
-/* The force creators the file made that are still in the scene (none of their
- * bodies freed), in the order made: load order, then spawns. The count is
- * valid, and get takes an index below it, until the next scene_tick or spawn. */
+/* The forces the file made that are still in the scene (none of their bodies
+ * freed): each spring, each drag, and each pair of a newton or collide (one
+ * engine force creator for all its pairs; the pairs are worked out as they
+ * are read). In file order: statement by statement, then by the bodies' order
+ * in the file (spawned bodies last). The count is valid, and get takes an
+ * index below it, until the next scene_tick or spawn (get counts again
+ * when a body was made or freed since); reading the indices in order costs
+ * a step each, any other index a walk from the start. */
 size_t scene_file_force_count(scene_file_t *file);
 scene_file_force_t scene_file_get_force(scene_file_t *file, size_t index);
 
@@ -155,8 +160,7 @@ scene_file_force_t scene_file_get_force(scene_file_t *file, size_t index);
  * Loading the text gives the same scene: the same bodies in the same order,
  * those the file made equal bit for bit in every value the engine reports
  * (the others to rounding: their vertices are taken relative to their
- * centroid again), and the same force creators (those a spawned body joined
- * in file order rather than last). A body that has gone beyond the limits of
+ * centroid again), and the same forces in the same order. A body that has gone beyond the limits of
  * docs/scenes.md (1e9 m from the origin) makes a text that loading refuses,
  * naming it.
  *

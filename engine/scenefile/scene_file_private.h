@@ -249,12 +249,31 @@ typedef struct sf_record {
     size_t index; /* its place in file->records */
 } sf_record_t;
 
-/* A force creator made by a statement, with the records it joins. */
+/* A force creator made by a spring or drag statement, with the records it
+ * joins. */
 typedef struct {
     size_t statement;
     sf_record_t *body1;
     sf_record_t *body2; /* NULL for a drag */
 } sf_instance_t;
+
+/* The engine group of a newton (gravity) or collide (collision) statement:
+ * one force creator for all its pairs. */
+typedef struct {
+    gravity_group_t *gravity;
+    collision_group_t *collision;
+} sf_engine_group_t;
+
+/* Where scene_file_get_force is in the listing (scene_file_list.c): the
+ * force at index, of statement; for a spring or drag the instance at i, for
+ * a pair the members i and j of the statement's sides (side1, side2), with
+ * the next instance to list kept in instance. */
+typedef struct {
+    bool valid;
+    size_t index, statement, i, j;
+    size_t n, m; /* the sides' sizes */
+    size_t instance;
+} sf_cursor_t;
 
 struct scene_file {
     sf_doc_t doc;
@@ -262,13 +281,40 @@ struct scene_file {
     sf_record_t **records; /* in the order made */
     size_t record_count, record_capacity;
     size_t freed_records; /* records whose body the engine freed */
-    sf_instance_t *instances;
+    sf_instance_t *instances; /* in statement order */
     size_t instance_count, instance_capacity;
+    sf_engine_group_t *groups; /* one per statement */
+    /* The listing: its length at the last scene_file_force_count (while
+     * listing_fresh: no body made or freed since), the cursor and the
+     * members of the statement it is in. */
+    size_t listed;
+    bool listing_fresh;
+    sf_cursor_t cursor;
+    sf_record_t **side1, **side2;
+    size_t side1_capacity, side2_capacity;
 };
 
 /* Resolves names, checks the limits, and builds file->scene. False with the
  * error set when a name or a limit is refused; nothing is built then. */
 bool sf_build(scene_file_t *file, sf_lexer_t *lexer);
+
+/* Whether a live record belongs to the set a reference names. */
+bool sf_in_ref(const scene_file_t *file, const sf_ref_t *ref, const sf_record_t *record);
+
+/* The live records of a set (refs[0 .. count) together), in record order,
+ * into out (room for record_count); returns how many. */
+size_t sf_members(const scene_file_t *file, const sf_ref_t *refs, size_t count,
+                  sf_record_t **out);
+
+/* The forces a statement lists among the live records: 1 or 0 for a spring,
+ * a drag per member, newton's and collide's pairs (each unordered pair
+ * once; a collide pair is (member of the first side, member of the second),
+ * the earlier body first when both are on both sides). scratch has room
+ * for twice record_count. */
+size_t sf_statement_pairs(const scene_file_t *file, size_t statement, sf_record_t **scratch);
+
+/* Drops the instances whose bodies the engine freed. */
+void sf_drop_orphan_forces(scene_file_t *file);
 
 /* Drops instances whose bodies were freed, forgets those bodies, and frees their
  * records (keeps memory flat while a game spawns and destroys bodies). */

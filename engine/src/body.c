@@ -116,6 +116,12 @@ body_t *body_init(list_t *shape, double mass, rgb_color_t color) {
 
 void body_free(body_t *body) {
     REQUIRE_NOT_NULL(body);
+    REQUIRE(!body->in_scene,
+            "body belongs to a scene, which frees it: mark it with body_remove instead (the "
+            "scene frees it at the end of the next scene_tick)");
+    REQUIRE(body->scene == NULL,
+            "body is named by a force creator of a scene: add it to that scene (which then "
+            "frees it), or free it after scene_free of that scene");
     body_wake(body);
     if (body->info_freer != NULL) body->info_freer(body->info);
     memory_free(body);

@@ -12,6 +12,7 @@ static const world_ops_t WORLD_OPS = {
 
 void scene_set_contacts_enabled(scene_t *scene, bool enabled) {
     REQUIRE_NOT_NULL(scene);
+    scene_require_idle(scene, __func__, "change the setting between ticks");
     if (enabled == scene_get_contacts_enabled(scene)) return;
     if (!enabled) {
         scene_install_world(scene, NULL, NULL);

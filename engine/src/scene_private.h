@@ -8,6 +8,43 @@
 #include "workers.h"
 #include "world.h"
 
+/* Stops the program, naming `function`, when it was called back from
+ * inside scene_tick or scene_free of this scene, which are still using it;
+ * `instead` says what to do. */
+void scene_require_idle(const scene_t *scene, const char *function, const char *instead);
+
+/* A force creator with what scene.h's cannot say. An event of the step (a
+ * collision of forces.h) is called at the first stage of a multi-stage
+ * integrator only. forget, when not NULL, is called with aux in every reap
+ * before the removed bodies are freed: a creator over a group of bodies
+ * lets go of its removed ones there instead of being dropped (its bodies
+ * list is then NULL). */
+typedef struct {
+    force_creator_t forcer;
+    void *aux;
+    free_func_t freer;
+    list_t *bodies; /* the bodies it depends on; NULL for none */
+    bool event;
+    void (*forget)(void *aux);
+} scene_creator_t;
+
+void scene_add_creator(scene_t *scene, const scene_creator_t *creator);
+
+/* Stops the program, naming `function` and the body (`name`, or
+ * name[index] when index is not SIZE_MAX), unless the body is in the
+ * scene: a group orders its members by when they joined and owns none. */
+void scene_require_added(const scene_t *scene, const body_t *body, const char *function,
+                         const char *name, size_t index);
+
+/* Adds the number of bounding-box comparisons a collision group made to
+ * the tick's scene_stats_t.broadphase_tests. */
+void scene_count_broadphase_tests(scene_t *scene, size_t tests);
+
+/* The world contacts of the last step (none while contacts are off), as
+ * scene_get_contact gives them: between ticks and in stage 1. */
+size_t scene_world_contact_count(const scene_t *scene);
+contact_t scene_world_get_contact(const scene_t *scene, size_t index);
+
 /* Appends an entry to the record of the tick in progress. */
 void scene_record_contact(scene_t *scene, const contact_t *entry);
 
