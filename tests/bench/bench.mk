@@ -8,6 +8,9 @@
 #   make bench-build    builds whichever of the three programs can be built
 #   make bench-stages   what a scene pays for the stages it leaves out (docs/leave-out.md)
 #   make bench-scale    pile(N) from 1000 to 40000 bodies, with the peers (docs/scale.md)
+#   make bench-seeds    this engine's quality figures over the 8 layout seeds
+#                       (build/bench/seeds.txt), judged against
+#                       tests/bench/baseline-seeds.txt (SEEDS_ARGS="--quick -j 2")
 #
 # Options for the programs: make bench BENCH_ARGS="--quick" or
 # BENCH_ARGS="--scene pile --size 4000 --runs 3" (see tests/bench/bench_scenes.h).
@@ -27,7 +30,7 @@ BENCH_PROGRAMS = $(BENCH_DIR)/bench_engine \
 	$(if $(BENCH_HAVE_CHIPMUNK),$(BENCH_DIR)/bench_chipmunk) \
 	$(if $(BENCH_HAVE_BOX2D),$(BENCH_DIR)/bench_box2d)
 
-.PHONY: bench bench-compare bench-compare-run bench-build bench-stages bench-scale
+.PHONY: bench bench-compare bench-compare-run bench-build bench-stages bench-scale bench-seeds
 
 $(BENCH_DIR)/bench_engine: tests/bench/bench_engine.c $(BENCH_HDR) build/libengine.a
 	@mkdir -p $(dir $@)
@@ -72,3 +75,9 @@ bench-stages: $(BENCH_DIR)/bench_stages
 bench-scale: $(BENCH_DIR)/bench_scale
 	@$(MAKE) --no-print-directory bench-build
 	tests/bench/scale.sh docs/scale.md
+
+SEEDS_ARGS ?=
+bench-seeds: $(BENCH_DIR)/bench_engine
+	sh tests/bench/seeds.sh $(SEEDS_ARGS) -o $(BENCH_DIR)/seeds.txt $(BENCH_DIR)/bench_engine >/dev/null
+	sh tests/bench/seeds.sh --judge tests/bench/baseline-seeds.txt $(BENCH_DIR)/seeds.txt \
+		$(wildcard tests/bench/v3-seeds.txt)

@@ -16,6 +16,12 @@
  *                    repeatable or a comma list
  *   --runs R         runs of each scene (default 5); the median is reported
  *   --quick          smaller sizes and 1 run (a smoke run)
+ *   --layout-seed K  the random generator's first state (0 .. 2^31 - 1;
+ *                    default 12345, the canonical layout): pile, column and
+ *                    the stability scenes drawing random numbers get another
+ *                    layout, the pyramids and overlap a sideways jitter of
+ *                    each box (bench_common.h); result lines then end with
+ *                    layout_seed=K (docs/bench-scenes.md, tests/bench/seeds.sh)
  * No --scene: the benchmark set pile 1000, 4000, 10000; pyramid 20, 40;
  * bounce 0.8 at dt 1/60 and 1/600; cradle 5.
  *
@@ -255,9 +261,12 @@ static inline double pyramid_generic(const bench_ops_t *ops, const pyramid_confi
     double *mass = (double *)malloc(sizeof(double) * (size_t)count);
     int top = -1, n = 0;
     double top_x0 = 0.0, top_y0 = 0.0;
+    bench_rng_t rng;
+    bench_rng_init(&rng);
     for (int j = 0; j < base; j++) {
         for (int k = 0; k < base - j; k++) {
-            double x = cfg->ox + (k - (base - j - 1) / 2.0) * 1.0 * s;
+            double x = cfg->ox + (k - (base - j - 1) / 2.0) * 1.0 * s +
+                       bench_layout_shift(&rng, BENCH_LAYOUT_JITTER * s);
             double y = cfg->oy + (0.5 + j * 1.0) * s;
             double m = bench_shape_area(&box) * (j == base - 1 ? cfg->top_ratio : 1.0);
             top = ids[n] = ops->add_body(w, &box, x, y, 0.0, m, mu, 0.0, 1);
@@ -545,9 +554,12 @@ static inline void overlap_run(const bench_ops_t *ops, const bench_case_t *c, be
                         bench_static_elasticity(ops));
     bench_shape_t box = bench_box_shape(0.5, 0.5);
     int ids[OVERLAP_BASE * (OVERLAP_BASE + 1) / 2], count = 0;
+    bench_rng_t rng;
+    bench_rng_init(&rng);
     for (int j = 0; j < OVERLAP_BASE; j++) {
         for (int k = 0; k < OVERLAP_BASE - j; k++) {
-            double x = (k - (OVERLAP_BASE - j - 1) / 2.0) * OVERLAP_PITCH;
+            double x = (k - (OVERLAP_BASE - j - 1) / 2.0) * OVERLAP_PITCH +
+                       bench_layout_shift(&rng, BENCH_LAYOUT_JITTER);
             double y = 0.5 + j * OVERLAP_PITCH;
             ids[count++] = ops->add_body(w, &box, x, y, 0.0, bench_shape_area(&box), mu, 0.0, 1);
         }
@@ -1217,7 +1229,12 @@ static inline void bench_run_case(const bench_ops_t *ops, const bench_case_t *c,
     }
     char size[32], quality[800];
     snprintf(size, sizeof size, "%g", c->size);
-    snprintf(quality, sizeof quality, "%s%s", first.quality, differ ? " runs_differ=1" : "");
+    int len = snprintf(quality, sizeof quality, "%s%s", first.quality,
+                       differ ? " runs_differ=1" : "");
+    if (bench_layout_jittered() && len > 0 && (size_t)len < sizeof quality) {
+        snprintf(quality + len, sizeof quality - (size_t)len, " layout_seed=%llu",
+                 (unsigned long long)bench_layout_seed);
+    }
     bench_print_result(ops->name, bench_scene_names[c->scene], size, runs, ms,
                        c->scene == SCENE_PILE ? settled : NULL, quality);
     if (bench_scene_has_summary(c->scene)) {
@@ -1265,7 +1282,7 @@ static inline int bench_parse_list(const char *text, double *list, int *count) {
 static inline void bench_usage(FILE *out, const char *program) {
     fprintf(out,
             "usage: %s [--scene NAME[,NAME]] [--size X[,X]] [--dt X[,X]] [--runs R] [--quick]\n"
-            "          [--iterations N] [--variant NAME] [--steps N]\n"
+            "          [--iterations N] [--variant NAME] [--steps N] [--layout-seed K]\n"
             "  scenes: pile pyramid bounce cradle orbit stack2 tunnel overlap column all\n"
             "  stability scenes: spring springpair chain heavytop headon tunnelmove bullet rod\n"
             "  drop coincide gas settle wallbounce scaled far\n"
@@ -1275,7 +1292,9 @@ static inline void bench_usage(FILE *out, const char *program) {
             "  stability scenes with a fixed count.\n"
             "  --iterations N: the solver's velocity iterations (each engine's own default\n"
             "  otherwise; position iterations keep theirs). --variant NAME: only that\n"
-            "  variant of the program (e.g. ours, ours-sleeping).\n",
+            "  variant of the program (e.g. ours, ours-sleeping).\n"
+            "  --layout-seed K: the random layouts' seed (default 12345, the canonical\n"
+            "  one); other seeds also jitter the pyramids' and overlap's boxes by 1e-4 m.\n",
             program);
 }
 
@@ -1398,6 +1417,16 @@ static inline int bench_main(int argc, char **argv, const bench_ops_t *const *op
                 return 2;
             }
             i++;
+        } else if (strcmp(arg, "--layout-seed") == 0) {
+            char *end;
+            unsigned long long seed = strtoull(value, &end, 10);
+            if (*end != '\0' || end == value || seed >= 2147483648ull) {
+                fprintf(stderr, "%s: --layout-seed takes 0 .. 2147483647, not %s\n", argv[0],
+                        value);
+                return 2;
+            }
+            bench_layout_seed = seed;
+            i++;
         } else if (strcmp(arg, "--runs") == 0) {
             runs = atoi(value);
             if (runs < 1) {
@@ -1442,6 +1471,11 @@ static inline int bench_main(int argc, char **argv, const bench_ops_t *const *op
 #endif
     );
 #endif
+    if (bench_layout_jittered()) {
+        printf("# layout seed %llu (canonical 12345): random layouts drawn from it, pyramid and "
+               "overlap boxes shifted sideways by up to %g m\n",
+               (unsigned long long)bench_layout_seed, BENCH_LAYOUT_JITTER);
+    }
     for (int k = 0; k < ops_count; k++) ops[k]->describe(stdout);
     fflush(stdout);
 
