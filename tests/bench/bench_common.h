@@ -15,8 +15,9 @@
  * Output format, one line per scene, size and engine:
  *   engine=NAME scene=NAME size=N runs=R mean_ms=M median_ms=M [more key=value]
  * mean_ms and median_ms are the mean and the median over the R runs of each
- * run's mean milliseconds per step (only the engine's step call is timed:
- * building the scene and reading states for the quality figures are not).
+ * run's mean milliseconds per step, in CPU time of the process
+ * (CLOCK_PROCESS_CPUTIME_ID; only the engine's step call is timed: building
+ * the scene and reading states for the quality figures are not).
  * Lines starting with '#' are comments (settings, compiler).
  */
 
@@ -158,12 +159,32 @@ static inline double bench_layout_shift(bench_rng_t *rng, double amplitude) {
 
 /* ---- Timing and statistics ---- */
 
-/* Milliseconds on the monotonic clock. */
+/* Milliseconds on the monotonic clock (wall time). */
 static inline double bench_now_ms(void) {
     struct timespec ts;
     clock_gettime(CLOCK_MONOTONIC, &ts);
     return (double)ts.tv_sec * 1e3 + (double)ts.tv_nsec * 1e-6;
 }
+
+/* Milliseconds of CPU time of the whole process (every thread): what the
+ * step figures are measured in, so that time the process spends waiting for
+ * a core another program holds is not counted. */
+static inline double bench_cpu_ms(void) {
+    struct timespec ts;
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+    return (double)ts.tv_sec * 1e3 + (double)ts.tv_nsec * 1e-6;
+}
+
+/* --wall: the result lines add wall_median_ms, the wall time of the same
+ * step calls (beside CPU time it shows whether the threads of a
+ * multi-threaded step had their cores). bench_wall_ms sums it over a run,
+ * bench_timed_steps counts the step calls of the run; --count-steps adds
+ * timed_steps=N to the result lines (tests/bench/instructions.sh divides an
+ * instruction count by it). */
+static int bench_wall = 0;
+static int bench_count_steps = 0;
+static double bench_wall_ms = 0.0;
+static long bench_timed_steps = 0;
 
 static inline double bench_mean(const double *values, int count) {
     double sum = 0.0;
