@@ -97,8 +97,12 @@ void body_add_force(body_t *body, vector_t force);
 
 /* Whether the scene's world contacts have put the body to sleep
  * (scene_set_sleeping): it rests and takes no part in steps until touched
- * by a moving body, or until a pose, velocity, nonzero force, torque or
- * impulse is set on it, or a body of its resting group is removed. */
+ * by a moving body, or until a pose, velocity, inertia, filter, a different
+ * friction or elasticity, a nonzero force, torque or impulse is set on it
+ * or a body of its resting group is removed (it wakes at once), or until a
+ * body it touches, a static one included, changes so (its box before or
+ * after the change overlaps the sleeper's: it wakes at the start of the
+ * next scene_tick), or gravity changes (scene_set_gravity). */
 bool body_is_sleeping(body_t *body);
 
 /* Adds an impulse (N s) through the centroid, applied at the next tick. */

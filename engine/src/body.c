@@ -204,6 +204,15 @@ void body_wake(body_t *body) {
     } while (member != NULL && member != body);
 }
 
+void body_mark_changed(body_t *body) {
+    if (!body->changed) {
+        body_update_world(body);
+        body->changed_bounds = body->bounds;
+        body->changed = true;
+    }
+    body_wake(body);
+}
+
 bool body_is_sleeping(body_t *body) {
     REQUIRE_NOT_NULL(body);
     return body->asleep;
@@ -212,24 +221,24 @@ bool body_is_sleeping(body_t *body) {
 void body_set_centroid(body_t *body, vector_t x) {
     REQUIRE_NOT_NULL(body);
     REQUIRE_FINITE_VECTOR(x);
+    body_mark_changed(body); /* before: its box there is needed */
     body->centroid = x;
     body->world_valid = false;
-    body_wake(body);
 }
 
 void body_set_velocity(body_t *body, vector_t v) {
     REQUIRE_NOT_NULL(body);
     REQUIRE_FINITE_VECTOR(v);
     body->velocity = v;
-    body_wake(body);
+    body_mark_changed(body);
 }
 
 void body_set_rotation(body_t *body, double angle) {
     REQUIRE_NOT_NULL(body);
     REQUIRE_FINITE(angle);
+    body_mark_changed(body);
     body->angle = angle;
     body->world_valid = false;
-    body_wake(body);
 }
 
 void body_set_color(body_t *body, rgb_color_t color) {
@@ -335,7 +344,7 @@ void body_reset(body_t *body) {
 void body_remove(body_t *body) {
     REQUIRE_NOT_NULL(body);
     body->removed = true;
-    body_wake(body);
+    body_mark_changed(body);
 }
 
 bool body_is_removed(body_t *body) {
@@ -352,7 +361,7 @@ void body_set_angular_velocity(body_t *body, double omega) {
     REQUIRE_NOT_NULL(body);
     REQUIRE_FINITE(omega);
     body->angular_velocity = omega;
-    body_wake(body);
+    body_mark_changed(body);
 }
 
 double body_get_inertia(body_t *body) {
@@ -367,7 +376,7 @@ void body_set_inertia(body_t *body, double inertia) {
             inertia);
     body->inertia = inertia;
     body->inverse_inertia = isinf(inertia) ? 0.0 : 1.0 / inertia;
-    body_wake(body);
+    body_mark_changed(body);
 }
 
 double body_get_elasticity(body_t *body) {
@@ -379,6 +388,7 @@ void body_set_elasticity(body_t *body, double elasticity) {
     REQUIRE_NOT_NULL(body);
     REQUIRE(isfinite(elasticity) && elasticity >= 0.0,
             "elasticity must be finite and >= 0 (got %g)", elasticity);
+    if (elasticity != body->elasticity) body_mark_changed(body);
     body->elasticity = elasticity;
 }
 
@@ -391,6 +401,7 @@ void body_set_friction(body_t *body, double friction) {
     REQUIRE_NOT_NULL(body);
     REQUIRE(isfinite(friction) && friction >= 0.0, "friction must be finite and >= 0 (got %g)",
             friction);
+    if (friction != body->friction) body_mark_changed(body);
     body->friction = friction;
 }
 
@@ -399,7 +410,7 @@ void body_set_collision_filter(body_t *body, uint32_t category, uint32_t mask, u
     body->category = category;
     body->mask = mask;
     body->group = group;
-    body_wake(body);
+    body_mark_changed(body);
 }
 
 bool body_contains_point(body_t *body, vector_t point) {

@@ -140,6 +140,7 @@ void scene_add_body(scene_t *scene, body_t *body) {
                    sizeof(body_t *));
     body->id = scene->next_body_id++;
     scene->bodies[scene->body_count++] = body;
+    body_mark_changed(body); /* sleeping bodies it lands in wake */
 }
 
 void scene_remove_body(scene_t *scene, size_t index) {
@@ -188,6 +189,13 @@ void scene_claim_body(scene_t *scene, body_t *body, const char *name, const char
 void scene_set_gravity(scene_t *scene, vector_t gravity) {
     REQUIRE_NOT_NULL(scene);
     REQUIRE_FINITE_VECTOR(gravity);
+    if (gravity.x != scene->gravity.x || gravity.y != scene->gravity.y) {
+        /* Gravity pulls every body of finite mass: none may rest as it was. */
+        for (size_t i = 0; i < scene->body_count; i++) {
+            body_t *body = scene->bodies[i];
+            if (body->asleep && body->inverse_mass > 0.0) body_wake(body);
+        }
+    }
     scene->gravity = gravity;
 }
 
@@ -381,6 +389,9 @@ static const integrator_motion_t *stage_motion(scene_t *scene, integrator_step_t
         integrator_begin(scene->integrator, scene->bodies, scene->body_count, &scene->stages);
     }
     if (scene->force_count > 0) stage_forces(scene);
+    if (scene->world != NULL && scene->sleeping) {
+        scene->world_ops->wake_changed(scene->world, scene->bodies, scene->body_count, step->dt);
+    }
     if (one_stage && scene->world == NULL) return NULL;
     memory_reserve((void **)&scene->motions, &scene->motion_capacity, scene->body_count,
                    sizeof(integrator_motion_t));

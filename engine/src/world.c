@@ -240,6 +240,7 @@ static void set_filter(broadphase_proxy_t *proxy, const body_t *body) {
 WORLD_INLINE void load_body(world_t *world, body_t *body, const integrator_motion_t *motion, size_t i,
                       double dt) {
     body->solver_index = (uint32_t)i;
+    body->changed = false; /* world_wake_changed has seen it */
     body_update_world(body);
     solver_state_t *state = &world->states[i];
     solver_velocity_t *velocity = &world->velocities[i];
@@ -724,6 +725,13 @@ static size_t gather_awake(world_t *world, body_t **bodies, const integrator_mot
         world->active_index[active++] = i;
     }
     return active;
+}
+
+void world_wake_changed(world_t *world, body_t **bodies, size_t count, double dt) {
+    if (!sleep_any(&world->sleep)) return;
+    for (size_t i = 0; i < count; i++) {
+        if (bodies[i]->changed) sleep_wake_changed(&world->sleep, bodies[i], dt, CONTACT_MARGIN);
+    }
 }
 
 void world_step(world_t *world, body_t **bodies, integrator_motion_t *motions, size_t count,
