@@ -174,6 +174,10 @@ void body_set_friction(body_t *body, double friction);
  */
 void body_set_collision_filter(body_t *body, uint32_t category, uint32_t mask, uint32_t group);
 
+/* The filter as set last (or the default); a NULL pointer skips its part. */
+void body_get_collision_filter(body_t *body, uint32_t *category, uint32_t *mask,
+                               uint32_t *group);
+
 /* The world axis-aligned bounding box of the current polygon. */
 aabb_t body_get_bounds(body_t *body);
 

@@ -413,6 +413,14 @@ void body_set_collision_filter(body_t *body, uint32_t category, uint32_t mask, u
     body_mark_changed(body);
 }
 
+void body_get_collision_filter(body_t *body, uint32_t *category, uint32_t *mask,
+                               uint32_t *group) {
+    REQUIRE_NOT_NULL(body);
+    if (category != NULL) *category = body->category;
+    if (mask != NULL) *mask = body->mask;
+    if (group != NULL) *group = body->group;
+}
+
 bool body_contains_point(body_t *body, vector_t point) {
     REQUIRE_NOT_NULL(body);
     /* A NaN point would compare false against every edge and so be "inside". */

@@ -244,6 +244,15 @@ void scene_install_world(scene_t *scene, world_t *world, const world_ops_t *ops)
     scene->world_ops = ops;
 }
 
+world_t *scene_world(const scene_t *scene, const world_ops_t **ops) {
+    *ops = scene->world_ops;
+    return scene->world;
+}
+
+body_t **scene_body_array(const scene_t *scene) {
+    return scene->bodies;
+}
+
 void scene_get_iterations(const scene_t *scene, size_t *velocity_iterations,
                           size_t *position_iterations) {
     *velocity_iterations = scene->velocity_iterations;
@@ -542,7 +551,10 @@ void scene_tick(scene_t *scene, double dt) {
     scene->dt = dt;
     if (dt == 0.0) {
         /* No time passes, so nothing may move or collide; the caller only
-         * wants the pending removals applied (a paused game). */
+         * wants the pending removals applied (a paused game). The world's
+         * last contacts stay for the next step, but for those naming the
+         * bodies about to be freed. */
+        if (scene->world != NULL) scene->world_ops->forget_removed(scene->world);
         stage_reap(scene);
         return;
     }

@@ -243,6 +243,11 @@ static aabb_t reach_of(const sleep_step_t *step, size_t i) {
     return grown(step->proxies[i].box, grow);
 }
 
+void sleep_index_asleep(sleep_t *sleep, body_t **bodies, size_t count) {
+    rebuild_index(sleep, bodies, count, count_asleep(bodies, count));
+    sleep->slept = 0;
+}
+
 void sleep_wake_reached(sleep_t *sleep, const sleep_step_t *step, body_t **all_bodies,
                         size_t all_count) {
     if (sleep->slept == 0 && sleep->count == 0) return;

@@ -98,6 +98,11 @@ void sleep_islands(sleep_t *sleep, const sleep_step_t *step, const sleep_link_t 
 void sleep_wake_reached(sleep_t *sleep, const sleep_step_t *step, body_t **all_bodies,
                         size_t all_count);
 
+/* Indexes the sleeping bodies of bodies[0 .. count) (every body of the
+ * scene) after they were put to sleep outside a step (scene_restore_sleep),
+ * so that the next step leaves them out and wakes them as any others. */
+void sleep_index_asleep(sleep_t *sleep, body_t **bodies, size_t count);
+
 /* Before a step: wakes the sleeping islands that a body marked changed
  * (body_mark_changed) touched before its change or may touch in the step,
  * its box then and its box now each grown by what its velocities cover in
