@@ -65,6 +65,16 @@ body_t *body_init(list_t *shape, double mass, rgb_color_t color);
 body_t *body_init_with_info(list_t *shape, double mass, rgb_color_t color, void *info,
                             free_func_t info_freer);
 
+/* As body_init_with_info, for a shape already in the body's own frame: the
+ * vertices are taken relative to the centroid and kept exactly as given
+ * (body_init subtracts the area centroid it computes, which rounds), so a
+ * body rebuilt from another's body_get_local_polygon, mass and pose is the
+ * same to the bit. The area centroid of the vertices must lie within a
+ * thousandth of the shape's radius of the origin ("bad shape: its centroid
+ * (...) is not at the origin"). The body starts at the origin. */
+body_t *body_init_centred(list_t *shape, double mass, rgb_color_t color, void *info,
+                          free_func_t info_freer);
+
 /* Frees the body, and its info with its info_freer when there is one. */
 void body_free(body_t *body);
 
@@ -75,6 +85,11 @@ list_t *body_get_shape(body_t *body);
 /* The current world polygon without copying (see polygon_t for how long the
  * view stays valid). */
 polygon_t body_get_polygon(body_t *body);
+
+/* The shape in the body's own frame (relative to its centroid, at angle 0),
+ * counter-clockwise, without copying; it never changes and lives as long
+ * as the body. */
+polygon_t body_get_local_polygon(body_t *body);
 
 vector_t body_get_centroid(body_t *body);
 vector_t body_get_velocity(body_t *body);

@@ -71,22 +71,36 @@ static body_t *take_vertices(list_t *shape, const char *function) {
     return body;
 }
 
+/* A shape given relative to its centroid may be off it by this share of its
+ * radius: rounding, but not a shape placed elsewhere. */
+static const double CENTRED_TOLERANCE = 1e-3;
+
+/* centred: the vertices are already relative to the centroid and are kept
+ * as they are (body_init_centred). */
 static body_t *body_create(list_t *shape, double mass, rgb_color_t color, void *info,
-                           free_func_t info_freer, const char *function) {
+                           free_func_t info_freer, bool centred, const char *function) {
     if (shape == NULL) engine_fail(function, "shape is NULL");
     check_mass(mass, function);
     body_t *body = take_vertices(shape, function);
     size_t n = body->count;
 
     body->centroid = polygon_array_centroid(body->local_vertices, n);
+    vector_t off = centred ? body->centroid : VEC_ZERO;
+    if (centred) body->centroid = VEC_ZERO;
     for (size_t i = 0; i < n; i++) {
         body->local_vertices[i] = vec_subtract(body->local_vertices[i], body->centroid);
         body->radius = fmax(body->radius, vec_get_length(body->local_vertices[i]));
     }
     /* The centroid's sums grow as the cube of the size: a shape polygon_check
      * accepts can still overflow them. */
-    if (!vec_is_finite(body->centroid) || !isfinite(body->radius)) {
+    if (!vec_is_finite(body->centroid) || !vec_is_finite(off) || !isfinite(body->radius)) {
         engine_fail(function, "bad shape: polygon is too large: its centroid is not finite");
+    }
+    if (vec_get_length(off) > CENTRED_TOLERANCE * body->radius) {
+        engine_fail(function,
+                    "bad shape: its centroid (%g, %g) is not at the origin (within %g of its "
+                    "radius %g m)",
+                    off.x, off.y, CENTRED_TOLERANCE, body->radius);
     }
     for (size_t i = 0; i < n; i++) {
         vector_t edge = vec_subtract(body->local_vertices[(i + 1) % n], body->local_vertices[i]);
@@ -107,11 +121,16 @@ static body_t *body_create(list_t *shape, double mass, rgb_color_t color, void *
 
 body_t *body_init_with_info(list_t *shape, double mass, rgb_color_t color, void *info,
                             free_func_t info_freer) {
-    return body_create(shape, mass, color, info, info_freer, __func__);
+    return body_create(shape, mass, color, info, info_freer, false, __func__);
 }
 
 body_t *body_init(list_t *shape, double mass, rgb_color_t color) {
-    return body_create(shape, mass, color, NULL, NULL, __func__);
+    return body_create(shape, mass, color, NULL, NULL, false, __func__);
+}
+
+body_t *body_init_centred(list_t *shape, double mass, rgb_color_t color, void *info,
+                          free_func_t info_freer) {
+    return body_create(shape, mass, color, info, info_freer, true, __func__);
 }
 
 void body_free(body_t *body) {
@@ -155,6 +174,11 @@ polygon_t body_get_polygon(body_t *body) {
     REQUIRE_NOT_NULL(body);
     body_update_world(body);
     return (polygon_t){body->count, body->world_vertices, body->world_normals};
+}
+
+polygon_t body_get_local_polygon(body_t *body) {
+    REQUIRE_NOT_NULL(body);
+    return (polygon_t){body->count, body->local_vertices, body->local_normals};
 }
 
 aabb_t body_get_bounds(body_t *body) {
