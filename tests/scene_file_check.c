@@ -176,7 +176,9 @@ static bool same_memory(const scene_contact_memory_t *m, const scene_contact_mem
                 same_vector(m->face_normal, n->face_normal) &&
                 same_vector(m->face_point, n->face_point) && same_vector(m->pose, n->pose) &&
                 m->pose_angle == n->pose_angle;
-    for (int j = 0; same && j < m->point_count; j++) same = same_point(&m->points[j], &n->points[j]);
+    for (int j = 0; same && j < m->point_count; j++) {
+        same = same_point(&m->points[j], &n->points[j]);
+    }
     for (int j = 0; same && j < m->feature_count; j++) {
         same = same_vector(m->feature_points[j], n->feature_points[j]) &&
                m->feature_ids[j] == n->feature_ids[j];

@@ -306,7 +306,9 @@ static int check_continuation(scene_file_t *file, const char *name, int steps, i
     run(file, steps);
     scene_t *scene = scene_file_get_scene(file);
     int asleep = 0;
-    for (size_t i = 0; i < scene_bodies(scene); i++) asleep += body_is_sleeping(scene_get_body(scene, i));
+    for (size_t i = 0; i < scene_bodies(scene); i++) {
+        asleep += body_is_sleeping(scene_get_body(scene, i));
+    }
     size_t length = 0;
     scene_file_error_t error;
     char *text = scene_file_write(file, &length, &error);
@@ -318,14 +320,17 @@ static int check_continuation(scene_file_t *file, const char *name, int steps, i
     }
     scene_t *copy = scene_file_get_scene(again);
     long differing = first_differing_body(scene, copy);
-    if (differing != -1) test_fail(__FILE__, __LINE__, "%s: body %ld differs at once", name, differing);
+    if (differing != -1) {
+        test_fail(__FILE__, __LINE__, "%s: body %ld differs at once", name, differing);
+    }
     for (int step = 0; step < more && differing == -1; step++) {
         scene_tick(scene, scene_file_get_timestep(file));
         scene_tick(copy, scene_file_get_timestep(again));
         differing = first_differing_body(scene, copy);
         if (differing != -1) {
-            test_fail(__FILE__, __LINE__, "%s saved after %d steps: body %ld differs %d steps later",
-                      name, steps, differing, step + 1);
+            test_fail(__FILE__, __LINE__,
+                      "%s saved after %d steps: body %ld differs %d steps later", name, steps,
+                      differing, step + 1);
         }
     }
     scene_file_free(again);
@@ -391,7 +396,8 @@ static void drop_as_the_sandbox_does(scene_file_t *file) {
 static void a_sandbox_pile_continues_bit_for_bit_after_a_save(void) {
     scene_file_error_t error;
     for (int steps = 120; steps <= 600; steps += 240) {
-        scene_file_t *file = scene_file_parse(SANDBOX_PILE, strlen(SANDBOX_PILE), "sandbox", &error);
+        scene_file_t *file =
+            scene_file_parse(SANDBOX_PILE, strlen(SANDBOX_PILE), "sandbox", &error);
         if (file == NULL) {
             test_fail(__FILE__, __LINE__, "%s", error.message);
             return;

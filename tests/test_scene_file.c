@@ -588,7 +588,8 @@ static const bad_file_t BAD_FILES[] = {
      "t.scene:3:1: expected bodies numbered from 0 to 0 (the file makes 1), found 1"},
     {"contacts on\nbody a { box 1 1; repeat 2 1 2 0 }\ncontact 1 1 { normal 0 1; face a 0 1 0 0 }",
      "t.scene:3:1: expected two different bodies, found 1 twice"},
-    {"contacts on\nbody a { box 1 1; repeat 2 1 2 0 }\ncontact 0 1 { normal 0 0.5; face a 0 1 0 0 }",
+    {"contacts on\nbody a { box 1 1; repeat 2 1 2 0 }\n"
+     "contact 0 1 { normal 0 0.5; face a 0 1 0 0 }",
      "t.scene:3:1: expected unit vectors for the normal and the face's normal, found lengths 0.5 "
      "and 1"},
     {"contacts on\nbody a { box 1 1; repeat 2 1 2 0 }\ncontact 0 1 { normal 0 1; face a 0 1 0 0 }\n"

@@ -211,6 +211,14 @@ static void timers_filters_and_islands_read_back(void) {
 }
 
 static scene_t *bad_scene;
+
+/* A memory of bodies a and b of bad_scene, the rest zero. */
+static scene_contact_memory_t bad_pair(size_t a, size_t b) {
+    return (scene_contact_memory_t){.body_a = scene_get_body(bad_scene, a),
+                                    .body_b = scene_get_body(bad_scene, b)};
+}
+
+static scene_contact_memory_t bad_nan, bad_count;
 BAD_CALL(restore_static, scene_restore_sleep(bad_scene, (body_t *[]){scene_get_body(bad_scene, 0)},
                                              (size_t[]){0}, 1))
 BAD_CALL(restore_twice, scene_restore_sleep(bad_scene,
@@ -224,27 +232,21 @@ BAD_CALL(restore_foreign, body_t *stranger = make_body(5);
 BAD_CALL(phase_eight, scene_set_sleep_phase(bad_scene, 8))
 BAD_CALL(timer_negative, body_set_sleep_timer(scene_get_body(bad_scene, 3),
                                               (body_sleep_timer_t){-1.0, 0.0, {0, 0}, 0.0}))
-BAD_CALL(memory_self, scene_restore_contact_memory(
-                          bad_scene, &(scene_contact_memory_t){.body_a = scene_get_body(bad_scene, 3),
-                                                               .body_b = scene_get_body(bad_scene, 3)},
-                          1))
-BAD_CALL(memory_nan, scene_restore_contact_memory(
-                         bad_scene, &(scene_contact_memory_t){.body_a = scene_get_body(bad_scene, 3),
-                                                              .body_b = scene_get_body(bad_scene, 4),
-                                                              .pose_angle = NAN},
-                         1))
-BAD_CALL(memory_count, scene_restore_contact_memory(
-                           bad_scene, &(scene_contact_memory_t){.body_a = scene_get_body(bad_scene, 3),
-                                                                .body_b = scene_get_body(bad_scene, 4),
-                                                                .point_count = 3},
-                           1))
-BAD_CALL(memory_twice, scene_contact_memory_t pair = {.body_a = scene_get_body(bad_scene, 3),
-                                                      .body_b = scene_get_body(bad_scene, 4)};
-         scene_restore_contact_memory(bad_scene, (scene_contact_memory_t[]){pair, pair}, 2))
+BAD_CALL(memory_self, bad_nan = bad_pair(3, 3);
+         scene_restore_contact_memory(bad_scene, &bad_nan, 1))
+BAD_CALL(memory_nan, bad_nan = bad_pair(3, 4); bad_nan.pose_angle = NAN;
+         scene_restore_contact_memory(bad_scene, &bad_nan, 1))
+BAD_CALL(memory_count, bad_count = bad_pair(3, 4); bad_count.point_count = 3;
+         scene_restore_contact_memory(bad_scene, &bad_count, 1))
+BAD_CALL(memory_twice, scene_restore_contact_memory(bad_scene,
+                                                    (scene_contact_memory_t[]){bad_pair(3, 4),
+                                                                               bad_pair(3, 4)},
+                                                    2))
 
 static void bad_state_stops_with_a_message(void) {
     bad_scene = new_scene();
-    CHECK_DIES(restore_static, NULL, "engine error in scene_restore_sleep:", "bodies[0] cannot move");
+    CHECK_DIES(restore_static, NULL, "engine error in scene_restore_sleep:",
+               "bodies[0] cannot move");
     CHECK_DIES(restore_twice, NULL, "engine error in scene_restore_sleep:",
                "bodies[1] is asleep already");
     CHECK_DIES(restore_contacts_off, NULL, "engine error in scene_restore_sleep:",

@@ -468,7 +468,8 @@ static void adding_a_static_body_into_a_sleeping_one_wakes_it(void) {
 static void moving_a_static_body_into_a_sleeping_one_wakes_it(void) {
     scene_t *scene = slab_scene((vector_t){0.0, -0.5}, 20.0, 0.5);
     body_t *box = add_box(scene, 0.0, 0.5);
-    body_t *block = body_init(polygon_make_box((vector_t){10.0, 0.5}, 0.5, 0.5), INFINITY, GREY);
+    body_t *block =
+        body_init(polygon_make_box((vector_t){10.0, 0.5}, 0.5, 0.5), INFINITY, GREY);
     scene_add_body(scene, block);
     run(scene, 120);
     CHECK(body_is_sleeping(box));

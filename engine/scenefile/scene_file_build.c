@@ -296,7 +296,8 @@ static bool check_contacts(const sf_doc_t *doc, sf_lexer_t *lexer) {
     for (size_t i = 0; i < doc->contact_count; i++) sorted[i] = &doc->contacts[i];
     qsort(sorted, doc->contact_count, sizeof *sorted, compare_contact_pairs);
     for (size_t i = 1; i < doc->contact_count; i++) {
-        if (sorted[i]->body_a == sorted[i - 1]->body_a && sorted[i]->body_b == sorted[i - 1]->body_b) {
+        const sf_contact_t *c = sorted[i], *before = sorted[i - 1];
+        if (c->body_a == before->body_a && c->body_b == before->body_b) {
             sf_where_t where = sorted[i]->where, first = sorted[i - 1]->where;
             size_t a = sorted[i]->body_a, b = sorted[i]->body_b;
             free(sorted);

@@ -564,7 +564,8 @@ static bool parse_property(parser_t *p, sf_body_t *body, seen_t *seen) {
         angle.what = "the anchor's angle (rad)";
         return once(p, &seen->sleep_timer, keyword, here) &&
                read_quantity(p, &slow, &t->slow_time) && read_quantity(p, &window, &t->window) &&
-               read_vector(p, &COORDINATE, &t->anchor) && read_quantity(p, &angle, &t->anchor_angle);
+               read_vector(p, &COORDINATE, &t->anchor) &&
+               read_quantity(p, &angle, &t->anchor_angle);
     }
     if (strcmp(keyword, "repeat") == 0) {
         next(p);
@@ -943,7 +944,8 @@ static bool read_face(parser_t *p, scene_contact_memory_t *m) {
     next(p);
     quantity_t point = STATE_VALUE;
     point.what = "a coordinate of the face's point (m)";
-    if (!read_vector(p, &UNIT_COMPONENT, &m->face_normal) || !read_vector(p, &point, &m->face_point))
+    if (!read_vector(p, &UNIT_COMPONENT, &m->face_normal) ||
+        !read_vector(p, &point, &m->face_point))
         return false;
     m->edge_ends = sf_token_is(&p->token, "edge");
     if (m->edge_ends) next(p);
@@ -965,14 +967,15 @@ static bool parse_contact_line(parser_t *p, sf_contact_t *contact, sf_where_t *s
     if (!known) return expected(p, "a contact line (normal, point, face, incident, pose) or '}'");
     next(p);
     if (strcmp(keyword, "normal") == 0) {
-        return first_time(p, &seen[0], "normal", here) && read_vector(p, &UNIT_COMPONENT, &m->normal);
+        return first_time(p, &seen[0], "normal", here) &&
+               read_vector(p, &UNIT_COMPONENT, &m->normal);
     }
     if (strcmp(keyword, "point") == 0 || strcmp(keyword, "incident") == 0) {
         bool incident = keyword[0] == 'i';
         int *count = incident ? &m->feature_count : &m->point_count;
         if (*count == 2) {
-            return sf_fail(p->lexer, here, "expected at most two %s lines in a contact, found a third",
-                           keyword);
+            return sf_fail(p->lexer, here,
+                           "expected at most two %s lines in a contact, found a third", keyword);
         }
         if (!incident) return read_memory_point(p, &m->points[m->point_count++]);
         quantity_t coordinate = STATE_VALUE;
@@ -1000,8 +1003,9 @@ static bool parse_contact(parser_t *p, sf_where_t here) {
     sf_contact_t *contact = &doc->contacts[doc->contact_count++];
     *contact = (sf_contact_t){.where = here};
     uint64_t a = 0, b = 0;
-    if (!read_count(p, "the number of the contact's first body", 0, SCENE_FILE_MAX_BODIES - 1, &a) ||
-        !read_count(p, "the number of the contact's second body", 0, SCENE_FILE_MAX_BODIES - 1, &b))
+    const uint64_t last = SCENE_FILE_MAX_BODIES - 1;
+    if (!read_count(p, "the number of the contact's first body", 0, last, &a) ||
+        !read_count(p, "the number of the contact's second body", 0, last, &b))
         return false;
     contact->body_a = (size_t)a;
     contact->body_b = (size_t)b;

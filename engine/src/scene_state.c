@@ -147,7 +147,9 @@ static bool memory_is_finite(const scene_contact_memory_t *m) {
                  isfinite(p->normal_impulse) && isfinite(p->tangent_impulse) &&
                  isfinite(p->restitution_impulse) && isfinite(p->restitution_tangent_impulse);
     }
-    for (int j = 0; j < m->feature_count; j++) finite = finite && finite_vector(m->feature_points[j]);
+    for (int j = 0; j < m->feature_count; j++) {
+        finite = finite && finite_vector(m->feature_points[j]);
+    }
     return finite;
 }
 
@@ -166,8 +168,8 @@ static void check_memory(const scene_t *scene, const scene_contact_memory_t *m, 
                     m->point_count, m->feature_count);
     }
     if (!memory_is_finite(m)) {
-        engine_fail("scene_restore_contact_memory", "memories[%zu] holds a value that is not finite",
-                    i);
+        engine_fail("scene_restore_contact_memory",
+                    "memories[%zu] holds a value that is not finite", i);
     }
 }
 

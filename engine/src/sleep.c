@@ -228,8 +228,8 @@ static aabb_t grown(aabb_t box, double by) {
 
 void sleep_wake_changed(const sleep_t *sleep, body_t *body, double dt, double margin) {
     body_update_world(body);
-    double grow = dt * (vec_get_length(body->velocity) + fabs(body->angular_velocity) * body->radius) +
-                  margin;
+    double speed = vec_get_length(body->velocity) + fabs(body->angular_velocity) * body->radius;
+    double grow = dt * speed + margin;
     wake_within(sleep, grown(body->changed_bounds, grow));
     wake_within(sleep, grown(body->bounds, grow));
 }

@@ -730,7 +730,8 @@ static size_t gather_awake(world_t *world, body_t **bodies, const integrator_mot
 void world_wake_changed(world_t *world, body_t **bodies, size_t count, double dt) {
     if (!sleep_any(&world->sleep)) return;
     for (size_t i = 0; i < count; i++) {
-        if (bodies[i]->changed) sleep_wake_changed(&world->sleep, bodies[i], dt, CONTACT_MARGIN);
+        if (!bodies[i]->changed) continue;
+        sleep_wake_changed(&world->sleep, bodies[i], dt, CONTACT_MARGIN);
     }
 }
 
@@ -827,7 +828,8 @@ static void add_remembered(world_t *world, size_t n, const scene_contact_memory_
     }
 }
 
-void world_restore_memory(world_t *world, const scene_contact_memory_t *memories, size_t count) {
+void world_restore_memory(world_t *world, const scene_contact_memory_t *memories,
+                          size_t count) {
     /* A new step: whatever groups the bodies had point to an older one. */
     world->step_number++;
     memory_reserve((void **)&world->contacts, &world->contact_capacity, count,
@@ -839,7 +841,9 @@ void world_restore_memory(world_t *world, const scene_contact_memory_t *memories
     for (size_t i = 0; i < count;) {
         body_t *a = memories[i].body_a;
         size_t first = i;
-        for (; i < count && memories[i].body_a == a; i++) add_remembered(world, i, &memories[i]);
+        for (; i < count && memories[i].body_a == a; i++) {
+            add_remembered(world, i, &memories[i]);
+        }
         place_group(world, a, first, i, 0, 0);
     }
 }
