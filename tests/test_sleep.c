@@ -478,6 +478,26 @@ static void moving_a_static_body_into_a_sleeping_one_wakes_it(void) {
     scene_free(scene);
 }
 
+/* A sleeping body removed and reaped by a tick of dt 0 (a paused game),
+ * then a change next to its island: the index of sleepers no longer names
+ * the freed body (AddressSanitizer would stop a read of it), and the rest
+ * of the stack falls when the floor goes. */
+static void a_body_reaped_while_paused_leaves_the_index(void) {
+    body_t *boxes[3];
+    scene_t *scene = sleeping_stack(boxes);
+    body_remove(boxes[2]);
+    scene_tick(scene, 0.0);
+    CHECK(scene_bodies(scene) == 3);
+    body_set_friction(scene_get_body(scene, 0), 0.5);
+    run(scene, 60);
+    CHECK(count_asleep(boxes, 2) == 2);
+    body_remove(scene_get_body(scene, 0));
+    double y = body_get_centroid(boxes[1]).y;
+    run(scene, 60);
+    CHECK_NEAR(body_get_centroid(boxes[1]).y, y - 0.5 * G, 1e-9);
+    scene_free(scene);
+}
+
 TEST_SUITE(sleep, TEST_CASE(sleeping_and_waking_allocate_nothing_once_warm), TEST_CASE(settled_pile_falls_asleep),
            TEST_CASE(sliding_sleeps_only_below_the_tolerance),
            TEST_CASE(slow_free_flight_keeps_moving),
@@ -497,4 +517,5 @@ TEST_SUITE(sleep, TEST_CASE(sleeping_and_waking_allocate_nothing_once_warm), TES
            TEST_CASE(removing_friction_wakes_a_box_on_a_slope),
            TEST_CASE(changing_elasticity_wakes_what_it_touches),
            TEST_CASE(adding_a_static_body_into_a_sleeping_one_wakes_it),
-           TEST_CASE(moving_a_static_body_into_a_sleeping_one_wakes_it));
+           TEST_CASE(moving_a_static_body_into_a_sleeping_one_wakes_it),
+           TEST_CASE(a_body_reaped_while_paused_leaves_the_index));

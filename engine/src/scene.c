@@ -551,9 +551,9 @@ void scene_tick(scene_t *scene, double dt) {
     scene->dt = dt;
     if (dt == 0.0) {
         /* No time passes, so nothing may move or collide; the caller only
-         * wants the pending removals applied (a paused game). The world's
-         * last contacts stay for the next step, but for those naming the
-         * bodies about to be freed. */
+         * wants the pending removals applied (a paused game). The world
+         * keeps its last contacts and its sleepers for the next step, but
+         * forgets the bodies about to be freed. */
         if (scene->world != NULL) scene->world_ops->forget_removed(scene->world);
         stage_reap(scene);
         return;

@@ -243,6 +243,14 @@ static aabb_t reach_of(const sleep_step_t *step, size_t i) {
     return grown(step->proxies[i].box, grow);
 }
 
+void sleep_forget_removed(sleep_t *sleep) {
+    size_t kept = 0;
+    for (size_t k = 0; k < sleep->count; k++) {
+        if (!sleep->entries[k].body->removed) sleep->entries[kept++] = sleep->entries[k];
+    }
+    sleep->count = kept;
+}
+
 void sleep_index_asleep(sleep_t *sleep, body_t **bodies, size_t count) {
     rebuild_index(sleep, bodies, count, count_asleep(bodies, count));
     sleep->slept = 0;

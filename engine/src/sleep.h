@@ -98,6 +98,10 @@ void sleep_islands(sleep_t *sleep, const sleep_step_t *step, const sleep_link_t 
 void sleep_wake_reached(sleep_t *sleep, const sleep_step_t *step, body_t **all_bodies,
                         size_t all_count);
 
+/* Drops the bodies marked removed from the index, before they are freed
+ * without a step (a tick of dt 0), which would rebuild it. */
+void sleep_forget_removed(sleep_t *sleep);
+
 /* Indexes the sleeping bodies of bodies[0 .. count) (every body of the
  * scene) after they were put to sleep outside a step (scene_restore_sleep),
  * so that the next step leaves them out and wakes them as any others. */

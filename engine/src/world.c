@@ -864,6 +864,7 @@ void world_forget_removed(world_t *world) {
         }
     }
     world->contact_count = kept;
+    sleep_forget_removed(&world->sleep);
 }
 
 unsigned world_get_sleep_phase(const world_t *world) {

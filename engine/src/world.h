@@ -80,8 +80,8 @@ bool world_pair_contact(const world_t *world, body_t *body1, body_t *body2, cont
  * contact index (below world_contact_count) of the last step;
  * world_restore_memory makes the memories the contacts of a last step
  * (checked by the caller, and sorted by pair: body_a's id, then body_b's);
- * world_forget_removed drops the contacts that name a body marked removed,
- * before a tick without a step frees it. The phase is sleep.h's
+ * world_forget_removed drops the contacts and sleeping bodies that name a
+ * body marked removed, before a tick without a step frees it. The phase is sleep.h's
  * island check count; world_index_sleepers indexes the bodies of
  * bodies[0 .. count) that were put to sleep outside a step. */
 void world_get_memory(const world_t *world, size_t index, scene_contact_memory_t *memory);
