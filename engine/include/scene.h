@@ -126,7 +126,8 @@ void scene_tick(scene_t *scene, double dt);
 
 /* Uniform gravitational acceleration (m/s^2) for every body of finite mass,
  * applied by the integrator; default (0, 0). Cheaper than a force creator per
- * body and known exactly to the contact solver. */
+ * body and known exactly to the contact solver. A value different from the
+ * current one wakes every sleeping body of finite mass (and its island). */
 void scene_set_gravity(scene_t *scene, vector_t gravity);
 vector_t scene_get_gravity(scene_t *scene);
 
@@ -226,8 +227,14 @@ bool scene_get_contacts_enabled(scene_t *scene);
  * under half a metre across). Out of the step means no integration,
  * no contacts, no solving, its velocities 0 (body_is_sleeping). It wakes
  * when a moving body comes within a step of it, when a pose, velocity,
- * nonzero force, torque or impulse is set on one of its bodies, or when one
- * of them is removed. A sleeping pair's contacts are not in the record, and
+ * material, filter, nonzero force, torque or impulse is set on one of its
+ * bodies, when one of them is removed, and when gravity changes. A body
+ * that changes (pose, velocity, inertia, material or filter set, removed,
+ * or added to the scene; static bodies too) wakes, at the start of the
+ * next scene_tick, after its force creators, the sleeping islands whose
+ * boxes overlap its box before or after the change (docs/api.md,
+ * "Sleeping"): a floor taken away drops what slept on it. A sleeping
+ * pair's contacts are not in the record, and
  * its collision handler neither fires nor re-arms while it sleeps.
  * Switching sleeping (or world contacts) off wakes every body.
  */

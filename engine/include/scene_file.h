@@ -148,21 +148,24 @@ size_t scene_file_force_count(scene_file_t *file);
 scene_file_force_t scene_file_get_force(scene_file_t *file, size_t index);
 
 /*
- * Writes the scene as it is now, in the file format: the settings, the
- * templates, every body still in the scene and not marked removed (with its
- * current position, angle, velocity, spin, elasticity, friction and colour),
- * and the forces and rules among them. Bodies the file did not make (dropped
- * by the sandbox's user) are written too, as anonymous bodies with their world
- * vertices and mass; their collision filters and info cannot be read back from
- * the engine and are not written. Force creators the file did not make are
- * not written (the engine cannot list them).
+ * Writes the scene as it is now, in the file format: the settings (sleeping
+ * and the sleep phase included), the templates, every body still in the
+ * scene and not marked removed (with its current position, angle, velocity,
+ * spin, elasticity, friction, colour, collision filter, sleep and sleep
+ * timer), the forces and rules among them, and the world's contact memory
+ * (scene_state.h). Bodies the file did not make (dropped by the sandbox's
+ * user) are written too, as anonymous bodies with their vertices in their
+ * own frame (`centred`) and mass; their info is not written. Force creators
+ * the file did not make are not written (the engine cannot list them).
  *
  * Loading the text gives the same scene: the same bodies in the same order,
- * those the file made equal bit for bit in every value the engine reports
- * (the others to rounding: their vertices are taken relative to their
- * centroid again), and the same forces in the same order. A body that has gone beyond the limits of
- * docs/scenes.md (1e9 m from the origin) makes a text that loading refuses,
- * naming it.
+ * equal bit for bit in every value the engine reports and in the state
+ * scene_state.h reads, and the same force creators (those a spawned body
+ * joined in file order rather than last); ticked, it goes on as this scene
+ * would, to the bit, but for what docs/scenes.md ("Saving") lists: chiefly
+ * the seed collision rules' memory of which pairs touch. A body that has
+ * gone beyond the limits of docs/scenes.md (1e9 m from the origin) makes a
+ * text that loading refuses, naming it.
  *
  * Returns a NUL-terminated heap string (the caller frees it with free) and its
  * length in *length (may be NULL), or NULL with *error filled in when the

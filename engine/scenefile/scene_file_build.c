@@ -95,7 +95,9 @@ static sf_record_t *make_body(scene_file_t *file, size_t spec_index, vector_t po
         *v = spec->shape.centred[i];
         list_add(shape, v);
     }
-    body_t *body = body_init_with_info(shape, spec->mass, spec->color, record, record_freed);
+    body_t *body = spec->shape.as_centred
+                       ? body_init_centred(shape, spec->mass, spec->color, record, record_freed)
+                       : body_init_with_info(shape, spec->mass, spec->color, record, record_freed);
     body_set_centroid(body, position);
     body_set_rotation(body, spec->angle);
     body_set_velocity(body, velocity);
@@ -300,6 +302,118 @@ static bool make_forces(scene_file_t *file, sf_lexer_t *lexer) {
     return true;
 }
 
+/* ---- The state a continuation needs (scene_state.h) ------------------------ */
+
+static bool is_unit(vector_t v) {
+    return fabs(sqrt(v.x * v.x + v.y * v.y) - 1.0) <= 1e-9;
+}
+
+static int compare_contact_pairs(const void *p, const void *q) {
+    const sf_contact_t *a = *(const sf_contact_t *const *)p, *b = *(const sf_contact_t *const *)q;
+    if (a->body_a != b->body_a) return a->body_a < b->body_a ? -1 : 1;
+    if (a->body_b != b->body_b) return a->body_b < b->body_b ? -1 : 1;
+    return a->where.line < b->where.line ? -1 : a->where.line > b->where.line;
+}
+
+/* The contact blocks name two different bodies the file makes, once per
+ * pair, with unit normals. */
+static bool check_contacts(const sf_doc_t *doc, sf_lexer_t *lexer) {
+    for (size_t i = 0; i < doc->contact_count; i++) {
+        const sf_contact_t *c = &doc->contacts[i];
+        size_t last = c->body_a > c->body_b ? c->body_a : c->body_b;
+        if (last >= doc->total_bodies) {
+            return sf_fail(lexer, c->where,
+                           "expected bodies numbered from 0 to %zu (the file makes %zu), found %zu",
+                           doc->total_bodies == 0 ? 0 : doc->total_bodies - 1, doc->total_bodies,
+                           last);
+        }
+        if (c->body_a == c->body_b) {
+            return sf_fail(lexer, c->where, "expected two different bodies, found %zu twice",
+                           c->body_a);
+        }
+        if (!is_unit(c->memory.normal) || !is_unit(c->memory.face_normal)) {
+            return sf_fail(lexer, c->where,
+                           "expected unit vectors for the normal and the face's normal, found "
+                           "lengths %g and %g",
+                           vec_get_length(c->memory.normal), vec_get_length(c->memory.face_normal));
+        }
+    }
+    const sf_contact_t **sorted = malloc((doc->contact_count + 1) * sizeof *sorted);
+    if (sorted == NULL) abort();
+    for (size_t i = 0; i < doc->contact_count; i++) sorted[i] = &doc->contacts[i];
+    qsort(sorted, doc->contact_count, sizeof *sorted, compare_contact_pairs);
+    for (size_t i = 1; i < doc->contact_count; i++) {
+        const sf_contact_t *c = sorted[i], *before = sorted[i - 1];
+        if (c->body_a == before->body_a && c->body_b == before->body_b) {
+            sf_where_t where = sorted[i]->where, first = sorted[i - 1]->where;
+            size_t a = sorted[i]->body_a, b = sorted[i]->body_b;
+            free(sorted);
+            return sf_fail(lexer, where,
+                           "expected one contact per pair, found a second for %zu and %zu (the "
+                           "first at line %zu)",
+                           a, b, first.line);
+        }
+    }
+    free(sorted);
+    return true;
+}
+
+/* Sleep state and contact memory are the world's: they need its contacts,
+ * and sleep needs sleeping on. */
+static bool check_state(const sf_doc_t *doc, sf_lexer_t *lexer) {
+    const sf_settings_t *s = &doc->settings;
+    sf_where_t needs_contacts = doc->first_island;
+    if (needs_contacts.line == 0 && doc->contact_count > 0) needs_contacts = doc->contacts[0].where;
+    if (needs_contacts.line == 0) needs_contacts = s->sleep_phase_where;
+    if (needs_contacts.line != 0 && !s->contacts) {
+        return sf_fail(lexer, needs_contacts,
+                       "expected contacts on for the world's state (asleep, contact, sleep_phase), "
+                       "found contacts off");
+    }
+    if (doc->first_island.line != 0 && !s->sleeping) {
+        return sf_fail(lexer, doc->first_island,
+                       "expected sleeping on for a body asleep, found sleeping off");
+    }
+    return check_contacts(doc, lexer);
+}
+
+/* After every body is made and set: the timers (which setting a body's
+ * pose restarts), the sleeping islands, the phase, the contact memory. */
+static void restore_state(scene_file_t *file) {
+    sf_doc_t *doc = &file->doc;
+    scene_t *scene = file->scene;
+    body_t **sleepers = malloc((file->record_count + 1) * sizeof *sleepers);
+    size_t *islands = malloc((file->record_count + 1) * sizeof *islands);
+    if (sleepers == NULL || islands == NULL) abort();
+    size_t asleep = 0;
+    for (size_t i = 0; i < file->record_count; i++) {
+        const sf_body_t *spec = &doc->bodies[file->records[i]->spec];
+        body_t *body = file->records[i]->body;
+        if (spec->has_timer) body_set_sleep_timer(body, spec->timer);
+        if (spec->has_island) {
+            sleepers[asleep] = body;
+            islands[asleep++] = spec->island;
+        }
+    }
+    if (asleep > 0) scene_restore_sleep(scene, sleepers, islands, asleep);
+    free(sleepers);
+    free(islands);
+    if (doc->settings.sleep_phase_where.line != 0) {
+        scene_set_sleep_phase(scene, doc->settings.sleep_phase);
+    }
+    if (doc->contact_count == 0) return;
+    scene_contact_memory_t *memories = malloc(doc->contact_count * sizeof *memories);
+    if (memories == NULL) abort();
+    for (size_t i = 0; i < doc->contact_count; i++) {
+        const sf_contact_t *c = &doc->contacts[i];
+        memories[i] = c->memory;
+        memories[i].body_a = file->records[c->body_a]->body;
+        memories[i].body_b = file->records[c->body_b]->body;
+    }
+    scene_restore_contact_memory(scene, memories, doc->contact_count);
+    free(memories);
+}
+
 /* ---- Build ---------------------------------------------------------------- */
 
 static void apply_settings(scene_file_t *file) {
@@ -308,14 +422,17 @@ static void apply_settings(scene_file_t *file) {
     scene_set_contacts_enabled(file->scene, s->contacts);
     scene_set_integrator(file->scene, s->integrator);
     scene_set_solver_iterations(file->scene, s->velocity_iterations, s->position_iterations);
+    scene_set_sleeping(file->scene, s->sleeping);
 }
 
 bool sf_build(scene_file_t *file, sf_lexer_t *lexer) {
-    if (!resolve(&file->doc, lexer)) return false;
+    if (!resolve(&file->doc, lexer) || !check_state(&file->doc, lexer)) return false;
     file->scene = scene_init();
     apply_settings(file);
     make_bodies(file);
-    return make_forces(file, lexer);
+    if (!make_forces(file, lexer)) return false;
+    restore_state(file);
+    return true;
 }
 
 /* ---- Live ----------------------------------------------------------------- */

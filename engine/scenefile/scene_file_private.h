@@ -103,6 +103,7 @@ typedef struct {
     double radius;        /* SHAPE_REGULAR: circumradius */
     double width, height; /* SHAPE_BOX: full sizes */
     vector_t *written;    /* SHAPE_VERTICES: as written, made counter-clockwise */
+    bool as_centred;      /* SHAPE_VERTICES: written relative to the centroid, kept exactly */
     size_t count;         /* vertices */
     /* Derived once the shape is checked: */
     vector_t *centred;    /* the vertices relative to the area centroid, counter-clockwise */
@@ -134,6 +135,10 @@ typedef struct {
     double spin;
     bool has_filter;
     uint32_t category, mask, filter_group;
+    bool has_island;           /* `asleep ISLAND`: the body sleeps in that island */
+    size_t island;
+    bool has_timer;            /* `sleep_timer`: its sleep timer (scene_state.h) */
+    body_sleep_timer_t timer;
     bool has_repeat;           /* a repeated block names a group, whatever its counts */
     size_t repeat_x, repeat_y; /* 1 and 1 without repeat */
     vector_t repeat_step;
@@ -199,7 +204,19 @@ typedef struct {
     sf_where_t view_where;
     sf_name_t game;
     sf_where_t game_where;
+    bool sleeping;
+    sf_where_t sleeping_where;
+    unsigned sleep_phase;
+    sf_where_t sleep_phase_where;
 } sf_settings_t;
+
+/* A `contact A B { ... }` block: the world's contact memory of one pair
+ * (scene_state.h), its bodies by the order the file makes them. */
+typedef struct {
+    sf_where_t where;
+    size_t body_a, body_b;
+    scene_contact_memory_t memory; /* bodies NULL until built */
+} sf_contact_t;
 
 /* One name: a single body or a group. */
 typedef struct {
@@ -223,6 +240,9 @@ typedef struct {
     sf_statement_t *statements;
     size_t statement_count, statement_capacity;
     sf_names_t names;
+    sf_contact_t *contacts;
+    size_t contact_count, contact_capacity;
+    sf_where_t first_island; /* the first `asleep`, for the message when sleeping is off */
     size_t total_bodies; /* bodies the blocks make, repeats counted */
     size_t total_vertices;
 } sf_doc_t;
@@ -329,5 +349,6 @@ void sf_reserve(void **array, size_t *capacity, size_t needed, size_t element_si
 #define SF_MAX_CONSTANT 1e40 /* masses, densities, G, k, gamma */
 #define SF_MIN_MOMENT 1e-290 /* kg m^2: far inside what a double inverts */
 #define SF_MAX_MOMENT 1e290
+#define SF_MAX_STATE 1e300   /* the engine's state: timers, impulses, separations */
 
 #endif // #ifndef SCENE_FILE_PRIVATE_H

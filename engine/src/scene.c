@@ -157,6 +157,7 @@ void scene_add_body(scene_t *scene, body_t *body) {
                    sizeof(body_t *));
     body->id = scene->next_body_id++;
     scene->bodies[scene->body_count++] = body;
+    body_mark_changed(body); /* sleeping bodies it lands in wake */
 }
 
 void scene_remove_body(scene_t *scene, size_t index) {
@@ -226,6 +227,13 @@ static const char *const SETTING_ADVICE = "change the setting between ticks";
 void scene_set_gravity(scene_t *scene, vector_t gravity) {
     REQUIRE_NOT_NULL(scene);
     REQUIRE_FINITE_VECTOR(gravity);
+    if (gravity.x != scene->gravity.x || gravity.y != scene->gravity.y) {
+        /* Gravity pulls every body of finite mass: none may rest as it was. */
+        for (size_t i = 0; i < scene->body_count; i++) {
+            body_t *body = scene->bodies[i];
+            if (body->asleep && body->inverse_mass > 0.0) body_wake(body);
+        }
+    }
     scene->gravity = gravity;
 }
 
@@ -274,6 +282,15 @@ void scene_install_world(scene_t *scene, world_t *world, const world_ops_t *ops)
     if (world == NULL) wake_all(scene);
     scene->world = world;
     scene->world_ops = ops;
+}
+
+world_t *scene_world(const scene_t *scene, const world_ops_t **ops) {
+    *ops = scene->world_ops;
+    return scene->world;
+}
+
+body_t **scene_body_array(const scene_t *scene) {
+    return scene->bodies;
 }
 
 void scene_get_iterations(const scene_t *scene, size_t *velocity_iterations,
@@ -435,6 +452,9 @@ static const integrator_motion_t *stage_motion(scene_t *scene, integrator_step_t
         integrator_begin(scene->integrator, scene->bodies, scene->body_count, &scene->stages);
     }
     if (scene->force_count > 0) stage_forces(scene);
+    if (scene->world != NULL && scene->sleeping) {
+        scene->world_ops->wake_changed(scene->world, scene->bodies, scene->body_count, step->dt);
+    }
     if (one_stage && scene->world == NULL) return NULL;
     memory_reserve((void **)&scene->motions, &scene->motion_capacity, scene->body_count,
                    sizeof(integrator_motion_t));
@@ -585,7 +605,10 @@ static void tick(scene_t *scene, double dt) {
     scene->dt = dt;
     if (dt == 0.0) {
         /* No time passes, so nothing may move or collide; the caller only
-         * wants the pending removals applied (a paused game). */
+         * wants the pending removals applied (a paused game). The world
+         * keeps its last contacts and its sleepers for the next step, but
+         * forgets the bodies about to be freed. */
+        if (scene->world != NULL) scene->world_ops->forget_removed(scene->world);
         stage_reap(scene);
         return;
     }

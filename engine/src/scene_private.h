@@ -5,6 +5,7 @@
 
 #include "contact.h"
 #include "scene.h"
+#include "scene_state.h"
 #include "workers.h"
 #include "world.h"
 
@@ -65,17 +66,30 @@ typedef struct {
                            size_t position_iterations);
     void (*set_workers)(world_t *world, size_t workers);
     void (*for_bodies)(world_t *world, size_t count, workers_fn_t fn, void *context);
+    void (*wake_changed)(world_t *world, body_t **bodies, size_t count, double dt);
     void (*step)(world_t *world, body_t **bodies, integrator_motion_t *motions, size_t count,
                  const world_step_t *step, scene_stats_t *stats);
     size_t (*contact_count)(const world_t *world);
     contact_t (*get_contact)(const world_t *world, size_t index);
     bool (*pair_collides)(const body_t *body1, const body_t *body2);
     bool (*pair_contact)(const world_t *world, body_t *body1, body_t *body2, contact_t *contact);
+    /* The state a continuation needs (scene_state.c). */
+    void (*get_memory)(const world_t *world, size_t index, scene_contact_memory_t *memory);
+    void (*restore_memory)(world_t *world, const scene_contact_memory_t *memories, size_t count);
+    void (*forget_removed)(world_t *world);
+    unsigned (*get_sleep_phase)(const world_t *world);
+    void (*set_sleep_phase)(world_t *world, unsigned phase);
+    void (*index_sleepers)(world_t *world, body_t **bodies, size_t count);
 } world_ops_t;
 
 /* Hands the scene a world (NULL with ops NULL: contacts off), freeing the
  * one it had. */
 void scene_install_world(scene_t *scene, world_t *world, const world_ops_t *ops);
+
+/* The scene's world and its functions (NULL, with *ops NULL, while
+ * contacts are off), and its bodies, scene_bodies of them, in order. */
+world_t *scene_world(const scene_t *scene, const world_ops_t **ops);
+body_t **scene_body_array(const scene_t *scene);
 
 /* The solver iterations the scene keeps for its world. */
 void scene_get_iterations(const scene_t *scene, size_t *velocity_iterations,

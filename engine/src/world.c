@@ -251,6 +251,7 @@ static void set_filter(broadphase_proxy_t *proxy, const body_t *body) {
 WORLD_INLINE void load_body(world_t *world, body_t *body, const integrator_motion_t *motion, size_t i,
                       double dt) {
     body->solver_index = (uint32_t)i;
+    body->changed = false; /* world_wake_changed has seen it */
     body_update_world(body);
     solver_state_t *state = &world->states[i];
     solver_velocity_t *velocity = &world->velocities[i];
@@ -797,6 +798,14 @@ static void time_step(world_t *world, double dt) {
     world->last_dt = dt;
 }
 
+void world_wake_changed(world_t *world, body_t **bodies, size_t count, double dt) {
+    if (!sleep_any(&world->sleep)) return;
+    for (size_t i = 0; i < count; i++) {
+        if (!bodies[i]->changed) continue;
+        sleep_wake_changed(&world->sleep, bodies[i], dt, CONTACT_MARGIN);
+    }
+}
+
 void world_step(world_t *world, body_t **bodies, integrator_motion_t *motions, size_t count,
                 const world_step_t *step, scene_stats_t *stats) {
     time_step(world, step->dt);
@@ -828,6 +837,118 @@ contact_t world_get_contact(const world_t *world, size_t index) {
         entry.touching |= c->points[j].separation <= 0.0 || entry.normal_impulse[j] > 0.0;
     }
     return entry;
+}
+
+void world_get_memory(const world_t *world, size_t index, scene_contact_memory_t *memory) {
+    const solver_contact_t *c = &world->contacts[index];
+    const contact_source_t *source = &world->sources[index];
+    *memory = (scene_contact_memory_t){
+        .body_a = source->body_a,
+        .body_b = source->body_b,
+        .normal = c->normal,
+        .point_count = c->point_count,
+        .flip = source->features.flip,
+        .edge_ends = source->features.edge_ends,
+        .feature_count = source->features.point_count,
+        .face_normal = source->features.normal,
+        .face_point = source->features.face_point,
+        .pose = source->pose.position,
+        .pose_angle = source->pose.angle,
+    };
+    for (int j = 0; j < c->point_count; j++) {
+        const solver_point_t *p = &c->points[j];
+        memory->points[j] = (scene_memory_point_t){
+            p->id, source->points[j], p->separation, p->normal_impulse, p->tangent_impulse,
+            p->restitution_impulse, p->restitution_tangent_impulse};
+    }
+    for (int j = 0; j < source->features.point_count; j++) {
+        memory->feature_points[j] = source->features.points[j];
+        memory->feature_ids[j] = source->features.ids[j];
+    }
+}
+
+/* Writes contact n of the step from a memory (world_restore_memory). */
+static void add_remembered(world_t *world, size_t n, const scene_contact_memory_t *memory) {
+    solver_contact_t *contact = &world->contacts[n];
+    contact_source_t *source = &world->sources[n];
+    *contact = (solver_contact_t){.normal = memory->normal, .point_count = memory->point_count};
+    *source = (contact_source_t){
+        .key = pair_key(memory->body_a, memory->body_b),
+        .body_a = memory->body_a,
+        .body_b = memory->body_b,
+        .features = {.flip = memory->flip,
+                     .edge_ends = memory->edge_ends,
+                     .point_count = memory->feature_count,
+                     .normal = memory->face_normal,
+                     .face_point = memory->face_point},
+        .pose = {memory->pose, memory->pose_angle},
+    };
+    for (int j = 0; j < memory->point_count; j++) {
+        const scene_memory_point_t *from = &memory->points[j];
+        solver_point_t *p = &contact->points[j];
+        p->id = from->id;
+        p->separation = from->separation;
+        p->normal_impulse = from->normal_impulse;
+        p->tangent_impulse = from->tangent_impulse;
+        p->restitution_impulse = from->restitution_impulse;
+        p->restitution_tangent_impulse = from->restitution_tangent_impulse;
+        source->points[j] = from->point;
+    }
+    for (int j = 0; j < memory->feature_count; j++) {
+        source->features.points[j] = memory->feature_points[j];
+        source->features.ids[j] = memory->feature_ids[j];
+    }
+}
+
+void world_restore_memory(world_t *world, const scene_contact_memory_t *memories,
+                          size_t count) {
+    /* A new step: whatever groups the bodies had point to an older one. */
+    world->step_number++;
+    memory_reserve((void **)&world->contacts, &world->contact_capacity, count,
+                   sizeof(solver_contact_t));
+    memory_reserve((void **)&world->sources, &world->source_capacity, count,
+                   sizeof(contact_source_t));
+    world->contact_count = count;
+    world->gap_count = 0;
+    for (size_t i = 0; i < count;) {
+        body_t *a = memories[i].body_a;
+        size_t first = i;
+        for (; i < count && memories[i].body_a == a; i++) {
+            add_remembered(world, i, &memories[i]);
+        }
+        place_group(world, a, first, i, 0, 0);
+    }
+}
+
+void world_forget_removed(world_t *world) {
+    size_t kept = 0;
+    for (size_t i = 0; i < world->contact_count;) {
+        body_t *a = world->sources[i].body_a;
+        size_t first = kept;
+        for (; i < world->contact_count && world->sources[i].body_a == a; i++) {
+            if (a->removed || world->sources[i].body_b->removed) continue;
+            world->contacts[kept] = world->contacts[i];
+            world->sources[kept++] = world->sources[i];
+        }
+        if (!a->removed) {
+            a->contact_first = (uint32_t)first;
+            a->contact_count = (uint32_t)(kept - first);
+        }
+    }
+    world->contact_count = kept;
+    sleep_forget_removed(&world->sleep);
+}
+
+unsigned world_get_sleep_phase(const world_t *world) {
+    return world->sleep.steps;
+}
+
+void world_set_sleep_phase(world_t *world, unsigned phase) {
+    world->sleep.steps = phase;
+}
+
+void world_index_sleepers(world_t *world, body_t **bodies, size_t count) {
+    sleep_index_asleep(&world->sleep, bodies, count);
 }
 
 bool world_pair_collides(const body_t *body1, const body_t *body2) {
