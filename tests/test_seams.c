@@ -274,7 +274,8 @@ static void turned_boxes_land_beside_a_seam_as_on_one_floor(void) {
                                                        0.02 - bounds.min.y});
                 scene_add_body(scenes[j], boxes[j]);
             }
-            drift_t drift = glide(tiled, boxes[0], whole, boxes[1], (vector_t){1.0, 0.0}, 10.0, 180);
+            drift_t drift =
+                glide(tiled, boxes[0], whole, boxes[1], (vector_t){1.0, 0.0}, 10.0, 180);
             CHECK(drift.across <= HEIGHT_TOLERANCE);
             CHECK(drift.along <= HEIGHT_TOLERANCE);
             CHECK(fabs(body_get_rotation(boxes[0]) - body_get_rotation(boxes[1])) < 1e-3);

@@ -10,6 +10,9 @@
  * Points are reported while the separation is at most `margin` (metres), so
  * the solver sees contacts that are about to form (speculative contacts) and
  * can stop bodies before they touch instead of after they overlap.
+ *
+ * Against a static body with flush static neighbours (seams.h), the contact
+ * keeps to the faces of their combined surface, as against one body.
  */
 
 #include <stdint.h>

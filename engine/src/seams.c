@@ -148,7 +148,10 @@ static void apply_covers(seams_t *seams, size_t statics) {
         for (size_t i = 0; i < body->count; i++) {
             size_t end = k;
             while (end < seams->cover_count && covers[end].edge == first + i) end++;
-            if (end > k) join_covers(&body->seam->edges[i], covers + k, end - k, edge_line(body, i).length);
+            if (end > k) {
+                join_covers(&body->seam->edges[i], covers + k, end - k,
+                            edge_line(body, i).length);
+            }
             k = end;
         }
     }

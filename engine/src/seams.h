@@ -33,9 +33,11 @@
  * first step of a world and again whenever a static body comes, goes (is
  * removed, starts moving or becomes movable), moves or changes its
  * collision filter, which the world notices while it loads the bodies
- * (seams_body_changed). A scene whose static bodies do not change pays one
- * comparison per static body per step; one whose static bodies have no
- * flush neighbour pays nothing more in the narrowphase.
+ * (seams_body_changed). A scene whose static bodies do not change pays a
+ * check of each static body's pose, velocity and filter per step; one
+ * whose static bodies have no flush neighbour pays nothing more in the
+ * narrowphase. A change searches all static bodies again (O(S) with the
+ * grid), so a scene that changes its static bodies often pays that.
  *
  * Allocation: at a search only; arrays grow to the largest scene seen.
  */
