@@ -35,6 +35,13 @@ struct body {
     uint32_t contact_first, contact_count;
     uint32_t gap_first, gap_count;
     uint32_t contact_step;
+    /* Seams (seams.h), in what was padding: whether the world's last
+     * search for seams counted this body as static (the world checks such
+     * bodies, and static ones, for change while it loads them), and whether
+     * a flush static neighbour covers or continues a part of its boundary
+     * (read for every pair the narrowphase searches). */
+    bool seam_listed;
+    bool has_seams;
     /* Largest distance from the centroid to a vertex (m). */
     double radius;
     double friction;
@@ -81,6 +88,10 @@ struct body {
      * it is added); NULL for neither. A force creator of one scene must not
      * read a body that another scene frees. */
     struct scene *scene;
+
+    /* What the last search for seams found of a listed body (seams.h; the
+     * world owns it). */
+    struct seam_record *seam;
 
     /* Shape in the body frame, relative to the centroid, counter-clockwise. */
     vector_t *local_vertices;

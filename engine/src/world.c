@@ -8,6 +8,7 @@
 #include "memory.h"
 #include "scalar.h"
 #include "scene_private.h"
+#include "seams.h"
 #include "solver.h"
 #include "shock.h"
 #include "sleep.h"
@@ -128,6 +129,12 @@ struct world {
      * older one. */
     uint64_t step_number;
 
+    /* Which static bodies lie flush (seams.h), found again when a static
+     * body changes; with workers, each chunk of the loading says whether it
+     * saw one change. */
+    seams_t seams;
+    bool seams_changed[WORKERS_MAX_CHUNKS];
+
     solver_wide_t wide;
     shock_t shock;
     int velocity_iterations, position_iterations;
@@ -174,6 +181,7 @@ void world_free(world_t *world) {
     memory_free(world->old_sources);
     memory_free(world->gaps);
     memory_free(world->old_gaps);
+    seams_free(&world->seams);
     solver_wide_free(&world->wide);
     shock_free(&world->shock);
     sleep_free(&world->sleep);
@@ -247,8 +255,9 @@ static void set_filter(broadphase_proxy_t *proxy, const body_t *body) {
     proxy->group = body->group;
 }
 
-/* Loads body i's rows for the solver and its broadphase proxy. */
-WORLD_INLINE void load_body(world_t *world, body_t *body, const integrator_motion_t *motion, size_t i,
+/* Loads body i's rows for the solver and its broadphase proxy; returns
+ * whether the body changed what the seams were found from. */
+WORLD_INLINE bool load_body(world_t *world, body_t *body, const integrator_motion_t *motion, size_t i,
                       double dt) {
     body->solver_index = (uint32_t)i;
     body->changed = false; /* world_wake_changed has seen it */
@@ -286,6 +295,7 @@ WORLD_INLINE void load_body(world_t *world, body_t *body, const integrator_motio
     proxy->box = swept_box(body->bounds, dt, state, dt * spin + CONTACT_MARGIN);
     set_filter(proxy, body);
     if (body->removed) proxy->category = 0;
+    return (proxy->fixed || body->seam_listed) && seams_body_changed(body);
 }
 
 /* The arguments of a loop over bodies split over the workers. */
@@ -299,22 +309,31 @@ typedef struct {
 
 static void load_chunk(void *context, size_t chunk, size_t begin, size_t end) {
     const body_loop_t *loop = context;
-    (void)chunk;
+    bool changed = false;
     for (size_t i = begin; i < end; i++) {
-        load_body(loop->world, loop->bodies[i], &loop->free_motions[i], i, loop->dt);
+        changed |= load_body(loop->world, loop->bodies[i], &loop->free_motions[i], i, loop->dt);
     }
+    loop->world->seams_changed[chunk] = changed;
 }
 
-/* Loads each body's rows for the solver and its broadphase proxy. */
-static void load_bodies(world_t *world, body_t **bodies, const integrator_motion_t *motions,
+/* Loads each body's rows for the solver and its broadphase proxy; returns
+ * whether a static body changed since the seams were found. */
+static bool load_bodies(world_t *world, body_t **bodies, const integrator_motion_t *motions,
                         size_t count, const world_step_t *step) {
     reserve_rows(world, count);
+    bool changed = false;
     if (world->workers != NULL) {
         body_loop_t loop = {world, bodies, motions, NULL, step->dt};
+        size_t chunks = workers_chunks(world->workers, count);
+        for (size_t k = 0; k < chunks; k++) world->seams_changed[k] = false;
         workers_for(world->workers, count, load_chunk, &loop);
-        return;
+        for (size_t k = 0; k < chunks; k++) changed |= world->seams_changed[k];
+        return changed;
     }
-    for (size_t i = 0; i < count; i++) load_body(world, bodies[i], &motions[i], i, step->dt);
+    for (size_t i = 0; i < count; i++) {
+        changed |= load_body(world, bodies[i], &motions[i], i, step->dt);
+    }
+    return changed;
 }
 
 /* The contact of the pair with this key among the contacts body a had as
@@ -473,7 +492,8 @@ WORLD_INLINE void collide_pair(const world_t *world, body_t *a, body_t *b, const
     found->old = old;
     found->apart = false;
     found->pose = relative_pose(a, b);
-    if (old != SIZE_MAX && pose_is_close(found->pose, world->old_sources[old].pose)) {
+    if (old != SIZE_MAX && pose_is_close(found->pose, world->old_sources[old].pose) &&
+        !world->old_sources[old].features.on_run) {
         found->features = world->old_sources[old].features;
         found->pose = world->old_sources[old].pose; /* measure drift from where they were found */
         found->manifold = manifold_evaluate(&found->features, a, b, margin);
@@ -750,7 +770,12 @@ static void update_sleep(world_t *world, body_t **bodies, size_t count, double d
 static void run_pipeline(world_t *world, body_t **bodies, integrator_motion_t *motions,
                          size_t count, const world_step_t *step, scene_stats_t *stats,
                          body_t **all_bodies, size_t all_count) {
-    load_bodies(world, bodies, motions, count, step);
+    /* A new world searches before loading, whose checks would read what an
+     * older world (since freed) left in the bodies. */
+    if (!world->seams.found) seams_find(&world->seams, bodies, count);
+    if (load_bodies(world, bodies, motions, count, step)) {
+        seams_find(&world->seams, bodies, count);
+    }
     const broadphase_pair_t *pairs;
     size_t pair_count = broadphase_find_pairs(world->broadphase, world->proxies, count, &pairs,
                                               &stats->broadphase_tests);
