@@ -648,9 +648,7 @@ static bool impact_in_step(const solver_contact_t *c, const solver_anchor_t *anc
  * there. Each point's separation becomes the one that the solver's model of
  * the step (each body at its start velocities and acceleration) closes to
  * the point's separation at that moment, so the solver times an impact at
- * it. Left as it was when, for a pair that does not touch, the model would
- * put a point in touch at the start (a pull that slows the approach).
- * Impulses stay with the points of the same features.
+ * it. Impulses stay with the points of the same features.
  */
 static void take_at(world_t *world, size_t n, const toi_contact_t *hit) {
     solver_contact_t *c = &world->contacts[n];
@@ -665,8 +663,11 @@ static void take_at(world_t *world, size_t n, const toi_contact_t *hit) {
         r_a[i] = vec_subtract(manifold->points[i].point, hit->centroid_a);
         r_b[i] = vec_subtract(manifold->points[i].point, hit->centroid_b);
         double speed = vec_dot(normal, start_approach(sa, r_a[i], sb, r_b[i]));
-        separation[i] = manifold->points[i].separation - t * (speed + 0.5 * pull * t);
-        if (!hit->touches && !(separation[i] > 0.0)) return;
+        double at = manifold->points[i].separation;
+        separation[i] = at - t * (speed + 0.5 * pull * t);
+        /* A pair that passes may part at a point the model would have
+         * touching earlier: it keeps the gap it ends with. */
+        if (!hit->touches) separation[i] = max_of(separation[i], at);
     }
     solver_contact_t before = *c;
     solver_anchor_t *anchor = &world->anchors[n];
