@@ -425,6 +425,18 @@ static void warm_rescaled(const world_t *world, solver_contact_t *contact, size_
     }
 }
 
+/* Copies the impulses of `from`'s points to those of contact that are the
+ * same features. */
+WORLD_INLINE void impulses_by_feature(solver_contact_t *contact, const solver_contact_t *from) {
+    for (int i = 0; i < contact->point_count; i++) {
+        for (int j = 0; j < from->point_count; j++) {
+            if (contact->points[i].id != from->points[j].id) continue;
+            contact->points[i].normal_impulse = from->points[j].normal_impulse;
+            contact->points[i].tangent_impulse = from->points[j].tangent_impulse;
+        }
+    }
+}
+
 /* Copies last step's impulses to the points that are the same features;
  * rescaled when this step is not as long as the last (warm_rescaled). */
 WORLD_INLINE void warm_from_old(const world_t *world, solver_contact_t *contact,
@@ -433,14 +445,7 @@ WORLD_INLINE void warm_from_old(const world_t *world, solver_contact_t *contact,
         warm_rescaled(world, contact, old_index);
         return;
     }
-    const solver_contact_t *old = &world->old_contacts[old_index];
-    for (int i = 0; i < contact->point_count; i++) {
-        for (int j = 0; j < old->point_count; j++) {
-            if (contact->points[i].id != old->points[j].id) continue;
-            contact->points[i].normal_impulse = old->points[j].normal_impulse;
-            contact->points[i].tangent_impulse = old->points[j].tangent_impulse;
-        }
-    }
+    impulses_by_feature(contact, &world->old_contacts[old_index]);
 }
 
 static relative_pose_t relative_pose(const body_t *a, const body_t *b) {
@@ -766,7 +771,7 @@ static void take_at(world_t *world, size_t n, const toi_contact_t *hit) {
         point->normal_impulse = point->tangent_impulse = 0.0;
         source->points[i] = manifold->points[i].point;
     }
-    warm_from_old(c, &before);
+    impulses_by_feature(c, &before);
     double cos_a = cos(hit->angle_a), sin_a = sin(hit->angle_a);
     vector_t d = vec_subtract(hit->centroid_b, hit->centroid_a);
     source->features = hit->features;
