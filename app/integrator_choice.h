@@ -10,7 +10,7 @@
 
 #include <stdbool.h>
 #include <stddef.h>
-#include "scene.h"
+#include "jostle/scene.h"
 
 /* The integrator named `text`: integrator_get_name's names, in any case, with
  * spaces, underscores or hyphens alike ("symplectic_euler", "Symplectic

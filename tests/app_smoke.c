@@ -29,7 +29,7 @@
 #include "layout.h"
 #include "palette.h"
 #include "presets.h"
-#include "scene_file.h"
+#include "jostle/scene_file.h"
 
 #ifndef APP_SMOKE_HAVE_SDL
 #define APP_SMOKE_HAVE_SDL 0

@@ -1,6 +1,6 @@
 #include "reference.h"
 #include <math.h>
-#include "engine.h"
+#include "jostle/jostle.h"
 
 static const rgb_color_t GREY = {0.5f, 0.5f, 0.5f};
 static const double KEPLER_ECCENTRICITY = 0.6;

@@ -3,8 +3,8 @@
  * Tolerances are the issue's targets unless a comment says otherwise. */
 #include <math.h>
 #include <stdlib.h>
-#include "engine.h"
-#include "solver.h"
+#include "jostle/jostle.h"
+#include "solver/solver.h"
 #include "test.h"
 
 static const double DT = 1.0 / 60.0;

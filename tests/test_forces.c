@@ -1,7 +1,7 @@
 /* forces.h: springs, Newtonian gravity, drag, and the seed's collision force
  * creators (handler calls, destructive and physics collisions, the record). */
 #include <stdlib.h>
-#include "engine.h"
+#include "jostle/jostle.h"
 #include "test.h"
 
 static const rgb_color_t BLUE = {0, 0, 1};

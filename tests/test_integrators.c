@@ -3,8 +3,8 @@
  * stability limits, and how the multi-stage schemes call force creators. */
 #include <stdlib.h>
 #include <string.h>
-#include "engine.h"
-#include "integrator.h"
+#include "jostle/jostle.h"
+#include "dynamics/integrator.h"
 #include "reference.h"
 #include "test.h"
 

@@ -1,7 +1,7 @@
 /* scene.h: bodies, force creators, the tick's order, the removal timeline,
  * ownership, gravity and the integrators. */
 #include <stdlib.h>
-#include "engine.h"
+#include "jostle/jostle.h"
 #include "test.h"
 
 

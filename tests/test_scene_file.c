@@ -5,8 +5,8 @@
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
-#include "engine.h"
-#include "scene_file.h"
+#include "jostle/jostle.h"
+#include "jostle/scene_file.h"
 #include "scene_file_check.h"
 #include "test.h"
 

@@ -6,8 +6,8 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include "coloring.h"
-#include "solver_wide.h"
+#include "solver/coloring.h"
+#include "solver/solver_wide.h"
 #include "test.h"
 
 /* The SCENES.md generator, for reproducible random graphs. */

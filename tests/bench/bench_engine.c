@@ -1,6 +1,6 @@
 /*
  * The canonical scenes (bench_scenes.h) on this project's engine, through its
- * public API only: cc -O2 -Iengine/include bench_engine.c build/libengine.a -lm.
+ * public API only: cc -O2 -Iengine/include bench_engine.c build/libjostle.a -lm.
  * The engine's variants and settings are in bench_ours.h.
  *
  * Besides bench_scenes.h's options: --integrator NAME (seed,

@@ -12,7 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
-#include "engine.h"
+#include "jostle/jostle.h"
 
 enum { RUNS = 7 };
 static const rgb_color_t GREY = {0.5f, 0.5f, 0.5f};

@@ -14,7 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
-#include "engine.h"
+#include "jostle/jostle.h"
 #include "reference.h"
 
 enum { MAX_STEPS_SIZES = 16 };

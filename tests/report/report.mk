@@ -3,10 +3,10 @@
 
 REPORT_DIR := build/report
 
-$(REPORT_DIR)/accuracy: tests/report/accuracy.c tests/reference.c tests/reference.h build/libengine.a
+$(REPORT_DIR)/accuracy: tests/report/accuracy.c tests/reference.c tests/reference.h build/libjostle.a
 	@mkdir -p $(dir $@)
 	$(CC) $(CSTD) $(WARN) -O2 -Iengine/include -Itests tests/report/accuracy.c tests/reference.c \
-		build/libengine.a -pthread -lm -o $@
+		build/libjostle.a -pthread -lm -o $@
 
 .PHONY: report report-deps
 # gnuplot (Debian gnuplot-nox) and the peers' headers, installed as root when
@@ -22,6 +22,6 @@ report-deps:
 		fi; }
 	@CC="$(CC)" CXX="$(CXX)" sh tests/bench/deps.sh
 
-report: report-deps build/libengine.a $(REPORT_DIR)/accuracy
+report: report-deps build/libjostle.a $(REPORT_DIR)/accuracy
 	@$(MAKE) --no-print-directory bench-build
 	@sh tests/report/report.sh

@@ -618,7 +618,7 @@ static void mass_section(void) {
          "**Limit: a heavy box held by two light ones jitters.** It stands at every ratio (where "
          "both peers' pyramids fall at r = 1000), but from r = 10 up it never comes to rest: the "
          "top box wanders a few centimetres at up to the speed above, the two boxes under it "
-         "spread apart. The cause is the shock propagation pass (engine/src/shock.c): before the "
+         "spread apart. The cause is the shock propagation pass (engine/src/solver/shock.c): before the "
          "last velocity iteration it holds each body's supports still and stops the body's "
          "approach by pushing it alone. A light support cannot be pushed down by its heavy load "
          "in 8 iterations, so the pass lifts the heavy box with an impulse that nothing balances, "
@@ -1419,7 +1419,7 @@ static void input_section(void) {
         }
     }
     NOTE(t, "**Limit: polygons of about 100000 sides roll.** A resting edge's two ends are block-"
-            "solved while the 2x2 system's condition stays under 1e8 (engine/src/solver.c, "
+            "solved while the 2x2 system's condition stays under 1e8 (engine/src/solver/solver.c, "
             "MAX_EDGE_CONDITION_NUMBER); a 1 m polygon passes that from about 90000 sides (edges "
             "of 0.035 mm; 80000 sides still rest), the ends are then solved one at a time, the first takes the whole "
             "load and the polygon rolls away, slowly gaining speed (0.4 m/s after 10 s for "

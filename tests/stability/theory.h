@@ -2,7 +2,7 @@
 #define STABILITY_THEORY_H
 
 /*
- * Each integrator's step, as docs/design.md and engine/src/integrator.h
+ * Each integrator's step, as docs/design.md and engine/src/dynamics/integrator.h
  * write it, applied to the damped oscillator x'' = -omega^2 x - 2 zeta
  * omega x' with omega = 1 and step theta: a linear map of (x, v) whose
  * spectral radius squared is the energy factor per step once the run has
@@ -14,7 +14,7 @@
 
 #include <math.h>
 #include <stdbool.h>
-#include "scene.h"
+#include "jostle/scene.h"
 
 typedef struct {
     double x, v;
