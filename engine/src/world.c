@@ -676,14 +676,21 @@ static void swap_contact_buffers(world_t *world) {
 static void narrowphase(world_t *world, body_t **bodies, const broadphase_pair_t *pairs,
                         size_t pair_count) {
     swap_contact_buffers(world);
-    /* A pair makes at most one contact. */
-    memory_reserve((void **)&world->contacts, &world->contact_capacity, pair_count,
+    /* A pair makes at most one contact. The buffers that take turns grow
+     * together (they keep their contents), so a new most of pairs costs
+     * one step's allocations, not one in each of the next steps. */
+    size_t n = pair_count;
+    memory_reserve((void **)&world->contacts, &world->contact_capacity, n, sizeof(solver_contact_t));
+    memory_reserve((void **)&world->old_contacts, &world->old_contact_capacity, n,
                    sizeof(solver_contact_t));
-    memory_reserve((void **)&world->sources, &world->source_capacity, pair_count,
+    memory_reserve((void **)&world->older_contacts, &world->older_contact_capacity, n,
+                   sizeof(solver_contact_t));
+    memory_reserve((void **)&world->sources, &world->source_capacity, n, sizeof(contact_source_t));
+    memory_reserve((void **)&world->old_sources, &world->old_source_capacity, n,
                    sizeof(contact_source_t));
-    memory_reserve((void **)&world->anchors, &world->anchor_capacity, pair_count,
-                   sizeof(solver_anchor_t));
-    memory_reserve((void **)&world->gaps, &world->gap_capacity, pair_count, sizeof(pair_gap_t));
+    memory_reserve((void **)&world->anchors, &world->anchor_capacity, n, sizeof(solver_anchor_t));
+    memory_reserve((void **)&world->gaps, &world->gap_capacity, n, sizeof(pair_gap_t));
+    memory_reserve((void **)&world->old_gaps, &world->old_gap_capacity, n, sizeof(pair_gap_t));
     if (world->workers != NULL) {
         narrowphase_split(world, bodies, pairs, pair_count);
         return;
@@ -804,7 +811,8 @@ static __attribute__((noinline)) void take_impact(world_t *world, size_t n, doub
  * not bounced along a normal of the start (docs/design.md, "Impacts within
  * the step").
  */
-static void take_impacts(world_t *world, double dt) {
+static void take_impacts(world_t *world, double dt, size_t largest_polygon) {
+    toi_scratch_reserve(&world->toi_scratch, largest_polygon);
     for (size_t n = 0; n < world->contact_count; n++) {
         if (world->contacts[n].restitution != 0.0) take_impact(world, n, dt);
     }
@@ -907,7 +915,7 @@ static void run_pipeline(world_t *world, body_t **bodies, integrator_motion_t *m
     size_t pair_count = broadphase_find_pairs(world->broadphase, world->proxies, count, &pairs,
                                               &stats->broadphase_tests);
     narrowphase(world, bodies, pairs, pair_count);
-    take_impacts(world, step->dt);
+    take_impacts(world, step->dt, step->largest_polygon);
     solver_settings_t settings = {step->dt, step->position_weight, world->velocity_iterations,
                                   world->position_iterations};
     solver_bodies_t rows = {world->velocities, world->displacements, world->states, count};

@@ -44,6 +44,9 @@ typedef struct {
     double position_weight;
     /* Whether slow islands sleep (sleep.h): asleep bodies take no part. */
     bool sleeping;
+    /* At least the vertex count of the largest polygon in the step: scratch
+     * room is sized by it once, so a new pair never allocates. */
+    size_t largest_polygon;
 } world_step_t;
 
 /* Wakes the sleeping islands that a body of bodies[0 .. count) changed
