@@ -823,11 +823,17 @@ static void time_step(world_t *world, double dt) {
     world->last_dt = dt;
 }
 
-void world_wake_changed(world_t *world, body_t **bodies, size_t count, double dt) {
+void world_wake_changed(world_t *world, body_t **bodies, size_t count, double dt,
+                        vector_t gravity) {
     if (!sleep_any(&world->sleep)) return;
+    /* Last step's reach covered a step as long as itself. */
+    bool longer = dt > world->last_dt;
     for (size_t i = 0; i < count; i++) {
-        if (!bodies[i]->changed) continue;
-        sleep_wake_changed(&world->sleep, bodies[i], dt, CONTACT_MARGIN);
+        if (bodies[i]->changed) {
+            sleep_wake_changed(&world->sleep, bodies[i], dt, gravity, CONTACT_MARGIN);
+        } else if (longer) {
+            sleep_wake_ahead(&world->sleep, bodies[i], dt, gravity, CONTACT_MARGIN);
+        }
     }
 }
 

@@ -48,10 +48,13 @@ typedef struct {
 
 /* Wakes the sleeping islands that a body of bodies[0 .. count) changed
  * since the last step (body_mark_changed) touched or may touch in the next
- * step of dt (sleep_wake_changed). The scene calls it after the force
- * creators and before the free motions, so that what wakes moves in the
- * step; world_step clears the marks. */
-void world_wake_changed(world_t *world, body_t **bodies, size_t count, double dt);
+ * step of dt (sleep_wake_changed), and, when this step is longer than the
+ * last, those that a moving body may reach in it (sleep_wake_ahead), under
+ * the scene's gravity. The scene calls it after the force creators and
+ * before the free motions, so that what wakes moves in the step;
+ * world_step clears the marks. */
+void world_wake_changed(world_t *world, body_t **bodies, size_t count, double dt,
+                        vector_t gravity);
 
 /* Runs the pipeline over bodies[0..count) (removed bodies take no part):
  * motions[i] holds body i's free motion on entry and the motion with its
