@@ -81,6 +81,8 @@ typedef struct {
     unsigned (*get_sleep_phase)(const world_t *world);
     void (*set_sleep_phase)(world_t *world, unsigned phase);
     void (*index_sleepers)(world_t *world, body_t **bodies, size_t count);
+    void (*get_step_lengths)(const world_t *world, double *last, double *before);
+    void (*set_step_lengths)(world_t *world, double last, double before);
 } world_ops_t;
 
 /* Hands the scene a world (NULL with ops NULL: contacts off), freeing the

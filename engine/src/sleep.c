@@ -196,7 +196,10 @@ static void rebuild_index(sleep_t *sleep, body_t **bodies, size_t count, size_t 
         sleep->entries[sleep->count++] = (struct sleep_entry){body->bounds.min.x, body};
         sleep->widest = fmax(sleep->widest, body->bounds.max.x - body->bounds.min.x);
     }
-    qsort(sleep->entries, sleep->count, sizeof(struct sleep_entry), compare_entries);
+    /* entries is NULL while no body ever slept. */
+    if (sleep->count > 1) {
+        qsort(sleep->entries, sleep->count, sizeof(struct sleep_entry), compare_entries);
+    }
 }
 
 static bool boxes_overlap(aabb_t a, aabb_t b) {
