@@ -457,7 +457,8 @@ static const integrator_motion_t *stage_motion(scene_t *scene, integrator_step_t
     }
     if (scene->force_count > 0) stage_forces(scene);
     if (scene->world != NULL && scene->sleeping) {
-        scene->world_ops->wake_changed(scene->world, scene->bodies, scene->body_count, step->dt);
+        scene->world_ops->wake_changed(scene->world, scene->bodies, scene->body_count, step->dt,
+                                       scene->gravity);
     }
     if (one_stage && scene->world == NULL) return NULL;
     memory_reserve((void **)&scene->motions, &scene->motion_capacity, scene->body_count,

@@ -959,11 +959,17 @@ static void time_step(world_t *world, double dt) {
     world->last_dt = dt;
 }
 
-void world_wake_changed(world_t *world, body_t **bodies, size_t count, double dt) {
+void world_wake_changed(world_t *world, body_t **bodies, size_t count, double dt,
+                        vector_t gravity) {
     if (!sleep_any(&world->sleep)) return;
+    /* Last step's reach covered a step as long as itself. */
+    bool longer = dt > world->last_dt;
     for (size_t i = 0; i < count; i++) {
-        if (!bodies[i]->changed) continue;
-        sleep_wake_changed(&world->sleep, bodies[i], dt, CONTACT_MARGIN);
+        if (bodies[i]->changed) {
+            sleep_wake_changed(&world->sleep, bodies[i], dt, gravity, CONTACT_MARGIN);
+        } else if (longer) {
+            sleep_wake_ahead(&world->sleep, bodies[i], dt, gravity, CONTACT_MARGIN);
+        }
     }
 }
 
@@ -1026,6 +1032,32 @@ void world_get_memory(const world_t *world, size_t index, scene_contact_memory_t
         memory->feature_points[j] = source->features.points[j];
         memory->feature_ids[j] = source->features.ids[j];
     }
+    if (source->previous == NO_CONTACT) return;
+    const solver_contact_t *before = &world->old_contacts[source->previous];
+    memory->previous_count = before->point_count;
+    for (int j = 0; j < before->point_count; j++) {
+        const solver_point_t *p = &before->points[j];
+        memory->previous[j] = (scene_memory_previous_t){p->id, p->normal_impulse,
+                                                        p->tangent_impulse};
+    }
+}
+
+/* Writes the pair's contact of the step before last from a memory into
+ * old_contacts at `at`, which the next step's swap makes the contacts of
+ * the step before its last; returns where, or NO_CONTACT when it had none
+ * (world_restore_memory). */
+static uint32_t add_remembered_before(world_t *world, size_t at,
+                                      const scene_contact_memory_t *memory) {
+    if (memory->previous_count == 0) return NO_CONTACT;
+    solver_contact_t *before = &world->old_contacts[at];
+    *before = (solver_contact_t){.point_count = memory->previous_count};
+    for (int j = 0; j < memory->previous_count; j++) {
+        const scene_memory_previous_t *from = &memory->previous[j];
+        before->points[j].id = from->id;
+        before->points[j].normal_impulse = from->normal_impulse;
+        before->points[j].tangent_impulse = from->tangent_impulse;
+    }
+    return (uint32_t)at;
 }
 
 /* Writes contact n of the step from a memory (world_restore_memory). */
@@ -1043,6 +1075,7 @@ static void add_remembered(world_t *world, size_t n, const scene_contact_memory_
                      .normal = memory->face_normal,
                      .face_point = memory->face_point},
         .pose = {memory->pose, memory->pose_angle},
+        .previous = add_remembered_before(world, n, memory),
     };
     for (int j = 0; j < memory->point_count; j++) {
         const scene_memory_point_t *from = &memory->points[j];
@@ -1069,6 +1102,8 @@ void world_restore_memory(world_t *world, const scene_contact_memory_t *memories
                    sizeof(solver_contact_t));
     memory_reserve((void **)&world->sources, &world->source_capacity, count,
                    sizeof(contact_source_t));
+    memory_reserve((void **)&world->old_contacts, &world->old_contact_capacity, count,
+                   sizeof(solver_contact_t));
     world->contact_count = count;
     world->gap_count = 0;
     for (size_t i = 0; i < count;) {
@@ -1110,6 +1145,16 @@ void world_set_sleep_phase(world_t *world, unsigned phase) {
 
 void world_index_sleepers(world_t *world, body_t **bodies, size_t count) {
     sleep_index_asleep(&world->sleep, bodies, count);
+}
+
+void world_get_step_lengths(const world_t *world, double *last, double *before) {
+    *last = world->last_dt;
+    *before = world->older_dt;
+}
+
+void world_set_step_lengths(world_t *world, double last, double before) {
+    world->last_dt = last;
+    world->older_dt = before;
 }
 
 bool world_pair_collides(const body_t *body1, const body_t *body2) {
