@@ -224,12 +224,16 @@ static void pose_at(body_t *ghost, const mover_t *mover, double t, vector_t *roo
     }
 }
 
+void toi_scratch_reserve(toi_scratch_t *scratch, size_t largest_polygon) {
+    memory_reserve((void **)&scratch->vectors, &scratch->capacity, 4 * largest_polygon,
+                   sizeof(vector_t));
+}
+
 /* The pair's manifold at time t. */
 static bool contact_at(const pair_t *pair, double t, double margin, toi_scratch_t *scratch,
                        toi_contact_t *contact) {
     const body_t *a = pair->a.body, *b = pair->b.body;
-    memory_reserve((void **)&scratch->vectors, &scratch->capacity, 2 * (a->count + b->count),
-                   sizeof(vector_t));
+    toi_scratch_reserve(scratch, a->count > b->count ? a->count : b->count);
     body_t ghost_a, ghost_b;
     pose_at(&ghost_a, &pair->a, t, scratch->vectors);
     pose_at(&ghost_b, &pair->b, t, scratch->vectors + 2 * a->count);

@@ -37,11 +37,15 @@ typedef struct {
 } toi_motion_t;
 
 /* Room for the polygons posed at trial times: the caller keeps it between
- * calls (grown with memory_reserve), so a warm step allocates nothing. */
+ * calls, sized with toi_scratch_reserve for the largest polygon it will
+ * pose, so a warm step allocates nothing. */
 typedef struct {
     vector_t *vectors;
     size_t capacity;
 } toi_scratch_t;
+
+/* Makes room for two polygons of up to largest_polygon vertices each. */
+void toi_scratch_reserve(toi_scratch_t *scratch, size_t largest_polygon);
 
 typedef struct {
     bool touches;            /* within the duration */

@@ -676,14 +676,21 @@ static void swap_contact_buffers(world_t *world) {
 static void narrowphase(world_t *world, body_t **bodies, const broadphase_pair_t *pairs,
                         size_t pair_count) {
     swap_contact_buffers(world);
-    /* A pair makes at most one contact. */
-    memory_reserve((void **)&world->contacts, &world->contact_capacity, pair_count,
+    /* A pair makes at most one contact. The buffers that take turns grow
+     * together (they keep their contents), so a new most of pairs costs
+     * one step's allocations, not one in each of the next steps. */
+    size_t n = pair_count;
+    memory_reserve((void **)&world->contacts, &world->contact_capacity, n, sizeof(solver_contact_t));
+    memory_reserve((void **)&world->old_contacts, &world->old_contact_capacity, n,
                    sizeof(solver_contact_t));
-    memory_reserve((void **)&world->sources, &world->source_capacity, pair_count,
+    memory_reserve((void **)&world->older_contacts, &world->older_contact_capacity, n,
+                   sizeof(solver_contact_t));
+    memory_reserve((void **)&world->sources, &world->source_capacity, n, sizeof(contact_source_t));
+    memory_reserve((void **)&world->old_sources, &world->old_source_capacity, n,
                    sizeof(contact_source_t));
-    memory_reserve((void **)&world->anchors, &world->anchor_capacity, pair_count,
-                   sizeof(solver_anchor_t));
-    memory_reserve((void **)&world->gaps, &world->gap_capacity, pair_count, sizeof(pair_gap_t));
+    memory_reserve((void **)&world->anchors, &world->anchor_capacity, n, sizeof(solver_anchor_t));
+    memory_reserve((void **)&world->gaps, &world->gap_capacity, n, sizeof(pair_gap_t));
+    memory_reserve((void **)&world->old_gaps, &world->old_gap_capacity, n, sizeof(pair_gap_t));
     if (world->workers != NULL) {
         narrowphase_split(world, bodies, pairs, pair_count);
         return;
@@ -804,7 +811,8 @@ static __attribute__((noinline)) void take_impact(world_t *world, size_t n, doub
  * not bounced along a normal of the start (docs/design.md, "Impacts within
  * the step").
  */
-static void take_impacts(world_t *world, double dt) {
+static void take_impacts(world_t *world, double dt, size_t largest_polygon) {
+    toi_scratch_reserve(&world->toi_scratch, largest_polygon);
     for (size_t n = 0; n < world->contact_count; n++) {
         if (world->contacts[n].restitution != 0.0) take_impact(world, n, dt);
     }
@@ -907,7 +915,7 @@ static void run_pipeline(world_t *world, body_t **bodies, integrator_motion_t *m
     size_t pair_count = broadphase_find_pairs(world->broadphase, world->proxies, count, &pairs,
                                               &stats->broadphase_tests);
     narrowphase(world, bodies, pairs, pair_count);
-    take_impacts(world, step->dt);
+    take_impacts(world, step->dt, step->largest_polygon);
     solver_settings_t settings = {step->dt, step->position_weight, world->velocity_iterations,
                                   world->position_iterations};
     solver_bodies_t rows = {world->velocities, world->displacements, world->states, count};
@@ -951,11 +959,17 @@ static void time_step(world_t *world, double dt) {
     world->last_dt = dt;
 }
 
-void world_wake_changed(world_t *world, body_t **bodies, size_t count, double dt) {
+void world_wake_changed(world_t *world, body_t **bodies, size_t count, double dt,
+                        vector_t gravity) {
     if (!sleep_any(&world->sleep)) return;
+    /* Last step's reach covered a step as long as itself. */
+    bool longer = dt > world->last_dt;
     for (size_t i = 0; i < count; i++) {
-        if (!bodies[i]->changed) continue;
-        sleep_wake_changed(&world->sleep, bodies[i], dt, CONTACT_MARGIN);
+        if (bodies[i]->changed) {
+            sleep_wake_changed(&world->sleep, bodies[i], dt, gravity, CONTACT_MARGIN);
+        } else if (longer) {
+            sleep_wake_ahead(&world->sleep, bodies[i], dt, gravity, CONTACT_MARGIN);
+        }
     }
 }
 
@@ -1018,6 +1032,32 @@ void world_get_memory(const world_t *world, size_t index, scene_contact_memory_t
         memory->feature_points[j] = source->features.points[j];
         memory->feature_ids[j] = source->features.ids[j];
     }
+    if (source->previous == NO_CONTACT) return;
+    const solver_contact_t *before = &world->old_contacts[source->previous];
+    memory->previous_count = before->point_count;
+    for (int j = 0; j < before->point_count; j++) {
+        const solver_point_t *p = &before->points[j];
+        memory->previous[j] = (scene_memory_previous_t){p->id, p->normal_impulse,
+                                                        p->tangent_impulse};
+    }
+}
+
+/* Writes the pair's contact of the step before last from a memory into
+ * old_contacts at `at`, which the next step's swap makes the contacts of
+ * the step before its last; returns where, or NO_CONTACT when it had none
+ * (world_restore_memory). */
+static uint32_t add_remembered_before(world_t *world, size_t at,
+                                      const scene_contact_memory_t *memory) {
+    if (memory->previous_count == 0) return NO_CONTACT;
+    solver_contact_t *before = &world->old_contacts[at];
+    *before = (solver_contact_t){.point_count = memory->previous_count};
+    for (int j = 0; j < memory->previous_count; j++) {
+        const scene_memory_previous_t *from = &memory->previous[j];
+        before->points[j].id = from->id;
+        before->points[j].normal_impulse = from->normal_impulse;
+        before->points[j].tangent_impulse = from->tangent_impulse;
+    }
+    return (uint32_t)at;
 }
 
 /* Writes contact n of the step from a memory (world_restore_memory). */
@@ -1035,6 +1075,7 @@ static void add_remembered(world_t *world, size_t n, const scene_contact_memory_
                      .normal = memory->face_normal,
                      .face_point = memory->face_point},
         .pose = {memory->pose, memory->pose_angle},
+        .previous = add_remembered_before(world, n, memory),
     };
     for (int j = 0; j < memory->point_count; j++) {
         const scene_memory_point_t *from = &memory->points[j];
@@ -1061,6 +1102,8 @@ void world_restore_memory(world_t *world, const scene_contact_memory_t *memories
                    sizeof(solver_contact_t));
     memory_reserve((void **)&world->sources, &world->source_capacity, count,
                    sizeof(contact_source_t));
+    memory_reserve((void **)&world->old_contacts, &world->old_contact_capacity, count,
+                   sizeof(solver_contact_t));
     world->contact_count = count;
     world->gap_count = 0;
     for (size_t i = 0; i < count;) {
@@ -1102,6 +1145,16 @@ void world_set_sleep_phase(world_t *world, unsigned phase) {
 
 void world_index_sleepers(world_t *world, body_t **bodies, size_t count) {
     sleep_index_asleep(&world->sleep, bodies, count);
+}
+
+void world_get_step_lengths(const world_t *world, double *last, double *before) {
+    *last = world->last_dt;
+    *before = world->older_dt;
+}
+
+void world_set_step_lengths(world_t *world, double last, double before) {
+    world->last_dt = last;
+    world->older_dt = before;
 }
 
 bool world_pair_collides(const body_t *body1, const body_t *body2) {
