@@ -75,8 +75,9 @@ build/engine-pic/%.o: engine/src/%.c $(ENGINE_HDR)
 	@mkdir -p $(dir $@)
 	$(CC) $(CSTD) $(WARN) $(OPT) -fPIC -fvisibility=hidden $(ENGINE_INC) -c $< -o $@
 
-build/libjostle.so: $(ENGINE_PIC_OBJ)
-	$(CC) -shared -Wl,-soname,libjostle.so.$(JOSTLE_MAJOR) $^ -pthread -lm -o $@
+build/libjostle.so: $(ENGINE_PIC_OBJ) engine/jostle.map
+	$(CC) -shared -Wl,-soname,libjostle.so.$(JOSTLE_MAJOR) -Wl,--version-script=engine/jostle.map \
+	    $(ENGINE_PIC_OBJ) -pthread -lm -o $@
 
 build/scenefile/%.o: engine/scenefile/%.c $(SCENEFILE_HDR)
 	@mkdir -p $(dir $@)
@@ -104,8 +105,11 @@ build/tests/engine_tests: $(TEST_SAN_OBJ) $(GAMES_SAN_OBJ) build/libjostle-san.a
 
 # Programs `make check` runs; app/app.mk adds the sandbox's smoke tests.
 # check_examples.sh builds tests/examples/ (and the README's example) against
-# the release library with the public headers only.
-CHECK_PROGRAMS := build/tests/engine_tests tests/check_examples.sh tests/report/check_report.sh
+# the release library with the public headers only; check_house.sh reads the
+# release objects for circles and calls up the layers; check_install.sh
+# installs into a temporary DESTDIR and builds the examples with pkg-config.
+CHECK_PROGRAMS := build/tests/engine_tests tests/check_examples.sh tests/report/check_report.sh \
+	tests/check_house.sh tests/check_install.sh
 
 -include app/app.mk
 -include tests/bench/bench.mk
@@ -113,7 +117,7 @@ CHECK_PROGRAMS := build/tests/engine_tests tests/check_examples.sh tests/report/
 -include tests/fuzz/fuzz.mk
 -include tests/stability/stability.mk
 
-check: $(CHECK_PROGRAMS) build/libjostle.a build/report/accuracy
+check: $(CHECK_PROGRAMS) build/libjostle.a build/libjostle.so build/report/accuracy
 	@tests/run_all.sh $(CHECK_PROGRAMS)
 
 # make tsan: the test program built with ThreadSanitizer (whole, so the
@@ -132,6 +136,40 @@ tsan: build/tsan/engine_tests
 		TSAN_OPTIONS="halt_on_error=1 exitcode=66 second_deadlock_stack=1" \
 			build/tsan/engine_tests $$suite || exit 1; \
 	done
+
+# make install: the public headers (PREFIX/include/jostle/), the static and
+# shared libraries with its soname link (PREFIX/lib/), jostle.pc
+# (PREFIX/lib/pkgconfig/), and, when SDL2 is there, the sandbox as
+# PREFIX/bin/jostle-sandbox with its scenes in PREFIX/share/jostle/scenes/.
+# DESTDIR stages it all elsewhere (packaging, tests/check_install.sh).
+PREFIX ?= /usr/local
+INSTALL_ROOT = $(DESTDIR)$(PREFIX)
+SONAME := libjostle.so.$(JOSTLE_MAJOR)
+build/jostle.pc: engine/jostle.pc.in engine/include/jostle/jostle.h
+	@mkdir -p $(dir $@)
+	sed -e 's|@PREFIX@|$(PREFIX)|' -e 's|@VERSION@|$(JOSTLE_VERSION)|' $< > $@
+
+# The .pc file names PREFIX: made anew for each install.
+.PHONY: build/jostle.pc
+install: build/libjostle.a build/libjostle.so build/jostle.pc $(INSTALL_SANDBOX)
+	install -d $(INSTALL_ROOT)/include/jostle $(INSTALL_ROOT)/lib/pkgconfig
+	install -m 644 engine/include/jostle/*.h $(INSTALL_ROOT)/include/jostle/
+	install -m 644 build/libjostle.a $(INSTALL_ROOT)/lib/
+	install -m 755 build/libjostle.so $(INSTALL_ROOT)/lib/libjostle.so.$(JOSTLE_VERSION)
+	ln -sf libjostle.so.$(JOSTLE_VERSION) $(INSTALL_ROOT)/lib/$(SONAME)
+	ln -sf $(SONAME) $(INSTALL_ROOT)/lib/libjostle.so
+	install -m 644 build/jostle.pc $(INSTALL_ROOT)/lib/pkgconfig/
+	@if [ -n "$(INSTALL_SANDBOX)" ]; then \
+	    install -d $(INSTALL_ROOT)/bin $(INSTALL_ROOT)/share/jostle/scenes && \
+	    install -m 755 sandbox $(INSTALL_ROOT)/bin/jostle-sandbox && \
+	    install -m 644 assets/scenes/*.scene $(INSTALL_ROOT)/share/jostle/scenes/; \
+	fi
+
+uninstall:
+	rm -rf $(INSTALL_ROOT)/include/jostle $(INSTALL_ROOT)/share/jostle
+	rm -f $(INSTALL_ROOT)/lib/libjostle.a $(INSTALL_ROOT)/lib/libjostle.so \
+	    $(INSTALL_ROOT)/lib/$(SONAME) $(INSTALL_ROOT)/lib/libjostle.so.$(JOSTLE_VERSION) \
+	    $(INSTALL_ROOT)/lib/pkgconfig/jostle.pc $(INSTALL_ROOT)/bin/jostle-sandbox
 
 clean:
 	rm -rf build sandbox

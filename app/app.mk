@@ -35,6 +35,7 @@ sandbox: $(APP_OBJ) $(APP_GAMES_OBJ) build/libjostle.a
 	$(CC) $(APP_OBJ) $(APP_GAMES_OBJ) build/libjostle.a $(SANDBOX_LIBS) -pthread -lm -o $@
 
 APP_SMOKE_DEPS := sandbox
+INSTALL_SANDBOX := sandbox
 
 # The scan converter's two threads against one (tests/app_raster.c): SDL2
 # only, no window.

@@ -26,7 +26,9 @@ for f in engine/src/*/*.c engine/src/*/*.h engine/src/*.c engine/src/*.h; do
 done | sort -u > "$tmp/folders"
 
 # symbol -> defining unit, unit -> symbols it needs
-for o in $(find "$objdir" -name '*.o' | sort); do
+for source in engine/src/*/*.c; do
+    rel=${source#engine/src/}
+    o="$objdir/${rel%.c}.o"
     unit=$(basename "$o" .o)
     nm --defined-only "$o" | awk -v u="$unit" '$2 ~ /^[TDRB]$/ {print $3, u}'
     nm -u "$o" | awk -v u="$unit" '{print "U", $2, u}' >> "$tmp/undef"

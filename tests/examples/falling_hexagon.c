@@ -1,5 +1,5 @@
 #include <stdio.h>
-#include "jostle/jostle.h"
+#include <jostle/jostle.h>
 
 int main(void) {
     scene_t *scene = scene_init();
