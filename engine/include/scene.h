@@ -108,7 +108,8 @@ void scene_add_bodies_force_creator(scene_t *scene, force_creator_t forcer, void
  * Bodies are named by their index (scene_get_body). The usual cause is a
  * spring too stiff for dt: the seed and explicit Euler integrators add energy
  * to every spring at every step, symplectic Euler is stable for
- * dt < 2 sqrt(m / k) (m the reduced mass of the spring's bodies).
+ * dt < 2 sqrt(m / k) (m the reduced mass of the spring's bodies), implicit
+ * Euler at every dt; the messages name that way out.
  */
 void scene_tick(scene_t *scene, double dt);
 
@@ -140,8 +141,26 @@ vector_t scene_get_gravity(scene_t *scene);
  *   SYMPLECTIC4       Yoshida's composition of three Verlet steps. Order 4,
  *                     symplectic, stable for omega h < 1.57; forces
  *                     evaluated four times a step.
+ *   IMPLICIT_EULER    linearly implicit (backward) Euler: v' = v + h a(x',
+ *                     v'), x' = x + h v', with the springs of create_spring
+ *                     and the drag of create_drag taken at the end of the
+ *                     step (their Jacobians, exact for these linear forces,
+ *                     solved over the bodies they join); every other force
+ *                     (force creators of your own, Newtonian gravity,
+ *                     gravity, impulses) acts as under SYMPLECTIC_EULER,
+ *                     which a scene without those springs and drag follows
+ *                     bit for bit. Order 1; forces evaluated once a step.
+ *                     Stable on those springs and drag at every h: it damps
+ *                     them, the energy of an undamped spring falling by
+ *                     1 / (1 + (omega h)^2) every step (its amplitude by the
+ *                     square root), drag's velocity by 1 / (1 + gamma h / m).
+ *                     Explicit for the rest: a force of your own that acts
+ *                     as a spring keeps symplectic Euler's limit (omega h <
+ *                     2).
  * Pick SYMPLECTIC_EULER or VELOCITY_VERLET for springs and orbits; the
- * fourth-order schemes when accuracy matters more than cost.
+ * fourth-order schemes when accuracy matters more than cost; IMPLICIT_EULER
+ * when a spring or drag is too stiff for the step (it loses energy instead
+ * of blowing up).
  *
  * The multi-stage schemes (VELOCITY_VERLET, RK4, SYMPLECTIC4) call the force
  * creators once per stage, with the bodies moved to the stage's trial pose
@@ -155,8 +174,12 @@ vector_t scene_get_gravity(scene_t *scene);
  * scheme's free motion (its velocities and displacement without contacts),
  * and contacts act as a constant force over the step would under the
  * scheme: a velocity change dv from contacts moves the body by dt dv / 2
- * (SEED and the multi-stage schemes), dt dv (SYMPLECTIC_EULER) or not
- * until the next step (EXPLICIT_EULER). Impacts are timed within the step
+ * (SEED and the multi-stage schemes), dt dv (SYMPLECTIC_EULER,
+ * IMPLICIT_EULER) or not until the next step (EXPLICIT_EULER). Under
+ * IMPLICIT_EULER the contacts see each body's own mass, not the stiffness
+ * its springs add within the step: a body that a spring of omega h = theta
+ * (or gravity) holds against a surface presses on it with 1 / (1 +
+ * theta^2) of the load (docs/stability.md). Impacts are timed within the step
  * under every scheme, so a bounce is exact under the schemes that follow
  * gravity exactly (all but the Euler ones).
  */
@@ -167,17 +190,20 @@ typedef enum {
     INTEGRATOR_VELOCITY_VERLET,
     INTEGRATOR_RK4,
     INTEGRATOR_SYMPLECTIC4,
+    INTEGRATOR_IMPLICIT_EULER,
 } integrator_t;
 
 /* The number of integrators; every value below it is one. */
-#define INTEGRATOR_COUNT 6
+#define INTEGRATOR_COUNT 7
 
 /* The integrator's name as the docs write it ("seed", "explicit Euler",
- * "symplectic Euler", "velocity Verlet", "RK4", "symplectic4"). */
+ * "symplectic Euler", "velocity Verlet", "RK4", "symplectic4", "implicit
+ * Euler"). */
 const char *integrator_get_name(integrator_t integrator);
 
-/* The stability limit of omega h on an undamped spring, omega = sqrt(k / m)
- * (2 for symplectic Euler); 0 for a scheme that adds energy at every h. */
+/* The stability limit of omega h on an undamped spring of create_spring,
+ * omega = sqrt(k / m) (2 for symplectic Euler); 0 for a scheme that adds
+ * energy at every h, INFINITY for one stable at every h (implicit Euler). */
 double integrator_get_stability_limit(integrator_t integrator);
 
 void scene_set_integrator(scene_t *scene, integrator_t integrator);

@@ -146,16 +146,25 @@ static bool explain_spring_stability(const pair_aux_t *aux, char *message, size_
         snprintf(message, size,
                  "with the %s integrator a spring gains energy at any dt, this one by a factor "
                  "of %s per step at dt = %g s (m = %g kg, omega = sqrt(k/m) = %g rad/s); "
-                 "INTEGRATOR_SYMPLECTIC_EULER keeps it bounded for dt < 2 sqrt(m/k) = %g s",
+                 "INTEGRATOR_SYMPLECTIC_EULER keeps it bounded for dt < 2 sqrt(m/k) = %g s, "
+                 "INTEGRATOR_IMPLICIT_EULER at any dt (it damps the spring)",
                  name, growth, dt, mass, omega, limit);
         return true;
+    }
+    if (isinf(theta_limit)) {
+        snprintf(message, size,
+                 "the %s integrator is stable for it at any dt (its energy falls by a factor "
+                 "of %s per step at dt = %g s, m = %g kg)",
+                 name, growth, dt, mass);
+        return false;
     }
     limit = theta_limit / omega;
     if (omega * dt >= theta_limit) {
         snprintf(message, size,
                  "dt = %g s is above the stability limit of the %s integrator for it, "
                  "dt < %.4g sqrt(m/k) = %g s (m = %g kg): its energy grows by a factor of %s "
-                 "per step",
+                 "per step; INTEGRATOR_IMPLICIT_EULER is stable for it at any dt (it damps "
+                 "the spring)",
                  dt, name, theta_limit, limit, mass, growth);
         return true;
     }
@@ -238,11 +247,14 @@ static void fail_drag(const pair_aux_t *aux) {
     double dt = scene_step_dt(aux->scene);
     double factor = 1.0 - aux->constant * dt / body->mass;
     char cause[256];
-    /* The velocity update is explicit in every integrator: v' = v (1 - gamma dt / m). */
-    if (factor < -1.0) {
+    /* The velocity update is explicit in every integrator but implicit
+     * Euler: v' = v (1 - gamma dt / m). */
+    bool explicit = scene_get_integrator(aux->scene) != INTEGRATOR_IMPLICIT_EULER;
+    if (explicit && factor < -1.0) {
         snprintf(cause, sizeof cause,
                  "the drag is unstable at dt = %g s: each step multiplies the velocity by "
-                 "1 - gamma dt / m = %g, which needs dt < 2 m / gamma = %g s (m = %g kg)",
+                 "1 - gamma dt / m = %g, which needs dt < 2 m / gamma = %g s (m = %g kg); "
+                 "INTEGRATOR_IMPLICIT_EULER is stable for it at any dt",
                  dt, factor, 2.0 * body->mass / aux->constant, body->mass);
     } else {
         snprintf(cause, sizeof cause, "the velocity is too large for gamma");
@@ -258,6 +270,24 @@ static void drag(void *data) {
     vector_t force = vec_multiply(-aux->constant, aux->body1->velocity);
     if (!vec_is_finite(force)) fail_drag(aux);
     body_push(aux->body1, force);
+}
+
+bool forces_jacobian(force_creator_t forcer, const void *data, force_jacobian_t *jacobian) {
+    const pair_aux_t *aux = data;
+    const sym2_t none = {0.0, 0.0, 0.0};
+    if (forcer == spring) {
+        vector_t between = vec_subtract(aux->body2->centroid, aux->body1->centroid);
+        *jacobian = (force_jacobian_t){aux->body1, aux->body2,
+                                       jacobian_spring_stiffness(aux->constant, 0.0, between),
+                                       none};
+        return true;
+    }
+    if (forcer == drag) {
+        double gamma = aux->constant;
+        *jacobian = (force_jacobian_t){aux->body1, NULL, none, {gamma, 0.0, gamma}};
+        return true;
+    }
+    return false;
 }
 
 void create_drag(scene_t *scene, double gamma, body_t *body) {

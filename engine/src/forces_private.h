@@ -6,6 +6,7 @@
 
 #include <stdbool.h>
 #include <stddef.h>
+#include "jacobian.h"
 #include "scene.h"
 
 /* Whether the force creator is an event of the step (a collision of
@@ -17,6 +18,11 @@ bool forces_is_event(force_creator_t forcer);
  * of its bodies; 0 for any other force creator, or a spring between two
  * INFINITY masses. */
 double forces_spring_omega(force_creator_t forcer, const void *aux);
+
+/* The Jacobian of a force creator of forces.h that has one (create_spring,
+ * create_drag) at the bodies' poses now, for the implicit scheme; false
+ * for any other creator, whose force that scheme takes explicitly. */
+bool forces_jacobian(force_creator_t forcer, const void *aux, force_jacobian_t *jacobian);
 
 /* Writes into message the spring of this aux (a spring's, as above), its
  * bodies and its stability at the tick's dt with the scene's integrator. */

@@ -33,12 +33,19 @@
  *                     h / (2 - 2^(1/3)), -2^(1/3) h / (2 - 2^(1/3)),
  *                     h / (2 - 2^(1/3)); 4 evaluations. Order 4, symplectic;
  *                     stable for omega h < 1.573.
+ *   implicit Euler    symplectic Euler with the forces whose Jacobians are
+ *                     known (create_spring, create_drag) taken at the end
+ *                     of the step, solved over the bodies they join
+ *                     (implicit_euler.h); 1 evaluation. Order 1; stable
+ *                     for every omega h on those springs, energy times
+ *                     1 / (1 + (omega h)^2) a step.
  * Every scheme sees the force creators' forces and torques at its stages;
  * impulses act at the start of the step.
  */
 
 #include <stdbool.h>
 #include "body.h"
+#include "jacobian.h"
 #include "scene.h"
 
 /* One body's motion over one step. */
@@ -54,6 +61,11 @@ typedef struct {
     double spin_drift;
     /* The mean acceleration of the free motion (m/s^2), for times of impact. */
     vector_t acceleration;
+    /* 1 / the mass (1/kg) an impulse on the body meets within the step, for
+     * the contact solver: the body's own, but under implicit Euler that of
+     * the body with what its springs and drag join to it over the step
+     * (implicit_euler.h). */
+    double inverse_mass;
 } integrator_motion_t;
 
 /* The weight w of a contact's velocity change in the position update of a
@@ -79,6 +91,14 @@ static inline int integrator_stage_count(integrator_t integrator) {
     }
 }
 
+/* Whether each body's free motion depends on its own forces alone (the
+ * explicit one-stage schemes): it may then be computed body by body, on
+ * any thread, or as the body is moved. Implicit Euler's couples the
+ * bodies its springs join. */
+static inline bool integrator_is_per_body(integrator_t integrator) {
+    return integrator_stage_count(integrator) == 1 && integrator != INTEGRATOR_IMPLICIT_EULER;
+}
+
 /* Calls the force creators again with the bodies at a later stage's trial
  * pose and velocities (scene.h says which creators run there). */
 typedef void (*integrator_evaluate_t)(void *context);
@@ -100,6 +120,10 @@ typedef struct {
     vector_t gravity;          /* for every body of finite mass */
     integrator_evaluate_t evaluate; /* later stages; NULL: no force creators */
     void *context;
+    /* Implicit Euler's: the Jacobians of the forces of the first
+     * evaluation that have one (jacobian.h). */
+    const force_jacobian_t *jacobians;
+    size_t jacobian_count;
 } integrator_step_t;
 
 /*
@@ -113,11 +137,17 @@ typedef struct {
 void integrator_predict(const integrator_step_t *step, body_t **bodies, size_t count,
                         integrator_motion_t *motions, integrator_stages_t **stages);
 
-/* integrator_predict for bodies [begin, end) of a one-stage scheme
- * (integrator_stage_count 1), which calls no force creator: each body's
+/* integrator_predict for bodies [begin, end) of a per-body scheme
+ * (integrator_is_per_body), which calls no force creator: each body's
  * motion is its own, so ranges may run on several threads at once. */
 void integrator_predict_range(const integrator_step_t *step, body_t **bodies,
                               integrator_motion_t *motions, size_t begin, size_t end);
+
+/* After the world's contacts changed the motions, before they are applied:
+ * implicit Euler passes each body's contact impulse on to the bodies its
+ * springs join (implicit_euler_respond); nothing for the other schemes. */
+void integrator_respond(const integrator_step_t *step, body_t **bodies, size_t count,
+                        integrator_motion_t *motions, integrator_stages_t *stages);
 
 /* Moves one body by motion and gives it the motion's velocities (body_tick;
  * the scene moves its bodies with integrator_move). The caller checks the
@@ -139,7 +169,7 @@ typedef struct {
 /*
  * The integrate stage: moves each body not marked removed by motions[i]
  * (integrator_predict's, as the world changed it) and clears its
- * accumulators. With motions NULL, for a one-stage scheme when nothing
+ * accumulators. With motions NULL, for a per-body scheme when nothing
  * acts between the forces and the move (no world contacts), each body's
  * free motion is computed as it is moved: one pass over the bodies, the
  * motion never stored.

@@ -144,7 +144,8 @@ static void load_lines(const char *path) {
 /* The integrator's name in the lines and on bench_engine's command line. */
 static const char *integrator_key(int integrator) {
     static const char *const keys[INTEGRATOR_COUNT] = {
-        "seed", "explicit-euler", "symplectic-euler", "velocity-verlet", "rk4", "symplectic4"};
+        "seed", "explicit-euler", "symplectic-euler", "velocity-verlet", "rk4", "symplectic4",
+        "implicit-euler"};
     return integrator < 0 || integrator >= INTEGRATOR_COUNT ? "seed" : keys[integrator];
 }
 
