@@ -56,6 +56,29 @@ void draw_text(SDL_Renderer *renderer, int x, int y, palette_rgb_t color, const 
     }
 }
 
+void draw_text_scaled(SDL_Renderer *renderer, int x, int y, int scale, palette_rgb_t color,
+                      const char *text) {
+    if (text_canvas != NULL) SDL_RenderFlush(renderer);
+    Uint32 pixel =
+        text_canvas != NULL ? SDL_MapRGB(text_canvas->format, color.r, color.g, color.b) : 0;
+    SDL_SetRenderDrawBlendMode(renderer, SDL_BLENDMODE_NONE);
+    SDL_SetRenderDrawColor(renderer, color.r, color.g, color.b, 255);
+    for (; *text != '\0'; text++, x += 8 * scale) {
+        const unsigned char *glyph = gfxPrimitivesFontdata + 8 * (unsigned char)*text;
+        for (int row = 0; row < 8; row++) {
+            for (int col = 0; col < 8; col++) {
+                if (!(glyph[row] & (0x80 >> col))) continue;
+                SDL_Rect square = {x + col * scale, y + row * scale, scale, scale};
+                if (text_canvas != NULL) {
+                    SDL_FillRect(text_canvas, &square, pixel);
+                } else {
+                    SDL_RenderFillRect(renderer, &square);
+                }
+            }
+        }
+    }
+}
+
 void draw_panel(SDL_Renderer *renderer, int x, int y, int w, int h, palette_rgb_t color,
                 Uint8 alpha) {
     boxRGBA(renderer, draw_coord(x), draw_coord(y), draw_coord(x + w - 1), draw_coord(y + h - 1),

@@ -24,6 +24,11 @@ void draw_text(SDL_Renderer *renderer, int x, int y, palette_rgb_t color, const 
 #endif
     ;
 
+/* The same font drawn `scale` times as large (each bit a scale x scale
+ * square), for headings over the view. */
+void draw_text_scaled(SDL_Renderer *renderer, int x, int y, int scale, palette_rgb_t color,
+                      const char *text);
+
 /* A filled rectangle, translucent when alpha < 255. */
 void draw_panel(SDL_Renderer *renderer, int x, int y, int w, int h, palette_rgb_t color,
                 Uint8 alpha);

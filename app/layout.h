@@ -3,8 +3,9 @@
 
 /*
  * How the window is shared: the world view on the left, a side bar of
- * stacked panels on the right. Nothing is drawn over the view, so no panel
- * can hide a body; the camera fits the container into the view alone.
+ * stacked panels on the right. No panel is drawn over the view, so none can
+ * hide a body (but the help screen and a game's end screen, which cover it
+ * on purpose); the camera fits the container into the view alone.
  * Plain C (no SDL): the smoke tests include it to know where things are.
  */
 

@@ -75,8 +75,8 @@ static void draw_bodies(SDL_Renderer *renderer, SDL_Surface *canvas, app_t *app,
     raster_batch(&body_batch);
 }
 
-/* The scene file's springs: a zigzag between the centroids they pull
- * together (rest length 0), over the bodies. */
+/* The scene file's springs: a zigzag between the centroids they join,
+ * over the bodies. */
 static void draw_springs(SDL_Renderer *renderer, app_t *app) {
     scene_file_t *file = app->sandbox.file;
     palette_rgb_t c = PALETTE_SPRING;

@@ -494,9 +494,9 @@ void sandbox_step(sandbox_t *sandbox) {
     }
 }
 
-/* The potential energy of the file's springs (1/2 k d^2, rest length 0
- * between the centroids) and Newtonian gravity (-G m1 m2 / r between bodies
- * of finite mass, as forces.h applies it). */
+/* The potential energy of the file's springs (1/2 k (d - L)^2, d the
+ * distance between the centroids, L the rest length) and Newtonian gravity
+ * (-G m1 m2 / r between bodies of finite mass, as forces.h applies it). */
 static double force_potential(scene_file_t *file) {
     double energy = 0.0;
     size_t count = scene_file_force_count(file);
@@ -510,7 +510,8 @@ static double force_potential(scene_file_t *file) {
         vector_t d = vec_subtract(body_get_centroid(force.body2), body_get_centroid(force.body1));
         double r = vec_get_length(d);
         if (force.kind == SCENE_FILE_SPRING) {
-            energy += 0.5 * force.constant * r * r;
+            double stretch = r - force.rest_length;
+            energy += 0.5 * force.constant * stretch * stretch;
         } else {
             double m1 = body_get_mass(force.body1), m2 = body_get_mass(force.body2);
             if (isinf(m1) || isinf(m2) || r < 1e-9) continue;

@@ -39,7 +39,7 @@ void scene_text_game(const char *game, scene_text_outcome_t outcome, int score, 
     } else if (outcome == SCENE_TEXT_LOST) {
         snprintf(text, sizeof(text), "LOST  score %d  R: again", score);
     } else if (strcmp(game, "pegs") == 0) {
-        snprintf(text, sizeof(text), "balls %d  through %d", remaining, score);
+        snprintf(text, sizeof(text), "balls %d  landed %d", remaining, score);
     } else {
         const char *left = strcmp(game, "breakout") == 0         ? "bricks"
                            : strcmp(game, "space_invaders") == 0 ? "invaders"

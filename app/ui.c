@@ -1,6 +1,7 @@
 #include "ui.h"
 #include <SDL2_gfxPrimitives.h>
 #include "draw.h"
+#include "end_screen.h"
 #include "help.h"
 #include "ui_section.h"
 
@@ -79,5 +80,6 @@ static void draw_sidebar(SDL_Renderer *renderer, app_t *app, body_t *hovered) {
 
 void ui_draw(SDL_Renderer *renderer, app_t *app, body_t *hovered) {
     draw_sidebar(renderer, app, hovered);
+    end_screen_draw(renderer, app);
     if (app->show_help) help_draw(renderer, app);
 }

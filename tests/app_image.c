@@ -159,17 +159,19 @@ static bool same(const unsigned char *a, const unsigned char *b) {
     return a[0] == b[0] && a[1] == b[1] && a[2] == b[2];
 }
 
-/* Whether text is drawn at (x, y) in colour c. */
-static bool text_at(const image_t *image, const char *text, int x, int y,
-                    const unsigned char *c) {
+/* Whether text is drawn at (x, y) in colour c, each bit of its glyphs a
+ * scale x scale square. */
+static bool scaled_text_at(const image_t *image, const char *text, int scale, int x, int y,
+                           const unsigned char *c) {
     size_t length = strlen(text);
-    if (x + 8 * (int)length > image->width || y + 8 > image->height) return false;
+    if (x + 8 * scale * (int)length > image->width || y + 8 * scale > image->height) return false;
     for (size_t i = 0; i < length; i++) {
         const unsigned char *glyph = gfxPrimitivesFontdata + 8 * (unsigned char)text[i];
-        for (int row = 0; row < 8; row++) {
-            for (int col = 0; col < 8; col++) {
-                bool set = (glyph[row] & (0x80 >> col)) != 0;
-                const unsigned char *p = image_pixel(image, x + 8 * (int)i + col, y + row);
+        for (int row = 0; row < 8 * scale; row++) {
+            for (int col = 0; col < 8 * scale; col++) {
+                bool set = (glyph[row / scale] & (0x80 >> (col / scale))) != 0;
+                const unsigned char *p =
+                    image_pixel(image, x + 8 * scale * (int)i + col, y + row);
                 if (set != same(p, c)) return false;
             }
         }
@@ -177,8 +179,18 @@ static bool text_at(const image_t *image, const char *text, int x, int y,
     return true;
 }
 
+static bool text_at(const image_t *image, const char *text, int x, int y,
+                    const unsigned char *c) {
+    return scaled_text_at(image, text, 1, x, y, c);
+}
+
 bool image_find_text(const image_t *image, const char *text, int x0, int y0, int x1, int y1,
                      int *at_x, int *at_y, unsigned char color[3]) {
+    return image_find_scaled_text(image, text, 1, x0, y0, x1, y1, at_x, at_y, color);
+}
+
+bool image_find_scaled_text(const image_t *image, const char *text, int scale, int x0, int y0,
+                            int x1, int y1, int *at_x, int *at_y, unsigned char color[3]) {
     /* The first set bit of the text gives the colour to match. */
     int first_row = -1, first_col = -1, first_char = -1;
     for (int i = 0; text[i] != '\0' && first_char < 0; i++) {
@@ -195,10 +207,10 @@ bool image_find_text(const image_t *image, const char *text, int x0, int y0, int
     clip(image, &x0, &y0, &x1, &y1);
     for (int y = y0; y < y1; y++) {
         for (int x = x0; x < x1; x++) {
-            int px = x + 8 * first_char + first_col, py = y + first_row;
+            int px = x + scale * (8 * first_char + first_col), py = y + scale * first_row;
             if (px >= image->width || py >= image->height) continue;
             const unsigned char *c = image_pixel(image, px, py);
-            if (!text_at(image, text, x, y, c)) continue;
+            if (!scaled_text_at(image, text, scale, x, y, c)) continue;
             if (at_x != NULL) *at_x = x;
             if (at_y != NULL) *at_y = y;
             if (color != NULL) memcpy(color, c, 3);

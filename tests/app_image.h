@@ -38,6 +38,11 @@ bool image_bounds(const image_t *image, image_color_test_t test, int *x0, int *y
 bool image_find_text(const image_t *image, const char *text, int x0, int y0, int x1, int y1,
                      int *at_x, int *at_y, unsigned char color[3]);
 
+/* The same for text drawn `scale` times as large (each bit of a glyph a
+ * scale x scale square). */
+bool image_find_scaled_text(const image_t *image, const char *text, int scale, int x0, int y0,
+                            int x1, int y1, int *at_x, int *at_y, unsigned char color[3]);
+
 /* The text drawn in colour c from (x, y) on, a character every 8 pixels,
  * into out (at most max characters, trailing spaces dropped). */
 void image_read_text(const image_t *image, int x, int y, const unsigned char c[3], char *out,

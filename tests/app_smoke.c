@@ -1557,10 +1557,91 @@ static void test_games_respond_to_their_keys(void) {
     EXPECT(shots_before == 0 && shots_after >= 8,
            "white shot pixels: %ld before Space, %ld above the gun after", shots_before,
            shots_after);
-    EXPECT(shows(&after, "score 0  lives 1  invaders 32", false),
-           "no 'score 0  lives 1  invaders 32' in the side bar");
+    EXPECT(shows(&after, "score 0  lives 3  invaders 32", false),
+           "no 'score 0  lives 3  invaders 32' in the side bar");
     image_free(&before);
     image_free(&after);
+}
+
+/* Whether the end screen's words are drawn in the view, in their colours:
+ * the title four times the font's size, the score and "R to play again"
+ * twice. */
+static bool shows_end_screen(const image_t *image, const char *title, palette_rgb_t title_color,
+                             const char *score) {
+    int w = layout_of(image->width, image->height).view.w;
+    unsigned char c[3];
+    int x, y, sx, sy, rx, ry;
+    if (!image_find_scaled_text(image, title, 4, 0, 0, w, image->height, &x, &y, c) ||
+        !same_color(c, title_color))
+        return false;
+    if (!image_find_scaled_text(image, score, 2, 0, y, w, image->height, &sx, &sy, c) ||
+        !same_color(c, PALETTE_TEXT))
+        return false;
+    const char *again = "R to play again";
+    if (!image_find_scaled_text(image, again, 2, 0, sy, w, image->height, &rx, &ry, c) ||
+        !same_color(c, PALETTE_ACCENT))
+        return false;
+    return sy > y && ry > sy;
+}
+
+/* A game won or lost covers the field with its end: "WON" or "GAME OVER" in
+ * large letters, the score and "R to play again", which is gone once R has
+ * started the game again. A Breakout of one brick the ball meets at once is
+ * won in a second; one whose ball starts below the paddle, falling, has
+ * lost its three lives in half a second. */
+static void test_games_end_with_a_screen_over_the_field(void) {
+    const char *walls = "body left { box 1 12; static; position -7.5 5; tag wall }\n"
+                        "body right { box 1 12; static; position 7.5 5; tag wall }\n"
+                        "body paddle { box 2.4 0.3; static; position 0 2 }\n"
+                        "collide ball brick physics 1\ncollide ball paddle physics 1\n"
+                        "collide ball left physics 1\ncollide ball right physics 1\n";
+    char text[1024];
+    snprintf(text, sizeof text,
+             "game breakout\nview 0 5 16 12\n"
+             "body ball { regular 8 0.2; mass 1; position 0 3; velocity 0 10 }\n"
+             "body brick { box 1.2 0.5; static; tag brick; position 0 5 }\n%s",
+             walls);
+    const char *won = TMP_DIR "/won.scene";
+    if (!write_file(won, text)) return;
+    snprintf(text, sizeof text,
+             "game breakout\nview 0 5 16 12\n"
+             "body ball { regular 8 0.2; mass 1; position 4 1.5; velocity 0 -20 }\n"
+             "body brick { box 1.2 0.5; static; tag brick; position 0 9 }\n%s",
+             walls);
+    const char *lost = TMP_DIR "/lost.scene";
+    if (!write_file(lost, text)) return;
+    const struct {
+        const char *file, *name, *title, *score;
+        palette_rgb_t color;
+    } cases[] = {{won, "end_won", "WON", "score 1", PALETTE_WON},
+                 {lost, "end_lost", "GAME OVER", "score 0", PALETTE_WARNING}};
+    for (size_t i = 0; i < 2; i++) {
+        char script[512], at_start[64], ended[64];
+        snprintf(at_start, sizeof at_start, "%s_0", cases[i].name);
+        snprintf(ended, sizeof ended, "%s_1", cases[i].name);
+        snprintf(script, sizeof script,
+                 "move px 700 300\nscreenshot %s\nwait 60\nscreenshot %s\nkey r\nwait 1\n",
+                 tmp_path(at_start, ".bmp"), tmp_path(ended, ".bmp"));
+        const char *flags[] = {cases[i].file, NULL};
+        run_t run;
+        image_t before, after, again;
+        if (!run_script(cases[i].name, script, flags, &run)) continue;
+        if (!load_shot(at_start, &before)) continue;
+        if (load_shot(ended, &after)) {
+            EXPECT(shows_end_screen(&after, cases[i].title, cases[i].color, cases[i].score),
+                   "%s: no end screen over the field ('%s', '%s', 'R to play again')",
+                   cases[i].file, cases[i].title, cases[i].score);
+            image_free(&after);
+        }
+        EXPECT(!shows_end_screen(&before, cases[i].title, cases[i].color, cases[i].score),
+               "%s: an end screen at the start", cases[i].file);
+        if (load_shot(cases[i].name, &again)) {
+            EXPECT(!shows_end_screen(&again, cases[i].title, cases[i].color, cases[i].score),
+                   "%s: the end screen stays after R", cases[i].file);
+            image_free(&again);
+        }
+        image_free(&before);
+    }
 }
 
 /* ---- the documented pictures ---- */
@@ -1716,6 +1797,8 @@ static const app_test_t TESTS[] = {
     {"app_smoke.bad_scene_files_are_refused", test_bad_scene_files_are_refused},
     {"app_smoke.save_writes_scenes_that_load_back", test_save_writes_scenes_that_load_back},
     {"app_smoke.games_respond_to_their_keys", test_games_respond_to_their_keys},
+    {"app_smoke.games_end_with_a_screen_over_the_field",
+     test_games_end_with_a_screen_over_the_field},
     {"app_smoke.png_screenshots_are_png", test_png_screenshots_are_png},
     {"app_smoke.bad_flags_are_refused", test_bad_flags_are_refused},
     {"app_smoke.bad_scripts_are_refused", test_bad_scripts_are_refused},

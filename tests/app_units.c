@@ -519,7 +519,7 @@ static void test_scene_panel_words(void) {
     scene_text_game("space_invaders", SCENE_TEXT_PLAYING, 31, 1, 1, line);
     EXPECT(strcmp(line, "score 31  lives 1  invaders 1") == 0, "invaders: \"%s\"", line);
     scene_text_game("pegs", SCENE_TEXT_PLAYING, 12, 1, 24, line);
-    EXPECT(strcmp(line, "balls 24  through 12") == 0, "pegs: \"%s\"", line);
+    EXPECT(strcmp(line, "balls 24  landed 12") == 0, "pegs: \"%s\"", line);
     scene_text_game("breakout", SCENE_TEXT_WON, 50, 3, 0, line);
     EXPECT(strcmp(line, "WON  score 50  R: again") == 0, "won: \"%s\"", line);
     scene_text_game("space_invaders", SCENE_TEXT_LOST, 12, 0, 20, line);

@@ -71,7 +71,7 @@ static bool same_body(body_t *a, body_t *b, size_t i, char *why, size_t size) {
 /* A force with its bodies as indices into its scene, for comparing. */
 typedef struct {
     int kind;
-    double constant;
+    double constant, rest_length;
     long body1, body2;
 } indexed_force_t;
 
@@ -89,8 +89,8 @@ static indexed_force_t *indexed_forces(scene_file_t *file, size_t *count) {
     scene_t *scene = scene_file_get_scene(file);
     for (size_t i = 0; i < *count; i++) {
         scene_file_force_t f = scene_file_get_force(file, i);
-        forces[i] = (indexed_force_t){(int)f.kind, f.constant, index_of(scene, f.body1),
-                                      index_of(scene, f.body2)};
+        forces[i] = (indexed_force_t){(int)f.kind, f.constant, f.rest_length,
+                                      index_of(scene, f.body1), index_of(scene, f.body2)};
     }
     return forces;
 }
@@ -100,7 +100,8 @@ static int compare_forces(const void *p, const void *q) {
     if (a->kind != b->kind) return a->kind < b->kind ? -1 : 1;
     if (a->body1 != b->body1) return a->body1 < b->body1 ? -1 : 1;
     if (a->body2 != b->body2) return a->body2 < b->body2 ? -1 : 1;
-    return (a->constant > b->constant) - (a->constant < b->constant);
+    if (a->constant != b->constant) return a->constant < b->constant ? -1 : 1;
+    return (a->rest_length > b->rest_length) - (a->rest_length < b->rest_length);
 }
 
 static bool same_forces(scene_file_t *a, scene_file_t *b, bool sort, char *why, size_t size) {
@@ -113,12 +114,13 @@ static bool same_forces(scene_file_t *a, scene_file_t *b, bool sort, char *why, 
         qsort(y, m, sizeof *y, compare_forces);
     }
     for (size_t i = 0; same && i < n; i++) {
-        if (compare_forces(&x[i], &y[i]) != 0 || x[i].constant != y[i].constant) {
+        if (compare_forces(&x[i], &y[i]) != 0 || x[i].constant != y[i].constant ||
+            x[i].rest_length != y[i].rest_length) {
             same = differ(why, size,
-                          "force %zu: kind %d, %.17g, bodies %ld %ld against kind %d, %.17g, "
-                          "bodies %ld %ld",
-                          i, x[i].kind, x[i].constant, x[i].body1, x[i].body2, y[i].kind,
-                          y[i].constant, y[i].body1, y[i].body2);
+                          "force %zu: kind %d, %.17g, length %.17g, bodies %ld %ld against kind "
+                          "%d, %.17g, length %.17g, bodies %ld %ld",
+                          i, x[i].kind, x[i].constant, x[i].rest_length, x[i].body1, x[i].body2,
+                          y[i].kind, y[i].constant, y[i].rest_length, y[i].body1, y[i].body2);
         }
     }
     free(x);

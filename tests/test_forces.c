@@ -79,6 +79,148 @@ static void spring_oscillator_matches_the_cosine(void) {
     scene_free(scene);
 }
 
+/* Springs with a rest length. */
+
+static void spring_with_length_is_hooke_about_its_length(void) {
+    /* One tick from (0, 0) and (3, 4), d = 5 along u = (0.6, 0.8): body a
+     * gets k (d - L) u dt / m_a, body b the opposite over m_b. Stretched
+     * (L = 2) it pulls, compressed (L = 7) it pushes, at its length (L = 5)
+     * nothing; L = 0 is create_spring's force. */
+    const double k = 10.0, dt = 0.01;
+    const double lengths[] = {2.0, 7.0, 5.0, 0.0};
+    for (size_t i = 0; i < sizeof lengths / sizeof lengths[0]; i++) {
+        scene_t *scene = scene_init();
+        body_t *a = added(scene, square(VEC_ZERO, 0.1, 2.0));
+        body_t *b = added(scene, square((vector_t){3, 4}, 0.1, 5.0));
+        create_spring_with_length(scene, k, lengths[i], a, b);
+        scene_tick(scene, dt);
+        double pull = k * (5.0 - lengths[i]);
+        CHECK_VEC(body_get_velocity(a), pull * 0.6 / 2.0 * dt, pull * 0.8 / 2.0 * dt, 1e-15);
+        CHECK_VEC(body_get_velocity(b), -pull * 0.6 / 5.0 * dt, -pull * 0.8 / 5.0 * dt, 1e-15);
+        CHECK_NEAR(momentum_x(a, b), 0.0, 1e-15);
+        scene_free(scene);
+    }
+    /* Coincident centroids: no direction, no force (and no NaN). */
+    scene_t *still = scene_init();
+    body_t *c = added(still, square((vector_t){1, 1}, 0.1, 1.0));
+    body_t *d = added(still, square((vector_t){1, 1}, 0.2, 1.0));
+    create_spring_with_length(still, 3.0, 0.5, c, d);
+    scene_tick(still, dt);
+    CHECK_VEC(body_get_velocity(c), 0, 0, 0);
+    CHECK_VEC(body_get_velocity(d), 0, 0, 0);
+    scene_free(still);
+}
+
+static void spring_with_length_oscillates_about_its_length(void) {
+    /* An INFINITY anchor at the origin and m = 2 at L + A along (0.6, 0.8),
+     * k = 8, L = 1.5, A = 0.25: d(t) = L + A cos(2 t), on the line, with
+     * period pi. Velocity Verlet at dt = 1e-3 over two periods: its phase
+     * error there is about (omega dt)^2 omega t / 24 = 2e-6 rad, so
+     * 1e-5 A bounds the error. */
+    const double k = 8.0, m = 2.0, L = 1.5, A = 0.25, dt = 1e-3;
+    const double omega = sqrt(k / m);
+    const vector_t u = {0.6, 0.8};
+    scene_t *scene = scene_init();
+    scene_set_integrator(scene, INTEGRATOR_VELOCITY_VERLET);
+    body_t *anchor = added(scene, square(VEC_ZERO, 0.1, INFINITY));
+    body_t *bob = added(scene, square(vec_multiply(L + A, u), 0.1, m));
+    create_spring_with_length(scene, k, L, anchor, bob);
+    const vector_t anchor_start = body_get_centroid(anchor);
+    const long steps = lround(2 * (2 * M_PI / omega) / dt);
+    double worst = 0.0, off_line = 0.0;
+    for (long i = 1; i <= steps; i++) {
+        scene_tick(scene, dt);
+        vector_t x = body_get_centroid(bob);
+        worst = fmax(worst, fabs(vec_dot(x, u) - L - A * cos(omega * dt * (double)i)));
+        off_line = fmax(off_line, fabs(vec_cross(u, x)));
+    }
+    CHECK_NEAR(worst, 0.0, 1e-5 * A);
+    CHECK_NEAR(off_line, 0.0, 1e-14);
+    CHECK_VEC(body_get_centroid(anchor), anchor_start.x, anchor_start.y, 0); /* immovable */
+    scene_free(scene);
+}
+
+static void spring_with_length_stretches_by_m_g_over_k(void) {
+    /* A 3 kg bob under g = 9.81 hangs on k = 50, L = 2 from an INFINITY
+     * anchor. Placed at rest at L + m g / k below it, it stays (the forces
+     * cancel to rounding). Released at rest at L, it swings between L and
+     * L + 2 m g / k; symplectic Euler at omega dt = 4e-4 reaches the
+     * lowest point to about (omega dt)^2 = 2e-7 relative: within 1e-6. */
+    const double k = 50.0, m = 3.0, L = 2.0, g = 9.81, dt = 1e-4;
+    const double stretch = m * g / k;
+    for (int released = 0; released <= 1; released++) {
+        scene_t *scene = scene_init();
+        scene_set_integrator(scene, INTEGRATOR_SYMPLECTIC_EULER);
+        scene_set_gravity(scene, (vector_t){0, -g});
+        body_t *anchor = added(scene, square(VEC_ZERO, 0.1, INFINITY));
+        double start = released ? -L : -(L + stretch);
+        body_t *bob = added(scene, square((vector_t){0, start}, 0.1, m));
+        create_spring_with_length(scene, k, L, anchor, bob);
+        const double x = body_get_centroid(bob).x;
+        double lowest = 0.0, highest = -INFINITY;
+        const long steps = lround(2 * M_PI / sqrt(k / m) / dt); /* one period */
+        for (long i = 0; i < steps; i++) {
+            scene_tick(scene, dt);
+            lowest = fmin(lowest, body_get_centroid(bob).y);
+            highest = fmax(highest, body_get_centroid(bob).y);
+        }
+        if (released) {
+            CHECK_RELATIVE(-lowest, L + 2.0 * stretch, 1e-6);
+            CHECK_NEAR(highest, -L, 1e-6 * L);
+        } else {
+            CHECK_NEAR(lowest, -(L + stretch), 1e-12);
+            CHECK_NEAR(highest, -(L + stretch), 1e-12);
+        }
+        CHECK_NEAR(body_get_centroid(bob).x, x, 1e-15); /* below the anchor, to rounding */
+        scene_free(scene);
+    }
+}
+
+static void spring_with_length_conserves_energy_with_symplectic_euler(void) {
+    /* Two free bodies (1 and 3 kg) on k = 20, L = 1, started stretched to
+     * 1.3 m and spinning about each other: they stretch, swing and turn for
+     * 50 s (about 40 spring periods). Symplectic Euler keeps the energy
+     * k (d - L)^2 / 2 + kinetic within omega dt / 2 (2.6e-3) of its start,
+     * never drifting; momentum and angular momentum (a central force) it
+     * keeps to rounding. Explicit Euler gains energy at every step: more
+     * than 10% over the same run. */
+    const double k = 20.0, L = 1.0, dt = 1e-3;
+    for (int explicit_euler = 0; explicit_euler <= 1; explicit_euler++) {
+        scene_t *scene = scene_init();
+        scene_set_integrator(scene, explicit_euler ? INTEGRATOR_EXPLICIT_EULER
+                                                   : INTEGRATOR_SYMPLECTIC_EULER);
+        body_t *a = added(scene, square((vector_t){-0.975, 0}, 0.05, 1.0));
+        body_t *b = added(scene, square((vector_t){0.325, 0}, 0.05, 3.0));
+        body_set_velocity(a, (vector_t){0, -1.5});
+        body_set_velocity(b, (vector_t){0, 0.5});
+        create_spring_with_length(scene, k, L, a, b);
+        double start_energy = 0.0, start_angular = 0.0, worst = 0.0;
+        for (long i = 0; i <= 50000; i++) {
+            if (i > 0) scene_tick(scene, dt);
+            vector_t xa = body_get_centroid(a), xb = body_get_centroid(b);
+            double stretch = vec_get_length(vec_subtract(xb, xa)) - L;
+            double energy = body_get_kinetic_energy(a) + body_get_kinetic_energy(b) +
+                            0.5 * k * stretch * stretch;
+            double angular = vec_cross(xa, vec_multiply(1.0, body_get_velocity(a))) +
+                             vec_cross(xb, vec_multiply(3.0, body_get_velocity(b)));
+            if (i == 0) {
+                start_energy = energy;
+                start_angular = angular;
+            }
+            worst = fmax(worst, fabs(energy - start_energy) / start_energy);
+            if (!explicit_euler) CHECK_NEAR(angular, start_angular, 1e-12);
+        }
+        if (explicit_euler) {
+            CHECK(worst > 0.1);
+        } else {
+            CHECK(worst < 0.5 * sqrt(k / 0.75) * dt); /* omega of the reduced mass */
+            CHECK_NEAR(momentum_x(a, b), 0.0, 1e-12);
+            CHECK_NEAR(body_get_velocity(a).y + 3.0 * body_get_velocity(b).y, 0.0, 1e-12);
+        }
+        scene_free(scene);
+    }
+}
+
 /* Newtonian gravity. */
 
 static void gravity_follows_the_inverse_square_law(void) {
@@ -967,6 +1109,26 @@ BAD_CALL(gravity_nan_g, create_newtonian_gravity(scene_init(), NAN, any_body(), 
 BAD_CALL(spring_null_body, create_spring(scene_init(), 1.0, any_body(), NULL))
 BAD_CALL(spring_negative_k, create_spring(scene_init(), -2.0, any_body(), any_body()))
 BAD_CALL(spring_infinite_k, create_spring(scene_init(), INFINITY, any_body(), any_body()))
+BAD_CALL(spring_length_negative,
+         create_spring_with_length(scene_init(), 1.0, -0.5, any_body(), any_body()))
+BAD_CALL(spring_length_nan,
+         create_spring_with_length(scene_init(), 1.0, NAN, any_body(), any_body()))
+BAD_CALL(spring_length_infinite,
+         create_spring_with_length(scene_init(), 1.0, INFINITY, any_body(), any_body()))
+BAD_CALL(spring_length_negative_k,
+         create_spring_with_length(scene_init(), -1.0, 1.0, any_body(), any_body()))
+BAD_CALL(spring_length_null_body,
+         create_spring_with_length(scene_init(), 1.0, 1.0, any_body(), NULL))
+BAD_CALL(spring_length_null_scene,
+         create_spring_with_length(NULL, 1.0, 1.0, any_body(), any_body()))
+BAD_CALL(spring_length_to_itself, {
+    body_t *body = any_body();
+    create_spring_with_length(scene_init(), 1.0, 1.0, body, body);
+})
+BAD_CALL(spring_to_itself, {
+    body_t *body = any_body();
+    create_spring(scene_init(), 1.0, body, body);
+})
 BAD_CALL(drag_null_body, create_drag(scene_init(), 1.0, NULL))
 BAD_CALL(drag_null_scene, create_drag(NULL, 1.0, any_body()))
 BAD_CALL(drag_negative_gamma, create_drag(scene_init(), -0.5, any_body()))
@@ -1106,6 +1268,22 @@ static void bad_input_aborts_with_message(void) {
     CHECK_DIES(spring_null_body, NULL, "engine error in create_spring:", "body2 is NULL");
     CHECK_DIES(spring_negative_k, NULL, "engine error in create_spring:", "k", "got -2");
     CHECK_DIES(spring_infinite_k, NULL, "engine error in create_spring:", "k", "inf");
+    CHECK_DIES(spring_to_itself, NULL, "engine error in create_spring:",
+               "a spring cannot join a body to itself");
+    CHECK_DIES(spring_length_negative, NULL, "engine error in create_spring_with_length:",
+               "rest_length must be finite and >= 0 (got -0.5)");
+    CHECK_DIES(spring_length_nan, NULL, "engine error in create_spring_with_length:",
+               "rest_length", "nan");
+    CHECK_DIES(spring_length_infinite, NULL, "engine error in create_spring_with_length:",
+               "rest_length", "inf");
+    CHECK_DIES(spring_length_negative_k, NULL, "engine error in create_spring_with_length:",
+               "k must be finite and >= 0 (got -1)");
+    CHECK_DIES(spring_length_null_body, NULL, "engine error in create_spring_with_length:",
+               "body2 is NULL");
+    CHECK_DIES(spring_length_null_scene, NULL, "engine error in create_spring_with_length:",
+               "scene is NULL");
+    CHECK_DIES(spring_length_to_itself, NULL, "engine error in create_spring_with_length:",
+               "a spring cannot join a body to itself");
     CHECK_DIES(drag_null_body, NULL, "engine error in create_drag:", "body is NULL");
     CHECK_DIES(drag_null_scene, NULL, "engine error in create_drag:", "scene is NULL");
     CHECK_DIES(drag_negative_gamma, NULL, "engine error in create_drag:", "gamma", "got -0.5");
@@ -1138,6 +1316,10 @@ static void bad_input_aborts_with_message(void) {
 TEST_SUITE(forces, TEST_CASE(spring_is_hooke_with_rest_length_zero),
            TEST_CASE(a_ball_meeting_two_pegs_in_one_tick_gains_no_energy),
            TEST_CASE(spring_oscillator_matches_the_cosine),
+           TEST_CASE(spring_with_length_is_hooke_about_its_length),
+           TEST_CASE(spring_with_length_oscillates_about_its_length),
+           TEST_CASE(spring_with_length_stretches_by_m_g_over_k),
+           TEST_CASE(spring_with_length_conserves_energy_with_symplectic_euler),
            TEST_CASE(gravity_follows_the_inverse_square_law),
            TEST_CASE(gravity_is_left_out_when_it_cannot_be_applied),
            TEST_CASE(two_body_gravity_conserves_energy_and_momentum),

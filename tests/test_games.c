@@ -44,6 +44,16 @@ static game_input_t idle(scene_file_t *file) {
     return (game_input_t){0.0, false};
 }
 
+/* Bodies with the tag, not marked removed. */
+static int count_tagged(scene_t *scene, const char *tag) {
+    int n = 0;
+    for (size_t i = 0; i < scene_bodies(scene); i++) {
+        body_t *body = scene_get_body(scene, i);
+        n += !body_is_removed(body) && game_body_has_tag(body, tag);
+    }
+    return n;
+}
+
 static double clamp_unit(double x) {
     return x < -1.0 ? -1.0 : x > 1.0 ? 1.0 : x;
 }
@@ -153,6 +163,40 @@ static void space_invaders_is_lost_by_a_still_gun(void) {
     scene_file_free(file);
 }
 
+static void space_invaders_gun_has_three_lives(void) {
+    /* A still gun under the bombs: three lives, one lost per bomb that
+     * reaches it; each hit clears the bombs in flight and the gun plays on
+     * (still in the scene, still playing) until the third, which loses the
+     * game with the gun in place. */
+    scene_file_t *file = load("assets/scenes/space_invaders.scene");
+    scene_t *scene = scene_file_get_scene(file);
+    double dt = scene_file_get_timestep(file);
+    char error[256];
+    game_t *game = game_start(file, error, sizeof error);
+    CHECK(game != NULL);
+    if (game == NULL) return;
+    CHECK(game_status(game).lives == 3);
+    int lives = 3, hits = 0;
+    for (double t = 0; t < 300 && game_status(game).outcome == GAME_PLAYING; t += dt) {
+        scene_tick(scene, dt);
+        game_update(game, (game_input_t){0}, dt);
+        game_status_t status = game_status(game);
+        if (status.lives == lives) continue;
+        hits++;
+        CHECK(status.lives == lives - 1);
+        lives = status.lives;
+        CHECK(count_tagged(scene, "bomb") == 0);
+        body_t *gun = scene_file_find_body(file, "player");
+        CHECK(gun != NULL && !body_is_removed(gun));
+        CHECK(status.outcome == (lives > 0 ? GAME_PLAYING : GAME_LOST));
+        CHECK(status.remaining == 32); /* the invaders were never shot */
+    }
+    CHECK(hits == 3);
+    CHECK(game_status(game).outcome == GAME_LOST && game_status(game).lives == 0);
+    game_free(game);
+    scene_file_free(file);
+}
+
 static void space_invaders_march_down_and_shoot(void) {
     /* Five seconds in: the formation has moved sideways, bombs have fallen
      * (spawned from the bomb template, tagged bomb) and the gun's shots fly. */
@@ -183,16 +227,85 @@ static void space_invaders_march_down_and_shoot(void) {
 
 /* ---- Pegs and the interface ----------------------------------------------- */
 
-static void pegs_drops_the_balls_again(void) {
+static void pegs_drops_a_ball_every_second_and_freezes_it_where_it_lands(void) {
+    /* The first ball: at the drop point (76 m up, within 0.5 m of the
+     * middle), moving down at 8 m/s. */
     scene_file_t *file = load("assets/scenes/pegs.scene");
-    game_status_t status = play(file, idle, 20);
-    CHECK(status.outcome == GAME_PLAYING);
-    CHECK(status.score >= 24); /* every ball went through at least once */
     scene_t *scene = scene_file_get_scene(file);
+    double dt = scene_file_get_timestep(file);
+    char error[256];
+    game_t *game = game_start(file, error, sizeof error);
+    CHECK(game != NULL && !game_takes_input(game));
+    scene_tick(scene, dt);
+    game_update(game, (game_input_t){0}, dt);
+    CHECK(count_tagged(scene, "ball") == 1);
     for (size_t i = 0; i < scene_bodies(scene); i++) {
-        body_t *body = scene_get_body(scene, i);
-        if (game_body_has_tag(body, "ball")) CHECK(body_get_centroid(body).y > -0.5 - 1.0);
+        body_t *ball = scene_get_body(scene, i);
+        if (!game_body_has_tag(ball, "ball")) continue;
+        CHECK(fabs(body_get_centroid(ball).x) <= 0.5);
+        CHECK_NEAR(body_get_centroid(ball).y, 76.0, 1e-12);
+        CHECK_VEC(body_get_velocity(ball), 0, -8, 0);
     }
+    /* 30 s: a ball each second, 31 in all counting the first, each falling
+     * or landed; every landed one frozen (static, at rest) on the floor
+     * (top at y = 0) or on another frozen ball, touching it. */
+    for (int i = 1; i < lround(30.0 / dt); i++) {
+        scene_tick(scene, dt);
+        game_update(game, (game_input_t){0}, dt);
+    }
+    scene_tick(scene, 0); /* frees the bodies the rules removed */
+    game_status_t status = game_status(game);
+    int falling = count_tagged(scene, "ball"), frozen = count_tagged(scene, "frozen");
+    CHECK(status.outcome == GAME_PLAYING);
+    CHECK(status.score == frozen && status.remaining == falling + frozen);
+    CHECK(falling + frozen == 31);
+    CHECK(frozen >= 15);
+    const double radius = cos(M_PI / 20); /* the 20-gon's inner radius, 1 m balls */
+    for (size_t i = 0; i < scene_bodies(scene); i++) {
+        body_t *ball = scene_get_body(scene, i);
+        if (!game_body_has_tag(ball, "frozen")) continue;
+        CHECK(isinf(body_get_mass(ball)));
+        CHECK_VEC(body_get_velocity(ball), 0, 0, 0);
+        vector_t at = body_get_centroid(ball);
+        double gap = at.y - radius; /* above the floor */
+        for (size_t j = 0; j < scene_bodies(scene); j++) {
+            body_t *other = scene_get_body(scene, j);
+            if (other == ball || !game_body_has_tag(other, "frozen")) continue;
+            vector_t d = vec_subtract(body_get_centroid(other), at);
+            gap = fmin(gap, vec_get_length(d) - 2.0 * radius);
+        }
+        CHECK(gap < 0.2); /* landed: within one step's fall of what froze it */
+    }
+    game_free(game);
+    scene_file_free(file);
+}
+
+static void pegs_clears_a_full_board(void) {
+    /* A floor 3 m under the drop point (76 m up, as the view puts it): the
+     * first ball freezes within two ball sizes of it, which fills the board,
+     * so it is cleared at once; the next ball lands on the bare floor. */
+    const char *text = "game pegs\nview 0 41 20 83\ngravity 0 -9.8\ncontacts on\n"
+                       "body floor { box 20 1; static; position 0 72.5; tag floor }\n"
+                       "template ball { regular 20 1; mass 2; tag ball }\n"
+                       "template frozen { regular 20 1; static; tag frozen }\n";
+    scene_file_t *file = scene_file_parse(text, strlen(text), "t", NULL);
+    CHECK(file != NULL);
+    if (file == NULL) return;
+    scene_t *scene = scene_file_get_scene(file);
+    char error[256];
+    game_t *game = game_start(file, error, sizeof error);
+    CHECK(game != NULL);
+    int landed = 0;
+    for (int i = 0; i < 240 && landed < 2; i++) {
+        scene_tick(scene, 1.0 / 120);
+        game_update(game, (game_input_t){0}, 1.0 / 120);
+        if (game_status(game).score > landed) {
+            landed = game_status(game).score;
+            CHECK(count_tagged(scene, "frozen") == 0);
+        }
+    }
+    CHECK(landed == 2);
+    game_free(game);
     scene_file_free(file);
 }
 
@@ -213,7 +326,11 @@ static void games_refuse_scenes_they_cannot_play(void) {
         {"game space_invaders\nview 0 0 10 10\nbody player { box 1 1; static }\n"
          "body { box 1 1; tag invader }\ntemplate shot { box 0.1 0.3 }",
          "space_invaders: the scene has no template named bomb"},
-        {"game pegs\nview 0 0 10 10", "pegs: the scene has no body tagged ball"},
+        {"game pegs\nview 0 0 10 10", "pegs: the scene has no template named ball"},
+        {"game pegs\nview 0 0 10 10\ntemplate ball { box 1 1 }",
+         "pegs: the scene has no template named frozen"},
+        {"game pegs\ntemplate ball { box 1 1 }\ntemplate frozen { box 1 1 }",
+         "pegs: the scene has no view (the board)"},
     };
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         scene_file_t *file = scene_file_parse(cases[i].text, strlen(cases[i].text), "t", NULL);
@@ -238,5 +355,8 @@ TEST_SUITE(games, TEST_CASE(breakout_is_won_by_a_paddle_under_the_ball),
            TEST_CASE(breakout_is_lost_by_a_still_paddle),
            TEST_CASE(space_invaders_is_won_by_aimed_fire),
            TEST_CASE(space_invaders_is_lost_by_a_still_gun),
-           TEST_CASE(space_invaders_march_down_and_shoot), TEST_CASE(pegs_drops_the_balls_again),
+           TEST_CASE(space_invaders_gun_has_three_lives),
+           TEST_CASE(space_invaders_march_down_and_shoot),
+           TEST_CASE(pegs_drops_a_ball_every_second_and_freezes_it_where_it_lands),
+           TEST_CASE(pegs_clears_a_full_board),
            TEST_CASE(games_refuse_scenes_they_cannot_play));

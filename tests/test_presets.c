@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "engine.h"
+#include "game.h"
 #include "scene_file.h"
 #include "scene_file_check.h"
 #include "test.h"
@@ -79,27 +80,135 @@ static double energy(scene_t *scene, double g, double G) {
     return e;
 }
 
-static void pegs_keeps_balls_between_the_walls(scene_file_t *file) {
-    /* 300 steps: the balls fall through the board; elastic collisions with
-     * infinite masses keep the energy (within 1%), and no ball leaves through
-     * a wall (inner faces at x = +-6). */
-    scene_t *scene = scene_file_get_scene(file);
-    double start = energy(scene, 9.8, 0);
-    run(file, 300);
-    CHECK_RELATIVE(energy(scene, 9.8, 0), start, 0.01);
-    for (size_t i = 0; i < scene_bodies(scene); i++) {
-        body_t *body = scene_get_body(scene, i);
-        if (tagged(body, "ball")) CHECK(fabs(body_get_centroid(body).x) < 6.0);
-    }
+/* How far (m) a point is inside a wall's inner face: the wall is a box
+ * turned by its rotation, 1 m thick, and the board is on the side of its
+ * middle line where `inside` lies. */
+static double inside_wall(body_t *wall, vector_t inside, vector_t point) {
+    double angle = body_get_rotation(wall);
+    vector_t normal = {-sin(angle), cos(angle)}, centre = body_get_centroid(wall);
+    if (vec_dot(vec_subtract(inside, centre), normal) < 0.0) normal = vec_negate(normal);
+    return vec_dot(vec_subtract(point, centre), normal) - 0.5;
 }
 
-static void newtons_cradle_passes_the_blow_along(scene_file_t *file) {
-    run(file, 300);
+static void pegs_keep_every_ball_on_the_board(scene_file_t *file) {
+    /* Ten minutes of play with the rules (a ball a second): every 0.1 s
+     * every ball, falling or frozen, lies wholly inside both walls and above
+     * the floor (its edge within 1 cm of them at most), and no ball stays in
+     * the air (under 20 falling at once); the balls land and freeze, the
+     * board fills and is cleared. */
+    char error[256];
+    game_t *game = game_start(file, error, sizeof error);
+    CHECK(game != NULL);
+    if (game == NULL) return;
     scene_t *scene = scene_file_get_scene(file);
-    size_t last = scene_bodies(scene) - 1;
-    for (size_t i = 0; i < last; i++)
-        CHECK_VEC(body_get_velocity(scene_get_body(scene, i)), 0, 0, 1e-9);
-    CHECK_VEC(body_get_velocity(scene_get_body(scene, last)), 2, 0, 1e-9);
+    body_t *left = named(file, "left"), *right = named(file, "right");
+    vector_t middle = {0, 40};
+    const double radius = 1.0 * cos(M_PI / 20), slack = 0.01; /* a 20-gon's inner radius */
+    double dt = scene_file_get_timestep(file), worst = INFINITY;
+    int most_falling = 0, clears = 0, on_board = 0, failures = test_failures;
+    long steps = lround(600.0 / dt), every = lround(0.1 / dt);
+    for (long step = 1; step <= steps && test_failures == failures; step++) {
+        scene_tick(scene, dt);
+        game_update(game, (game_input_t){0}, dt);
+        clears += game_status(game).remaining < on_board - 20;
+        on_board = game_status(game).remaining;
+        if (step % every != 0) continue;
+        int falling = 0;
+        for (size_t i = 0; i < scene_bodies(scene); i++) {
+            body_t *body = scene_get_body(scene, i);
+            bool ball = tagged(body, "ball");
+            if (body_is_removed(body) || !(ball || tagged(body, "frozen"))) continue;
+            falling += ball;
+            vector_t at = body_get_centroid(body);
+            double margin = fmin(inside_wall(left, middle, at), inside_wall(right, middle, at));
+            margin = fmin(margin, at.y); /* the floor's top is at y = 0 */
+            worst = fmin(worst, margin);
+            CHECK(margin > radius - slack);
+        }
+        most_falling = most_falling > falling ? most_falling : falling;
+    }
+    game_status_t status = game_status(game);
+    CHECK(most_falling < 20);
+    CHECK(status.score >= 580); /* of 600 dropped */
+    CHECK(clears >= 1);
+    CHECK(status.outcome == GAME_PLAYING);
+    if (test_failures != failures) printf("    worst margin %g m\n", worst - radius);
+    game_free(game);
+}
+
+static double speed(body_t *body) {
+    return vec_get_length(body_get_velocity(body));
+}
+
+/* Runs until the striker's blow reaches the ball at the other end (its
+ * speed passes half the striker's), then 0.05 s more: that ball leaves with
+ * at least 99% of the speed the striker had in the step before, the others
+ * keep under 1% of it. At most max_steps steps; returns the steps run. */
+static int check_transmission(scene_file_t *file, body_t *const ball[5], bool leftward,
+                              int max_steps) {
+    body_t *striker = ball[leftward ? 4 : 0], *last = ball[leftward ? 0 : 4];
+    double before = 0.0, fastest = 0.0;
+    int steps = 0;
+    while (!(fastest > 0.0 && speed(last) > 0.5 * fastest) && steps < max_steps) {
+        before = speed(striker);
+        fastest = fmax(fastest, before);
+        run(file, 1);
+        steps++;
+    }
+    CHECK(steps < max_steps);
+    double leaving = 0.0;
+    for (int i = 0; i < 24; i++) { /* 0.05 s at 1/480 s */
+        run(file, 1);
+        leaving = fmax(leaving, speed(last));
+    }
+    CHECK(leaving >= 0.99 * before);
+    for (int i = 0; i < 5; i++) {
+        if (ball[i] != last) CHECK(speed(ball[i]) < 0.01 * before);
+    }
+    return steps + 24;
+}
+
+static void newtons_cradle_passes_the_blow_along_and_repeats(scene_file_t *file) {
+    body_t *ball[5];
+    char name[16];
+    for (int i = 0; i < 5; i++) {
+        snprintf(name, sizeof name, "ball%d", i + 1);
+        ball[i] = named(file, name);
+    }
+    const double period = 2.0 * M_PI * sqrt(2.0 / 9.8), dt = scene_file_get_timestep(file);
+    vector_t rest[5];
+    for (int i = 0; i < 5; i++) rest[i] = body_get_centroid(ball[i]);
+    rest[0].y = rest[1].y; /* the striker's rest is at the row's height */
+    double release = body_get_centroid(ball[0]).y - rest[0].y;
+    /* Ball 1 strikes the row, then ball 5 comes back and strikes it. */
+    int half = (int)(0.6 * period / dt);
+    int done = check_transmission(file, ball, false, half);
+    done += check_transmission(file, ball, true, 2 * half);
+    /* Three periods from the start: every swing of an end ball (from its
+     * leaving the row to its coming back below 10% of the release height)
+     * rises to 90% of the release height; the middle balls stay within a
+     * tenth of it from where they hang. */
+    double apex[2] = {0.0, 0.0}, middle = 0.0;
+    int swings[2] = {0, 0};
+    int steps = (int)lround(3.0 * period / dt);
+    for (int step = done; step < steps; step++) {
+        run(file, 1);
+        for (int end = 0; end < 2; end++) {
+            double height = body_get_centroid(ball[4 * end]).y - rest[4 * end].y;
+            if (height > 0.5 * release) apex[end] = fmax(apex[end], height);
+            if (height < 0.1 * release && apex[end] > 0.0) {
+                CHECK(apex[end] >= 0.9 * release);
+                swings[end]++;
+                apex[end] = 0.0;
+            }
+        }
+        for (int i = 1; i < 4; i++) {
+            vector_t moved = vec_subtract(body_get_centroid(ball[i]), rest[i]);
+            middle = fmax(middle, vec_get_length(moved));
+        }
+    }
+    CHECK(swings[0] >= 2 && swings[1] >= 2);
+    CHECK(middle < 0.1 * release);
 }
 
 static void pyramid_stands(scene_file_t *file) {
@@ -155,16 +264,24 @@ static void orbits_stay_round(scene_file_t *file) {
     CHECK(scene_file_force_count(file) == 10); /* newton all: 5 bodies, 10 pairs */
 }
 
-static void spring_chain_hangs(scene_file_t *file) {
-    run(file, 1200);
-    double anchor_y = body_get_centroid(named(file, "anchor")).y;
+static void spring_chain_hangs_at_its_length(scene_file_t *file) {
+    /* 30 s: at rest straight below the anchor, each spring its rest length
+     * (1 m) plus the weight it holds over k, n 1 kg links below it pulling
+     * with n 9.8 N on k = 1000 N/m. */
+    const double rest_length = 1.0, k = 1000.0, weight = 1.0 * 9.8;
+    run(file, 3600);
+    vector_t above = body_get_centroid(named(file, "anchor"));
     char name[16];
     for (int i = 1; i <= 8; i++) {
         snprintf(name, sizeof name, "link%d", i);
-        CHECK(body_get_centroid(named(file, name)).y < anchor_y);
+        body_t *link = named(file, name);
+        vector_t at = body_get_centroid(link);
+        int below = 9 - i; /* this link and those under it */
+        CHECK_NEAR(at.x, above.x, 1e-4);
+        CHECK_NEAR(above.y - at.y, rest_length + below * weight / k, 1e-4);
+        CHECK(vec_get_length(body_get_velocity(link)) < 1e-4);
+        above = at;
     }
-    /* Below the anchor in order, the last lowest. */
-    CHECK(body_get_centroid(named(file, "link8")).y < body_get_centroid(named(file, "link1")).y);
 }
 
 static void stiff_spring_stays_bounded(scene_file_t *file) {
@@ -187,13 +304,38 @@ static void mass_ratio_stack_holds(scene_file_t *file) {
     CHECK_NEAR(body_get_centroid(named(file, "heavy")).x, 0, 0.01);
 }
 
-static void tunnelling_stops_every_box(scene_file_t *file) {
+/* Whether the body lies wholly inside the file's view. */
+static bool in_view(scene_file_t *file, body_t *body) {
+    scene_file_view_t view = scene_file_get_view(file);
+    aabb_t box = body_get_bounds(body);
+    return view.has_view && box.min.x >= view.center.x - 0.5 * view.width &&
+           box.max.x <= view.center.x + 0.5 * view.width &&
+           box.min.y >= view.center.y - 0.5 * view.height &&
+           box.max.y <= view.center.y + 0.5 * view.height;
+}
+
+static void tunnelling_stops_every_box_and_keeps_them_in_view(scene_file_t *file) {
+    /* 5 s at 1/60 s: at every step every box is between the walls' faces
+     * (x = -13.95 and 9.95), none passing through; then every box is in
+     * the view, the two at elasticity 0 at rest against the wall, the one
+     * at 1 crossing at 1000 m/s, the one at 0.5 slower than it started. */
     const char *const boxes[] = {"slow", "fast", "faster", "fastest"};
+    const double half = 0.4;
     for (int step = 0; step < 300; step++) {
         run(file, 1);
-        for (int i = 0; i < 4; i++) CHECK(body_get_centroid(named(file, boxes[i])).x < 19.95);
+        for (int i = 0; i < 4; i++) {
+            double x = body_get_centroid(named(file, boxes[i])).x;
+            CHECK(x - half >= -13.95 - 1e-3 && x + half <= 9.95 + 1e-3);
+        }
     }
-    CHECK(body_get_velocity(named(file, "faster")).x < -999); /* elasticity 1: back it comes */
+    for (int i = 0; i < 4; i++) CHECK(in_view(file, named(file, boxes[i])));
+    CHECK_NEAR(body_get_centroid(named(file, "fast")).x, 9.95 - half, 1e-3);
+    CHECK_NEAR(body_get_centroid(named(file, "fastest")).x, 9.95 - half, 1e-3);
+    CHECK_VEC(body_get_velocity(named(file, "fast")), 0, 0, 1e-9);
+    CHECK_VEC(body_get_velocity(named(file, "fastest")), 0, 0, 1e-9);
+    CHECK_RELATIVE(fabs(body_get_velocity(named(file, "faster")).x), 1000, 1e-9);
+    double slow = fabs(body_get_velocity(named(file, "slow")).x);
+    CHECK(slow > 0.0 && slow < 50.0);
 }
 
 static void games_run_without_their_rules(scene_file_t *file) {
@@ -210,17 +352,17 @@ typedef struct {
 } preset_t;
 
 static const preset_t PRESETS[] = {
-    {"pegs", pegs_keeps_balls_between_the_walls},
+    {"pegs", pegs_keep_every_ball_on_the_board},
     {"breakout", games_run_without_their_rules},
     {"space_invaders", games_run_without_their_rules},
-    {"newtons_cradle", newtons_cradle_passes_the_blow_along},
+    {"newtons_cradle", newtons_cradle_passes_the_blow_along_and_repeats},
     {"pyramid", pyramid_stands},
     {"card_house", card_house_stands},
     {"orbits", orbits_stay_round},
-    {"spring_chain", spring_chain_hangs},
+    {"spring_chain", spring_chain_hangs_at_its_length},
     {"stiff_spring", stiff_spring_stays_bounded},
     {"mass_ratio_stack", mass_ratio_stack_holds},
-    {"tunnelling", tunnelling_stops_every_box},
+    {"tunnelling", tunnelling_stops_every_box_and_keeps_them_in_view},
 };
 #define PRESET_COUNT (sizeof PRESETS / sizeof PRESETS[0])
 

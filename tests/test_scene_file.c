@@ -223,6 +223,42 @@ static void forces_and_rules_make_their_pairs(void) {
     scene_file_free(file);
 }
 
+static void springs_may_have_a_rest_length(void) {
+    /* `length L` after the bodies: create_spring_with_length, which pushes
+     * a and b apart when closer than L and pulls them together beyond it;
+     * without it the spring's rest length is 0. One tick of 0.01 s on 1 kg
+     * boxes 3 m apart: k (d - L) dt / m along the line. */
+    scene_file_t *file = parse("body a { box 1 1; mass 1; position 0 0 }\n"
+                               "body b { box 1 1; mass 1; position 3 0 }\n"
+                               "body c { box 1 1; mass 1; position 0 5 }\n"
+                               "body d { box 1 1; mass 1; position 3 5 }\n"
+                               "body e { box 1 1; mass 1; position 0 10 }\n"
+                               "body f { box 1 1; mass 1; position 3 10 }\n"
+                               "spring 10 a b length 5\n"
+                               "spring 10 c d length 1.5\n"
+                               "spring 10 e f\n");
+    CHECK(scene_file_force_count(file) == 3);
+    CHECK_NEAR(scene_file_get_force(file, 0).rest_length, 5, 0);
+    CHECK_NEAR(scene_file_get_force(file, 1).rest_length, 1.5, 0);
+    CHECK_NEAR(scene_file_get_force(file, 2).rest_length, 0, 0);
+    CHECK(scene_file_get_force(file, 0).kind == SCENE_FILE_SPRING);
+    scene_tick(scene_file_get_scene(file), 0.01);
+    CHECK_NEAR(body_get_velocity(body_at(file, 0)).x, 10 * (3 - 5) * 0.01, 1e-15);
+    CHECK_NEAR(body_get_velocity(body_at(file, 2)).x, 10 * (3 - 1.5) * 0.01, 1e-15);
+    CHECK_NEAR(body_get_velocity(body_at(file, 4)).x, 10 * 3 * 0.01, 1e-15);
+    /* Written back with its length, and read again the same. */
+    size_t length = 0;
+    char *text = scene_file_write(file, &length, NULL);
+    CHECK(strstr(text, "spring 10 a b length 5\n") != NULL);
+    CHECK(strstr(text, "spring 10 c d length 1.5\n") != NULL);
+    CHECK(strstr(text, "spring 10 e f\n") != NULL);
+    char why[256] = "";
+    CHECK(scene_file_round_trip((const uint8_t *)text, length, "t.scene", why, sizeof why));
+    if (why[0] != '\0') printf("    %s\n", why);
+    free(text);
+    scene_file_free(file);
+}
+
 static void layout_is_free(void) {
     /* Semicolons, blank lines, CRLF, a brace on its own line, a vertex list
      * over several lines, fractions, comments anywhere. */
@@ -546,6 +582,13 @@ static const bad_file_t BAD_FILES[] = {
      "template or a group)"},
     {"body a { box 1 1 }\nspring 1 a a",
      "t.scene:2:12: expected two different bodies for the spring, found \"a\" twice"},
+    {"body a { box 1 1 }\nbody b { box 1 1 }\nspring 1 a b length -1",
+     "t.scene:3:21: expected the spring's rest length (m), a number >= 0 and <= 2e+09, found "
+     "\"-1\""},
+    {"body a { box 1 1 }\nbody b { box 1 1 }\nspring 1 a b length",
+     "t.scene:3:20: expected the spring's rest length (m), a number, found the end of the file"},
+    {"body a { box 1 1 }\nbody b { box 1 1 }\nspring 1 a b 2",
+     "t.scene:3:14: expected the end of the statement (a new line or ';'), found \"2\""},
     {"body a { box 1 1 }\nnewton 1\n",
      "t.scene:2:9: expected all or the bodies and groups that attract each other (a letter or '_', "
      "then letters, digits, '_', '.' or '-', at most 63 characters), found the end of the line"},
@@ -714,6 +757,7 @@ TEST_SUITE(scene_file, TEST_CASE(settings_reach_the_scene),
            TEST_CASE(shapes_are_regular_boxes_or_vertices), TEST_CASE(mass_density_or_static),
            TEST_CASE(pose_motion_and_material_reach_the_body), TEST_CASE(filters_keep_bodies_apart),
            TEST_CASE(repeat_makes_a_group_of_copies), TEST_CASE(forces_and_rules_make_their_pairs),
+           TEST_CASE(springs_may_have_a_rest_length),
            TEST_CASE(layout_is_free), TEST_CASE(names_and_groups_may_be_used_before_their_blocks),
            TEST_CASE(spawn_applies_the_rules_of_its_groups),
            TEST_CASE(many_spawns_and_destructions_leave_nothing_behind),

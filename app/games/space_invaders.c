@@ -11,13 +11,17 @@
  * "player", at least one invader, templates named "shot" and "bomb", and a
  * view, which is the field.
  *
- * Won when no invader is left; lost when the gun is destroyed (a bomb or an
- * invader reached it) or an invader comes down to the gun's height.
+ * The gun has three lives. A bomb that touches it (find_collision, checked
+ * after every step) costs one: the bomb and every other bomb in flight are
+ * removed, and the gun plays on where it is. Won when no invader is left;
+ * lost with the last life, when an invader reaches the gun (the file's
+ * destructive collision removes it) or comes down to the gun's height.
  */
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include "collision.h"
 #include "game.h"
 
 static const double GUN_SPEED = 8.0;        /* m/s at move = 1 */
@@ -29,6 +33,7 @@ static const double MARCH_SPEED_LAST = 4.0; /* ... and with one invader left */
 static const double STEP_DOWN = 0.5;        /* m, at each edge */
 static const double BOMB_SPEED = 5.0;       /* m/s, down */
 static const double BOMB_INTERVAL = 0.9;    /* s between bombs */
+static const int LIVES = 3;
 
 typedef struct {
     scene_file_t *file;
@@ -92,7 +97,7 @@ static void *invaders_start(scene_file_t *file, char *error, size_t error_size) 
         .random = 0x9E3779B97F4A7C15ULL,
         .initial_invaders = count(scene, "invader"),
     };
-    game->status = (game_status_t){GAME_PLAYING, 1, 0, game->initial_invaders};
+    game->status = (game_status_t){GAME_PLAYING, LIVES, 0, game->initial_invaders};
     return game;
 }
 
@@ -176,6 +181,23 @@ static void clear_strays(invaders_t *game) {
     }
 }
 
+/* A bomb touching the gun costs a life and clears the bombs in flight;
+ * true when that was the last life. */
+static bool bombed(invaders_t *game, body_t *gun) {
+    bool hit = false;
+    for (size_t i = 0; i < scene_bodies(game->scene) && !hit; i++) {
+        body_t *body = scene_get_body(game->scene, i);
+        hit = alive(body, "bomb") && find_collision(body, gun).collided;
+    }
+    if (!hit) return false;
+    for (size_t i = 0; i < scene_bodies(game->scene); i++) {
+        body_t *body = scene_get_body(game->scene, i);
+        if (alive(body, "bomb")) body_remove(body);
+    }
+    game->status.lives--;
+    return game->status.lives == 0;
+}
+
 static void stop(invaders_t *game, game_outcome_t outcome) {
     game->status.outcome = outcome;
     if (outcome == GAME_LOST) game->status.lives = 0;
@@ -196,7 +218,8 @@ static void invaders_update(void *state, game_input_t input, double dt) {
         stop(game, GAME_WON);
         return;
     }
-    if (gun == NULL || body_is_removed(gun) || formation.min.y <= body_get_bounds(gun).max.y) {
+    if (gun == NULL || body_is_removed(gun) || formation.min.y <= body_get_bounds(gun).max.y ||
+        bombed(game, gun)) {
         stop(game, GAME_LOST);
         return;
     }

@@ -20,8 +20,9 @@
  * naming the pair (scene.h). */
 void create_newtonian_gravity(scene_t *scene, double G, body_t *body1, body_t *body2);
 
-/* A Hooke spring of constant k (N/m, >= 0) and rest length 0 between the two
- * centroids: each body is pulled toward the other with k |x2 - x1|. With
+/* A Hooke spring of constant k (N/m, >= 0) and rest length 0 between the
+ * centroids of two distinct bodies (a spring from a body to itself is
+ * refused): each body is pulled toward the other with k |x2 - x1|. With
  * m the reduced mass m1 m2 / (m1 + m2) (the finite one against INFINITY) and
  * omega = sqrt(k / m), the seed and explicit Euler integrators multiply its
  * energy at every step by 1 + (omega dt)^2 / 2 (more once omega dt > 4) and
@@ -29,6 +30,17 @@ void create_newtonian_gravity(scene_t *scene, double G, body_t *body1, body_t *b
  * dt < 2 sqrt(m / k). A force that is no longer finite stops scene_tick,
  * naming the spring and that limit. */
 void create_spring(scene_t *scene, double k, body_t *body1, body_t *body2);
+
+/* A Hooke spring of constant k (N/m, >= 0) and rest length L (m, finite and
+ * >= 0) between the centroids of two distinct bodies: with d the distance
+ * between them and u the unit vector from body1 toward body2, body1 is
+ * pulled along u with k (d - L) (pushed back while d < L) and body2 the
+ * opposite way; its energy is k (d - L)^2 / 2. The force is left out while
+ * the centroids coincide (no direction to push along). Along the spring it
+ * is as stiff as create_spring's, so the integrators' limits above hold with
+ * the same omega. L = 0 is create_spring's force to rounding. */
+void create_spring_with_length(scene_t *scene, double k, double rest_length, body_t *body1,
+                               body_t *body2);
 
 /* Linear drag -gamma v (gamma in kg/s, >= 0) on body's centroid. Every
  * integrator updates the velocity explicitly, v' = v (1 - gamma dt / m),

@@ -131,6 +131,7 @@ typedef enum {
 typedef struct {
     scene_file_force_kind_t kind;
     double constant; /* k (N/m), G (N m^2/kg^2), gamma (kg/s), elasticity; 0 for destructive */
+    double rest_length; /* m, a spring's (0 for one without `length`); 0 for the others */
     body_t *body1;
     body_t *body2;
 } scene_file_force_t;

@@ -138,7 +138,13 @@ static void make_force(scene_file_t *file, size_t statement, sf_record_t *a, sf_
     const sf_statement_t *s = &file->doc.statements[statement];
     scene_t *scene = file->scene;
     switch (s->kind) {
-    case STATEMENT_SPRING: create_spring(scene, s->constant, a->body, b->body); break;
+    case STATEMENT_SPRING:
+        if (s->has_rest_length) {
+            create_spring_with_length(scene, s->constant, s->rest_length, a->body, b->body);
+        } else {
+            create_spring(scene, s->constant, a->body, b->body);
+        }
+        break;
     case STATEMENT_NEWTON: create_newtonian_gravity(scene, s->constant, a->body, b->body); break;
     case STATEMENT_DRAG: create_drag(scene, s->constant, a->body); break;
     case STATEMENT_PHYSICS: create_physics_collision(scene, a->body, b->body, s->constant); break;
@@ -325,6 +331,7 @@ scene_file_force_t scene_file_get_force(scene_file_t *file, size_t index) {
     return (scene_file_force_t){
         .kind = KINDS[s->kind],
         .constant = s->constant,
+        .rest_length = s->rest_length,
         .body1 = instance->body1->body,
         .body2 = instance->body2 != NULL ? instance->body2->body : NULL,
     };

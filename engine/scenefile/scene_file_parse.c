@@ -93,6 +93,8 @@ static const quantity_t TIMESTEP = {"the timestep (s)", 0.0, 10.0, true, false};
 static const quantity_t VIEW_SIZE = {"a view size (m)", 0.0, 2.0 * SF_MAX_LENGTH, true, false};
 static const quantity_t SPRING_K = {"the spring constant k (N/m)", 0.0, SF_MAX_CONSTANT, false,
                                     false};
+static const quantity_t REST_LENGTH = {"the spring's rest length (m)", 0.0, 2.0 * SF_MAX_LENGTH,
+                                       false, false};
 static const quantity_t NEWTON_G = {"the constant G (N m^2/kg^2)", 0.0, SF_MAX_CONSTANT, false,
                                     false};
 static const quantity_t DRAG_GAMMA = {"the drag gamma (kg/s)", 0.0, SF_MAX_CONSTANT, false, false};
@@ -786,9 +788,14 @@ static bool parse_statement(parser_t *p, const char *keyword, sf_where_t here) {
     *s = (sf_statement_t){.where = here};
     if (strcmp(keyword, "spring") == 0) {
         s->kind = STATEMENT_SPRING;
-        return read_quantity(p, &SPRING_K, &s->constant) &&
-               read_ref(p, "the spring's first body", s, false) &&
-               read_ref(p, "the spring's second body", s, false);
+        if (!read_quantity(p, &SPRING_K, &s->constant) ||
+            !read_ref(p, "the spring's first body", s, false) ||
+            !read_ref(p, "the spring's second body", s, false))
+            return false;
+        if (!sf_token_is(&p->token, "length")) return true;
+        next(p);
+        s->has_rest_length = true;
+        return read_quantity(p, &REST_LENGTH, &s->rest_length);
     }
     if (strcmp(keyword, "newton") == 0 || strcmp(keyword, "drag") == 0) {
         bool newton = keyword[0] == 'n';

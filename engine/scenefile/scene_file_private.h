@@ -170,12 +170,15 @@ typedef enum {
 } sf_statement_kind_t;
 
 /* A force or a collision rule. collide: refs[0] and refs[1] are its two sides;
- * spring: its two bodies; newton: the sets whose union pulls pairwise (none:
- * `all`); drag: the sets it acts on. */
+ * spring: its two bodies, and its rest length when it gives one (`length L`);
+ * newton: the sets whose union pulls pairwise (none: `all`); drag: the sets
+ * it acts on. */
 typedef struct {
     sf_statement_kind_t kind;
     sf_where_t where;
     double constant;
+    bool has_rest_length; /* a spring with `length`: create_spring_with_length */
+    double rest_length;
     sf_ref_t *refs;
     size_t ref_count, ref_capacity;
 } sf_statement_t;

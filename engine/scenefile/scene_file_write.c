@@ -287,6 +287,10 @@ static void put_statement(out_t *out, const sf_doc_t *doc, const sf_statement_t 
     for (size_t i = 0; i < s->ref_count; i++) {
         if (ref_alive(doc, &s->refs[i])) put(out, " %s", s->refs[i].name.text);
     }
+    if (s->has_rest_length) {
+        put(out, " length");
+        put_number(out, s->rest_length);
+    }
     if (s->kind == STATEMENT_PHYSICS) {
         put(out, " physics");
         put_number(out, s->constant);

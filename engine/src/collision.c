@@ -51,6 +51,11 @@ collision_info_t find_collision(body_t *body1, body_t *body2) {
     body_update_world(body1);
     body_update_world(body2);
     collision_info_t info = {false, VEC_ZERO, 0.0};
+    /* Bounds apart by a gap: some edge normal separates them too, so the
+     * answer is the same; most pairs of a scene are far apart. */
+    const aabb_t a = body1->bounds, b = body2->bounds;
+    if (a.max.x < b.min.x || b.max.x < a.min.x || a.max.y < b.min.y || b.max.y < a.min.y)
+        return info;
     double least_overlap = INFINITY;
     if (!overlaps_on_normals_of(body1, body1, body2, &least_overlap, &info.axis)) return info;
     if (!overlaps_on_normals_of(body2, body1, body2, &least_overlap, &info.axis)) return info;

@@ -22,6 +22,7 @@ typedef struct {
     body_t *body2;
     /* For the message when the force does not fit a double. */
     scene_t *scene;
+    double rest_length; /* m, a spring's; 0 for every other force */
 } pair_aux_t;
 
 /* A force that does not fit a double stops the tick here rather than in
@@ -69,11 +70,16 @@ static void claim_pair(scene_t *scene, body_t *body1, body_t *body2, const char 
     scene_claim_body(scene, body2, "body2", function);
 }
 
+static void add_pair_aux(scene_t *scene, force_creator_t forcer, pair_aux_t value) {
+    pair_aux_t *aux = memory_alloc(sizeof(pair_aux_t));
+    *aux = value;
+    scene_add_bodies_force_creator(scene, forcer, aux, bodies_list(value.body1, value.body2),
+                                   memory_free);
+}
+
 static void add_pair_force_creator(scene_t *scene, force_creator_t forcer, double constant,
                                    body_t *body1, body_t *body2) {
-    pair_aux_t *aux = memory_alloc(sizeof(pair_aux_t));
-    *aux = (pair_aux_t){constant, body1, body2, scene};
-    scene_add_bodies_force_creator(scene, forcer, aux, bodies_list(body1, body2), memory_free);
+    add_pair_aux(scene, forcer, (pair_aux_t){constant, body1, body2, scene, 0.0});
 }
 
 static void newtonian_gravity(void *data) {
@@ -176,12 +182,19 @@ static bool explain_spring_stability(const pair_aux_t *aux, char *message, size_
 }
 
 static int describe_spring(const pair_aux_t *aux, char *message, size_t size) {
+    if (aux->rest_length > 0.0) {
+        return snprintf(message, size, "spring between %s and %s (k = %g N/m, rest length %g m)",
+                        body_name(aux->scene, aux->body1).text,
+                        body_name(aux->scene, aux->body2).text, aux->constant,
+                        aux->rest_length);
+    }
     return snprintf(message, size, "spring between %s and %s (k = %g N/m)",
                     body_name(aux->scene, aux->body1).text,
                     body_name(aux->scene, aux->body2).text, aux->constant);
 }
 
 static void spring(void *data);
+static void spring_with_length(void *data);
 
 static void collision_force_creator(void *data);
 
@@ -190,7 +203,7 @@ bool forces_is_event(force_creator_t forcer) {
 }
 
 double forces_spring_omega(force_creator_t forcer, const void *data) {
-    if (forcer != spring) return 0.0;
+    if (forcer != spring && forcer != spring_with_length) return 0.0;
     const pair_aux_t *aux = data;
     if (isinf(aux->body1->mass) && isinf(aux->body2->mass)) return 0.0;
     return sqrt(aux->constant / reduced_mass(aux->body1, aux->body2));
@@ -235,8 +248,38 @@ void create_spring(scene_t *scene, double k, body_t *body1, body_t *body2) {
     REQUIRE_NOT_NULL(body1);
     REQUIRE_NOT_NULL(body2);
     REQUIRE(isfinite(k) && k >= 0.0, "k must be finite and >= 0 (got %g)", k);
+    REQUIRE(body1 != body2, "a spring cannot join a body to itself");
     claim_pair(scene, body1, body2, __func__);
     add_pair_force_creator(scene, spring, k, body1, body2);
+}
+
+/* k (d - L) along the unit vector from body1 to body2, d the distance. */
+static void spring_with_length(void *data) {
+    pair_aux_t *aux = data;
+    vector_t between = vec_subtract(aux->body2->centroid, aux->body1->centroid);
+    double distance = vec_get_length(between);
+    vector_t direction = vec_multiply(1.0 / distance, between);
+    /* Coincident centroids (or so close that 1 / d overflows): no direction
+     * to push along; left out, as documented. */
+    if (!vec_is_finite(direction)) return;
+    vector_t stretch = vec_multiply(distance - aux->rest_length, direction);
+    vector_t force = vec_multiply(aux->constant, stretch);
+    if (!vec_is_finite(force)) fail_spring(aux, stretch);
+    body_push(aux->body1, force);
+    body_push(aux->body2, vec_negate(force));
+}
+
+void create_spring_with_length(scene_t *scene, double k, double rest_length, body_t *body1,
+                               body_t *body2) {
+    REQUIRE_NOT_NULL(scene);
+    REQUIRE_NOT_NULL(body1);
+    REQUIRE_NOT_NULL(body2);
+    REQUIRE(isfinite(k) && k >= 0.0, "k must be finite and >= 0 (got %g)", k);
+    REQUIRE(isfinite(rest_length) && rest_length >= 0.0,
+            "rest_length must be finite and >= 0 (got %g)", rest_length);
+    REQUIRE(body1 != body2, "a spring cannot join a body to itself");
+    claim_pair(scene, body1, body2, __func__);
+    add_pair_aux(scene, spring_with_length, (pair_aux_t){k, body1, body2, scene, rest_length});
 }
 
 #if defined(__GNUC__)

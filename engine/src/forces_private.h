@@ -14,9 +14,9 @@
  * integrator calls it at the first stage only. */
 bool forces_is_event(force_creator_t forcer);
 
-/* sqrt(k / m) (rad/s) of a spring made by create_spring, m the reduced mass
- * of its bodies; 0 for any other force creator, or a spring between two
- * INFINITY masses. */
+/* sqrt(k / m) (rad/s) of a spring made by create_spring or
+ * create_spring_with_length, m the reduced mass of its bodies; 0 for any
+ * other force creator, or a spring between two INFINITY masses. */
 double forces_spring_omega(force_creator_t forcer, const void *aux);
 
 /* The Jacobian of a force creator of forces.h that has one (create_spring,
