@@ -148,6 +148,53 @@ static void its_order_is_one(void) {
     }
 }
 
+/* create_spring_with_length: along a fixed line its force is linear, so
+ * the stretch beyond the rest length shrinks as a spring of rest length 0
+ * does; a stiff one (omega h = 100 along it) holding a swinging pendulum
+ * keeps its length and loses energy. */
+static void a_spring_with_a_rest_length_is_implicit_too(void) {
+    double theta = 100.0, omega = theta / H, k = omega * omega, rest = 2.0;
+    scene_t *scene = implicit_scene();
+    body_t *anchor = added_small(scene, VEC_ZERO, INFINITY);
+    body_t *bob = added_small(scene, (vector_t){rest + 0.5, 0.0}, 1.0);
+    create_spring_with_length(scene, k, rest, anchor, bob);
+    double x = 0.5, y = 0.0;
+    for (int step = 0; step < 3; step++) {
+        scene_tick(scene, H);
+        double ex = (x + theta * y) / (1.0 + theta * theta);
+        double ey = (y - theta * x) / (1.0 + theta * theta);
+        double nx = body_get_centroid(bob).x - rest, ny = body_get_velocity(bob).x / omega;
+        CHECK_NEAR(nx, ex, 1e-9 * hypot(x, y));
+        CHECK_NEAR(ny, ey, 1e-9 * hypot(x, y));
+        x = nx, y = ny;
+    }
+    scene_free(scene);
+
+    const double g = 9.81;
+    scene = implicit_scene();
+    scene_set_gravity(scene, (vector_t){0.0, -g});
+    anchor = added_small(scene, VEC_ZERO, INFINITY);
+    bob = added_small(scene, (vector_t){rest * sin(0.5), -rest * cos(0.5)}, 1.0);
+    create_spring_with_length(scene, k, rest, anchor, bob);
+    double energy = INFINITY, longest = 0.0, shortest = INFINITY;
+    for (int step = 0; step < 600; step++) {
+        scene_tick(scene, H);
+        vector_t p = body_get_centroid(bob), v = body_get_velocity(bob);
+        double d = vec_get_length(p), stretch = d - rest;
+        longest = fmax(longest, d), shortest = fmin(shortest, d);
+        double now = 0.5 * vec_dot(v, v) + g * p.y + 0.5 * k * stretch * stretch;
+        CHECK(now <= energy + 1e-9);
+        energy = now;
+    }
+    /* Straight steps along a circle overshoot it by (h v)^2 / (2 L); the
+     * stiff spring takes most of that back within the step. */
+    double fastest = sqrt(2.0 * g * rest * (1.0 - cos(0.5)));
+    CHECK(shortest > rest);
+    CHECK(longest - rest < pow(H * fastest, 2) / rest);
+    CHECK(energy < -g * rest * cos(0.5)); /* it swings lower than it started */
+    scene_free(scene);
+}
+
 /* ---- Stiff springs: never refused, never unstable ---- */
 
 /* omega h = 100 (k = 3.6e7 N/m on 1 kg at 60 Hz), where every explicit
@@ -749,6 +796,7 @@ TEST_SUITE(implicit_euler,
            TEST_CASE(a_free_pair_keeps_momentum_and_shrinks_its_relative_motion),
            TEST_CASE(drag_divides_the_velocity_by_one_plus_gamma_h_over_m),
            TEST_CASE(its_order_is_one),
+           TEST_CASE(a_spring_with_a_rest_length_is_implicit_too),
            TEST_CASE(a_spring_at_omega_h_100_runs_and_loses_energy),
            TEST_CASE(a_chain_of_stiff_springs_and_mixed_masses_settles),
            TEST_CASE(without_springs_or_drag_it_is_symplectic_euler),

@@ -318,11 +318,10 @@ static void drag(void *data) {
 bool forces_jacobian(force_creator_t forcer, const void *data, force_jacobian_t *jacobian) {
     const pair_aux_t *aux = data;
     const sym2_t none = {0.0, 0.0, 0.0};
-    if (forcer == spring) {
+    if (forcer == spring || forcer == spring_with_length) {
         vector_t between = vec_subtract(aux->body2->centroid, aux->body1->centroid);
-        *jacobian = (force_jacobian_t){aux->body1, aux->body2,
-                                       jacobian_spring_stiffness(aux->constant, 0.0, between),
-                                       none};
+        sym2_t stiffness = jacobian_spring_stiffness(aux->constant, aux->rest_length, between);
+        *jacobian = (force_jacobian_t){aux->body1, aux->body2, stiffness, none};
         return true;
     }
     if (forcer == drag) {

@@ -20,7 +20,8 @@ bool forces_is_event(force_creator_t forcer);
 double forces_spring_omega(force_creator_t forcer, const void *aux);
 
 /* The Jacobian of a force creator of forces.h that has one (create_spring,
- * create_drag) at the bodies' poses now, for the implicit scheme; false
+ * create_spring_with_length, create_drag) at the bodies' poses now, for the
+ * implicit scheme; false
  * for any other creator, whose force that scheme takes explicitly. */
 bool forces_jacobian(force_creator_t forcer, const void *aux, force_jacobian_t *jacobian);
 
