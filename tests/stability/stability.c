@@ -453,8 +453,8 @@ static void springs_section(void) {
         spring_table(s, &cases[i], titles[i], NULL);
     }
     NOTE(s->tables[0],
-         "Implicit Euler is stable over the whole sweep and beyond (docs/stability.md's Stiff and "
-         "extreme cases run it to omega dt = 2000): each step divides the spring's energy by 1 + "
+         "Implicit Euler is stable over the whole sweep and beyond (section 10 runs it to omega "
+         "dt = 2000): each step divides the spring's energy by 1 + "
          "(omega dt)^2, which is what Box2D 2.4's soft distance joint measures at omega dt = 1 "
          "and 2; both take the spring's force at the end of the step.\n");
     table_t *damped = s->tables[1];
