@@ -176,10 +176,13 @@ vector_t scene_get_gravity(scene_t *scene);
  * scheme: a velocity change dv from contacts moves the body by dt dv / 2
  * (SEED and the multi-stage schemes), dt dv (SYMPLECTIC_EULER,
  * IMPLICIT_EULER) or not until the next step (EXPLICIT_EULER). Under
- * IMPLICIT_EULER the contacts see each body's own mass, not the stiffness
- * its springs add within the step: a body that a spring of omega h = theta
- * (or gravity) holds against a surface presses on it with 1 / (1 +
- * theta^2) of the load (docs/stability.md). Impacts are timed within the step
+ * IMPLICIT_EULER a contact meets a body with the mass its springs and drag
+ * add to it within the step, and its impulse passes along the springs, so
+ * a surface carries the whole load of the springs that press a body on it
+ * (and friction sees it). With VELOCITY_VERLET, RK4 and SYMPLECTIC4 a stiff
+ * spring that presses a body into a surface is evaluated at trial poses
+ * inside it: the body rests millimetres deep with part of the load, or goes
+ * through (docs/stability.md). Impacts are timed within the step
  * under every scheme, so a bounce is exact under the schemes that follow
  * gravity exactly (all but the Euler ones).
  */
@@ -265,9 +268,9 @@ void scene_set_solver_iterations(scene_t *scene, size_t velocity_iterations,
  * and search of its grid cells, the narrowphase, preparing the contacts and packing them into
  * colour batches, each colour of batches (the colours one after another),
  * the loops over bodies that load the solver and take its results, the
- * free motions of the one-stage integrators (stage 1, after the force
+ * free motions of the explicit one-stage integrators (stage 1, after the force
  * creators) and integration (stage 3). The rest runs on the calling thread as with one
- * worker: the force creators, the collision handlers and everything else a
+ * worker: implicit Euler's solve, the force creators, the collision handlers and everything else a
  * scene calls back, the colouring, the contacts no colour could take, the
  * restitution pass, shock propagation (but for its levels of 64 bodies or
  * more) and sleeping. A body whose motion is
