@@ -154,9 +154,8 @@ void implicit_euler_correct(const integrator_step_t *step, body_t **bodies, size
     }
 }
 
-void implicit_euler_respond(const integrator_step_t *step, body_t **bodies, size_t count,
+void implicit_euler_respond(const integrator_step_t *step, body_t **bodies,
                             integrator_motion_t *motions, implicit_euler_t *w) {
-    (void)count;
     if (step->jacobian_count == 0 || w == NULL || w->nodes == 0) return;
     /* The impulse the solver gave each body, as it saw it: its change of
      * velocity times the mass it was told. */

@@ -59,7 +59,7 @@ void implicit_euler_correct(const integrator_step_t *step, body_t **bodies, size
  * impulse as the solver saw it (velocity change over inverse_mass); their
  * displacements move alike (h v'). Nothing without a workspace or when no
  * contact touched them. */
-void implicit_euler_respond(const integrator_step_t *step, body_t **bodies, size_t count,
+void implicit_euler_respond(const integrator_step_t *step, body_t **bodies,
                             integrator_motion_t *motions, implicit_euler_t *workspace);
 
 #endif // #ifndef IMPLICIT_EULER_H

@@ -388,10 +388,10 @@ void integrator_predict(const integrator_step_t *step, body_t **bodies, size_t c
     (*stages)->begun = 0;
 }
 
-void integrator_respond(const integrator_step_t *step, body_t **bodies, size_t count,
+void integrator_respond(const integrator_step_t *step, body_t **bodies,
                         integrator_motion_t *motions, integrator_stages_t *stages) {
     if (step->integrator != INTEGRATOR_IMPLICIT_EULER || stages == NULL) return;
-    implicit_euler_respond(step, bodies, count, motions, stages->implicit);
+    implicit_euler_respond(step, bodies, motions, stages->implicit);
 }
 
 static inline void apply_motion(body_t *body, const integrator_motion_t *motion) {

@@ -146,7 +146,7 @@ void integrator_predict_range(const integrator_step_t *step, body_t **bodies,
 /* After the world's contacts changed the motions, before they are applied:
  * implicit Euler passes each body's contact impulse on to the bodies its
  * springs join (implicit_euler_respond); nothing for the other schemes. */
-void integrator_respond(const integrator_step_t *step, body_t **bodies, size_t count,
+void integrator_respond(const integrator_step_t *step, body_t **bodies,
                         integrator_motion_t *motions, integrator_stages_t *stages);
 
 /* Moves one body by motion and gives it the motion's velocities (body_tick;

@@ -566,8 +566,7 @@ void scene_tick(scene_t *scene, double dt) {
         scene->world_ops->step(scene->world, scene->bodies, scene->motions, scene->body_count,
                                &world_step, &scene->stats);
         scene->record_needs_world = true;
-        integrator_respond(&step, scene->bodies, scene->body_count, scene->motions,
-                           scene->stages);
+        integrator_respond(&step, scene->bodies, scene->motions, scene->stages);
     }
     if (stage_integrate(scene, &step, motions)) stage_reap(scene);
 }
