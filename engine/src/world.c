@@ -8,10 +8,12 @@
 #include "memory.h"
 #include "scalar.h"
 #include "scene_private.h"
+#include "seams.h"
 #include "solver.h"
 #include "shock.h"
 #include "sleep.h"
 #include "solver_wide.h"
+#include "time_of_impact.h"
 #include "workers.h"
 
 /* Every body's box is enlarged by how far it can move in a step plus this
@@ -128,6 +130,12 @@ struct world {
      * older one. */
     uint64_t step_number;
 
+    /* Which static bodies lie flush (seams.h), found again when a static
+     * body changes; with workers, each chunk of the loading says whether it
+     * saw one change. */
+    seams_t seams;
+    bool seams_changed[WORKERS_MAX_CHUNKS];
+
     solver_wide_t wide;
     shock_t shock;
     int velocity_iterations, position_iterations;
@@ -150,6 +158,9 @@ struct world {
     size_t result_capacity;
     size_t chunk_first[WORKERS_MAX_CHUNKS + 1];
     size_t chunk_gap_first[WORKERS_MAX_CHUNKS + 1];
+
+    /* Room for time_of_impact's posed polygons. */
+    toi_scratch_t toi_scratch;
 };
 
 world_t *world_init(size_t velocity_iterations, size_t position_iterations) {
@@ -174,6 +185,7 @@ void world_free(world_t *world) {
     memory_free(world->old_sources);
     memory_free(world->gaps);
     memory_free(world->old_gaps);
+    seams_free(&world->seams);
     solver_wide_free(&world->wide);
     shock_free(&world->shock);
     sleep_free(&world->sleep);
@@ -183,6 +195,7 @@ void world_free(world_t *world) {
     memory_free(world->links);
     workers_free(world->workers);
     memory_free(world->results);
+    memory_free(world->toi_scratch.vectors);
     memory_free(world);
 }
 
@@ -247,10 +260,12 @@ static void set_filter(broadphase_proxy_t *proxy, const body_t *body) {
     proxy->group = body->group;
 }
 
-/* Loads body i's rows for the solver and its broadphase proxy. */
-WORLD_INLINE void load_body(world_t *world, body_t *body, const integrator_motion_t *motion, size_t i,
+/* Loads body i's rows for the solver and its broadphase proxy; returns
+ * whether the body changed what the seams were found from. */
+WORLD_INLINE bool load_body(world_t *world, body_t *body, const integrator_motion_t *motion, size_t i,
                       double dt) {
     body->solver_index = (uint32_t)i;
+    body->changed = false; /* world_wake_changed has seen it */
     body_update_world(body);
     solver_state_t *state = &world->states[i];
     solver_velocity_t *velocity = &world->velocities[i];
@@ -285,6 +300,7 @@ WORLD_INLINE void load_body(world_t *world, body_t *body, const integrator_motio
     proxy->box = swept_box(body->bounds, dt, state, dt * spin + CONTACT_MARGIN);
     set_filter(proxy, body);
     if (body->removed) proxy->category = 0;
+    return (proxy->fixed || body->seam_listed) && seams_body_changed(body);
 }
 
 /* The arguments of a loop over bodies split over the workers. */
@@ -298,22 +314,31 @@ typedef struct {
 
 static void load_chunk(void *context, size_t chunk, size_t begin, size_t end) {
     const body_loop_t *loop = context;
-    (void)chunk;
+    bool changed = false;
     for (size_t i = begin; i < end; i++) {
-        load_body(loop->world, loop->bodies[i], &loop->free_motions[i], i, loop->dt);
+        changed |= load_body(loop->world, loop->bodies[i], &loop->free_motions[i], i, loop->dt);
     }
+    loop->world->seams_changed[chunk] = changed;
 }
 
-/* Loads each body's rows for the solver and its broadphase proxy. */
-static void load_bodies(world_t *world, body_t **bodies, const integrator_motion_t *motions,
+/* Loads each body's rows for the solver and its broadphase proxy; returns
+ * whether a static body changed since the seams were found. */
+static bool load_bodies(world_t *world, body_t **bodies, const integrator_motion_t *motions,
                         size_t count, const world_step_t *step) {
     reserve_rows(world, count);
+    bool changed = false;
     if (world->workers != NULL) {
         body_loop_t loop = {world, bodies, motions, NULL, step->dt};
+        size_t chunks = workers_chunks(world->workers, count);
+        for (size_t k = 0; k < chunks; k++) world->seams_changed[k] = false;
         workers_for(world->workers, count, load_chunk, &loop);
-        return;
+        for (size_t k = 0; k < chunks; k++) changed |= world->seams_changed[k];
+        return changed;
     }
-    for (size_t i = 0; i < count; i++) load_body(world, bodies[i], &motions[i], i, step->dt);
+    for (size_t i = 0; i < count; i++) {
+        changed |= load_body(world, bodies[i], &motions[i], i, step->dt);
+    }
+    return changed;
 }
 
 /* The contact of the pair with this key among the contacts body a had as
@@ -400,6 +425,18 @@ static void warm_rescaled(const world_t *world, solver_contact_t *contact, size_
     }
 }
 
+/* Copies the impulses of `from`'s points to those of contact that are the
+ * same features. */
+WORLD_INLINE void impulses_by_feature(solver_contact_t *contact, const solver_contact_t *from) {
+    for (int i = 0; i < contact->point_count; i++) {
+        for (int j = 0; j < from->point_count; j++) {
+            if (contact->points[i].id != from->points[j].id) continue;
+            contact->points[i].normal_impulse = from->points[j].normal_impulse;
+            contact->points[i].tangent_impulse = from->points[j].tangent_impulse;
+        }
+    }
+}
+
 /* Copies last step's impulses to the points that are the same features;
  * rescaled when this step is not as long as the last (warm_rescaled). */
 WORLD_INLINE void warm_from_old(const world_t *world, solver_contact_t *contact,
@@ -408,14 +445,7 @@ WORLD_INLINE void warm_from_old(const world_t *world, solver_contact_t *contact,
         warm_rescaled(world, contact, old_index);
         return;
     }
-    const solver_contact_t *old = &world->old_contacts[old_index];
-    for (int i = 0; i < contact->point_count; i++) {
-        for (int j = 0; j < old->point_count; j++) {
-            if (contact->points[i].id != old->points[j].id) continue;
-            contact->points[i].normal_impulse = old->points[j].normal_impulse;
-            contact->points[i].tangent_impulse = old->points[j].tangent_impulse;
-        }
-    }
+    impulses_by_feature(contact, &world->old_contacts[old_index]);
 }
 
 static relative_pose_t relative_pose(const body_t *a, const body_t *b) {
@@ -472,7 +502,8 @@ WORLD_INLINE void collide_pair(const world_t *world, body_t *a, body_t *b, const
     found->old = old;
     found->apart = false;
     found->pose = relative_pose(a, b);
-    if (old != SIZE_MAX && pose_is_close(found->pose, world->old_sources[old].pose)) {
+    if (old != SIZE_MAX && pose_is_close(found->pose, world->old_sources[old].pose) &&
+        !world->old_sources[old].features.on_run) {
         found->features = world->old_sources[old].features;
         found->pose = world->old_sources[old].pose; /* measure drift from where they were found */
         found->manifold = manifold_evaluate(&found->features, a, b, margin);
@@ -662,6 +693,123 @@ static void narrowphase(world_t *world, body_t **bodies, const broadphase_pair_t
     }
 }
 
+/* A moment of impact is found to within this fraction of the two bodies'
+ * radii (m per m) of touching. */
+static const double IMPACT_TOLERANCE = 1e-12;
+
+/* The motion the solver's times of impact assume for a body's row. */
+static toi_motion_t impact_motion(const solver_state_t *state) {
+    return (toi_motion_t){state->v_start, state->acceleration, state->w_start};
+}
+
+/* The velocity at the start of the step of b's point at lever arm r_b over
+ * a's at r_a. */
+static vector_t start_approach(const solver_state_t *sa, vector_t r_a, const solver_state_t *sb,
+                               vector_t r_b) {
+    return vec_subtract(vec_add(sb->v_start, vec_cross_scalar(sb->w_start, r_b)),
+                        vec_add(sa->v_start, vec_cross_scalar(sa->w_start, r_a)));
+}
+
+/* Whether the solver will time an impact of contact c within the step: its
+ * points all apart, and one that closes its gap within the step faster than
+ * the bounce threshold, at the start velocities and accelerations, in the
+ * geometry of the start (solver.c, set_target). */
+static bool impact_in_step(const solver_contact_t *c, const solver_anchor_t *anchor,
+                           const solver_state_t *sa, const solver_state_t *sb, double dt) {
+    double pull = vec_dot(c->normal, vec_subtract(sb->acceleration, sa->acceleration));
+    double threshold = solver_bounce_threshold(c->restitution, sa, sb);
+    bool impact = false;
+    for (int i = 0; i < c->point_count; i++) {
+        double gap = c->points[i].separation;
+        if (!(gap > 0.0)) return false;
+        double speed = vec_dot(c->normal, start_approach(sa, anchor->r_a[i], sb, anchor->r_b[i]));
+        double tau = solver_time_of_impact(gap, speed, pull, dt);
+        impact |= tau >= 0.0 && speed + pull * tau < -threshold;
+    }
+    return impact;
+}
+
+/*
+ * Contact n, found where its bodies were at the start of the step, taken
+ * again at moment `hit` of the step: the normal, points and lever arms
+ * there. Each point's separation becomes the one that the solver's model of
+ * the step (each body at its start velocities and acceleration) closes to
+ * the point's separation at that moment, so the solver times an impact at
+ * it. Impulses stay with the points of the same features.
+ */
+static void take_at(world_t *world, size_t n, const toi_contact_t *hit) {
+    solver_contact_t *c = &world->contacts[n];
+    const solver_state_t *sa = &world->states[c->a], *sb = &world->states[c->b];
+    const manifold_t *manifold = &hit->manifold;
+    vector_t normal = manifold->normal;
+    double t = hit->time;
+    double pull = vec_dot(normal, vec_subtract(sb->acceleration, sa->acceleration));
+    vector_t r_a[2], r_b[2];
+    double separation[2];
+    for (int i = 0; i < manifold->point_count; i++) {
+        r_a[i] = vec_subtract(manifold->points[i].point, hit->centroid_a);
+        r_b[i] = vec_subtract(manifold->points[i].point, hit->centroid_b);
+        double speed = vec_dot(normal, start_approach(sa, r_a[i], sb, r_b[i]));
+        double at = manifold->points[i].separation;
+        separation[i] = at - t * (speed + 0.5 * pull * t);
+        /* A pair that passes may part at a point the model would have
+         * touching earlier: it keeps the gap it ends with. */
+        if (!hit->touches) separation[i] = max_of(separation[i], at);
+    }
+    solver_contact_t before = *c;
+    solver_anchor_t *anchor = &world->anchors[n];
+    contact_source_t *source = &world->sources[n];
+    c->normal = normal;
+    c->point_count = manifold->point_count;
+    c->edge_ends = hit->features.edge_ends && manifold->point_count == 2;
+    for (int i = 0; i < manifold->point_count; i++) {
+        solver_point_t *point = &c->points[i];
+        anchor->r_a[i] = r_a[i];
+        anchor->r_b[i] = r_b[i];
+        point->separation = separation[i];
+        point->id = manifold->points[i].id;
+        point->normal_impulse = point->tangent_impulse = 0.0;
+        source->points[i] = manifold->points[i].point;
+    }
+    impulses_by_feature(c, &before);
+    double cos_a = cos(hit->angle_a), sin_a = sin(hit->angle_a);
+    vector_t d = vec_subtract(hit->centroid_b, hit->centroid_a);
+    source->features = hit->features;
+    source->pose = (relative_pose_t){{cos_a * d.x + sin_a * d.y, -sin_a * d.x + cos_a * d.y},
+                                     hit->angle_b - hit->angle_a};
+}
+
+/* Contact n taken at the moment of its impact, if the solver will time one
+ * (take_impacts). Not inlined: a scene without elastic contacts pays only
+ * for the loop that looks for them. */
+static __attribute__((noinline)) void take_impact(world_t *world, size_t n, double dt) {
+    const solver_contact_t *c = &world->contacts[n];
+    const solver_state_t *sa = &world->states[c->a], *sb = &world->states[c->b];
+    if (!impact_in_step(c, &world->anchors[n], sa, sb, dt)) return;
+    body_t *a = world->sources[n].body_a, *b = world->sources[n].body_b;
+    toi_motion_t ma = impact_motion(sa), mb = impact_motion(sb);
+    double margin = world->margins[c->a] + world->margins[c->b];
+    toi_contact_t hit;
+    bool found = time_of_impact(a, &ma, b, &mb, dt, margin,
+                                IMPACT_TOLERANCE * (a->radius + b->radius),
+                                &world->toi_scratch, &hit);
+    if (found && hit.time > 0.0) take_at(world, n, &hit);
+}
+
+/*
+ * Every elastic contact in which the solver would time an impact within the
+ * step is taken where its bodies first touch, or, when they pass without
+ * touching, where they are at the end of the step: the collision pass then
+ * bounces through the geometry of the moment of impact, and a near miss is
+ * not bounced along a normal of the start (docs/design.md, "Impacts within
+ * the step").
+ */
+static void take_impacts(world_t *world, double dt) {
+    for (size_t n = 0; n < world->contact_count; n++) {
+        if (world->contacts[n].restitution != 0.0) take_impact(world, n, dt);
+    }
+}
+
 /* Hands the solver's results to the bodies' motions: the velocities it
  * chose and the displacements it moved them by. */
 WORLD_INLINE void write_back_range(const world_t *world, integrator_motion_t *motions, size_t begin,
@@ -749,11 +897,17 @@ static void update_sleep(world_t *world, body_t **bodies, size_t count, double d
 static void run_pipeline(world_t *world, body_t **bodies, integrator_motion_t *motions,
                          size_t count, const world_step_t *step, scene_stats_t *stats,
                          body_t **all_bodies, size_t all_count) {
-    load_bodies(world, bodies, motions, count, step);
+    /* A new world searches before loading, whose checks would read what an
+     * older world (since freed) left in the bodies. */
+    if (!world->seams.found) seams_find(&world->seams, bodies, count);
+    if (load_bodies(world, bodies, motions, count, step)) {
+        seams_find(&world->seams, bodies, count);
+    }
     const broadphase_pair_t *pairs;
     size_t pair_count = broadphase_find_pairs(world->broadphase, world->proxies, count, &pairs,
                                               &stats->broadphase_tests);
     narrowphase(world, bodies, pairs, pair_count);
+    take_impacts(world, step->dt);
     solver_settings_t settings = {step->dt, step->position_weight, world->velocity_iterations,
                                   world->position_iterations};
     solver_bodies_t rows = {world->velocities, world->displacements, world->states, count};
@@ -797,6 +951,14 @@ static void time_step(world_t *world, double dt) {
     world->last_dt = dt;
 }
 
+void world_wake_changed(world_t *world, body_t **bodies, size_t count, double dt) {
+    if (!sleep_any(&world->sleep)) return;
+    for (size_t i = 0; i < count; i++) {
+        if (!bodies[i]->changed) continue;
+        sleep_wake_changed(&world->sleep, bodies[i], dt, CONTACT_MARGIN);
+    }
+}
+
 void world_step(world_t *world, body_t **bodies, integrator_motion_t *motions, size_t count,
                 const world_step_t *step, scene_stats_t *stats) {
     time_step(world, step->dt);
@@ -828,6 +990,118 @@ contact_t world_get_contact(const world_t *world, size_t index) {
         entry.touching |= c->points[j].separation <= 0.0 || entry.normal_impulse[j] > 0.0;
     }
     return entry;
+}
+
+void world_get_memory(const world_t *world, size_t index, scene_contact_memory_t *memory) {
+    const solver_contact_t *c = &world->contacts[index];
+    const contact_source_t *source = &world->sources[index];
+    *memory = (scene_contact_memory_t){
+        .body_a = source->body_a,
+        .body_b = source->body_b,
+        .normal = c->normal,
+        .point_count = c->point_count,
+        .flip = source->features.flip,
+        .edge_ends = source->features.edge_ends,
+        .feature_count = source->features.point_count,
+        .face_normal = source->features.normal,
+        .face_point = source->features.face_point,
+        .pose = source->pose.position,
+        .pose_angle = source->pose.angle,
+    };
+    for (int j = 0; j < c->point_count; j++) {
+        const solver_point_t *p = &c->points[j];
+        memory->points[j] = (scene_memory_point_t){
+            p->id, source->points[j], p->separation, p->normal_impulse, p->tangent_impulse,
+            p->restitution_impulse, p->restitution_tangent_impulse};
+    }
+    for (int j = 0; j < source->features.point_count; j++) {
+        memory->feature_points[j] = source->features.points[j];
+        memory->feature_ids[j] = source->features.ids[j];
+    }
+}
+
+/* Writes contact n of the step from a memory (world_restore_memory). */
+static void add_remembered(world_t *world, size_t n, const scene_contact_memory_t *memory) {
+    solver_contact_t *contact = &world->contacts[n];
+    contact_source_t *source = &world->sources[n];
+    *contact = (solver_contact_t){.normal = memory->normal, .point_count = memory->point_count};
+    *source = (contact_source_t){
+        .key = pair_key(memory->body_a, memory->body_b),
+        .body_a = memory->body_a,
+        .body_b = memory->body_b,
+        .features = {.flip = memory->flip,
+                     .edge_ends = memory->edge_ends,
+                     .point_count = memory->feature_count,
+                     .normal = memory->face_normal,
+                     .face_point = memory->face_point},
+        .pose = {memory->pose, memory->pose_angle},
+    };
+    for (int j = 0; j < memory->point_count; j++) {
+        const scene_memory_point_t *from = &memory->points[j];
+        solver_point_t *p = &contact->points[j];
+        p->id = from->id;
+        p->separation = from->separation;
+        p->normal_impulse = from->normal_impulse;
+        p->tangent_impulse = from->tangent_impulse;
+        p->restitution_impulse = from->restitution_impulse;
+        p->restitution_tangent_impulse = from->restitution_tangent_impulse;
+        source->points[j] = from->point;
+    }
+    for (int j = 0; j < memory->feature_count; j++) {
+        source->features.points[j] = memory->feature_points[j];
+        source->features.ids[j] = memory->feature_ids[j];
+    }
+}
+
+void world_restore_memory(world_t *world, const scene_contact_memory_t *memories,
+                          size_t count) {
+    /* A new step: whatever groups the bodies had point to an older one. */
+    world->step_number++;
+    memory_reserve((void **)&world->contacts, &world->contact_capacity, count,
+                   sizeof(solver_contact_t));
+    memory_reserve((void **)&world->sources, &world->source_capacity, count,
+                   sizeof(contact_source_t));
+    world->contact_count = count;
+    world->gap_count = 0;
+    for (size_t i = 0; i < count;) {
+        body_t *a = memories[i].body_a;
+        size_t first = i;
+        for (; i < count && memories[i].body_a == a; i++) {
+            add_remembered(world, i, &memories[i]);
+        }
+        place_group(world, a, first, i, 0, 0);
+    }
+}
+
+void world_forget_removed(world_t *world) {
+    size_t kept = 0;
+    for (size_t i = 0; i < world->contact_count;) {
+        body_t *a = world->sources[i].body_a;
+        size_t first = kept;
+        for (; i < world->contact_count && world->sources[i].body_a == a; i++) {
+            if (a->removed || world->sources[i].body_b->removed) continue;
+            world->contacts[kept] = world->contacts[i];
+            world->sources[kept++] = world->sources[i];
+        }
+        if (!a->removed) {
+            a->contact_first = (uint32_t)first;
+            a->contact_count = (uint32_t)(kept - first);
+        }
+    }
+    world->contact_count = kept;
+    sleep_forget_removed(&world->sleep);
+}
+
+unsigned world_get_sleep_phase(const world_t *world) {
+    return world->sleep.steps;
+}
+
+void world_set_sleep_phase(world_t *world, unsigned phase) {
+    world->sleep.steps = phase;
+}
+
+void world_index_sleepers(world_t *world, body_t **bodies, size_t count) {
+    sleep_index_asleep(&world->sleep, bodies, count);
 }
 
 bool world_pair_collides(const body_t *body1, const body_t *body2) {
