@@ -6,7 +6,8 @@
 
 STABILITY_DIR := build/stability
 
-$(STABILITY_DIR)/stability: tests/stability/stability.c tests/stability/theory.h $(BENCH_HDR) \
+$(STABILITY_DIR)/stability: tests/stability/stability.c tests/stability/theory.h \
+		tests/stability/extreme_cases.h $(BENCH_HDR) \
 		build/libjostle.a
 	@mkdir -p $(dir $@)
 	$(CC) $(CSTD) $(WARN) -O2 -Iengine/include -Itests/bench -Itests/stability \

@@ -56,6 +56,11 @@ static inline theory_state_t theory_step(integrator_t integrator, theory_state_t
         s = theory_verlet(s, inner * h, zeta, &a);
         return theory_verlet(s, outer * h, zeta, &a);
     }
+    case INTEGRATOR_IMPLICIT_EULER: {
+        /* v' = v + h a(x', v'), x' = x + h v': v' (1 + 2 zeta h + h^2) = v - h x. */
+        double v = (s.v - h * s.x) / (1.0 + 2.0 * zeta * h + h * h);
+        return (theory_state_t){s.x + h * v, v};
+    }
     case INTEGRATOR_RK4: {
         const double offsets[3] = {0.5, 0.5, 1.0}, weights[3] = {2.0, 2.0, 1.0};
         double sum_u = s.v, sum_a = a, u = s.v;

@@ -32,8 +32,9 @@ void create_newtonian_gravity(scene_t *scene, double G, body_t *body1, body_t *b
  * omega = sqrt(k / m), the seed and explicit Euler integrators multiply its
  * energy at every step by 1 + (omega dt)^2 / 2 (more once omega dt > 4) and
  * 1 + (omega dt)^2; symplectic Euler keeps it bounded for
- * dt < 2 sqrt(m / k). A force that is no longer finite stops scene_tick,
- * naming the spring and that limit. */
+ * dt < 2 sqrt(m / k); implicit Euler at every dt, dividing its energy by
+ * 1 + (omega dt)^2 every step. A force that is no longer finite stops
+ * scene_tick, naming the spring and that limit. */
 void create_spring(scene_t *scene, double k, body_t *body1, body_t *body2);
 
 /* A Hooke spring of constant k (N/m, >= 0) and rest length L (m, finite and
@@ -43,14 +44,18 @@ void create_spring(scene_t *scene, double k, body_t *body1, body_t *body2);
  * opposite way; its energy is k (d - L)^2 / 2. The force is left out while
  * the centroids coincide (no direction to push along). Along the spring it
  * is as stiff as create_spring's, so the integrators' limits above hold with
- * the same omega. L = 0 is create_spring's force to rounding. */
+ * the same omega; implicit Euler takes it at the end of the step too, its
+ * stiffness across the spring, k (1 - L / d), left out while d < L (the
+ * spring pushes there, and that part stays explicit). L = 0 is
+ * create_spring's force to rounding. */
 void create_spring_with_length(scene_t *scene, double k, double rest_length, body_t *body1,
                                body_t *body2);
 
 /* Linear drag -gamma v (gamma in kg/s, >= 0) on body's centroid. Every
- * integrator updates the velocity explicitly, v' = v (1 - gamma dt / m),
- * which oscillates and grows unless dt < 2 m / gamma; a force that is no
- * longer finite stops scene_tick, naming the drag and that limit. */
+ * integrator but implicit Euler updates the velocity explicitly, v' = v (1 -
+ * gamma dt / m), which oscillates and grows unless dt < 2 m / gamma; a force
+ * that is no longer finite stops scene_tick, naming the drag and that
+ * limit. Implicit Euler divides it by 1 + gamma dt / m, stable at every dt. */
 void create_drag(scene_t *scene, double gamma, body_t *body);
 
 /* Called when two bodies start colliding: the bodies in the order they were

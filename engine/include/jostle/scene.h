@@ -113,7 +113,8 @@ void scene_add_bodies_force_creator(scene_t *scene, force_creator_t forcer, void
  * Bodies are named by their index (scene_get_body). The usual cause is a
  * spring too stiff for dt: the seed and explicit Euler integrators add energy
  * to every spring at every step, symplectic Euler is stable for
- * dt < 2 sqrt(m / k) (m the reduced mass of the spring's bodies).
+ * dt < 2 sqrt(m / k) (m the reduced mass of the spring's bodies), implicit
+ * Euler at every dt; the messages name that way out.
  *
  * Calling back from inside the tick (a force creator, collision handler or
  * freer it runs): scene_tick and scene_free of the same scene, and the
@@ -154,8 +155,26 @@ vector_t scene_get_gravity(scene_t *scene);
  *   SYMPLECTIC4       Yoshida's composition of three Verlet steps. Order 4,
  *                     symplectic, stable for omega h < 1.57; forces
  *                     evaluated four times a step.
+ *   IMPLICIT_EULER    linearly implicit (backward) Euler: v' = v + h a(x',
+ *                     v'), x' = x + h v', with the springs of create_spring
+ *                     and the drag of create_drag taken at the end of the
+ *                     step (their Jacobians, exact for these linear forces,
+ *                     solved over the bodies they join); every other force
+ *                     (force creators of your own, Newtonian gravity,
+ *                     gravity, impulses) acts as under SYMPLECTIC_EULER,
+ *                     which a scene without those springs and drag follows
+ *                     bit for bit. Order 1; forces evaluated once a step.
+ *                     Stable on those springs and drag at every h: it damps
+ *                     them, the energy of an undamped spring falling by
+ *                     1 / (1 + (omega h)^2) every step (its amplitude by the
+ *                     square root), drag's velocity by 1 / (1 + gamma h / m).
+ *                     Explicit for the rest: a force of your own that acts
+ *                     as a spring keeps symplectic Euler's limit (omega h <
+ *                     2).
  * Pick SYMPLECTIC_EULER or VELOCITY_VERLET for springs and orbits; the
- * fourth-order schemes when accuracy matters more than cost.
+ * fourth-order schemes when accuracy matters more than cost; IMPLICIT_EULER
+ * when a spring or drag is too stiff for the step (it loses energy instead
+ * of blowing up).
  *
  * The multi-stage schemes (VELOCITY_VERLET, RK4, SYMPLECTIC4) call the force
  * creators once per stage, with the bodies moved to the stage's trial pose
@@ -169,8 +188,15 @@ vector_t scene_get_gravity(scene_t *scene);
  * scheme's free motion (its velocities and displacement without contacts),
  * and contacts act as a constant force over the step would under the
  * scheme: a velocity change dv from contacts moves the body by dt dv / 2
- * (SEED and the multi-stage schemes), dt dv (SYMPLECTIC_EULER) or not
- * until the next step (EXPLICIT_EULER). Impacts are timed within the step
+ * (SEED and the multi-stage schemes), dt dv (SYMPLECTIC_EULER,
+ * IMPLICIT_EULER) or not until the next step (EXPLICIT_EULER). Under
+ * IMPLICIT_EULER a contact meets a body with the mass its springs and drag
+ * add to it within the step, and its impulse passes along the springs, so
+ * a surface carries the whole load of the springs that press a body on it
+ * (and friction sees it). With VELOCITY_VERLET, RK4 and SYMPLECTIC4 a stiff
+ * spring that presses a body into a surface is evaluated at trial poses
+ * inside it: the body rests millimetres deep with part of the load, or goes
+ * through (docs/stability.md). Impacts are timed within the step
  * under every scheme, so a bounce is exact under the schemes that follow
  * gravity exactly (all but the Euler ones).
  */
@@ -181,17 +207,20 @@ typedef enum {
     INTEGRATOR_VELOCITY_VERLET,
     INTEGRATOR_RK4,
     INTEGRATOR_SYMPLECTIC4,
+    INTEGRATOR_IMPLICIT_EULER,
 } integrator_t;
 
 /* The number of integrators; every value below it is one. */
-#define INTEGRATOR_COUNT 6
+#define INTEGRATOR_COUNT 7
 
 /* The integrator's name as the docs write it ("seed", "explicit Euler",
- * "symplectic Euler", "velocity Verlet", "RK4", "symplectic4"). */
+ * "symplectic Euler", "velocity Verlet", "RK4", "symplectic4", "implicit
+ * Euler"). */
 const char *integrator_get_name(integrator_t integrator);
 
-/* The stability limit of omega h on an undamped spring, omega = sqrt(k / m)
- * (2 for symplectic Euler); 0 for a scheme that adds energy at every h. */
+/* The stability limit of omega h on an undamped spring of create_spring,
+ * omega = sqrt(k / m) (2 for symplectic Euler); 0 for a scheme that adds
+ * energy at every h, INFINITY for one stable at every h (implicit Euler). */
 double integrator_get_stability_limit(integrator_t integrator);
 
 void scene_set_integrator(scene_t *scene, integrator_t integrator);
@@ -259,9 +288,9 @@ void scene_set_solver_iterations(scene_t *scene, size_t velocity_iterations,
  * and search of its grid cells, the narrowphase, preparing the contacts and packing them into
  * colour batches, each colour of batches (the colours one after another),
  * the loops over bodies that load the solver and take its results, the
- * free motions of the one-stage integrators (stage 1, after the force
+ * free motions of the explicit one-stage integrators (stage 1, after the force
  * creators) and integration (stage 3). The rest runs on the calling thread as with one
- * worker: the force creators, the collision handlers and everything else a
+ * worker: implicit Euler's solve, the force creators, the collision handlers and everything else a
  * scene calls back, the colouring, the contacts no colour could take, the
  * restitution pass, shock propagation (but for its levels of 64 bodies or
  * more) and sleeping. A body whose motion is

@@ -2,6 +2,7 @@
 #include <math.h>
 #include "dynamics/body_private.h"
 #include "base/check.h"
+#include "dynamics/implicit_euler.h"
 #include "base/memory.h"
 
 double integrator_position_weight(integrator_t integrator) {
@@ -14,7 +15,8 @@ double integrator_position_weight(integrator_t integrator) {
     case INTEGRATOR_RK4:
     case INTEGRATOR_SYMPLECTIC4: return 0.5;
     case INTEGRATOR_EXPLICIT_EULER: return 0.0;
-    case INTEGRATOR_SYMPLECTIC_EULER: return 1.0;
+    case INTEGRATOR_SYMPLECTIC_EULER:
+    case INTEGRATOR_IMPLICIT_EULER: return 1.0;
     }
     engine_fail(__func__, "unknown integrator %d", (int)integrator);
 }
@@ -27,6 +29,7 @@ const char *integrator_get_name(integrator_t integrator) {
     case INTEGRATOR_VELOCITY_VERLET: return "velocity Verlet";
     case INTEGRATOR_RK4: return "RK4";
     case INTEGRATOR_SYMPLECTIC4: return "symplectic4";
+    case INTEGRATOR_IMPLICIT_EULER: return "implicit Euler";
     }
     engine_fail(__func__, "unknown integrator %d", (int)integrator);
 }
@@ -40,6 +43,7 @@ double integrator_get_stability_limit(integrator_t integrator) {
     case INTEGRATOR_RK4: return 2.0 * sqrt(2.0);
     /* Where the trace of its oscillator matrix reaches -2 (bisection). */
     case INTEGRATOR_SYMPLECTIC4: return 1.5734019474345387;
+    case INTEGRATOR_IMPLICIT_EULER: return INFINITY;
     }
     engine_fail(__func__, "unknown integrator %d", (int)integrator);
 }
@@ -70,6 +74,11 @@ static matrix2_t oscillator_matrix(integrator_t integrator, double theta) {
         double outer = 1.0 / (2.0 - cube_root), inner = -cube_root * outer;
         matrix2_t m = verlet_matrix(outer * theta);
         return matrix2_multiply(m, matrix2_multiply(verlet_matrix(inner * theta), m));
+    }
+    case INTEGRATOR_IMPLICIT_EULER: {
+        /* x' = x + theta y', y' = y - theta x', solved for (x', y'). */
+        double shrink = 1.0 / (1.0 + s);
+        return (matrix2_t){shrink, shrink * theta, -shrink * theta, shrink};
     }
     case INTEGRATOR_RK4: {
         /* exp(theta J) to fourth order, J the rotation generator (J^2 = -1). */
@@ -127,16 +136,22 @@ struct integrator_stages {
     /* How many bodies integrator_begin saw; later ones had no force set
      * before the step. */
     size_t begun;
+    implicit_euler_t *implicit;
 };
 
 void integrator_stages_free(integrator_stages_t *stages) {
     if (stages == NULL) return;
     memory_free(stages->rows);
+    implicit_euler_free(stages->implicit);
     memory_free(stages);
 }
 
-static void reserve_rows(integrator_stages_t **stages, size_t count) {
+static void make_stages(integrator_stages_t **stages) {
     if (*stages == NULL) *stages = memory_calloc(1, sizeof(integrator_stages_t));
+}
+
+static void reserve_rows(integrator_stages_t **stages, size_t count) {
+    make_stages(stages);
     memory_reserve((void **)&(*stages)->rows, &(*stages)->capacity, count, sizeof(stage_row_t));
 }
 
@@ -185,6 +200,7 @@ static inline void predict_one_stage(const body_t *body, double dt, vector_t gra
     motion->displacement =
         vec_multiply(dt, vec_add(motion->drift, vec_multiply(w, motion->velocity)));
     motion->rotation = dt * (motion->spin_drift + w * motion->angular_velocity);
+    motion->inverse_mass = body->inverse_mass;
 }
 
 /* Records each body's start and its first evaluation's forces. */
@@ -346,6 +362,10 @@ void integrator_predict(const integrator_step_t *step, body_t **bodies, size_t c
                         integrator_motion_t *motions, integrator_stages_t **stages) {
     if (integrator_stage_count(step->integrator) == 1) {
         integrator_predict_range(step, bodies, motions, 0, count);
+        if (step->integrator == INTEGRATOR_IMPLICIT_EULER && step->jacobian_count > 0) {
+            make_stages(stages);
+            implicit_euler_correct(step, bodies, count, motions, &(*stages)->implicit);
+        }
         return;
     }
     size_t begun = *stages != NULL ? (*stages)->begun : 0;
@@ -361,8 +381,17 @@ void integrator_predict(const integrator_step_t *step, body_t **bodies, size_t c
     }
     restore_start(step, bodies, rows, count);
     double w = integrator_position_weight(step->integrator);
-    for (size_t i = 0; i < count; i++) finish_stages(&rows[i], step->dt, w, &motions[i]);
+    for (size_t i = 0; i < count; i++) {
+        finish_stages(&rows[i], step->dt, w, &motions[i]);
+        motions[i].inverse_mass = bodies[i]->inverse_mass;
+    }
     (*stages)->begun = 0;
+}
+
+void integrator_respond(const integrator_step_t *step, body_t **bodies,
+                        integrator_motion_t *motions, integrator_stages_t *stages) {
+    if (step->integrator != INTEGRATOR_IMPLICIT_EULER || stages == NULL) return;
+    implicit_euler_respond(step, bodies, motions, stages->implicit);
 }
 
 static inline void apply_motion(body_t *body, const integrator_motion_t *motion) {

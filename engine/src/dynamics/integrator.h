@@ -33,28 +33,20 @@
  *                     h / (2 - 2^(1/3)), -2^(1/3) h / (2 - 2^(1/3)),
  *                     h / (2 - 2^(1/3)); 4 evaluations. Order 4, symplectic;
  *                     stable for omega h < 1.573.
+ *   implicit Euler    symplectic Euler with the forces whose Jacobians are
+ *                     known (create_spring, create_drag) taken at the end
+ *                     of the step, solved over the bodies they join
+ *                     (implicit_euler.h); 1 evaluation. Order 1; stable
+ *                     for every omega h on those springs, energy times
+ *                     1 / (1 + (omega h)^2) a step.
  * Every scheme sees the force creators' forces and torques at its stages;
  * impulses act at the start of the step.
  */
 
 #include <stdbool.h>
 #include "jostle/body.h"
+#include "dynamics/motion.h"
 #include "jostle/scene.h"
-
-/* One body's motion over one step. */
-typedef struct {
-    vector_t velocity;     /* at the end of the step (m/s) */
-    double angular_velocity;
-    vector_t displacement; /* of the centroid over the step (m) */
-    double rotation;       /* rad */
-    /* The displacement due to the velocity at the start and to the forces,
-     * beside the end velocity's share: displacement = dt (drift + weight
-     * velocity) for the free motion. */
-    vector_t drift;
-    double spin_drift;
-    /* The mean acceleration of the free motion (m/s^2), for times of impact. */
-    vector_t acceleration;
-} integrator_motion_t;
 
 /* The weight w of a contact's velocity change in the position update of a
  * scheme: a change dv moves the body by w dt dv, as a constant force does
@@ -79,9 +71,13 @@ static inline int integrator_stage_count(integrator_t integrator) {
     }
 }
 
-/* Calls the force creators again with the bodies at a later stage's trial
- * pose and velocities (scene.h says which creators run there). */
-typedef void (*integrator_evaluate_t)(void *context);
+/* Whether each body's free motion depends on its own forces alone (the
+ * explicit one-stage schemes): it may then be computed body by body, on
+ * any thread, or as the body is moved. Implicit Euler's couples the
+ * bodies its springs join. */
+static inline bool integrator_is_per_body(integrator_t integrator) {
+    return integrator_stage_count(integrator) == 1 && integrator != INTEGRATOR_IMPLICIT_EULER;
+}
 
 /* Per-body storage for the multi-stage schemes, kept across steps so that
  * a warm scene allocates nothing. */
@@ -94,13 +90,6 @@ void integrator_stages_free(integrator_stages_t *stages);
 void integrator_begin(integrator_t integrator, body_t **bodies, size_t count,
                       integrator_stages_t **stages);
 
-typedef struct {
-    integrator_t integrator;
-    double dt;
-    vector_t gravity;          /* for every body of finite mass */
-    integrator_evaluate_t evaluate; /* later stages; NULL: no force creators */
-    void *context;
-} integrator_step_t;
 
 /*
  * The force stage, after the first evaluation of the forces (the bodies
@@ -113,11 +102,17 @@ typedef struct {
 void integrator_predict(const integrator_step_t *step, body_t **bodies, size_t count,
                         integrator_motion_t *motions, integrator_stages_t **stages);
 
-/* integrator_predict for bodies [begin, end) of a one-stage scheme
- * (integrator_stage_count 1), which calls no force creator: each body's
+/* integrator_predict for bodies [begin, end) of a per-body scheme
+ * (integrator_is_per_body), which calls no force creator: each body's
  * motion is its own, so ranges may run on several threads at once. */
 void integrator_predict_range(const integrator_step_t *step, body_t **bodies,
                               integrator_motion_t *motions, size_t begin, size_t end);
+
+/* After the world's contacts changed the motions, before they are applied:
+ * implicit Euler passes each body's contact impulse on to the bodies its
+ * springs join (implicit_euler_respond); nothing for the other schemes. */
+void integrator_respond(const integrator_step_t *step, body_t **bodies,
+                        integrator_motion_t *motions, integrator_stages_t *stages);
 
 /* Moves one body by motion and gives it the motion's velocities (body_tick;
  * the scene moves its bodies with integrator_move). The caller checks the
@@ -139,7 +134,7 @@ typedef struct {
 /*
  * The integrate stage: moves each body not marked removed by motions[i]
  * (integrator_predict's, as the world changed it) and clears its
- * accumulators. With motions NULL, for a one-stage scheme when nothing
+ * accumulators. With motions NULL, for a per-body scheme when nothing
  * acts between the forces and the move (no world contacts), each body's
  * free motion is computed as it is moved: one pass over the bodies, the
  * motion never stored.

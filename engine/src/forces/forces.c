@@ -72,8 +72,11 @@ static void claim_pair(scene_t *scene, body_t *body1, body_t *body2, const char 
 
 static double spring_stiffness(const void *aux);
 static void explain_spring(const void *aux, char *message, size_t size);
+static bool spring_jacobian(const void *aux, force_jacobian_t *jacobian);
+static bool drag_jacobian(const void *aux, force_jacobian_t *jacobian);
 static void spring(void *data);
 static void spring_with_length(void *data);
+static void drag(void *data);
 
 /* The bodies were claimed (claim_pair); a spring also tells the scene how
  * stiff it is, for the message of a tick that overflows. */
@@ -88,6 +91,9 @@ static void add_pair_aux(scene_t *scene, force_creator_t forcer, pair_aux_t valu
                                  .bodies = bodies_list(value.body1, value.body2),
                                  .stiffness = is_spring ? spring_stiffness : NULL,
                                  .explain = is_spring ? explain_spring : NULL,
+                                 .jacobian = is_spring          ? spring_jacobian
+                                             : forcer == drag ? drag_jacobian
+                                                              : NULL,
                              });
 }
 
@@ -170,16 +176,25 @@ static bool explain_spring_stability(const pair_aux_t *aux, char *message, size_
         snprintf(message, size,
                  "with the %s integrator a spring gains energy at any dt, this one by a factor "
                  "of %s per step at dt = %g s (m = %g kg, omega = sqrt(k/m) = %g rad/s); "
-                 "INTEGRATOR_SYMPLECTIC_EULER keeps it bounded for dt < 2 sqrt(m/k) = %g s",
+                 "INTEGRATOR_SYMPLECTIC_EULER keeps it bounded for dt < 2 sqrt(m/k) = %g s, "
+                 "INTEGRATOR_IMPLICIT_EULER at any dt (it damps the spring)",
                  name, growth, dt, mass, omega, limit);
         return true;
+    }
+    if (isinf(theta_limit)) {
+        snprintf(message, size,
+                 "the %s integrator is stable for it at any dt (its energy falls by a factor "
+                 "of %s per step at dt = %g s, m = %g kg)",
+                 name, growth, dt, mass);
+        return false;
     }
     limit = theta_limit / omega;
     if (omega * dt >= theta_limit) {
         snprintf(message, size,
                  "dt = %g s is above the stability limit of the %s integrator for it, "
                  "dt < %.4g sqrt(m/k) = %g s (m = %g kg): its energy grows by a factor of %s "
-                 "per step",
+                 "per step; INTEGRATOR_IMPLICIT_EULER is stable for it at any dt (it damps "
+                 "the spring)",
                  dt, name, theta_limit, limit, mass, growth);
         return true;
     }
@@ -289,11 +304,14 @@ static void fail_drag(const pair_aux_t *aux) {
     double dt = scene_step_dt(aux->scene);
     double factor = 1.0 - aux->constant * dt / body->mass;
     char cause[256];
-    /* The velocity update is explicit in every integrator: v' = v (1 - gamma dt / m). */
-    if (factor < -1.0) {
+    /* The velocity update is explicit in every integrator but implicit
+     * Euler: v' = v (1 - gamma dt / m). */
+    bool explicit = scene_get_integrator(aux->scene) != INTEGRATOR_IMPLICIT_EULER;
+    if (explicit && factor < -1.0) {
         snprintf(cause, sizeof cause,
                  "the drag is unstable at dt = %g s: each step multiplies the velocity by "
-                 "1 - gamma dt / m = %g, which needs dt < 2 m / gamma = %g s (m = %g kg)",
+                 "1 - gamma dt / m = %g, which needs dt < 2 m / gamma = %g s (m = %g kg); "
+                 "INTEGRATOR_IMPLICIT_EULER is stable for it at any dt",
                  dt, factor, 2.0 * body->mass / aux->constant, body->mass);
     } else {
         snprintf(cause, sizeof cause, "the velocity is too large for gamma");
@@ -309,6 +327,23 @@ static void drag(void *data) {
     vector_t force = vec_multiply(-aux->constant, aux->body1->velocity);
     if (!vec_is_finite(force)) fail_drag(aux);
     body_push(aux->body1, force);
+}
+
+/* The Jacobians implicit Euler reads (jacobian.h): a spring's stiffness at
+ * its present stretch, drag's damping. */
+static bool spring_jacobian(const void *data, force_jacobian_t *jacobian) {
+    const pair_aux_t *aux = data;
+    vector_t between = vec_subtract(aux->body2->centroid, aux->body1->centroid);
+    sym2_t stiffness = jacobian_spring_stiffness(aux->constant, aux->rest_length, between);
+    *jacobian = (force_jacobian_t){aux->body1, aux->body2, stiffness, {0.0, 0.0, 0.0}};
+    return true;
+}
+
+static bool drag_jacobian(const void *data, force_jacobian_t *jacobian) {
+    const pair_aux_t *aux = data;
+    double gamma = aux->constant;
+    *jacobian = (force_jacobian_t){aux->body1, NULL, {0.0, 0.0, 0.0}, {gamma, 0.0, gamma}};
+    return true;
 }
 
 void create_drag(scene_t *scene, double gamma, body_t *body) {

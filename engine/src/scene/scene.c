@@ -33,6 +33,9 @@ struct scene {
     integrator_motion_t *motions;
     size_t motion_capacity;
     integrator_stages_t *stages;
+    /* Implicit Euler's: the Jacobians of the step's forces that have one. */
+    force_jacobian_t *jacobians;
+    size_t jacobian_capacity;
     /* The stage of the step whose force creators are running (0 outside a
      * tick) and how many creators the first one ran. */
     int stage;
@@ -128,6 +131,7 @@ void scene_free(scene_t *scene) {
     memory_free(scene->bodies);
     memory_free(scene->record);
     memory_free(scene->motions);
+    memory_free(scene->jacobians);
     integrator_stages_free(scene->stages);
     memory_free(scene);
 }
@@ -446,12 +450,30 @@ static void predict_chunk(void *context, size_t chunk, size_t begin, size_t end)
     integrator_predict_range(split->step, split->scene->bodies, split->scene->motions, begin, end);
 }
 
+/* Implicit Euler's input: the Jacobians of the creators that ran at the
+ * start of the step, where they have one. */
+static void gather_jacobians(scene_t *scene, integrator_step_t *step) {
+    size_t count = 0;
+    for (size_t i = 0; i < scene->stage_force_count; i++) {
+        const force_entry_t *entry = &scene->forces[i];
+        force_jacobian_t jacobian;
+        if (entry->jacobian == NULL || !entry->jacobian(entry->aux, &jacobian)) continue;
+        memory_reserve((void **)&scene->jacobians, &scene->jacobian_capacity, count + 1,
+                       sizeof(force_jacobian_t));
+        scene->jacobians[count++] = jacobian;
+    }
+    step->jacobians = scene->jacobians;
+    step->jacobian_count = count;
+}
+
 /* Stage 1: the forces, and from them each body's free motion when
  * something needs it before the bodies move: the world's contacts change
- * it, and a multi-stage scheme evaluates the forces again. Otherwise the
- * integrate stage works it out as it moves each body; NULL is returned. */
+ * it, a multi-stage scheme evaluates the forces again, implicit Euler
+ * solves for it over the bodies. Otherwise the integrate stage works it
+ * out as it moves each body; NULL is returned. */
 static const integrator_motion_t *stage_motion(scene_t *scene, integrator_step_t *step) {
     bool one_stage = integrator_stage_count(scene->integrator) == 1;
+    bool per_body = integrator_is_per_body(scene->integrator);
     if (!one_stage) {
         integrator_begin(scene->integrator, scene->bodies, scene->body_count, &scene->stages);
     }
@@ -460,11 +482,12 @@ static const integrator_motion_t *stage_motion(scene_t *scene, integrator_step_t
         scene->world_ops->wake_changed(scene->world, scene->bodies, scene->body_count, step->dt,
                                        scene->gravity);
     }
-    if (one_stage && scene->world == NULL) return NULL;
+    if (per_body && scene->world == NULL) return NULL;
     memory_reserve((void **)&scene->motions, &scene->motion_capacity, scene->body_count,
                    sizeof(integrator_motion_t));
     step->evaluate = scene->stage_force_count > 0 ? stage_forces_again : NULL;
-    if (splits_bodies(scene) && one_stage) {
+    if (scene->integrator == INTEGRATOR_IMPLICIT_EULER) gather_jacobians(scene, step);
+    if (splits_bodies(scene) && per_body) {
         predict_split_t split = {step, scene};
         scene->world_ops->for_bodies(scene->world, scene->body_count, predict_chunk, &split);
     } else {
@@ -619,7 +642,7 @@ static void tick(scene_t *scene, double dt) {
         return;
     }
     scene->stage_force_count = 0;
-    integrator_step_t step = {scene->integrator, dt, scene->gravity, NULL, scene};
+    integrator_step_t step = {scene->integrator, dt, scene->gravity, NULL, scene, NULL, 0};
     const integrator_motion_t *motions = stage_motion(scene, &step);
     if (scene->world != NULL && scene->body_count > 0) {
         world_step_t world_step = {dt, integrator_position_weight(scene->integrator),
@@ -627,6 +650,7 @@ static void tick(scene_t *scene, double dt) {
         scene->world_ops->step(scene->world, scene->bodies, scene->motions, scene->body_count,
                                &world_step, &scene->stats);
         scene->record_needs_world = true;
+        integrator_respond(&step, scene->bodies, scene->motions, scene->stages);
     }
     if (stage_integrate(scene, &step, motions)) stage_reap(scene);
 }

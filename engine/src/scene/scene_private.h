@@ -7,6 +7,7 @@
 #include "jostle/scene.h"
 #include "jostle/scene_state.h"
 #include "base/workers.h"
+#include "dynamics/jacobian.h"
 #include "world/world.h"
 
 /* Stops the program, naming `function`, when it was called back from
@@ -33,6 +34,11 @@ typedef struct {
      * other force creators. */
     double (*stiffness)(const void *aux);
     void (*explain)(const void *aux, char *message, size_t size);
+    /* A force that knows its derivatives (create_spring, _with_length,
+     * create_drag) writes them at the bodies' poses now, for implicit
+     * Euler (jacobian.h); NULL, or false returned, and that scheme takes
+     * the force explicitly. */
+    bool (*jacobian)(const void *aux, force_jacobian_t *jacobian);
 } scene_creator_t;
 
 void scene_add_creator(scene_t *scene, const scene_creator_t *creator);

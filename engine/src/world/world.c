@@ -281,7 +281,7 @@ WORLD_INLINE bool load_body(world_t *world, body_t *body, const integrator_motio
     world->displacements[i].radius = body->radius;
     velocity->v = state->v_free;
     velocity->w = state->w_free;
-    velocity->inverse_mass = body->inverse_mass;
+    velocity->inverse_mass = motion->inverse_mass;
     velocity->inverse_inertia = body->inverse_inertia;
     if (solver_row_is_static(velocity)) {
         /* No -0.0 in a row the solver never changes: its sweeps write such
