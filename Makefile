@@ -6,6 +6,7 @@
 # make report     numerical error against run time (docs/accuracy.md)
 # make stability  stiff and extreme cases beside theory and the peers (docs/stability.md)
 # make tsan       the threaded tests (scene_set_workers) under ThreadSanitizer
+# make web        the sandbox as one web page, build/web/sandbox.html (docs/web.md)
 
 # Every build uses all cores unless the command line says otherwise (make -j1).
 ifeq ($(filter -j%,$(MAKEFLAGS)),)
@@ -112,6 +113,7 @@ CHECK_PROGRAMS := build/tests/engine_tests tests/check_examples.sh tests/report/
 	tests/check_house.sh tests/check_install.sh
 
 -include app/app.mk
+-include app/web/web.mk
 -include tests/bench/bench.mk
 -include tests/report/report.mk
 -include tests/fuzz/fuzz.mk

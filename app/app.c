@@ -8,6 +8,9 @@
 #include <string.h>
 #include <unistd.h>
 #include "integrator_choice.h"
+#ifdef __EMSCRIPTEN__
+#include "web/web.h"
+#endif
 
 /* Impulses below this (N s) are not kept in the trail: resting contacts
  * carry about m g dt each step, too small to draw, and thousands of them
@@ -244,6 +247,9 @@ void app_save_scene(app_t *app) {
         app_warn(app, "cannot save: %s/saved-1 to -100000.scene all exist", app->save_dir);
         return;
     }
+#ifdef __EMSCRIPTEN__
+    web_offer_file(path); /* a page's files live in memory: the browser downloads it */
+#endif
     app_status(app, "saved %s (%zu bod%s)", path, bodies, bodies == 1 ? "y" : "ies");
 }
 

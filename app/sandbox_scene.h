@@ -22,8 +22,13 @@
 #define SANDBOX_WALL_TOP 30.0
 #define SANDBOX_GRAVITY 10.0
 /* Threads a step runs on (scene_set_workers): the two cores of the machines
- * it is measured on; the bodies move the same with any count. */
+ * it is measured on; the bodies move the same with any count. A web page
+ * runs on one thread (docs/web.md). */
+#ifdef __EMSCRIPTEN__
+#define SANDBOX_WORKERS 1
+#else
 #define SANDBOX_WORKERS 2
+#endif
 /* A body whose centroid falls this far below the bottom of the container
  * (the default scene's floor top, a file's view) is removed: y = -40 in the
  * default scene. */

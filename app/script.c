@@ -8,6 +8,7 @@
 #include <string.h>
 #include <sys/stat.h>
 #include "input.h"
+#include "state_log.h"
 #include "video.h"
 
 const char SCRIPT_HELP[] =
@@ -36,6 +37,9 @@ const char SCRIPT_HELP[] =
     "  spawn N [SIZE]          add N bodies (SIZE m, default 0.2) in a grid\n"
     "  open FILE               open a scene file, as if dropped on the window\n"
     "  screenshot FILE         save this frame (FILE ends in .png or .bmp)\n"
+    "  log [bodies]            print the scene's state to stdout: bodies, a hash\n"
+    "                          of their positions, a game's score (and with\n"
+    "                          bodies, each body's x, y and rotation)\n"
     "  quit                    stop the app\n";
 
 typedef enum {
@@ -49,13 +53,14 @@ typedef enum {
     ACT_SPAWN,
     ACT_SCREENSHOT,
     ACT_OPEN,
+    ACT_LOG,
     ACT_QUIT,
 } action_kind_t;
 
 typedef struct {
     action_kind_t kind;
     int line;
-    long count;          /* WAIT frames, WHEEL notches, SPAWN bodies */
+    long count;          /* WAIT frames, WHEEL notches, SPAWN bodies, LOG 1 with bodies */
     double size;         /* SPAWN */
     SDL_Keycode key;     /* KEY_* */
     Uint16 mod;          /* KEY_*: the modifier state the event reports */
@@ -423,8 +428,15 @@ static bool parse_line(parser_t *p, char **tokens, int n) {
         add(p, ACT_QUIT);
         return true;
     }
+    if (strcmp(command, "log") == 0) {
+        bool bodies = n == 2 && strcmp(tokens[1], "bodies") == 0;
+        if (n > 2 || (n == 2 && !bodies)) return fail(p, "'log' takes nothing or the word bodies");
+        add(p, ACT_LOG)->count = bodies;
+        return true;
+    }
     return fail(p, "unknown command '%s' (expected wait, key, keydown, keyup, move, click, "
-                   "press, release, drag, throw, grab, wheel, spawn, open, screenshot or quit)",
+                   "press, release, drag, throw, grab, wheel, spawn, open, screenshot, log or "
+                   "quit)",
                 command);
 }
 
@@ -612,6 +624,9 @@ static void run_action(const action_t *a, app_t *app, const char **screenshot) {
         event.drop.timestamp = timestamp;
         event.drop.file = SDL_strdup(a->path);
         input_handle_event(app, &event);
+        break;
+    case ACT_LOG:
+        state_log_print(stdout, &app->sandbox, (unsigned long)app->timing.frames, a->count != 0);
         break;
     case ACT_QUIT:
         app->quit = true;
