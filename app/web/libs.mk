@@ -28,6 +28,7 @@ LIB_CFLAGS := -O2 -w
 
 .PHONY: libs
 libs: $(WEB)/libSDL2.a $(WEB)/libSDL2_gfx.a $(WEB)/libSDL2_image.a
+	@:
 
 $(WEB)/sdl/%.o: $(SDL)/src/%.c
 	@mkdir -p $(dir $@)

@@ -69,7 +69,7 @@ web_install = if ! (for c in $(1); do command -v $$c >/dev/null 2>&1 || exit 1; 
 	fi
 
 # The source packages, fetched once (rm -rf build/web/src to fetch again).
-$(WEB)/src/.fetched: app/web/debian_sources.sh
+$(WEB)/src/.fetched: app/web/debian_sources.sh | web-deps
 	@app/web/debian_sources.sh $(WEB)
 	@touch $@
 
@@ -79,15 +79,16 @@ web-libs: $(WEB)/src/.fetched
 $(WEB_LIBS): web-libs
 	@:
 
-$(WEB)/engine/%.o: engine/src/%.c $(ENGINE_HDR) app/web/web.mk
+$(WEB)/engine/%.o: engine/src/%.c $(ENGINE_HDR) app/web/web.mk | web-deps
 	@mkdir -p $(dir $@)
 	$(EMCC) $(CSTD) $(WARN) $(WEB_OPT) $(ENGINE_INC) -c $< -o $@
 
-$(WEB)/scenefile/%.o: engine/scenefile/%.c $(SCENEFILE_HDR) app/web/web.mk
+$(WEB)/scenefile/%.o: engine/scenefile/%.c $(SCENEFILE_HDR) app/web/web.mk | web-deps
 	@mkdir -p $(dir $@)
 	$(EMCC) $(CSTD) $(WARN) $(WEB_OPT) -Iengine/include -c $< -o $@
 
-$(WEB)/app/games/%.o: app/games/%.c $(GAMES_HDR) $(wildcard engine/include/jostle/*.h) app/web/web.mk
+$(WEB)/app/games/%.o: app/games/%.c $(GAMES_HDR) $(wildcard engine/include/jostle/*.h) app/web/web.mk \
+		| web-deps
 	@mkdir -p $(dir $@)
 	$(EMCC) $(CSTD) $(WARN) $(WEB_OPT) -Iengine/include -c $< -o $@
 
@@ -109,5 +110,25 @@ $(WEB)/sandbox.html: $(WEB)/sandbox.js app/web/shell.html
 	@rm -f $@.script
 	@echo "make web: $@ ($$(du -k $@ | cut -f1) KiB): open it in a browser, e.g. chromium $@"
 
-web: web-deps
-	@$(MAKE) --no-print-directory $(WEB)/sandbox.html
+web: $(WEB)/sandbox.html
+
+# The page in headless Chromium beside the native build
+# (tests/web/web_check.c). make check runs it too, and builds the page for
+# it, when emcc, chromium and node are installed; otherwise it says it
+# skipped its tests in one line.
+WEB_CHECK_SRC := tests/web/web_check.c tests/app_image.c app/layout.c
+build/tests/web_check: $(WEB_CHECK_SRC) tests/app_image.h tests/app_expect.h app/layout.h \
+		app/palette.h app/web/web.mk
+	@mkdir -p $(dir $@)
+	$(CC) $(CSTD) $(WARN) -O1 -g $(SAN) $(APP_SMOKE_DEFS) -Iapp -Itests $(WEB_CHECK_SRC) \
+	    $(APP_SMOKE_LIBS) -lm -o $@
+CHECK_PROGRAMS += build/tests/web_check
+WEB_TOOLS := $(shell for c in emcc chromium node; do command -v $$c >/dev/null 2>&1 || exit 1; done \
+	&& echo yes)
+ifeq ($(WEB_TOOLS)$(SANDBOX_HAVE_SDL),yesyes)
+check: $(WEB)/sandbox.html
+endif
+
+check-web: web-check-deps sandbox-deps
+	@$(MAKE) --no-print-directory sandbox build/tests/web_check $(WEB)/sandbox.html
+	build/tests/web_check

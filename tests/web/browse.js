@@ -8,6 +8,10 @@
 //
 // node tests/web/browse.js --url URL [--until TEXT] [--timeout S]
 //     [--screenshot FILE] [--downloads DIR] [--size WxH] [--chromium PATH]
+//     [--choose FILE]
+//
+// --choose gives FILE to the page's file chooser (#file) once the page says
+// it showed its first frame.
 "use strict";
 const { spawn } = require("child_process");
 const fs = require("fs");
@@ -15,7 +19,8 @@ const os = require("os");
 const path = require("path");
 
 function options(argv) {
-  const o = { until: "sandbox: stopped", timeout: 60, size: "1280x760", chromium: "chromium" };
+  const o = { until: "sandbox: stopped", timeout: 60, size: "1280x760", chromium: "chromium",
+              choose: "" };
   for (let i = 2; i < argv.length; i += 2) {
     const key = argv[i].replace(/^--/, "");
     if (!(key in o) && !["url", "screenshot", "downloads"].includes(key)) {
@@ -95,6 +100,7 @@ function main() {
       const text = m.params.args.map((a) => (a.value !== undefined ? a.value : a.description)).join(" ");
       console.log(m.params.type + ": " + text);
       if (text.includes(o.until)) done();
+      if (o.choose && text.includes("first frame")) choose();
     } else if (m.method === "Runtime.exceptionThrown") {
       const d = m.params.exceptionDetails;
       console.log("error: uncaught " + (d.exception ? d.exception.description : d.text));
@@ -103,10 +109,20 @@ function main() {
     }
   });
 
+  let session;
+  function choose() {
+    (async () => {
+      const { root } = await send("DOM.getDocument", {}, session);
+      const { nodeId } = await send("DOM.querySelector", { nodeId: root.nodeId, selector: "#file" }, session);
+      await send("DOM.setFileInputFiles", { files: [path.resolve(o.choose)], nodeId }, session);
+    })().catch((e) => console.log("browse: cannot choose " + o.choose + ": " + e.message));
+  }
+
   (async () => {
     const { targetInfos } = await send("Target.getTargets");
     const page = targetInfos.find((t) => t.type === "page");
     const { sessionId } = await send("Target.attachToTarget", { targetId: page.targetId, flatten: true });
+    session = sessionId;
     if (o.downloads) {
       fs.mkdirSync(o.downloads, { recursive: true });
       await send("Browser.setDownloadBehavior", { behavior: "allow", downloadPath: path.resolve(o.downloads) });
