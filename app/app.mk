@@ -65,12 +65,12 @@ endif
 # The app's plain-C parts (no SDL: text, the side bar's lines, the step
 # clock, the layout, the energy drift, the integrators by name, the list of
 # scenes, the SCENE panel's words, the sandbox's scenes with the game rules,
-# the geometry batch),
+# the geometry batch, the state a script logs),
 # tested directly against the sanitized engine; they build and run without
 # SDL.
 APP_UNIT_SRC := tests/app_units.c app/text.c app/stats_text.c app/step_clock.c app/layout.c \
                 app/energy_drift.c app/integrator_choice.c app/presets.c app/scene_text.c \
-                app/sandbox_scene.c app/batch.c
+                app/sandbox_scene.c app/batch.c app/state_log.c
 build/tests/app_units: $(APP_UNIT_SRC) tests/app_expect.h $(wildcard app/*.h) $(GAMES_HDR) app/app.mk \
                        build/libjostle-san.a $(GAMES_SAN_OBJ)
 	@mkdir -p $(dir $@)

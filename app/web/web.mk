@@ -104,13 +104,42 @@ $(WEB)/sandbox.js: $(WEB_APP_OBJ) $(WEB_ENGINE_OBJ) $(WEB_LIBS) $(wildcard asset
 	$(EMCC) $(WEB_OPT) $(WEB_LDFLAGS) $(WEB_APP_OBJ) $(WEB_ENGINE_OBJ) $(WEB_LIBS) -o $@
 
 $(WEB)/sandbox.html: $(WEB)/sandbox.js app/web/shell.html
-	@if grep -q '</script' $<; then echo "make web: $< holds '</script'"; exit 1; fi
-	@{ echo '<script>'; cat $<; echo '</script>'; } > $@.script
-	@sed -e '/{{{ SCRIPT }}}/{r $@.script' -e 'd}' app/web/shell.html > $@
-	@rm -f $@.script
+	$(call web_page,$<,app/web/shell.html,$@)
 	@echo "make web: $@ ($$(du -k $@ | cut -f1) KiB): open it in a browser, e.g. chromium $@"
 
 web: $(WEB)/sandbox.html
+
+# $(call web_page,SCRIPT.js,SHELL.html,PAGE.html): the shell with the script
+# in place of its {{{ SCRIPT }}} line.
+define web_page
+	@if grep -q '</script' $(1); then echo "make web: $(1) holds '</script'"; exit 1; fi
+	@{ echo '<script>'; cat $(1); echo '</script>'; } > $(3).script
+	@sed -e '/{{{ SCRIPT }}}/{r $(3).script' -e 'd}' $(2) > $(3)
+	@rm -f $(3).script
+endef
+
+# The figures of docs/bench.md: bench_engine (tests/bench/) as a page, with
+# the engine's 128-bit SIMD and without, against the native build, in
+# headless Chromium (tests/web/bench_web.sh).
+WEB_BENCH_LDFLAGS := -sSINGLE_FILE=1 -sALLOW_MEMORY_GROWTH=1 -sINITIAL_MEMORY=67108864 \
+	-sENVIRONMENT=web
+WEB_BENCH_OBJ_simd := $(patsubst engine/src/%.c,$(WEB)/engine/%.o,$(ENGINE_SRC))
+WEB_BENCH_OBJ_scalar := $(patsubst engine/src/%.c,$(WEB)/scalar/%.o,$(ENGINE_SRC))
+$(WEB)/scalar/%.o: engine/src/%.c $(ENGINE_HDR) app/web/web.mk | web-deps
+	@mkdir -p $(dir $@)
+	$(EMCC) $(CSTD) $(WARN) -O2 $(ENGINE_INC) -c $< -o $@
+$(WEB)/bench_engine-simd.js: $(WEB_BENCH_OBJ_simd)
+$(WEB)/bench_engine-scalar.js: $(WEB_BENCH_OBJ_scalar)
+$(WEB)/bench_engine-%.js: tests/bench/bench_engine.c $(BENCH_HDR)
+	$(EMCC) $(CSTD) $(WARN) -O2 $(if $(filter simd,$*),-msimd128) -Iengine/include \
+	    -DBENCH_ENGINE_VERSION='"web-$*"' $(WEB_BENCH_LDFLAGS) $< $(WEB_BENCH_OBJ_$*) -o $@
+$(WEB)/bench_engine-%.html: $(WEB)/bench_engine-%.js tests/web/bench_shell.html
+	$(call web_page,$<,tests/web/bench_shell.html,$@)
+
+.PHONY: web-bench
+web-bench: web-check-deps $(WEB)/sandbox.html $(WEB)/bench_engine-simd.html \
+		$(WEB)/bench_engine-scalar.html build/bench/bench_engine
+	sh tests/web/bench_web.sh
 
 # The page in headless Chromium beside the native build
 # (tests/web/web_check.c). make check runs it too, and builds the page for

@@ -78,7 +78,13 @@ function main() {
     finished = true;
     process.exitCode = status;
     chrome.removeAllListeners("exit");
-    chrome.on("exit", () => fs.rmSync(profile, { recursive: true, force: true }));
+    chrome.on("exit", () => {
+      try {
+        fs.rmSync(profile, { recursive: true, force: true, maxRetries: 10 });
+      } catch (e) {
+        // Chromium's helpers may still write there for a moment: left for the system.
+      }
+    });
     chrome.kill("SIGKILL");
   }
   const timer = setTimeout(() => {
