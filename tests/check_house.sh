@@ -7,7 +7,8 @@
 #
 #   tests/check_house.sh [OBJDIR]         the checks (OBJDIR: build/engine)
 #   tests/check_house.sh --dot [OBJDIR]   the graph in Graphviz's dot language
-# The objects must have been built from the sources (make build/libengine.a).
+# The objects must have been built from the sources (make build/libjostle.a).
+# make house draws the graph into docs/house.png.
 objdir=build/engine
 mode=check
 [ "$1" = "--dot" ] && { mode=dot; shift; }
