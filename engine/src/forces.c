@@ -193,6 +193,10 @@ bool forces_is_event(force_creator_t forcer) {
     return forcer == collision_force_creator;
 }
 
+bool forces_is_positional(force_creator_t forcer) {
+    return forcer == spring || forcer == spring_with_length || forcer == newtonian_gravity;
+}
+
 double forces_spring_omega(force_creator_t forcer, const void *data) {
     if (forcer != spring && forcer != spring_with_length) return 0.0;
     const pair_aux_t *aux = data;

@@ -13,6 +13,12 @@
  * integrator calls it at the first stage only. */
 bool forces_is_event(force_creator_t forcer);
 
+/* Whether the force creator's forces depend on its bodies' centroids and
+ * masses alone, and it adds nothing else (no impulse, torque or event):
+ * the springs and Newtonian gravity. A multi-stage integrator may then
+ * reuse the forces it found at the end of a step (integrator_begin). */
+bool forces_is_positional(force_creator_t forcer);
+
 /* sqrt(k / m) (rad/s) of a spring made by create_spring or
  * create_spring_with_length, m the reduced mass of its bodies; 0 for any
  * other force creator, or a spring between two INFINITY masses. */

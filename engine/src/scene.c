@@ -26,6 +26,9 @@ struct scene {
 
     force_entry_t *forces;
     size_t force_count, force_capacity;
+    /* Changes whenever a force creator is added or dropped (integrator.h's
+     * reuse key). */
+    uint64_t forces_version;
 
     vector_t gravity;
     integrator_t integrator;
@@ -154,6 +157,7 @@ static void add_force_entry(scene_t *scene, force_creator_t forcer, void *aux, l
     memory_reserve((void **)&scene->forces, &scene->force_capacity, scene->force_count + 1,
                    sizeof(force_entry_t));
     scene->forces[scene->force_count++] = (force_entry_t){forcer, aux, freer, bodies};
+    scene->forces_version++;
 }
 
 void scene_add_force_creator(scene_t *scene, force_creator_t forcer, void *aux,
@@ -339,6 +343,7 @@ double scene_step_dt(const scene_t *scene) {
 static void stage_forces(scene_t *scene) {
     size_t count = scene->force_count;
     scene->stage_force_count = count;
+    scene->stats.force_evaluations++;
     for (size_t i = 0; i < count; i++) scene->forces[i].forcer(scene->forces[i].aux);
 }
 
@@ -347,6 +352,7 @@ static void stage_forces(scene_t *scene) {
 static void stage_forces_again(void *context) {
     scene_t *scene = context;
     scene->stage++;
+    scene->stats.force_evaluations++;
     for (size_t i = 0; i < scene->stage_force_count; i++) {
         const force_entry_t *entry = &scene->forces[i];
         if (!forces_is_event(entry->forcer)) entry->forcer(entry->aux);
@@ -371,16 +377,33 @@ static void predict_chunk(void *context, size_t chunk, size_t begin, size_t end)
     integrator_predict_range(split->step, split->scene->bodies, split->scene->motions, begin, end);
 }
 
+/* The integrator's reuse key (integrator.h): the forces version while
+ * every creator's force depends on centroids and masses alone and world
+ * contacts are off (their sleeping reads the creators' pushes); else 0. */
+static uint64_t reuse_key(const scene_t *scene) {
+    if (scene->world != NULL || scene->force_count == 0) return 0;
+    for (size_t i = 0; i < scene->force_count; i++) {
+        if (!forces_is_positional(scene->forces[i].forcer)) return 0;
+    }
+    return scene->forces_version;
+}
+
 /* Stage 1: the forces, and from them each body's free motion when
  * something needs it before the bodies move: the world's contacts change
  * it, and a multi-stage scheme evaluates the forces again. Otherwise the
  * integrate stage works it out as it moves each body; NULL is returned. */
 static const integrator_motion_t *stage_motion(scene_t *scene, integrator_step_t *step) {
-    bool one_stage = integrator_stage_count(scene->integrator) == 1;
+    bool one_stage = integrator_stage_count(scene->integrator) == 1, reused = false;
     if (!one_stage) {
-        integrator_begin(scene->integrator, scene->bodies, scene->body_count, &scene->stages);
+        step->reuse_key = reuse_key(scene);
+        reused = integrator_begin(scene->integrator, scene->bodies, scene->body_count,
+                                  &scene->stages, step->reuse_key);
     }
-    if (scene->force_count > 0) stage_forces(scene);
+    if (reused) {
+        scene->stage_force_count = scene->force_count;
+    } else if (scene->force_count > 0) {
+        stage_forces(scene);
+    }
     if (one_stage && scene->world == NULL) return NULL;
     memory_reserve((void **)&scene->motions, &scene->motion_capacity, scene->body_count,
                    sizeof(integrator_motion_t));
@@ -502,6 +525,7 @@ static void stage_reap(scene_t *scene) {
         force_entry_t *entry = &scene->forces[i];
         if (depends_on_removed_body(entry)) {
             force_entry_free(entry);
+            scene->forces_version++;
         } else {
             scene->forces[kept++] = *entry;
         }
@@ -536,7 +560,7 @@ void scene_tick(scene_t *scene, double dt) {
         return;
     }
     scene->stage_force_count = 0;
-    integrator_step_t step = {scene->integrator, dt, scene->gravity, NULL, scene};
+    integrator_step_t step = {scene->integrator, dt, scene->gravity, NULL, scene, 0};
     const integrator_motion_t *motions = stage_motion(scene, &step);
     if (scene->world != NULL && scene->body_count > 0) {
         world_step_t world_step = {dt, integrator_position_weight(scene->integrator),
