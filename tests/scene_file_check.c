@@ -33,6 +33,42 @@ static bool same_settings(scene_file_t *a, scene_file_t *b, char *why, size_t si
         return differ(why, size, "view differs");
     if (strcmp(scene_file_get_game(a), scene_file_get_game(b)) != 0)
         return differ(why, size, "game differs");
+    if (scene_get_sleeping(x) != scene_get_sleeping(y))
+        return differ(why, size, "sleeping differs");
+    if (scene_get_sleep_phase(x) != scene_get_sleep_phase(y))
+        return differ(why, size, "sleep phase differs");
+    return true;
+}
+
+static long index_of(scene_t *scene, body_t *body);
+
+/* The island of a sleeping body named by its member of lowest index; -1
+ * when awake. */
+static long island_of(scene_t *scene, body_t *body) {
+    if (!body_is_sleeping(body)) return -1;
+    long lowest = index_of(scene, body);
+    for (body_t *m = body_get_island_next(body); m != body; m = body_get_island_next(m)) {
+        long k = index_of(scene, m);
+        if (k < lowest) lowest = k;
+    }
+    return lowest;
+}
+
+/* What scene_state.h keeps of a body: its filter, timer and island. */
+static bool same_body_state(scene_t *x, body_t *a, scene_t *y, body_t *b, size_t i, char *why,
+                            size_t size) {
+    uint32_t f[3], g[3];
+    body_get_collision_filter(a, &f[0], &f[1], &f[2]);
+    body_get_collision_filter(b, &g[0], &g[1], &g[2]);
+    if (f[0] != g[0] || f[1] != g[1] || f[2] != g[2])
+        return differ(why, size, "body %zu: filter differs", i);
+    body_sleep_timer_t s = body_get_sleep_timer(a), t = body_get_sleep_timer(b);
+    if (s.slow_time != t.slow_time || s.window != t.window || !same_vector(s.anchor, t.anchor) ||
+        s.anchor_angle != t.anchor_angle)
+        return differ(why, size, "body %zu: sleep timer differs", i);
+    if (island_of(x, a) != island_of(y, b))
+        return differ(why, size, "body %zu: sleeping island differs (%ld against %ld)", i,
+                      island_of(x, a), island_of(y, b));
     return true;
 }
 
@@ -128,6 +164,54 @@ static bool same_forces(scene_file_t *a, scene_file_t *b, bool sort, char *why, 
     return same;
 }
 
+static bool same_point(const scene_memory_point_t *p, const scene_memory_point_t *q) {
+    return p->id == q->id && same_vector(p->point, q->point) && p->separation == q->separation &&
+           p->normal_impulse == q->normal_impulse && p->tangent_impulse == q->tangent_impulse &&
+           p->restitution_impulse == q->restitution_impulse &&
+           p->restitution_tangent_impulse == q->restitution_tangent_impulse;
+}
+
+static bool same_memory(const scene_contact_memory_t *m, const scene_contact_memory_t *n) {
+    bool same = same_vector(m->normal, n->normal) && m->point_count == n->point_count &&
+                m->flip == n->flip && m->edge_ends == n->edge_ends &&
+                m->feature_count == n->feature_count &&
+                same_vector(m->face_normal, n->face_normal) &&
+                same_vector(m->face_point, n->face_point) && same_vector(m->pose, n->pose) &&
+                m->pose_angle == n->pose_angle;
+    for (int j = 0; same && j < m->point_count; j++) {
+        same = same_point(&m->points[j], &n->points[j]);
+    }
+    for (int j = 0; same && j < m->feature_count; j++) {
+        same = same_vector(m->feature_points[j], n->feature_points[j]) &&
+               m->feature_ids[j] == n->feature_ids[j];
+    }
+    return same;
+}
+
+/* The world's contact memory: the same pairs (by body index) with the same
+ * values. A scene written with bodies marked removed has none of their
+ * contacts after a reload, so the pairs naming them are left out. */
+static bool same_contact_memory(scene_t *x, scene_t *y, char *why, size_t size) {
+    size_t n = scene_contact_memory_count(x), m = scene_contact_memory_count(y), kept = 0;
+    for (size_t i = 0; i < n; i++) {
+        scene_contact_memory_t c = scene_get_contact_memory(x, i);
+        if (body_is_removed(c.body_a) || body_is_removed(c.body_b)) continue;
+        kept++;
+        long a = index_of(x, c.body_a), b = index_of(x, c.body_b);
+        bool found = false;
+        for (size_t j = 0; j < m && !found; j++) {
+            scene_contact_memory_t d = scene_get_contact_memory(y, j);
+            if (index_of(y, d.body_a) != a || index_of(y, d.body_b) != b) continue;
+            if (!same_memory(&c, &d))
+                return differ(why, size, "the contact memory of bodies %ld and %ld differs", a, b);
+            found = true;
+        }
+        if (!found) return differ(why, size, "no contact memory of bodies %ld and %ld", a, b);
+    }
+    if (kept != m) return differ(why, size, "%zu contacts remembered against %zu", kept, m);
+    return true;
+}
+
 bool scene_file_same(scene_file_t *a, scene_file_t *b, char *why, size_t size) {
     if (!same_settings(a, b, why, size)) return false;
     scene_t *x = scene_file_get_scene(a), *y = scene_file_get_scene(b);
@@ -137,12 +221,15 @@ bool scene_file_same(scene_file_t *a, scene_file_t *b, char *why, size_t size) {
         while (i < scene_bodies(x) && body_is_removed(scene_get_body(x, i))) i++;
         while (j < scene_bodies(y) && body_is_removed(scene_get_body(y, j))) j++;
         if (i == scene_bodies(x) || j == scene_bodies(y)) break;
-        if (!same_body(scene_get_body(x, i), scene_get_body(y, j), compared++, why, size))
+        if (!same_body(scene_get_body(x, i), scene_get_body(y, j), compared, why, size) ||
+            !same_body_state(x, scene_get_body(x, i), y, scene_get_body(y, j), compared, why,
+                             size))
             return false;
+        compared++;
     }
     if (i != scene_bodies(x) || j != scene_bodies(y))
         return differ(why, size, "the scenes hold different numbers of bodies");
-    return same_forces(a, b, false, why, size);
+    return same_contact_memory(x, y, why, size) && same_forces(a, b, false, why, size);
 }
 
 bool scene_file_same_forces_in_any_order(scene_file_t *a, scene_file_t *b, char *why, size_t size) {

@@ -12,9 +12,11 @@
 #include <stdint.h>
 #include "scene_file.h"
 
-/* True when both files hold the same scene: settings, timestep, view, game;
- * the same bodies in the same order with every value the engine reports equal
- * (pose, velocities, mass, inertia, material, colour, world vertices, tag);
+/* True when both files hold the same scene: settings (sleeping and the sleep
+ * phase included), timestep, view, game; the same bodies in the same order
+ * with every value the engine reports equal (pose, velocities, mass,
+ * inertia, material, colour, world vertices, tag, filter, sleep timer,
+ * sleeping island); the same contact memory (scene_state.h) by body index;
  * the same force creators in the same order (kind, constant, bodies by
  * index). Otherwise false, and why (the first difference) in `why`. */
 bool scene_file_same(scene_file_t *a, scene_file_t *b, char *why, size_t why_size);

@@ -1,6 +1,7 @@
 /* body.h: construction, ownership, pose, the seed tick, accumulators,
  * removal marks, rotation and the geometric queries. */
 #include <stdlib.h>
+#include <string.h>
 #include "body.h"
 #include "polygon.h"
 #include "test.h"
@@ -751,7 +752,44 @@ static void null_body_aborts_naming_the_function(void) {
     }
 }
 
+/* A body rebuilt from another's local polygon with body_init_centred, moved
+ * to its pose, is the same to the bit: vertices, inertia, world polygon
+ * (body_init would subtract a centroid of rounding size again). */
+static void init_centred_keeps_the_shape_as_given(void) {
+    body_t *a = body_init(polygon_make_regular(7, 0.45, (vector_t){3.7, -1.2}, 0.3), 2.5, RED);
+    body_set_rotation(a, 0.8);
+    polygon_t local = body_get_local_polygon(a);
+    body_t *b = body_init_centred(test_make_polygon(local.vertices, local.count), 2.5, RED, NULL,
+                                  NULL);
+    CHECK(body_get_centroid(b).x == 0.0 && body_get_centroid(b).y == 0.0);
+    body_set_centroid(b, body_get_centroid(a));
+    body_set_rotation(b, 0.8);
+    polygon_t other = body_get_local_polygon(b);
+    CHECK(other.count == local.count);
+    for (size_t i = 0; i < local.count; i++) {
+        CHECK(memcmp(&other.vertices[i], &local.vertices[i], sizeof(vector_t)) == 0);
+        CHECK(memcmp(&other.normals[i], &local.normals[i], sizeof(vector_t)) == 0);
+    }
+    CHECK(body_get_inertia(a) == body_get_inertia(b));
+    polygon_t pa = body_get_polygon(a), pb = body_get_polygon(b);
+    for (size_t i = 0; i < pa.count; i++) {
+        CHECK(memcmp(&pa.vertices[i], &pb.vertices[i], sizeof(vector_t)) == 0);
+    }
+    body_free(a);
+    body_free(b);
+}
+
+BAD_CALL(centred_off_centre, body_init_centred(POLYGON({1, 1}, {2, 1}, {1, 2}), 1.0, RED, NULL,
+                                               NULL))
+
+static void init_centred_refuses_a_shape_off_the_origin(void) {
+    CHECK_DIES(centred_off_centre, NULL, "engine error in body_init_centred:",
+               "bad shape: its centroid (1.33333, 1.33333) is not at the origin");
+}
+
 TEST_SUITE(body, TEST_CASE(init_starts_at_rest_at_the_area_centroid),
+           TEST_CASE(init_centred_keeps_the_shape_as_given),
+           TEST_CASE(init_centred_refuses_a_shape_off_the_origin),
            TEST_CASE(init_takes_the_shape_and_free_releases_everything),
            TEST_CASE(info_is_returned_and_freed_with_its_freer),
            TEST_CASE(get_shape_is_a_new_copy_of_the_world_vertices),

@@ -456,10 +456,16 @@ typedef struct {
     const char *message;
 } bad_file_t;
 
+#define DRAGS_10                                                                             \
+    "drag 1 all\ndrag 1 all\ndrag 1 all\ndrag 1 all\ndrag 1 all\ndrag 1 all\ndrag 1 all\n"        \
+    "drag 1 all\ndrag 1 all\ndrag 1 all\n"
+#define DRAGS_100 DRAGS_10 DRAGS_10 DRAGS_10 DRAGS_10 DRAGS_10 DRAGS_10 DRAGS_10 DRAGS_10 DRAGS_10 DRAGS_10
+
 static const bad_file_t BAD_FILES[] = {
     {"bdoy x { box 1 1 }",
      "t.scene:1:1: expected a statement (body, template, group, gravity, contacts, integrator, "
-     "iterations, timestep, view, game, spring, newton, drag, collide), found \"bdoy\""},
+     "iterations, timestep, view, game, sleeping, sleep_phase, spring, newton, drag, collide, "
+     "contact), found \"bdoy\""},
     {"gravity 0 abc",
      "t.scene:1:11: expected a gravity component (m/s^2), a number, found \"abc\""},
     {"gravity 0 1e999",
@@ -547,8 +553,8 @@ static const bad_file_t BAD_FILES[] = {
      "t.scene:3:1: expected '}' to close the block opened at line 1, found the end of the file"},
     {"body a { colour 1 1 1 }",
      "t.scene:1:10: expected a body property (regular, box, vertices, mass, density, static, "
-     "elasticity, friction, color, position, angle, velocity, spin, tag, group, filter, repeat) or "
-     "'}', found \"colour\""},
+     "elasticity, friction, color, position, angle, velocity, spin, tag, group, filter, centred, "
+     "asleep, sleep_timer, repeat) or '}', found \"colour\""},
     {"body a { box 1 1 }\nbody a { box 1 1 }",
      "t.scene:2:6: expected a new name, found \"a\", already the name of a body (line 1)"},
     {"body a { box 1 1 }\nbody b { box 1 1; group a }",
@@ -595,13 +601,61 @@ static const bad_file_t BAD_FILES[] = {
     {"body a { box 1 1 }\nbody b { box 1 1 }\ncollide a b elastic",
      "t.scene:3:13: expected the kind of collision (physics ELASTICITY, or destructive), found "
      "\"elastic\""},
-    {"body a { box 1 1; repeat 100 100 2 2 }\nnewton 1 all",
-     "t.scene:2:1: expected at most 1000000 force creators from the forces and rules of a file, "
-     "found 49995000 with this newton"},
+    /* A drag per body and statement: 10000 bodies under 101 drags. (A newton
+     * or collide over them all is one force creator.) */
+    {"body a { box 1 1; repeat 100 100 2 2 }\n" DRAGS_100 "drag 1 all",
+     "t.scene:102:1: expected at most 1000000 force creators from the forces and rules of a "
+     "file, found 1010000 with this drag"},
     {"gravity 0 0\n\x01", "t.scene:2:1: expected text, found the control byte 0x01"},
     {"body a { box 1 1; tag \"x\" }", "t.scene:1:23: expected a tag (a letter or '_', then "
                                       "letters, digits, '_', '.' or '-', at most "
                                       "63 characters), found \"\\\"x\\\"\""},
+    /* The state a continuation needs. */
+    {"body a { box 1 1; centred }",
+     "t.scene:1:10: expected centred with a vertices shape, found it with a box"},
+    {"body a { vertices 0 0 1 0 0 1; centred }",
+     "t.scene:1:10: expected vertices around their centroid (centred), found it at (0.333333, "
+     "0.333333), more than a thousandth of the radius from the origin"},
+    {"sleeping maybe", "t.scene:1:10: expected on or off (sleeping), found \"maybe\""},
+    {"contacts on\nsleep_phase 8",
+     "t.scene:2:13: expected the sleep phase, a whole number from 0 to 7, found \"8\""},
+    {"body a { box 1 1; asleep 0 }",
+     "t.scene:1:19: expected contacts on for the world's state (asleep, contact, sleep_phase), "
+     "found contacts off"},
+    {"contacts on\nsleeping off\nbody a { box 1 1; asleep 0 }",
+     "t.scene:3:19: expected sleeping on for a body asleep, found sleeping off"},
+    {"contacts on\nbody a { box 1 1; static; asleep 0 }",
+     "t.scene:2:27: expected asleep on a body that can move, found it on a static body"},
+    {"contacts on\nbody a { box 1 1; spin 1; asleep 0 }",
+     "t.scene:2:27: expected a sleeping body at rest, found a velocity or spin on it"},
+    {"template t { box 1 1; sleep_timer 1 1 0 0 0 }",
+     "t.scene:1:23: expected no sleep state in a template (its copies start awake), found "
+     "sleep_timer"},
+    {"body a { box 1 1; sleep_timer -1 0 0 0 0 }",
+     "t.scene:1:31: expected the time the body has been slow (s), a number >= 0 and <= 1e+300, "
+     "found \"-1\""},
+    {"contacts on\nbody a { box 1 1 }\ncontact 0 1 { normal 0 1; face a 0 1 0 0; pose 0 1 0 }",
+     "t.scene:3:1: expected bodies numbered from 0 to 0 (the file makes 1), found 1"},
+    {"contacts on\nbody a { box 1 1; repeat 2 1 2 0 }\ncontact 1 1 { normal 0 1; face a 0 1 0 0 }",
+     "t.scene:3:1: expected two different bodies, found 1 twice"},
+    {"contacts on\nbody a { box 1 1; repeat 2 1 2 0 }\n"
+     "contact 0 1 { normal 0 0.5; face a 0 1 0 0 }",
+     "t.scene:3:1: expected unit vectors for the normal and the face's normal, found lengths 0.5 "
+     "and 1"},
+    {"contacts on\nbody a { box 1 1; repeat 2 1 2 0 }\ncontact 0 1 { normal 0 1; face a 0 1 0 0 }\n"
+     "contact 0 1 { normal 0 1; face a 0 1 0 0 }",
+     "t.scene:4:1: expected one contact per pair, found a second for 0 and 1 (the first at line "
+     "3)"},
+    {"contacts on\nbody a { box 1 1; repeat 2 1 2 0 }\ncontact 0 1 { norm 0 1 }",
+     "t.scene:3:15: expected a contact line (normal, point, face, incident, pose) or '}', found "
+     "\"norm\""},
+    {"contact 0 1 { incident 1 0 0; incident 2 0 0; incident 3 0 0 }",
+     "t.scene:1:47: expected at most two incident lines in a contact, found a third"},
+    {"contact 0 1 { face c 0 1 0 0 }",
+     "t.scene:1:20: expected a or b (the body holding the reference face), found \"c\""},
+    {"contact 0 1 { normal 0 1 }\ncontact 0",
+     "t.scene:2:10: expected the number of the contact's second body, a whole number from 0 to "
+     "19999, found the end of the file"},
 };
 
 static void malformed_files_are_refused_with_where_and_what(void) {

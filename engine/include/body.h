@@ -65,7 +65,20 @@ body_t *body_init(list_t *shape, double mass, rgb_color_t color);
 body_t *body_init_with_info(list_t *shape, double mass, rgb_color_t color, void *info,
                             free_func_t info_freer);
 
-/* Frees the body, and its info with its info_freer when there is one. */
+/* As body_init_with_info, for a shape already in the body's own frame: the
+ * vertices are taken relative to the centroid and kept exactly as given
+ * (body_init subtracts the area centroid it computes, which rounds), so a
+ * body rebuilt from another's body_get_local_polygon, mass and pose is the
+ * same to the bit. The area centroid of the vertices must lie within a
+ * thousandth of the shape's radius of the origin ("bad shape: its centroid
+ * (...) is not at the origin"). The body starts at the origin. */
+body_t *body_init_centred(list_t *shape, double mass, rgb_color_t color, void *info,
+                          free_func_t info_freer);
+
+/* Frees the body, and its info with its info_freer when there is one. A
+ * body that a scene owns, or that a force creator of a scene names, is
+ * refused (the program stops): the scene frees it; body_remove it instead,
+ * or free a named body that was never added after scene_free. */
 void body_free(body_t *body);
 
 /* A new list of new vector_t *: the current world vertices, counter-clockwise.
@@ -75,6 +88,11 @@ list_t *body_get_shape(body_t *body);
 /* The current world polygon without copying (see polygon_t for how long the
  * view stays valid). */
 polygon_t body_get_polygon(body_t *body);
+
+/* The shape in the body's own frame (relative to its centroid, at angle 0),
+ * counter-clockwise, without copying; it never changes and lives as long
+ * as the body. */
+polygon_t body_get_local_polygon(body_t *body);
 
 vector_t body_get_centroid(body_t *body);
 vector_t body_get_velocity(body_t *body);
@@ -97,8 +115,12 @@ void body_add_force(body_t *body, vector_t force);
 
 /* Whether the scene's world contacts have put the body to sleep
  * (scene_set_sleeping): it rests and takes no part in steps until touched
- * by a moving body, or until a pose, velocity, nonzero force, torque or
- * impulse is set on it, or a body of its resting group is removed. */
+ * by a moving body, or until a pose, velocity, inertia, filter, a different
+ * friction or elasticity, a nonzero force, torque or impulse is set on it
+ * or a body of its resting group is removed (it wakes at once), or until a
+ * body it touches, a static one included, changes so (its box before or
+ * after the change overlaps the sleeper's: it wakes at the start of the
+ * next scene_tick), or gravity changes (scene_set_gravity). */
 bool body_is_sleeping(body_t *body);
 
 /* Adds an impulse (N s) through the centroid, applied at the next tick. */
@@ -169,6 +191,10 @@ void body_set_friction(body_t *body, double friction);
  * do not share a non-zero group. Default: category 1, mask all bits, group 0.
  */
 void body_set_collision_filter(body_t *body, uint32_t category, uint32_t mask, uint32_t group);
+
+/* The filter as set last (or the default); a NULL pointer skips its part. */
+void body_get_collision_filter(body_t *body, uint32_t *category, uint32_t *mask,
+                               uint32_t *group);
 
 /* The world axis-aligned bounding box of the current polygon. */
 aabb_t body_get_bounds(body_t *body);

@@ -13,6 +13,7 @@
 #include "list.h"
 #include "polygon.h"
 #include "scene.h"
+#include "scene_state.h"
 #include "vector.h"
 
 /* How many blocks the engine has allocated (malloc, calloc, or a realloc that

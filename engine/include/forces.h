@@ -7,7 +7,9 @@
  * names, so it is dropped when one of them is removed.
  */
 
+#include <stdbool.h>
 #include "body.h"
+#include "list.h"
 #include "scene.h"
 #include "vector.h"
 
@@ -76,11 +78,17 @@ typedef void (*collision_handler_t)(body_t *body1, body_t *body2, vector_t axis,
  *   stage 1 of the tick after the step in which the pair first touched: one
  *   step late, the world having already stopped or bounced them (the
  *   velocities the handler sees are those after the impact). The pair has
- *   parted when it has no world contact, or every point of it is more than
- *   1 mm apart (bodies moving on together hover within rounding of zero
- *   separation). A pair already touching when the collision is created
- *   collides at the first tick whose previous step found it touching (the
- *   second tick of a new scene).
+ *   parted, and may fire again, once its polygons are further apart than a
+ *   tenth of the smaller body's radius (the largest distance from its
+ *   centroid to a vertex) at the reads of two ticks in a row. So a landing
+ *   is one meeting: bodies moving on together hover within rounding of
+ *   zero separation, and a polygon that lands on a corner and tips onto a
+ *   face lifts off less than that (dropped from up to twelve radii); a
+ *   bounce, or a pair pulled apart and pushed together again, is a new
+ *   one. While either body sleeps the pair keeps its state. A pair already
+ *   touching when the collision is created collides at the first tick
+ *   whose previous step found it touching (the second tick of a new
+ *   scene).
  */
 void create_collision(scene_t *scene, body_t *body1, body_t *body2,
                       collision_handler_t handler, void *aux, double force_const);
@@ -115,5 +123,56 @@ void physics_collision_handler(body_t *body1, body_t *body2, vector_t axis, void
  * resolve, the impulse comes a step after the world's response and acts on
  * the velocities it left (it turns a bounce back toward the other body). */
 void create_physics_collision(scene_t *scene, body_t *body1, body_t *body2, double elasticity);
+
+/*
+ * All pairs of a group as one force creator. create_newtonian_gravity or
+ * create_collision for every pair of N bodies makes N (N - 1) / 2 creators;
+ * these make one, whose memory grows with N, and whose step costs, for
+ * gravity, the N (N - 1) / 2 forces it must sum, and for collisions, the
+ * members and the pairs near each other (a broadphase grid over their
+ * bounding boxes, and the world's contacts), not every pair.
+ *
+ * The bodies must be in the scene already (scene_add_body): the program
+ * stops naming the first that is not ("bodies2[3] is not in the scene").
+ * The lists are only read (the caller frees them; a list made with a freer
+ * would free the bodies). A group orders its members by when they joined
+ * (the list's order, then the additions); a body listed twice joins once.
+ * The group belongs to the scene and is valid until scene_free; a body
+ * removed from the scene leaves it when reaped, and the group stays, even
+ * empty.
+ */
+
+/* Newtonian gravity between every two members, exactly as
+ * create_newtonian_gravity called for each pair (i, j), i < j, in member
+ * order, i before j, would apply it. G >= 0. */
+typedef struct gravity_group gravity_group_t;
+gravity_group_t *create_newtonian_gravity_group(scene_t *scene, double G, list_t *bodies);
+
+/* Adds a body of the scene after the other members (a member stays where it
+ * is). */
+void gravity_group_add(gravity_group_t *group, body_t *body);
+
+/* create_collision(scene, b1, b2, handler, aux, force_const) for every b1
+ * of bodies1 and b2 of bodies2, b1 != b2, each pair once: when b1 and b2
+ * are each in both lists, the earlier member is body1. Each pair has the
+ * state and rule of create_collision (when it fires, when it has parted,
+ * the record); within a tick the pairs that fire are called in member
+ * order of body1, then of body2. With physics_collision_handler it is
+ * create_physics_collision for every pair (force_const the elasticity,
+ * checked at the first call), with destructive_collision_handler
+ * create_destructive_collision. */
+typedef struct collision_group collision_group_t;
+collision_group_t *create_collision_group(scene_t *scene, list_t *bodies1, list_t *bodies2,
+                                          collision_handler_t handler, void *aux,
+                                          double force_const);
+
+/* Adds a body of the scene to the first set, the second or both (at least
+ * one), after the other members; a member gains the sets and keeps its
+ * place. */
+void collision_group_add(collision_group_t *group, body_t *body, bool first, bool second);
+
+/* create_destructive_collision's handler: marks both bodies removed. */
+void destructive_collision_handler(body_t *body1, body_t *body2, vector_t axis, void *aux,
+                                   double force_const);
 
 #endif // #ifndef FORCES_H

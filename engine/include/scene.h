@@ -50,7 +50,9 @@ typedef void (*force_creator_t)(void *aux);
 scene_t *scene_init(void);
 
 /* Frees the scene, its bodies, and the aux of every force creator that has a
- * freer. */
+ * freer. Not from inside scene_tick or scene_free of the same scene (a
+ * force creator, handler or freer): the program stops, saying to free it
+ * after scene_tick returns. */
 void scene_free(scene_t *scene);
 
 /* The number of bodies, including those marked removed but not yet reaped. */
@@ -109,6 +111,14 @@ void scene_add_bodies_force_creator(scene_t *scene, force_creator_t forcer, void
  * spring too stiff for dt: the seed and explicit Euler integrators add energy
  * to every spring at every step, symplectic Euler is stable for
  * dt < 2 sqrt(m / k) (m the reduced mass of the spring's bodies).
+ *
+ * Calling back from inside the tick (a force creator, collision handler or
+ * freer it runs): scene_tick and scene_free of the same scene, and the
+ * settings the step runs with (scene_set_contacts_enabled, _integrator,
+ * _sleeping, _solver_iterations, _workers), stop the program, saying to
+ * call them after scene_tick returns. scene_set_gravity is allowed and acts
+ * from the next step; adding bodies and force creators and removing bodies
+ * are allowed as described above. Other scenes may be ticked or freed.
  */
 void scene_tick(scene_t *scene, double dt);
 
@@ -116,7 +126,8 @@ void scene_tick(scene_t *scene, double dt);
 
 /* Uniform gravitational acceleration (m/s^2) for every body of finite mass,
  * applied by the integrator; default (0, 0). Cheaper than a force creator per
- * body and known exactly to the contact solver. */
+ * body and known exactly to the contact solver. A value different from the
+ * current one wakes every sleeping body of finite mass (and its island). */
 void scene_set_gravity(scene_t *scene, vector_t gravity);
 vector_t scene_get_gravity(scene_t *scene);
 
@@ -224,8 +235,14 @@ bool scene_get_contacts_enabled(scene_t *scene);
  * under half a metre across). Out of the step means no integration,
  * no contacts, no solving, its velocities 0 (body_is_sleeping). It wakes
  * when a moving body comes within a step of it, when a pose, velocity,
- * nonzero force, torque or impulse is set on one of its bodies, or when one
- * of them is removed. A sleeping pair's contacts are not in the record, and
+ * material, filter, nonzero force, torque or impulse is set on one of its
+ * bodies, when one of them is removed, and when gravity changes. A body
+ * that changes (pose, velocity, inertia, material or filter set, removed,
+ * or added to the scene; static bodies too) wakes, at the start of the
+ * next scene_tick, after its force creators, the sleeping islands whose
+ * boxes overlap its box before or after the change (docs/api.md,
+ * "Sleeping"): a floor taken away drops what slept on it. A sleeping
+ * pair's contacts are not in the record, and
  * its collision handler neither fires nor re-arms while it sleeps.
  * Switching sleeping (or world contacts) off wakes every body.
  */
@@ -279,7 +296,8 @@ const contact_t *scene_get_contact(scene_t *scene, size_t index);
 
 /* Counters of the last scene_tick, for tests and the sandbox's HUD. */
 typedef struct {
-    size_t broadphase_tests;   /* bounding-box comparisons the broadphase made */
+    size_t broadphase_tests;   /* bounding-box comparisons the broadphase made (the
+                                  world's and the collision groups', forces.h) */
     size_t broadphase_pairs;   /* pairs whose bounding boxes overlapped */
     size_t contacts;           /* manifolds with at least one point, speculative
                                   ones included (see contact.h) */

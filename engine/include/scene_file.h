@@ -45,7 +45,7 @@ typedef struct scene_file scene_file_t;
 #define SCENE_FILE_MAX_BODIES 20000
 #define SCENE_FILE_MAX_VERTICES 1000          /* per shape */
 #define SCENE_FILE_MAX_TOTAL_VERTICES 1000000 /* over every body of a file */
-#define SCENE_FILE_MAX_FORCES 1000000         /* force creators made by forces and rules */
+#define SCENE_FILE_MAX_FORCES 1000000         /* force creators made: springs, drags, one per newton or collide */
 
 /* Why a file was refused. `message` is "FILE:LINE:COLUMN: expected WHAT, found
  * WHAT" (lines and columns from 1, columns in bytes), e.g.
@@ -136,29 +136,36 @@ typedef struct {
     body_t *body2;
 } scene_file_force_t;
 
-/* The force creators the file made that are still in the scene (none of their
- * bodies freed), in the order made: load order, then spawns. The count is
- * valid, and get takes an index below it, until the next scene_tick or spawn. */
+/* The forces the file made that are still in the scene (none of their bodies
+ * freed): each spring, each drag, and each pair of a newton or collide (one
+ * engine force creator for all its pairs; the pairs are worked out as they
+ * are read). In file order: statement by statement, then by the bodies' order
+ * in the file (spawned bodies last). The count is valid, and get takes an
+ * index below it, until the next scene_tick or spawn (get counts again
+ * when a body was made or freed since); reading the indices in order costs
+ * a step each, any other index a walk from the start. */
 size_t scene_file_force_count(scene_file_t *file);
 scene_file_force_t scene_file_get_force(scene_file_t *file, size_t index);
 
 /*
- * Writes the scene as it is now, in the file format: the settings, the
- * templates, every body still in the scene and not marked removed (with its
- * current position, angle, velocity, spin, elasticity, friction and colour),
- * and the forces and rules among them. Bodies the file did not make (dropped
- * by the sandbox's user) are written too, as anonymous bodies with their world
- * vertices and mass; their collision filters and info cannot be read back from
- * the engine and are not written. Force creators the file did not make are
- * not written (the engine cannot list them).
+ * Writes the scene as it is now, in the file format: the settings (sleeping
+ * and the sleep phase included), the templates, every body still in the
+ * scene and not marked removed (with its current position, angle, velocity,
+ * spin, elasticity, friction, colour, collision filter, sleep and sleep
+ * timer), the forces and rules among them, and the world's contact memory
+ * (scene_state.h). Bodies the file did not make (dropped by the sandbox's
+ * user) are written too, as anonymous bodies with their vertices in their
+ * own frame (`centred`) and mass; their info is not written. Force creators
+ * the file did not make are not written (the engine cannot list them).
  *
  * Loading the text gives the same scene: the same bodies in the same order,
- * those the file made equal bit for bit in every value the engine reports
- * (the others to rounding: their vertices are taken relative to their
- * centroid again), and the same force creators (those a spawned body joined
- * in file order rather than last). A body that has gone beyond the limits of
- * docs/scenes.md (1e9 m from the origin) makes a text that loading refuses,
- * naming it.
+ * equal bit for bit in every value the engine reports and in the state
+ * scene_state.h reads, and the same force creators (those a spawned body
+ * joined in file order rather than last); ticked, it goes on as this scene
+ * would, to the bit, but for what docs/scenes.md ("Saving") lists: chiefly
+ * the seed collision rules' memory of which pairs touch. A body that has
+ * gone beyond the limits of docs/scenes.md (1e9 m from the origin) makes a
+ * text that loading refuses, naming it.
  *
  * Returns a NUL-terminated heap string (the caller frees it with free) and its
  * length in *length (may be NULL), or NULL with *error filled in when the

@@ -12,6 +12,9 @@ static void release(scene_file_t *file) {
     for (size_t i = 0; i < file->record_count; i++) free(file->records[i]);
     free(file->records);
     free(file->instances);
+    free(file->groups);
+    free(file->side1);
+    free(file->side2);
     sf_doc_free(&file->doc);
     free(file);
 }

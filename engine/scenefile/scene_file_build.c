@@ -64,6 +64,7 @@ static void record_freed(void *info) {
     sf_record_t *record = info;
     record->body = NULL;
     record->file->freed_records++;
+    record->file->listing_fresh = false;
 }
 
 static bool spec_in_group(const sf_body_t *spec, size_t group) {
@@ -94,7 +95,9 @@ static sf_record_t *make_body(scene_file_t *file, size_t spec_index, vector_t po
         *v = spec->shape.centred[i];
         list_add(shape, v);
     }
-    body_t *body = body_init_with_info(shape, spec->mass, spec->color, record, record_freed);
+    body_t *body = spec->shape.as_centred
+                       ? body_init_centred(shape, spec->mass, spec->color, record, record_freed)
+                       : body_init_with_info(shape, spec->mass, spec->color, record, record_freed);
     body_set_centroid(body, position);
     body_set_rotation(body, spec->angle);
     body_set_velocity(body, velocity);
@@ -110,6 +113,7 @@ static sf_record_t *make_body(scene_file_t *file, size_t spec_index, vector_t po
     sf_reserve((void **)&file->records, &file->record_capacity, file->record_count + 1,
                sizeof(sf_record_t *));
     file->records[file->record_count++] = record;
+    file->listing_fresh = false;
     return record;
 }
 
@@ -134,29 +138,36 @@ static void make_bodies(scene_file_t *file) {
 
 /* ---- Forces and rules ----------------------------------------------------- */
 
+/* newton and collide: one engine group for all the pairs of the statement. */
+static bool is_group_statement(sf_statement_kind_t kind) {
+    return kind == STATEMENT_NEWTON || kind == STATEMENT_PHYSICS ||
+           kind == STATEMENT_DESTRUCTIVE;
+}
+
+/* A spring or a drag: one engine force creator, listed as an instance. */
 static void make_force(scene_file_t *file, size_t statement, sf_record_t *a, sf_record_t *b) {
     const sf_statement_t *s = &file->doc.statements[statement];
-    scene_t *scene = file->scene;
-    switch (s->kind) {
-    case STATEMENT_SPRING:
-        if (s->has_rest_length) {
-            create_spring_with_length(scene, s->constant, s->rest_length, a->body, b->body);
-        } else {
-            create_spring(scene, s->constant, a->body, b->body);
-        }
-        break;
-    case STATEMENT_NEWTON: create_newtonian_gravity(scene, s->constant, a->body, b->body); break;
-    case STATEMENT_DRAG: create_drag(scene, s->constant, a->body); break;
-    case STATEMENT_PHYSICS: create_physics_collision(scene, a->body, b->body, s->constant); break;
-    case STATEMENT_DESTRUCTIVE: create_destructive_collision(scene, a->body, b->body); break;
+    if (s->kind == STATEMENT_SPRING && s->has_rest_length) {
+        create_spring_with_length(file->scene, s->constant, s->rest_length, a->body, b->body);
+    } else if (s->kind == STATEMENT_SPRING) {
+        create_spring(file->scene, s->constant, a->body, b->body);
+    } else {
+        create_drag(file->scene, s->constant, a->body);
     }
     sf_reserve((void **)&file->instances, &file->instance_capacity, file->instance_count + 1,
                sizeof(sf_instance_t));
-    file->instances[file->instance_count++] = (sf_instance_t){statement, a, b};
+    /* After the instances of its statement and those before it: a spawned
+     * body's drag is listed with its statement. */
+    size_t place = file->instance_count;
+    while (place > 0 && file->instances[place - 1].statement > statement) place--;
+    memmove(&file->instances[place + 1], &file->instances[place],
+            (file->instance_count - place) * sizeof(sf_instance_t));
+    file->instances[place] = (sf_instance_t){statement, a, b};
+    file->instance_count++;
 }
 
 /* Whether a live record belongs to the set a reference names. */
-static bool in_ref(const scene_file_t *file, const sf_ref_t *ref, const sf_record_t *record) {
+bool sf_in_ref(const scene_file_t *file, const sf_ref_t *ref, const sf_record_t *record) {
     switch (ref->kind) {
     case REF_ALL: return true;
     case REF_BODY: return file->doc.bodies[ref->index].record == record;
@@ -167,14 +178,13 @@ static bool in_ref(const scene_file_t *file, const sf_ref_t *ref, const sf_recor
 static bool in_refs(const scene_file_t *file, const sf_ref_t *refs, size_t count,
                     const sf_record_t *record) {
     for (size_t i = 0; i < count; i++) {
-        if (in_ref(file, &refs[i], record)) return true;
+        if (sf_in_ref(file, &refs[i], record)) return true;
     }
     return false;
 }
 
-/* The live records of a set (refs[0..count) together), in record order. */
-static size_t members(const scene_file_t *file, const sf_ref_t *refs, size_t count,
-                      sf_record_t **out) {
+size_t sf_members(const scene_file_t *file, const sf_ref_t *refs, size_t count,
+                  sf_record_t **out) {
     size_t n = 0;
     for (size_t i = 0; i < file->record_count; i++) {
         sf_record_t *record = file->records[i];
@@ -183,57 +193,88 @@ static size_t members(const scene_file_t *file, const sf_ref_t *refs, size_t cou
     return n;
 }
 
-/* The pairs (or single bodies, for drag) a statement joins among the live
- * records: make them when make is true, else only count them. Each unordered
- * pair once; a collide pair is (member of the first side, member of the
- * second), and a pair whose both bodies are on both sides is taken with the
- * earlier body first. */
-static size_t statement_pairs(scene_file_t *file, size_t statement, sf_record_t **scratch,
-                              bool make) {
+/* The sets a record of a group statement is on: newton's one set (1), a
+ * collide's first side (1) and second (2). */
+static int sides_of(const scene_file_t *file, const sf_statement_t *s, const sf_record_t *record) {
+    if (s->kind == STATEMENT_NEWTON) return in_refs(file, s->refs, s->ref_count, record);
+    return sf_in_ref(file, &s->refs[0], record) | sf_in_ref(file, &s->refs[1], record) << 1;
+}
+
+static void join_group(scene_file_t *file, size_t statement, sf_record_t *record) {
     const sf_statement_t *s = &file->doc.statements[statement];
-    size_t made = 0;
+    int sides = sides_of(file, s, record);
+    if (sides == 0) return;
+    if (s->kind == STATEMENT_NEWTON) {
+        gravity_group_add(file->groups[statement].gravity, record->body);
+    } else {
+        collision_group_add(file->groups[statement].collision, record->body, sides & 1,
+                            (sides & 2) != 0);
+    }
+}
+
+/* The statement's engine group, its members joined in record order: the
+ * pairs in the order the pairwise creators would have been made. */
+static void make_group(scene_file_t *file, size_t statement) {
+    const sf_statement_t *s = &file->doc.statements[statement];
+    list_t *none = list_init(0, NULL);
+    if (s->kind == STATEMENT_NEWTON) {
+        file->groups[statement].gravity =
+            create_newtonian_gravity_group(file->scene, s->constant, none);
+    } else {
+        bool physics = s->kind == STATEMENT_PHYSICS;
+        file->groups[statement].collision = create_collision_group(
+            file->scene, none, none,
+            physics ? physics_collision_handler : destructive_collision_handler, NULL,
+            physics ? s->constant : 0.0);
+    }
+    list_free(none);
+    for (size_t i = 0; i < file->record_count; i++) {
+        if (file->records[i]->body != NULL) join_group(file, statement, file->records[i]);
+    }
+}
+
+size_t sf_statement_pairs(const scene_file_t *file, size_t statement, sf_record_t **scratch) {
+    const sf_statement_t *s = &file->doc.statements[statement];
     if (s->kind == STATEMENT_SPRING) {
-        sf_record_t *a = file->doc.bodies[s->refs[0].index].record;
-        sf_record_t *b = file->doc.bodies[s->refs[1].index].record;
-        if (a == NULL || b == NULL || a->body == NULL || b->body == NULL) return 0;
-        if (make) make_force(file, statement, a, b);
-        return 1;
+        const sf_record_t *a = file->doc.bodies[s->refs[0].index].record;
+        const sf_record_t *b = file->doc.bodies[s->refs[1].index].record;
+        return a != NULL && b != NULL && a->body != NULL && b->body != NULL;
     }
     if (s->kind == STATEMENT_NEWTON || s->kind == STATEMENT_DRAG) {
-        size_t n = members(file, s->refs, s->ref_count, scratch);
-        if (s->kind == STATEMENT_DRAG) {
-            for (size_t i = 0; make && i < n; i++) make_force(file, statement, scratch[i], NULL);
-            return n;
-        }
-        for (size_t i = 0; make && i < n; i++) {
-            for (size_t j = i + 1; j < n; j++) make_force(file, statement, scratch[i], scratch[j]);
-        }
-        return n * (n - 1) / 2;
+        size_t n = sf_members(file, s->refs, s->ref_count, scratch);
+        return s->kind == STATEMENT_DRAG ? n : n * (n - (n > 0)) / 2;
     }
-    size_t n = members(file, &s->refs[0], 1, scratch);
-    sf_record_t **second = scratch + n;
-    size_t m = members(file, &s->refs[1], 1, second);
-    if (!make) {
-        /* n m ordered pairs, less the bodies paired with themselves and the
-         * pairs of two bodies on both sides, which come twice: counted without
-         * walking the n m pairs, so that a file asking for far too many is
-         * refused at once. */
-        size_t both = 0;
-        for (size_t i = 0; i < n; i++) both += in_ref(file, &s->refs[1], scratch[i]);
-        return n * m - both - both * (both - 1) / 2;
-    }
-    for (size_t i = 0; i < n; i++) {
-        sf_record_t *a = scratch[i];
-        bool a_in_second = in_ref(file, &s->refs[1], a);
-        for (size_t j = 0; j < m; j++) {
-            sf_record_t *b = second[j];
-            if (a == b) continue;
-            if (a_in_second && in_ref(file, &s->refs[0], b) && a->index > b->index) continue;
+    size_t n = sf_members(file, &s->refs[0], 1, scratch);
+    size_t m = sf_members(file, &s->refs[1], 1, scratch + n);
+    /* n m ordered pairs, less the bodies paired with themselves and the
+     * pairs of two bodies on both sides, which come twice. */
+    size_t both = 0;
+    for (size_t i = 0; i < n; i++) both += sf_in_ref(file, &s->refs[1], scratch[i]);
+    return n * m - both - both * (both - (both > 0)) / 2;
+}
+
+/* The force creators a statement makes: one per spring or drag instance,
+ * one for the group of a newton or collide. */
+static size_t statement_creators(const scene_file_t *file, size_t statement,
+                                 sf_record_t **scratch) {
+    if (is_group_statement(file->doc.statements[statement].kind)) return 1;
+    return sf_statement_pairs(file, statement, scratch);
+}
+
+static void make_statement(scene_file_t *file, size_t statement, sf_record_t **scratch) {
+    const sf_statement_t *s = &file->doc.statements[statement];
+    if (is_group_statement(s->kind)) {
+        make_group(file, statement);
+    } else if (s->kind == STATEMENT_SPRING) {
+        sf_record_t *a = file->doc.bodies[s->refs[0].index].record;
+        sf_record_t *b = file->doc.bodies[s->refs[1].index].record;
+        if (a != NULL && b != NULL && a->body != NULL && b->body != NULL) {
             make_force(file, statement, a, b);
-            made++;
         }
+    } else {
+        size_t n = sf_members(file, s->refs, s->ref_count, scratch);
+        for (size_t i = 0; i < n; i++) make_force(file, statement, scratch[i], NULL);
     }
-    return made;
 }
 
 static bool make_forces(scene_file_t *file, sf_lexer_t *lexer) {
@@ -243,20 +284,134 @@ static bool make_forces(scene_file_t *file, sf_lexer_t *lexer) {
     if (scratch == NULL) abort();
     size_t total = 0;
     for (size_t i = 0; i < doc->statement_count; i++) {
-        size_t pairs = statement_pairs(file, i, scratch, false);
-        if (pairs > SCENE_FILE_MAX_FORCES - total) {
+        size_t creators = statement_creators(file, i, scratch);
+        if (creators > SCENE_FILE_MAX_FORCES - total) {
             free(scratch);
             return sf_fail(lexer, doc->statements[i].where,
                            "expected at most %d force creators from the forces and rules of a "
                            "file, found %zu with this %s",
-                           SCENE_FILE_MAX_FORCES, total + pairs,
+                           SCENE_FILE_MAX_FORCES, total + creators,
                            statement_name(doc->statements[i].kind));
         }
-        total += pairs;
+        total += creators;
     }
-    for (size_t i = 0; i < doc->statement_count; i++) statement_pairs(file, i, scratch, true);
+    file->groups = calloc(doc->statement_count + 1, sizeof *file->groups);
+    if (file->groups == NULL) abort();
+    for (size_t i = 0; i < doc->statement_count; i++) make_statement(file, i, scratch);
     free(scratch);
     return true;
+}
+
+/* ---- The state a continuation needs (scene_state.h) ------------------------ */
+
+static bool is_unit(vector_t v) {
+    return fabs(sqrt(v.x * v.x + v.y * v.y) - 1.0) <= 1e-9;
+}
+
+static int compare_contact_pairs(const void *p, const void *q) {
+    const sf_contact_t *a = *(const sf_contact_t *const *)p, *b = *(const sf_contact_t *const *)q;
+    if (a->body_a != b->body_a) return a->body_a < b->body_a ? -1 : 1;
+    if (a->body_b != b->body_b) return a->body_b < b->body_b ? -1 : 1;
+    return a->where.line < b->where.line ? -1 : a->where.line > b->where.line;
+}
+
+/* The contact blocks name two different bodies the file makes, once per
+ * pair, with unit normals. */
+static bool check_contacts(const sf_doc_t *doc, sf_lexer_t *lexer) {
+    for (size_t i = 0; i < doc->contact_count; i++) {
+        const sf_contact_t *c = &doc->contacts[i];
+        size_t last = c->body_a > c->body_b ? c->body_a : c->body_b;
+        if (last >= doc->total_bodies) {
+            return sf_fail(lexer, c->where,
+                           "expected bodies numbered from 0 to %zu (the file makes %zu), found %zu",
+                           doc->total_bodies == 0 ? 0 : doc->total_bodies - 1, doc->total_bodies,
+                           last);
+        }
+        if (c->body_a == c->body_b) {
+            return sf_fail(lexer, c->where, "expected two different bodies, found %zu twice",
+                           c->body_a);
+        }
+        if (!is_unit(c->memory.normal) || !is_unit(c->memory.face_normal)) {
+            return sf_fail(lexer, c->where,
+                           "expected unit vectors for the normal and the face's normal, found "
+                           "lengths %g and %g",
+                           vec_get_length(c->memory.normal), vec_get_length(c->memory.face_normal));
+        }
+    }
+    const sf_contact_t **sorted = malloc((doc->contact_count + 1) * sizeof *sorted);
+    if (sorted == NULL) abort();
+    for (size_t i = 0; i < doc->contact_count; i++) sorted[i] = &doc->contacts[i];
+    qsort(sorted, doc->contact_count, sizeof *sorted, compare_contact_pairs);
+    for (size_t i = 1; i < doc->contact_count; i++) {
+        const sf_contact_t *c = sorted[i], *before = sorted[i - 1];
+        if (c->body_a == before->body_a && c->body_b == before->body_b) {
+            sf_where_t where = sorted[i]->where, first = sorted[i - 1]->where;
+            size_t a = sorted[i]->body_a, b = sorted[i]->body_b;
+            free(sorted);
+            return sf_fail(lexer, where,
+                           "expected one contact per pair, found a second for %zu and %zu (the "
+                           "first at line %zu)",
+                           a, b, first.line);
+        }
+    }
+    free(sorted);
+    return true;
+}
+
+/* Sleep state and contact memory are the world's: they need its contacts,
+ * and sleep needs sleeping on. */
+static bool check_state(const sf_doc_t *doc, sf_lexer_t *lexer) {
+    const sf_settings_t *s = &doc->settings;
+    sf_where_t needs_contacts = doc->first_island;
+    if (needs_contacts.line == 0 && doc->contact_count > 0) needs_contacts = doc->contacts[0].where;
+    if (needs_contacts.line == 0) needs_contacts = s->sleep_phase_where;
+    if (needs_contacts.line != 0 && !s->contacts) {
+        return sf_fail(lexer, needs_contacts,
+                       "expected contacts on for the world's state (asleep, contact, sleep_phase), "
+                       "found contacts off");
+    }
+    if (doc->first_island.line != 0 && !s->sleeping) {
+        return sf_fail(lexer, doc->first_island,
+                       "expected sleeping on for a body asleep, found sleeping off");
+    }
+    return check_contacts(doc, lexer);
+}
+
+/* After every body is made and set: the timers (which setting a body's
+ * pose restarts), the sleeping islands, the phase, the contact memory. */
+static void restore_state(scene_file_t *file) {
+    sf_doc_t *doc = &file->doc;
+    scene_t *scene = file->scene;
+    body_t **sleepers = malloc((file->record_count + 1) * sizeof *sleepers);
+    size_t *islands = malloc((file->record_count + 1) * sizeof *islands);
+    if (sleepers == NULL || islands == NULL) abort();
+    size_t asleep = 0;
+    for (size_t i = 0; i < file->record_count; i++) {
+        const sf_body_t *spec = &doc->bodies[file->records[i]->spec];
+        body_t *body = file->records[i]->body;
+        if (spec->has_timer) body_set_sleep_timer(body, spec->timer);
+        if (spec->has_island) {
+            sleepers[asleep] = body;
+            islands[asleep++] = spec->island;
+        }
+    }
+    if (asleep > 0) scene_restore_sleep(scene, sleepers, islands, asleep);
+    free(sleepers);
+    free(islands);
+    if (doc->settings.sleep_phase_where.line != 0) {
+        scene_set_sleep_phase(scene, doc->settings.sleep_phase);
+    }
+    if (doc->contact_count == 0) return;
+    scene_contact_memory_t *memories = malloc(doc->contact_count * sizeof *memories);
+    if (memories == NULL) abort();
+    for (size_t i = 0; i < doc->contact_count; i++) {
+        const sf_contact_t *c = &doc->contacts[i];
+        memories[i] = c->memory;
+        memories[i].body_a = file->records[c->body_a]->body;
+        memories[i].body_b = file->records[c->body_b]->body;
+    }
+    scene_restore_contact_memory(scene, memories, doc->contact_count);
+    free(memories);
 }
 
 /* ---- Build ---------------------------------------------------------------- */
@@ -267,20 +422,23 @@ static void apply_settings(scene_file_t *file) {
     scene_set_contacts_enabled(file->scene, s->contacts);
     scene_set_integrator(file->scene, s->integrator);
     scene_set_solver_iterations(file->scene, s->velocity_iterations, s->position_iterations);
+    scene_set_sleeping(file->scene, s->sleeping);
 }
 
 bool sf_build(scene_file_t *file, sf_lexer_t *lexer) {
-    if (!resolve(&file->doc, lexer)) return false;
+    if (!resolve(&file->doc, lexer) || !check_state(&file->doc, lexer)) return false;
     file->scene = scene_init();
     apply_settings(file);
     make_bodies(file);
-    return make_forces(file, lexer);
+    if (!make_forces(file, lexer)) return false;
+    restore_state(file);
+    return true;
 }
 
 /* ---- Live ----------------------------------------------------------------- */
 
-/* Drops the forces whose bodies the scene has freed. */
-static void drop_orphan_forces(scene_file_t *file) {
+/* Drops the instances whose bodies the scene has freed. */
+void sf_drop_orphan_forces(scene_file_t *file) {
     size_t kept = 0;
     for (size_t i = 0; i < file->instance_count; i++) {
         sf_instance_t *instance = &file->instances[i];
@@ -292,7 +450,7 @@ static void drop_orphan_forces(scene_file_t *file) {
 }
 
 void sf_collect(scene_file_t *file) {
-    drop_orphan_forces(file);
+    sf_drop_orphan_forces(file);
     sf_doc_t *doc = &file->doc;
     for (size_t i = 0; i < doc->body_count; i++) {
         if (doc->bodies[i].record != NULL && doc->bodies[i].record->body == NULL)
@@ -312,31 +470,6 @@ void sf_collect(scene_file_t *file) {
     file->freed_records = 0;
 }
 
-size_t scene_file_force_count(scene_file_t *file) {
-    drop_orphan_forces(file);
-    return file->instance_count;
-}
-
-scene_file_force_t scene_file_get_force(scene_file_t *file, size_t index) {
-    static const scene_file_force_kind_t KINDS[] = {
-        [STATEMENT_SPRING] = SCENE_FILE_SPRING,
-        [STATEMENT_NEWTON] = SCENE_FILE_NEWTON,
-        [STATEMENT_DRAG] = SCENE_FILE_DRAG,
-        [STATEMENT_PHYSICS] = SCENE_FILE_PHYSICS_COLLISION,
-        [STATEMENT_DESTRUCTIVE] = SCENE_FILE_DESTRUCTIVE_COLLISION,
-    };
-    if (index >= file->instance_count) return (scene_file_force_t){0};
-    const sf_instance_t *instance = &file->instances[index];
-    const sf_statement_t *s = &file->doc.statements[instance->statement];
-    return (scene_file_force_t){
-        .kind = KINDS[s->kind],
-        .constant = s->constant,
-        .rest_length = s->rest_length,
-        .body1 = instance->body1->body,
-        .body2 = instance->body2 != NULL ? instance->body2->body : NULL,
-    };
-}
-
 body_t *scene_file_find_body(scene_file_t *file, const char *name) {
     if (file == NULL || name == NULL) return NULL;
     sf_name_entry_t *entry = sf_names_find(&file->doc.names, name);
@@ -345,45 +478,38 @@ body_t *scene_file_find_body(scene_file_t *file, const char *name) {
     return record != NULL ? record->body : NULL;
 }
 
-/* The force creators a new record of spec would join: counted, or made once
- * the record exists (then `record` is it and is skipped as a partner). */
-static size_t spawn_pairs(scene_file_t *file, sf_record_t *record, size_t spec_index) {
+/* The force creators a new record of spec would add: a drag for each drag
+ * statement naming one of its groups (newton and collide add it to their
+ * group, and springs name single bodies only). */
+static size_t spawn_creators(const scene_file_t *file, size_t spec_index) {
     /* A stand-in with the new body's groups, to ask membership before it exists. */
     sf_record_t probe = {.spec = spec_index};
-    const sf_record_t *self = record != NULL ? record : &probe;
     size_t count = 0;
     for (size_t s = 0; s < file->doc.statement_count; s++) {
         const sf_statement_t *st = &file->doc.statements[s];
-        if (st->kind == STATEMENT_SPRING) continue; /* names single bodies only */
-        if (st->kind == STATEMENT_NEWTON || st->kind == STATEMENT_DRAG) {
-            if (!in_refs(file, st->refs, st->ref_count, self)) continue;
-            if (st->kind == STATEMENT_DRAG) {
-                if (record != NULL) make_force(file, s, record, NULL);
-                count++;
-                continue;
-            }
+        count += st->kind == STATEMENT_DRAG && in_refs(file, st->refs, st->ref_count, &probe);
+    }
+    return count;
+}
+
+/* The new record joins every force and rule that names one of its groups. */
+static void spawn_join(scene_file_t *file, sf_record_t *record) {
+    for (size_t s = 0; s < file->doc.statement_count; s++) {
+        const sf_statement_t *st = &file->doc.statements[s];
+        if (is_group_statement(st->kind)) {
+            join_group(file, s, record);
+        } else if (st->kind == STATEMENT_DRAG && in_refs(file, st->refs, st->ref_count, record)) {
+            make_force(file, s, record, NULL);
         }
-        bool first = st->kind == STATEMENT_NEWTON || in_ref(file, &st->refs[0], self);
-        bool second = st->kind == STATEMENT_NEWTON || in_ref(file, &st->refs[1], self);
-        if (!first && !second) continue;
-        for (size_t i = 0; i < file->record_count; i++) {
-            sf_record_t *other = file->records[i];
-            if (other == record || other->body == NULL) continue;
-            sf_record_t *a = NULL, *b = NULL;
-            if (st->kind == STATEMENT_NEWTON) {
-                if (!in_refs(file, st->refs, st->ref_count, other)) continue;
-                a = other;
-            } else if (second && in_ref(file, &st->refs[0], other)) {
-                a = other; /* as the pair is taken at load: the earlier body first */
-            } else if (first && in_ref(file, &st->refs[1], other)) {
-                b = other;
-            } else {
-                continue;
-            }
-            if (record != NULL && a != NULL) make_force(file, s, a, record);
-            if (record != NULL && b != NULL) make_force(file, s, record, b);
-            count++;
-        }
+    }
+}
+
+/* Force creators alive: the instances, and a group per newton or collide. */
+static size_t creator_count(scene_file_t *file) {
+    sf_drop_orphan_forces(file);
+    size_t count = file->instance_count;
+    for (size_t s = 0; s < file->doc.statement_count; s++) {
+        count += is_group_statement(file->doc.statements[s].kind);
     }
     return count;
 }
@@ -412,9 +538,9 @@ body_t *scene_file_spawn(scene_file_t *file, const char *template_name, vector_t
     size_t live = file->record_count - file->freed_records;
     if (file->freed_records > 64 && file->freed_records > live) sf_collect(file);
     if (live + 1 > SCENE_FILE_MAX_BODIES) return NULL;
-    size_t forces = scene_file_force_count(file);
-    if (spawn_pairs(file, NULL, spec_index) > SCENE_FILE_MAX_FORCES - forces) return NULL;
+    size_t forces = creator_count(file);
+    if (spawn_creators(file, spec_index) > SCENE_FILE_MAX_FORCES - forces) return NULL;
     sf_record_t *record = make_body(file, spec_index, position, velocity);
-    spawn_pairs(file, record, spec_index);
+    spawn_join(file, record);
     return record->body;
 }

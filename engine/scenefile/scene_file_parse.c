@@ -97,6 +97,11 @@ static const quantity_t REST_LENGTH = {"the spring's rest length (m)", 0.0, 2.0 
 static const quantity_t NEWTON_G = {"the constant G (N m^2/kg^2)", 0.0, SF_MAX_CONSTANT, false,
                                     false};
 static const quantity_t DRAG_GAMMA = {"the drag gamma (kg/s)", 0.0, SF_MAX_CONSTANT, false, false};
+/* The engine's own state (sleep timers, contact memory): any finite value
+ * it can hold, read back exactly. */
+static const quantity_t DURATION = {"a time (s)", 0.0, SF_MAX_STATE, false, false};
+static const quantity_t STATE_VALUE = {"a number", -SF_MAX_STATE, SF_MAX_STATE, false, false};
+static const quantity_t UNIT_COMPONENT = {"a component of a unit vector", -2.0, 2.0, false, false};
 
 static bool read_quantity(parser_t *p, const quantity_t *q, double *out) {
     char expectation[256];
@@ -341,6 +346,23 @@ static bool parse_setting(parser_t *p, const char *keyword, sf_where_t here) {
                read_quantity(p, &VIEW_SIZE, &s->view.width) &&
                read_quantity(p, &VIEW_SIZE, &s->view.height);
     }
+    if (strcmp(keyword, "sleeping") == 0) {
+        if (!first_time(p, &s->sleeping_where, keyword, here)) return false;
+        if (sf_token_is(&p->token, "on") || sf_token_is(&p->token, "off")) {
+            s->sleeping = sf_token_is(&p->token, "on");
+            next(p);
+            return true;
+        }
+        return expected(p, "on or off (sleeping)");
+    }
+    if (strcmp(keyword, "sleep_phase") == 0) {
+        uint64_t phase = 0;
+        if (!first_time(p, &s->sleep_phase_where, keyword, here) ||
+            !read_count(p, "the sleep phase", 0, 7, &phase))
+            return false;
+        s->sleep_phase = (unsigned)phase;
+        return true;
+    }
     /* game */
     return first_time(p, &s->game_where, keyword, here) &&
            read_name(p, "the game's name", &s->game, NULL);
@@ -352,7 +374,7 @@ static bool parse_setting(parser_t *p, const char *keyword, sf_where_t here) {
  * second one is refused naming the first. */
 typedef struct {
     sf_where_t shape, mass, elasticity, friction, color, position, angle, velocity, spin, tag,
-        filter, repeat;
+        filter, repeat, asleep, sleep_timer;
 } seen_t;
 
 static bool once(parser_t *p, sf_where_t *seen, const char *what, sf_where_t here) {
@@ -515,6 +537,38 @@ static bool parse_property(parser_t *p, sf_body_t *body, seen_t *seen) {
                read_bits(p, "the filter's mask bits", &body->mask) &&
                read_bits(p, "the filter's group", &body->filter_group);
     }
+    if (strcmp(keyword, "centred") == 0) {
+        next(p);
+        if (body->shape.as_centred) {
+            return sf_fail(p->lexer, here, "expected one centred per body, found a second");
+        }
+        body->shape.as_centred = true;
+        return true;
+    }
+    if (strcmp(keyword, "asleep") == 0) {
+        next(p);
+        uint64_t island = 0;
+        if (!once(p, &seen->asleep, keyword, here) ||
+            !read_count(p, "the island's number", 0, SCENE_FILE_MAX_BODIES, &island))
+            return false;
+        body->has_island = true;
+        body->island = (size_t)island;
+        if (p->doc->first_island.line == 0) p->doc->first_island = here;
+        return true;
+    }
+    if (strcmp(keyword, "sleep_timer") == 0) {
+        next(p);
+        body->has_timer = true;
+        body_sleep_timer_t *t = &body->timer;
+        quantity_t slow = DURATION, window = DURATION, angle = STATE_VALUE;
+        slow.what = "the time the body has been slow (s)";
+        window.what = "the time since the anchor was taken (s)";
+        angle.what = "the anchor's angle (rad)";
+        return once(p, &seen->sleep_timer, keyword, here) &&
+               read_quantity(p, &slow, &t->slow_time) && read_quantity(p, &window, &t->window) &&
+               read_vector(p, &COORDINATE, &t->anchor) &&
+               read_quantity(p, &angle, &t->anchor_angle);
+    }
     if (strcmp(keyword, "repeat") == 0) {
         next(p);
         uint64_t x = 0, y = 0;
@@ -530,7 +584,7 @@ static bool parse_property(parser_t *p, sf_body_t *body, seen_t *seen) {
     return expected(p,
                     "a body property (regular, box, vertices, mass, density, static, elasticity, "
                     "friction, color, position, angle, velocity, spin, tag, group, filter, "
-                    "repeat) or '}'");
+                    "centred, asleep, sleep_timer, repeat) or '}'");
 }
 
 static list_t *list_of(const vector_t *vertices, size_t count) {
@@ -556,6 +610,16 @@ static list_t *shape_list(const sf_shape_t *shape) {
     }
 }
 
+/* Whether the centroid of a centred list lies as near the origin as
+ * body_init_centred asks: within a thousandth of the radius. */
+static bool centred_enough(list_t *list, vector_t centroid) {
+    double radius = 0.0;
+    for (size_t i = 0; i < list_size(list); i++) {
+        radius = fmax(radius, vec_get_length(*(vector_t *)list_get(list, i)));
+    }
+    return vec_get_length(centroid) <= 1e-3 * radius;
+}
+
 /* Checks the shape as the engine will see it and derives what the body needs.
  * The engine gets the vertices relative to their centroid, so that is the
  * list polygon_check judges (centring rounds, so checking the written list
@@ -579,7 +643,19 @@ static bool derive_shape(parser_t *p, sf_shape_t *shape) {
         shape->centroid = polygon_centroid(list);
         if (!vec_is_finite(shape->centroid)) problem = "its centroid is not finite";
     }
-    if (problem == NULL) {
+    if (problem == NULL && shape->as_centred) {
+        /* Taken as written, as body_init_centred takes them. */
+        if (!centred_enough(list, shape->centroid)) {
+            vector_t c = shape->centroid;
+            list_free(list);
+            return sf_fail(p->lexer, shape->where,
+                           "expected vertices around their centroid (centred), found it at "
+                           "(%g, %g), more than a thousandth of the radius from the origin",
+                           c.x, c.y);
+        }
+        shape->centroid = VEC_ZERO;
+    }
+    if (problem == NULL && !shape->as_centred) {
         polygon_translate(list, vec_negate(shape->centroid));
         problem = polygon_check(list);
     }
@@ -673,6 +749,11 @@ static bool finish_body(parser_t *p, sf_body_t *body, const seen_t *seen, sf_whe
                        "one",
                        body->is_template ? "template" : "body");
     }
+    if (body->shape.as_centred && body->shape.kind != SHAPE_VERTICES) {
+        return sf_fail(p->lexer, body->shape.where,
+                       "expected centred with a vertices shape, found it with %s",
+                       body->shape.kind == SHAPE_BOX ? "a box" : "a regular polygon");
+    }
     if (!derive_shape(p, &body->shape)) return false;
     if (!derive_mass(p, body, seen->mass.line != 0 ? seen->mass : body->shape.where)) return false;
     if (!body->has_color)
@@ -681,6 +762,20 @@ static bool finish_body(parser_t *p, sf_body_t *body, const seen_t *seen, sf_whe
     if (body->is_template && seen->repeat.line != 0) {
         return sf_fail(p->lexer, seen->repeat,
                        "expected no repeat in a template (a game spawns its copies), found one");
+    }
+    if (body->is_template && (body->has_island || body->has_timer)) {
+        return sf_fail(p->lexer, body->has_island ? seen->asleep : seen->sleep_timer,
+                       "expected no sleep state in a template (its copies start awake), found %s",
+                       body->has_island ? "asleep" : "sleep_timer");
+    }
+    if (body->has_island && body->mass_kind == MASS_STATIC) {
+        return sf_fail(p->lexer, seen->asleep,
+                       "expected asleep on a body that can move, found it on a static body");
+    }
+    if (body->has_island && (body->velocity.x != 0.0 || body->velocity.y != 0.0 ||
+                             body->spin != 0.0)) {
+        return sf_fail(p->lexer, seen->asleep,
+                       "expected a sleeping body at rest, found a velocity or spin on it");
     }
     size_t copies = body->repeat_x * body->repeat_y;
     if (body->has_repeat) {
@@ -826,10 +921,128 @@ static bool parse_statement(parser_t *p, const char *keyword, sf_where_t here) {
     return expected(p, "the kind of collision (physics ELASTICITY, or destructive)");
 }
 
+/* ---- Contact memory ---------------------------------------------------------- */
+
+/* `point ID X Y SEPARATION NORMAL TANGENT RESTITUTION RESTITUTION_TANGENT` */
+static bool read_memory_point(parser_t *p, scene_memory_point_t *point) {
+    quantity_t coordinate = STATE_VALUE, separation = STATE_VALUE;
+    coordinate.what = "a coordinate of the point (m)";
+    separation.what = "the separation (m)";
+    quantity_t impulses[4] = {STATE_VALUE, STATE_VALUE, STATE_VALUE, STATE_VALUE};
+    impulses[0].what = "the normal impulse (N s)";
+    impulses[1].what = "the tangent impulse (N s)";
+    impulses[2].what = "the collision pass's normal impulse (N s)";
+    impulses[3].what = "the collision pass's tangent impulse (N s)";
+    return read_bits(p, "the point's feature id", &point->id) &&
+           read_vector(p, &coordinate, &point->point) &&
+           read_quantity(p, &separation, &point->separation) &&
+           read_quantity(p, &impulses[0], &point->normal_impulse) &&
+           read_quantity(p, &impulses[1], &point->tangent_impulse) &&
+           read_quantity(p, &impulses[2], &point->restitution_impulse) &&
+           read_quantity(p, &impulses[3], &point->restitution_tangent_impulse);
+}
+
+/* `face a|b NX NY X Y [edge]` */
+static bool read_face(parser_t *p, scene_contact_memory_t *m) {
+    if (!sf_token_is(&p->token, "a") && !sf_token_is(&p->token, "b")) {
+        return expected(p, "a or b (the body holding the reference face)");
+    }
+    m->flip = sf_token_is(&p->token, "b");
+    next(p);
+    quantity_t point = STATE_VALUE;
+    point.what = "a coordinate of the face's point (m)";
+    if (!read_vector(p, &UNIT_COMPONENT, &m->face_normal) ||
+        !read_vector(p, &point, &m->face_point))
+        return false;
+    m->edge_ends = sf_token_is(&p->token, "edge");
+    if (m->edge_ends) next(p);
+    return true;
+}
+
+/* One line of a contact block. */
+static bool parse_contact_line(parser_t *p, sf_contact_t *contact, sf_where_t *seen) {
+    scene_contact_memory_t *m = &contact->memory;
+    sf_where_t here = p->token.where;
+    char keyword[16] = "";
+    if (p->token.length < sizeof keyword) memcpy(keyword, p->token.text, p->token.length);
+    keyword[p->token.length < sizeof keyword ? p->token.length : 0] = '\0';
+    static const char *const LINES[] = {"normal", "point", "incident", "face", "pose"};
+    bool known = false;
+    for (size_t i = 0; i < sizeof LINES / sizeof LINES[0]; i++) {
+        known = known || strcmp(keyword, LINES[i]) == 0;
+    }
+    if (!known) return expected(p, "a contact line (normal, point, face, incident, pose) or '}'");
+    next(p);
+    if (strcmp(keyword, "normal") == 0) {
+        return first_time(p, &seen[0], "normal", here) &&
+               read_vector(p, &UNIT_COMPONENT, &m->normal);
+    }
+    if (strcmp(keyword, "point") == 0 || strcmp(keyword, "incident") == 0) {
+        bool incident = keyword[0] == 'i';
+        int *count = incident ? &m->feature_count : &m->point_count;
+        if (*count == 2) {
+            return sf_fail(p->lexer, here,
+                           "expected at most two %s lines in a contact, found a third", keyword);
+        }
+        if (!incident) return read_memory_point(p, &m->points[m->point_count++]);
+        quantity_t coordinate = STATE_VALUE;
+        coordinate.what = "a coordinate of the incident point (m)";
+        int k = m->feature_count++;
+        return read_bits(p, "the incident point's feature id", &m->feature_ids[k]) &&
+               read_vector(p, &coordinate, &m->feature_points[k]);
+    }
+    if (strcmp(keyword, "face") == 0) {
+        return first_time(p, &seen[1], "face", here) && read_face(p, m);
+    }
+    /* pose */
+    quantity_t coordinate = STATE_VALUE, angle = STATE_VALUE;
+    coordinate.what = "a coordinate of the pose (m)";
+    angle.what = "the pose's angle (rad)";
+    return first_time(p, &seen[2], "pose", here) && read_vector(p, &coordinate, &m->pose) &&
+           read_quantity(p, &angle, &m->pose_angle);
+}
+
+/* `contact A B { ... }`: the world's memory of one pair. */
+static bool parse_contact(parser_t *p, sf_where_t here) {
+    sf_doc_t *doc = p->doc;
+    sf_reserve((void **)&doc->contacts, &doc->contact_capacity, doc->contact_count + 1,
+               sizeof(sf_contact_t));
+    sf_contact_t *contact = &doc->contacts[doc->contact_count++];
+    *contact = (sf_contact_t){.where = here};
+    uint64_t a = 0, b = 0;
+    const uint64_t last = SCENE_FILE_MAX_BODIES - 1;
+    if (!read_count(p, "the number of the contact's first body", 0, last, &a) ||
+        !read_count(p, "the number of the contact's second body", 0, last, &b))
+        return false;
+    contact->body_a = (size_t)a;
+    contact->body_b = (size_t)b;
+    while (p->token.kind == TOKEN_NEWLINE) next(p);
+    if (p->token.kind != TOKEN_OPEN) return expected(p, "'{' to open the contact");
+    next(p);
+    sf_where_t seen[3] = {{0, 0}, {0, 0}, {0, 0}};
+    for (;;) {
+        while (at_separator(p)) next(p);
+        if (p->token.kind == TOKEN_CLOSE) break;
+        if (p->token.kind != TOKEN_WORD) {
+            char expectation[96];
+            snprintf(expectation, sizeof expectation, "a contact line or '}' to close the block "
+                     "opened at line %zu", here.line);
+            return expected(p, expectation);
+        }
+        if (!parse_contact_line(p, contact, seen)) return false;
+        if (!at_separator(p) && p->token.kind != TOKEN_CLOSE) {
+            return expected(p, "the end of the line (a new line, ';' or '}')");
+        }
+    }
+    next(p);
+    return true;
+}
+
 /* ---- The file ------------------------------------------------------------- */
 
 static const char *const SETTINGS[] = {"gravity",  "contacts", "integrator", "iterations",
-                                       "timestep", "view",     "game"};
+                                       "timestep", "view",     "game",       "sleeping",
+                                       "sleep_phase"};
 static const char *const FORCES[] = {"spring", "newton", "drag", "collide"};
 
 static bool parse_one(parser_t *p) {
@@ -855,6 +1068,10 @@ static bool parse_one(parser_t *p) {
         next(p);
         return parse_body(p, keyword[0] == 't', here);
     }
+    if (strcmp(keyword, "contact") == 0) {
+        next(p);
+        return parse_contact(p, here);
+    }
     if (strcmp(keyword, "group") == 0) {
         next(p);
         size_t count = 0;
@@ -865,7 +1082,8 @@ static bool parse_one(parser_t *p) {
     }
     if (p->token.kind == TOKEN_BAD_BYTE) return expected(p, "text");
     return expected(p, "a statement (body, template, group, gravity, contacts, integrator, "
-                       "iterations, timestep, view, game, spring, newton, drag, collide)");
+                       "iterations, timestep, view, game, sleeping, sleep_phase, spring, newton, "
+                       "drag, collide, contact)");
 }
 
 bool sf_parse(sf_lexer_t *lexer, sf_doc_t *doc) {
@@ -874,6 +1092,7 @@ bool sf_parse(sf_lexer_t *lexer, sf_doc_t *doc) {
     doc->settings.velocity_iterations = 8;
     doc->settings.position_iterations = 4;
     doc->settings.timestep = DEFAULT_TIMESTEP;
+    doc->settings.sleeping = true;
     next(&p);
     for (;;) {
         while (at_separator(&p)) next(&p);
@@ -895,6 +1114,7 @@ void sf_doc_free(sf_doc_t *doc) {
     free(doc->groups);
     for (size_t i = 0; i < doc->statement_count; i++) free(doc->statements[i].refs);
     free(doc->statements);
+    free(doc->contacts);
     free(doc->names.slots);
     *doc = (sf_doc_t){0};
 }

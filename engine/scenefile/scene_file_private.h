@@ -103,6 +103,7 @@ typedef struct {
     double radius;        /* SHAPE_REGULAR: circumradius */
     double width, height; /* SHAPE_BOX: full sizes */
     vector_t *written;    /* SHAPE_VERTICES: as written, made counter-clockwise */
+    bool as_centred;      /* SHAPE_VERTICES: written relative to the centroid, kept exactly */
     size_t count;         /* vertices */
     /* Derived once the shape is checked: */
     vector_t *centred;    /* the vertices relative to the area centroid, counter-clockwise */
@@ -134,6 +135,10 @@ typedef struct {
     double spin;
     bool has_filter;
     uint32_t category, mask, filter_group;
+    bool has_island;           /* `asleep ISLAND`: the body sleeps in that island */
+    size_t island;
+    bool has_timer;            /* `sleep_timer`: its sleep timer (scene_state.h) */
+    body_sleep_timer_t timer;
     bool has_repeat;           /* a repeated block names a group, whatever its counts */
     size_t repeat_x, repeat_y; /* 1 and 1 without repeat */
     vector_t repeat_step;
@@ -199,7 +204,19 @@ typedef struct {
     sf_where_t view_where;
     sf_name_t game;
     sf_where_t game_where;
+    bool sleeping;
+    sf_where_t sleeping_where;
+    unsigned sleep_phase;
+    sf_where_t sleep_phase_where;
 } sf_settings_t;
+
+/* A `contact A B { ... }` block: the world's contact memory of one pair
+ * (scene_state.h), its bodies by the order the file makes them. */
+typedef struct {
+    sf_where_t where;
+    size_t body_a, body_b;
+    scene_contact_memory_t memory; /* bodies NULL until built */
+} sf_contact_t;
 
 /* One name: a single body or a group. */
 typedef struct {
@@ -223,6 +240,9 @@ typedef struct {
     sf_statement_t *statements;
     size_t statement_count, statement_capacity;
     sf_names_t names;
+    sf_contact_t *contacts;
+    size_t contact_count, contact_capacity;
+    sf_where_t first_island; /* the first `asleep`, for the message when sleeping is off */
     size_t total_bodies; /* bodies the blocks make, repeats counted */
     size_t total_vertices;
 } sf_doc_t;
@@ -249,12 +269,31 @@ typedef struct sf_record {
     size_t index; /* its place in file->records */
 } sf_record_t;
 
-/* A force creator made by a statement, with the records it joins. */
+/* A force creator made by a spring or drag statement, with the records it
+ * joins. */
 typedef struct {
     size_t statement;
     sf_record_t *body1;
     sf_record_t *body2; /* NULL for a drag */
 } sf_instance_t;
+
+/* The engine group of a newton (gravity) or collide (collision) statement:
+ * one force creator for all its pairs. */
+typedef struct {
+    gravity_group_t *gravity;
+    collision_group_t *collision;
+} sf_engine_group_t;
+
+/* Where scene_file_get_force is in the listing (scene_file_list.c): the
+ * force at index, of statement; for a spring or drag the instance at i, for
+ * a pair the members i and j of the statement's sides (side1, side2), with
+ * the next instance to list kept in instance. */
+typedef struct {
+    bool valid;
+    size_t index, statement, i, j;
+    size_t n, m; /* the sides' sizes */
+    size_t instance;
+} sf_cursor_t;
 
 struct scene_file {
     sf_doc_t doc;
@@ -262,13 +301,40 @@ struct scene_file {
     sf_record_t **records; /* in the order made */
     size_t record_count, record_capacity;
     size_t freed_records; /* records whose body the engine freed */
-    sf_instance_t *instances;
+    sf_instance_t *instances; /* in statement order */
     size_t instance_count, instance_capacity;
+    sf_engine_group_t *groups; /* one per statement */
+    /* The listing: its length at the last scene_file_force_count (while
+     * listing_fresh: no body made or freed since), the cursor and the
+     * members of the statement it is in. */
+    size_t listed;
+    bool listing_fresh;
+    sf_cursor_t cursor;
+    sf_record_t **side1, **side2;
+    size_t side1_capacity, side2_capacity;
 };
 
 /* Resolves names, checks the limits, and builds file->scene. False with the
  * error set when a name or a limit is refused; nothing is built then. */
 bool sf_build(scene_file_t *file, sf_lexer_t *lexer);
+
+/* Whether a live record belongs to the set a reference names. */
+bool sf_in_ref(const scene_file_t *file, const sf_ref_t *ref, const sf_record_t *record);
+
+/* The live records of a set (refs[0 .. count) together), in record order,
+ * into out (room for record_count); returns how many. */
+size_t sf_members(const scene_file_t *file, const sf_ref_t *refs, size_t count,
+                  sf_record_t **out);
+
+/* The forces a statement lists among the live records: 1 or 0 for a spring,
+ * a drag per member, newton's and collide's pairs (each unordered pair
+ * once; a collide pair is (member of the first side, member of the second),
+ * the earlier body first when both are on both sides). scratch has room
+ * for twice record_count. */
+size_t sf_statement_pairs(const scene_file_t *file, size_t statement, sf_record_t **scratch);
+
+/* Drops the instances whose bodies the engine freed. */
+void sf_drop_orphan_forces(scene_file_t *file);
 
 /* Drops instances whose bodies were freed, forgets those bodies, and frees their
  * records (keeps memory flat while a game spawns and destroys bodies). */
@@ -283,5 +349,6 @@ void sf_reserve(void **array, size_t *capacity, size_t needed, size_t element_si
 #define SF_MAX_CONSTANT 1e40 /* masses, densities, G, k, gamma */
 #define SF_MIN_MOMENT 1e-290 /* kg m^2: far inside what a double inverts */
 #define SF_MAX_MOMENT 1e290
+#define SF_MAX_STATE 1e300   /* the engine's state: timers, impulses, separations */
 
 #endif // #ifndef SCENE_FILE_PRIVATE_H

@@ -1,8 +1,9 @@
 /*
- * The scene back to text. The shape, mass and filter come from the
- * description (the engine cannot give a body's filter back, and rebuilding a
- * shape from the same description gives the same body to the last bit); the
- * pose, motion and material come from the live bodies.
+ * The scene back to text. The shape and mass come from the description
+ * (rebuilding a shape from the same description gives the same body to the
+ * last bit); the pose, motion, material, filter and sleep come from the live
+ * bodies, and the contact memory from the world (scene_state.h), so that
+ * the text loads into a scene that goes on as this one does.
  */
 #include <math.h>
 #include <stdarg.h>
@@ -75,6 +76,9 @@ static void put_settings(out_t *out, scene_file_t *file, const char *integrator)
         put(out, "\n");
     }
     if (s->game.text[0] != '\0') put(out, "game %s\n", s->game.text);
+    put(out, "sleeping %s\n", scene_get_sleeping(file->scene) ? "on" : "off");
+    unsigned phase = scene_get_sleep_phase(file->scene);
+    if (phase != 0) put(out, "sleep_phase %u\n", phase);
 }
 
 static void put_shape(out_t *out, const sf_shape_t *shape) {
@@ -91,6 +95,7 @@ static void put_shape(out_t *out, const sf_shape_t *shape) {
     default:
         put(out, "    vertices");
         for (size_t i = 0; i < shape->count; i++) put_vector(out, shape->written[i]);
+        if (shape->as_centred) put(out, "\n    centred");
         break;
     }
     put(out, "\n");
@@ -163,10 +168,33 @@ static void put_labels(out_t *out, const sf_doc_t *doc, const sf_body_t *spec, b
         if (own) put(out, " %s", doc->groups[spec->own_group].name.text);
         put(out, "\n");
     }
-    if (spec->has_filter) {
-        put(out, "    filter 0x%08x 0x%08x 0x%08x\n", (unsigned)spec->category,
-            (unsigned)spec->mask, (unsigned)spec->filter_group);
-    }
+}
+
+static void put_filter(out_t *out, uint32_t category, uint32_t mask, uint32_t group) {
+    if (category == 1 && mask == UINT32_MAX && group == 0) return; /* the default */
+    put(out, "    filter 0x%08x 0x%08x 0x%08x\n", (unsigned)category, (unsigned)mask,
+        (unsigned)group);
+}
+
+static void put_live_filter(out_t *out, body_t *body) {
+    uint32_t category, mask, group;
+    body_get_collision_filter(body, &category, &mask, &group);
+    put_filter(out, category, mask, group);
+}
+
+/* The body's sleep: its island's number (SIZE_MAX: awake) and its timer. */
+static void put_sleep(out_t *out, body_t *body, size_t island) {
+    if (island != SIZE_MAX) put(out, "    asleep %zu\n", island);
+    body_sleep_timer_t timer = body_get_sleep_timer(body);
+    if (timer.slow_time == 0.0 && timer.window == 0.0 && is_zero(timer.anchor) &&
+        timer.anchor_angle == 0.0)
+        return;
+    put(out, "    sleep_timer");
+    put_number(out, timer.slow_time);
+    put_number(out, timer.window);
+    put_vector(out, timer.anchor);
+    put_number(out, timer.anchor_angle);
+    put(out, "\n");
 }
 
 static void put_template(out_t *out, const sf_doc_t *doc, const sf_body_t *spec) {
@@ -185,6 +213,7 @@ static void put_template(out_t *out, const sf_doc_t *doc, const sf_body_t *spec)
     };
     put_state(out, &state);
     put_labels(out, doc, spec, false);
+    if (spec->has_filter) put_filter(out, spec->category, spec->mask, spec->filter_group);
     put(out, "}\n");
 }
 
@@ -201,7 +230,8 @@ static state_t live_state(body_t *body) {
     };
 }
 
-static void put_record(out_t *out, const sf_doc_t *doc, const sf_record_t *record) {
+static void put_record(out_t *out, const sf_doc_t *doc, const sf_record_t *record,
+                       size_t island) {
     const sf_body_t *spec = &doc->bodies[record->spec];
     /* Only a single body keeps its name: copies and spawns are anonymous
      * members of the group their block named. */
@@ -212,20 +242,24 @@ static void put_record(out_t *out, const sf_doc_t *doc, const sf_record_t *recor
     state_t state = live_state(record->body);
     put_state(out, &state);
     put_labels(out, doc, spec, true);
+    put_live_filter(out, record->body);
+    put_sleep(out, record->body, island);
     put(out, "}\n");
 }
 
-/* A body the file did not make: its world vertices, at angle 0. */
-static void put_foreign(out_t *out, body_t *body) {
+/* A body the file did not make: its vertices in its own frame, taken as
+ * they are (centred), so that it comes back the same to the bit. */
+static void put_foreign(out_t *out, body_t *body, size_t island) {
     put(out, "\nbody {\n    vertices");
-    polygon_t polygon = body_get_polygon(body);
+    polygon_t polygon = body_get_local_polygon(body);
     for (size_t i = 0; i < polygon.count; i++) put_vector(out, polygon.vertices[i]);
-    put(out, "\n");
+    put(out, "\n    centred\n");
     double mass = body_get_mass(body);
     put_mass(out, isinf(mass) ? MASS_STATIC : MASS_TOTAL, mass);
     state_t state = live_state(body);
-    state.angle = 0.0;
     put_state(out, &state);
+    put_live_filter(out, body);
+    put_sleep(out, body, island);
     put(out, "}\n");
 }
 
@@ -235,9 +269,52 @@ static int compare_by_body(const void *a, const void *b) {
     return x < y ? -1 : x > y;
 }
 
-/* Every body in the scene, in scene order, not marked removed: the records
- * sorted by body address tell the file's bodies from the others. */
-static void put_bodies(out_t *out, scene_file_t *file) {
+/* A body written, with what the file needs to name it. */
+typedef struct {
+    body_t *body;
+    size_t index;          /* its place among the bodies written */
+    sf_record_t *record;   /* NULL for a body the file did not make */
+    size_t island;         /* its island's number, SIZE_MAX when awake */
+} written_t;
+
+static int compare_written(const void *a, const void *b) {
+    uintptr_t x = (uintptr_t)((const written_t *)a)->body;
+    uintptr_t y = (uintptr_t)((const written_t *)b)->body;
+    return x < y ? -1 : x > y;
+}
+
+/* The bodies written: every body in the scene, in scene order, not marked
+ * removed. Returns them in that order; *by_body is the same sorted by body
+ * address, for finding a body's entry. */
+typedef struct {
+    written_t *in_order, *by_body;
+    size_t count;
+} bodies_t;
+
+static written_t *find_written(const bodies_t *bodies, body_t *body) {
+    written_t key = {.body = body};
+    written_t *found = bsearch(&key, bodies->by_body, bodies->count, sizeof key, compare_written);
+    return found != NULL ? &bodies->in_order[found->index] : NULL;
+}
+
+/* Islands are numbered 0, 1, ... in the order their first bodies come. */
+static void number_islands(bodies_t *bodies) {
+    size_t islands = 0;
+    for (size_t i = 0; i < bodies->count; i++) {
+        written_t *w = &bodies->in_order[i];
+        if (w->island != SIZE_MAX || !body_is_sleeping(w->body)) continue;
+        body_t *member = w->body;
+        do {
+            written_t *m = find_written(bodies, member);
+            if (m != NULL) m->island = islands;
+            member = body_get_island_next(member);
+        } while (member != NULL && member != w->body);
+        islands++;
+    }
+}
+
+/* The records sorted by body address tell the file's bodies from the others. */
+static bodies_t list_bodies(scene_file_t *file) {
     sf_record_t **sorted = malloc((file->record_count + 1) * sizeof *sorted);
     if (sorted == NULL) abort();
     size_t live = 0;
@@ -246,19 +323,98 @@ static void put_bodies(out_t *out, scene_file_t *file) {
     }
     qsort(sorted, live, sizeof *sorted, compare_by_body);
     scene_t *scene = file->scene;
-    for (size_t i = 0; i < scene_bodies(scene); i++) {
+    size_t n = scene_bodies(scene);
+    bodies_t bodies = {malloc((n + 1) * sizeof(written_t)), malloc((n + 1) * sizeof(written_t)), 0};
+    if (bodies.in_order == NULL || bodies.by_body == NULL) abort();
+    for (size_t i = 0; i < n; i++) {
         body_t *body = scene_get_body(scene, i);
         if (body_is_removed(body)) continue;
         sf_record_t key_record = {.body = body};
         sf_record_t *key = &key_record;
         sf_record_t **found = bsearch(&key, sorted, live, sizeof *sorted, compare_by_body);
-        if (found != NULL) {
-            put_record(out, &file->doc, *found);
-        } else {
-            put_foreign(out, body);
-        }
+        bodies.in_order[bodies.count] =
+            (written_t){body, bodies.count, found != NULL ? *found : NULL, SIZE_MAX};
+        bodies.count++;
     }
     free(sorted);
+    memcpy(bodies.by_body, bodies.in_order, bodies.count * sizeof(written_t));
+    qsort(bodies.by_body, bodies.count, sizeof(written_t), compare_written);
+    number_islands(&bodies);
+    return bodies;
+}
+
+static void put_bodies(out_t *out, scene_file_t *file, const bodies_t *bodies) {
+    for (size_t i = 0; i < bodies->count; i++) {
+        const written_t *w = &bodies->in_order[i];
+        if (w->record != NULL) {
+            put_record(out, &file->doc, w->record, w->island);
+        } else {
+            put_foreign(out, w->body, w->island);
+        }
+    }
+}
+
+/* ---- The world's contact memory ---------------------------------------------- */
+
+typedef struct {
+    size_t a, b;
+    scene_contact_memory_t memory;
+} numbered_contact_t;
+
+static int compare_numbered(const void *p, const void *q) {
+    const numbered_contact_t *x = p, *y = q;
+    if (x->a != y->a) return x->a < y->a ? -1 : 1;
+    return (x->b > y->b) - (x->b < y->b);
+}
+
+static void put_point(out_t *out, const scene_memory_point_t *p) {
+    put(out, "    point %u", (unsigned)p->id);
+    put_vector(out, p->point);
+    put_number(out, p->separation);
+    put_number(out, p->normal_impulse);
+    put_number(out, p->tangent_impulse);
+    put_number(out, p->restitution_impulse);
+    put_number(out, p->restitution_tangent_impulse);
+    put(out, "\n");
+}
+
+static void put_contact(out_t *out, const numbered_contact_t *c) {
+    const scene_contact_memory_t *m = &c->memory;
+    put(out, "contact %zu %zu {\n    normal", c->a, c->b);
+    put_vector(out, m->normal);
+    put(out, "\n");
+    for (int j = 0; j < m->point_count; j++) put_point(out, &m->points[j]);
+    put(out, "    face %s", m->flip ? "b" : "a");
+    put_vector(out, m->face_normal);
+    put_vector(out, m->face_point);
+    put(out, "%s\n", m->edge_ends ? " edge" : "");
+    for (int j = 0; j < m->feature_count; j++) {
+        put(out, "    incident %u", (unsigned)m->feature_ids[j]);
+        put_vector(out, m->feature_points[j]);
+        put(out, "\n");
+    }
+    put(out, "    pose");
+    put_vector(out, m->pose);
+    put_number(out, m->pose_angle);
+    put(out, "\n}\n");
+}
+
+/* The contacts, by their bodies' places in the file, in that order. */
+static void put_contacts(out_t *out, scene_file_t *file, const bodies_t *bodies) {
+    size_t count = scene_contact_memory_count(file->scene);
+    numbered_contact_t *contacts = malloc((count + 1) * sizeof *contacts);
+    if (contacts == NULL) abort();
+    size_t kept = 0;
+    for (size_t i = 0; i < count; i++) {
+        scene_contact_memory_t m = scene_get_contact_memory(file->scene, i);
+        const written_t *a = find_written(bodies, m.body_a), *b = find_written(bodies, m.body_b);
+        if (a == NULL || b == NULL) continue; /* a body marked removed */
+        contacts[kept++] = (numbered_contact_t){a->index, b->index, m};
+    }
+    qsort(contacts, kept, sizeof *contacts, compare_numbered);
+    if (kept > 0) put(out, "\n");
+    for (size_t i = 0; i < kept; i++) put_contact(out, &contacts[i]);
+    free(contacts);
 }
 
 /* A reference is written unless it names a single body that is gone or
@@ -322,9 +478,13 @@ char *scene_file_write(scene_file_t *file, size_t *length, scene_file_error_t *e
     for (size_t i = 0; i < doc->body_count; i++) {
         if (doc->bodies[i].is_template) put_template(&out, doc, &doc->bodies[i]);
     }
-    put_bodies(&out, file);
+    bodies_t bodies = list_bodies(file);
+    put_bodies(&out, file, &bodies);
     if (doc->statement_count > 0) put(&out, "\n");
     for (size_t i = 0; i < doc->statement_count; i++) put_statement(&out, doc, &doc->statements[i]);
+    put_contacts(&out, file, &bodies);
+    free(bodies.in_order);
+    free(bodies.by_body);
     if (length != NULL) *length = out.length;
     return out.text;
 }

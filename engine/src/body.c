@@ -71,22 +71,36 @@ static body_t *take_vertices(list_t *shape, const char *function) {
     return body;
 }
 
+/* A shape given relative to its centroid may be off it by this share of its
+ * radius: rounding, but not a shape placed elsewhere. */
+static const double CENTRED_TOLERANCE = 1e-3;
+
+/* centred: the vertices are already relative to the centroid and are kept
+ * as they are (body_init_centred). */
 static body_t *body_create(list_t *shape, double mass, rgb_color_t color, void *info,
-                           free_func_t info_freer, const char *function) {
+                           free_func_t info_freer, bool centred, const char *function) {
     if (shape == NULL) engine_fail(function, "shape is NULL");
     check_mass(mass, function);
     body_t *body = take_vertices(shape, function);
     size_t n = body->count;
 
     body->centroid = polygon_array_centroid(body->local_vertices, n);
+    vector_t off = centred ? body->centroid : VEC_ZERO;
+    if (centred) body->centroid = VEC_ZERO;
     for (size_t i = 0; i < n; i++) {
         body->local_vertices[i] = vec_subtract(body->local_vertices[i], body->centroid);
         body->radius = fmax(body->radius, vec_get_length(body->local_vertices[i]));
     }
     /* The centroid's sums grow as the cube of the size: a shape polygon_check
      * accepts can still overflow them. */
-    if (!vec_is_finite(body->centroid) || !isfinite(body->radius)) {
+    if (!vec_is_finite(body->centroid) || !vec_is_finite(off) || !isfinite(body->radius)) {
         engine_fail(function, "bad shape: polygon is too large: its centroid is not finite");
+    }
+    if (vec_get_length(off) > CENTRED_TOLERANCE * body->radius) {
+        engine_fail(function,
+                    "bad shape: its centroid (%g, %g) is not at the origin (within %g of its "
+                    "radius %g m)",
+                    off.x, off.y, CENTRED_TOLERANCE, body->radius);
     }
     for (size_t i = 0; i < n; i++) {
         vector_t edge = vec_subtract(body->local_vertices[(i + 1) % n], body->local_vertices[i]);
@@ -107,15 +121,26 @@ static body_t *body_create(list_t *shape, double mass, rgb_color_t color, void *
 
 body_t *body_init_with_info(list_t *shape, double mass, rgb_color_t color, void *info,
                             free_func_t info_freer) {
-    return body_create(shape, mass, color, info, info_freer, __func__);
+    return body_create(shape, mass, color, info, info_freer, false, __func__);
 }
 
 body_t *body_init(list_t *shape, double mass, rgb_color_t color) {
-    return body_create(shape, mass, color, NULL, NULL, __func__);
+    return body_create(shape, mass, color, NULL, NULL, false, __func__);
+}
+
+body_t *body_init_centred(list_t *shape, double mass, rgb_color_t color, void *info,
+                          free_func_t info_freer) {
+    return body_create(shape, mass, color, info, info_freer, true, __func__);
 }
 
 void body_free(body_t *body) {
     REQUIRE_NOT_NULL(body);
+    REQUIRE(!body->in_scene,
+            "body belongs to a scene, which frees it: mark it with body_remove instead (the "
+            "scene frees it at the end of the next scene_tick)");
+    REQUIRE(body->scene == NULL,
+            "body is named by a force creator of a scene: add it to that scene (which then "
+            "frees it), or free it after scene_free of that scene");
     body_wake(body);
     if (body->info_freer != NULL) body->info_freer(body->info);
     memory_free(body);
@@ -155,6 +180,11 @@ polygon_t body_get_polygon(body_t *body) {
     REQUIRE_NOT_NULL(body);
     body_update_world(body);
     return (polygon_t){body->count, body->world_vertices, body->world_normals};
+}
+
+polygon_t body_get_local_polygon(body_t *body) {
+    REQUIRE_NOT_NULL(body);
+    return (polygon_t){body->count, body->local_vertices, body->local_normals};
 }
 
 aabb_t body_get_bounds(body_t *body) {
@@ -204,6 +234,15 @@ void body_wake(body_t *body) {
     } while (member != NULL && member != body);
 }
 
+void body_mark_changed(body_t *body) {
+    if (!body->changed) {
+        body_update_world(body);
+        body->changed_bounds = body->bounds;
+        body->changed = true;
+    }
+    body_wake(body);
+}
+
 bool body_is_sleeping(body_t *body) {
     REQUIRE_NOT_NULL(body);
     return body->asleep;
@@ -212,24 +251,24 @@ bool body_is_sleeping(body_t *body) {
 void body_set_centroid(body_t *body, vector_t x) {
     REQUIRE_NOT_NULL(body);
     REQUIRE_FINITE_VECTOR(x);
+    body_mark_changed(body); /* before: its box there is needed */
     body->centroid = x;
     body->world_valid = false;
-    body_wake(body);
 }
 
 void body_set_velocity(body_t *body, vector_t v) {
     REQUIRE_NOT_NULL(body);
     REQUIRE_FINITE_VECTOR(v);
     body->velocity = v;
-    body_wake(body);
+    body_mark_changed(body);
 }
 
 void body_set_rotation(body_t *body, double angle) {
     REQUIRE_NOT_NULL(body);
     REQUIRE_FINITE(angle);
+    body_mark_changed(body);
     body->angle = angle;
     body->world_valid = false;
-    body_wake(body);
 }
 
 void body_set_color(body_t *body, rgb_color_t color) {
@@ -335,7 +374,7 @@ void body_reset(body_t *body) {
 void body_remove(body_t *body) {
     REQUIRE_NOT_NULL(body);
     body->removed = true;
-    body_wake(body);
+    body_mark_changed(body);
 }
 
 bool body_is_removed(body_t *body) {
@@ -352,7 +391,7 @@ void body_set_angular_velocity(body_t *body, double omega) {
     REQUIRE_NOT_NULL(body);
     REQUIRE_FINITE(omega);
     body->angular_velocity = omega;
-    body_wake(body);
+    body_mark_changed(body);
 }
 
 double body_get_inertia(body_t *body) {
@@ -367,7 +406,7 @@ void body_set_inertia(body_t *body, double inertia) {
             inertia);
     body->inertia = inertia;
     body->inverse_inertia = isinf(inertia) ? 0.0 : 1.0 / inertia;
-    body_wake(body);
+    body_mark_changed(body);
 }
 
 double body_get_elasticity(body_t *body) {
@@ -379,6 +418,7 @@ void body_set_elasticity(body_t *body, double elasticity) {
     REQUIRE_NOT_NULL(body);
     REQUIRE(isfinite(elasticity) && elasticity >= 0.0,
             "elasticity must be finite and >= 0 (got %g)", elasticity);
+    if (elasticity != body->elasticity) body_mark_changed(body);
     body->elasticity = elasticity;
 }
 
@@ -391,6 +431,7 @@ void body_set_friction(body_t *body, double friction) {
     REQUIRE_NOT_NULL(body);
     REQUIRE(isfinite(friction) && friction >= 0.0, "friction must be finite and >= 0 (got %g)",
             friction);
+    if (friction != body->friction) body_mark_changed(body);
     body->friction = friction;
 }
 
@@ -399,7 +440,15 @@ void body_set_collision_filter(body_t *body, uint32_t category, uint32_t mask, u
     body->category = category;
     body->mask = mask;
     body->group = group;
-    body_wake(body);
+    body_mark_changed(body);
+}
+
+void body_get_collision_filter(body_t *body, uint32_t *category, uint32_t *mask,
+                               uint32_t *group) {
+    REQUIRE_NOT_NULL(body);
+    if (category != NULL) *category = body->category;
+    if (mask != NULL) *mask = body->mask;
+    if (group != NULL) *group = body->group;
 }
 
 bool body_contains_point(body_t *body, vector_t point) {

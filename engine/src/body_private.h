@@ -35,6 +35,13 @@ struct body {
     uint32_t contact_first, contact_count;
     uint32_t gap_first, gap_count;
     uint32_t contact_step;
+    /* Seams (seams.h), in what was padding: whether the world's last
+     * search for seams counted this body as static (the world checks such
+     * bodies, and static ones, for change while it loads them), and whether
+     * a flush static neighbour covers or continues a part of its boundary
+     * (read for every pair the narrowphase searches). */
+    bool seam_listed;
+    bool has_seams;
     /* Largest distance from the centroid to a vertex (m). */
     double radius;
     double friction;
@@ -52,6 +59,11 @@ struct body {
      * (NULL when awake); sleep_time is how long the body has been slow (s),
      * sleep_anchor and sleep_anchor_angle where it was sleep_window (s) ago. */
     bool asleep;
+    /* Changed since the world last stepped it (body_mark_changed): the world
+     * wakes, at the start of its next step, the sleeping islands that
+     * changed_bounds (its box before the first such change) or its box now
+     * touches. */
+    bool changed;
     /* Whether a scene owns the body (a body belongs to one scene, once). */
     bool in_scene;
     uint32_t category, mask, group;
@@ -66,6 +78,7 @@ struct body {
     vector_t sleep_anchor;
     double sleep_anchor_angle;
     struct body *sleep_next;
+    aabb_t changed_bounds;
 
     double mass, inertia;
     rgb_color_t color;
@@ -75,6 +88,10 @@ struct body {
      * it is added); NULL for neither. A force creator of one scene must not
      * read a body that another scene frees. */
     struct scene *scene;
+
+    /* What the last search for seams found of a listed body (seams.h; the
+     * world owns it). */
+    struct seam_record *seam;
 
     /* Shape in the body frame, relative to the centroid, counter-clockwise. */
     vector_t *local_vertices;
@@ -86,6 +103,13 @@ struct body {
 
 /* Wakes the body and every body of its sleeping island. */
 void body_wake(body_t *body);
+
+/* A change that sleeping bodies around the body must see (its pose,
+ * velocity, mass, material or filter set, its removal, its arrival in a
+ * scene): wakes its island now, and marks it changed so that the world
+ * wakes the islands its box touched before the change or touches after it
+ * (a static body has no island of its own, but holds others up). */
+void body_mark_changed(body_t *body);
 
 /* Adds a force already checked (body_add_force checks the caller's;
  * forces.c checks its own): a nonzero push keeps the body awake. */

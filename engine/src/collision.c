@@ -2,6 +2,7 @@
 #include <math.h>
 #include "body_private.h"
 #include "check.h"
+#include "collision_private.h"
 
 typedef struct {
     double min;
@@ -62,4 +63,22 @@ collision_info_t find_collision(body_t *body1, body_t *body2) {
     info.collided = true;
     info.depth = least_overlap;
     return info;
+}
+
+/* The largest gap between the projections on the normals of owner. */
+static double gap_on_normals_of(const body_t *owner, const body_t *body1, const body_t *body2) {
+    double gap = -INFINITY;
+    for (size_t i = 0; i < owner->count; i++) {
+        vector_t normal = owner->world_normals[i];
+        projection_t p1 = project(body1, normal);
+        projection_t p2 = project(body2, normal);
+        gap = fmax(gap, fmax(p2.min - p1.max, p1.min - p2.max));
+    }
+    return gap;
+}
+
+double collision_separation(body_t *body1, body_t *body2) {
+    body_update_world(body1);
+    body_update_world(body2);
+    return fmax(gap_on_normals_of(body1, body1, body2), gap_on_normals_of(body2, body1, body2));
 }

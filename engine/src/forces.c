@@ -6,7 +6,7 @@
 #include <stdio.h>
 #include "body_private.h"
 #include "check.h"
-#include "collision.h"
+#include "collision_event.h"
 #include "forces_private.h"
 #include "integrator.h"
 #include "memory.h"
@@ -82,31 +82,35 @@ static void add_pair_force_creator(scene_t *scene, force_creator_t forcer, doubl
     add_pair_aux(scene, forcer, (pair_aux_t){constant, body1, body2, scene, 0.0});
 }
 
-static void newtonian_gravity(void *data) {
-    pair_aux_t *aux = data;
-    vector_t r = vec_subtract(aux->body2->centroid, aux->body1->centroid);
+void forces_gravity_between(scene_t *scene, double G, body_t *body1, body_t *body2) {
+    vector_t r = vec_subtract(body2->centroid, body1->centroid);
     double distance = vec_get_length(r);
     if (distance < GRAVITY_MIN_DISTANCE) return;
-    double m1 = aux->body1->mass, m2 = aux->body2->mass;
-    double magnitude = aux->constant * m1 * m2 / (distance * distance);
+    double m1 = body1->mass, m2 = body2->mass;
+    double magnitude = G * m1 * m2 / (distance * distance);
     vector_t force = vec_multiply(magnitude / distance, r);
     if (!vec_is_finite(force)) {
         /* An INFINITY mass makes it inf or NaN: the pull would be infinite
          * and is left out (documented), tested here off the common path. */
         if (isinf(m1) || isinf(m2)) return;
         /* G m1 m2 overflows long before the force does for huge masses. */
-        double scaled = aux->constant * (m1 / distance) * (m2 / distance);
+        double scaled = G * (m1 / distance) * (m2 / distance);
         force = vec_multiply(scaled, vec_multiply(1.0 / distance, r));
     }
     if (!vec_is_finite(force)) {
         fail_force("newtonian gravity between %s and %s (G = %g N m^2/kg^2): force is not "
                    "finite (masses %g kg and %g kg, distance %g m); likely cause: the bodies "
                    "came too close for their masses: G m1 m2 / r^2 exceeds the largest double",
-                   body_name(aux->scene, aux->body1).text,
-                   body_name(aux->scene, aux->body2).text, aux->constant, m1, m2, distance);
+                   body_name(scene, body1).text, body_name(scene, body2).text, G, m1, m2,
+                   distance);
     }
-    body_push(aux->body1, force);
-    body_push(aux->body2, vec_negate(force));
+    body_push(body1, force);
+    body_push(body2, vec_negate(force));
+}
+
+static void newtonian_gravity(void *data) {
+    pair_aux_t *aux = data;
+    forces_gravity_between(aux->scene, aux->constant, aux->body1, aux->body2);
 }
 
 void create_newtonian_gravity(scene_t *scene, double G, body_t *body1, body_t *body2) {
@@ -186,12 +190,6 @@ static int describe_spring(const pair_aux_t *aux, char *message, size_t size) {
 
 static void spring(void *data);
 static void spring_with_length(void *data);
-
-static void collision_force_creator(void *data);
-
-bool forces_is_event(force_creator_t forcer) {
-    return forcer == collision_force_creator;
-}
 
 bool forces_is_positional(force_creator_t forcer) {
     return forcer == spring || forcer == spring_with_length || forcer == newtonian_gravity;
@@ -316,123 +314,15 @@ void create_drag(scene_t *scene, double gamma, body_t *body) {
 }
 
 typedef struct {
-    scene_t *scene;
+    collision_rule_t rule;
     body_t *body1;
     body_t *body2;
-    collision_handler_t handler;
-    void *aux;
-    double force_const;
-    bool colliding;
-    /* The pair slept at the last step, which computed no contact for it. */
-    bool slept;
+    collision_state_t state;
 } collision_aux_t;
-
-/* The vertex of `body` deepest along -axis: where body2 reaches furthest into
- * body1 for body = body2 and axis from body1 toward body2. */
-static vector_t deepest_vertex(body_t *body, vector_t axis) {
-    body_update_world(body);
-    vector_t deepest = body->world_vertices[0];
-    for (size_t i = 1; i < body->count; i++) {
-        if (vec_dot(body->world_vertices[i], axis) < vec_dot(deepest, axis)) {
-            deepest = body->world_vertices[i];
-        }
-    }
-    return deepest;
-}
-
-static void record_seed_collision(collision_aux_t *aux, collision_info_t info,
-                                  vector_t body2_impulse_before) {
-    vector_t applied = vec_subtract(aux->body2->impulse, body2_impulse_before);
-    contact_t entry = {
-        .kind = CONTACT_SEED,
-        .touching = true,
-        .body1 = aux->body1,
-        .body2 = aux->body2,
-        .axis = info.axis,
-        .point_count = 1,
-        .points = {deepest_vertex(aux->body2, info.axis)},
-        .separation = {-info.depth},
-        .normal_impulse = {vec_dot(applied, info.axis)},
-    };
-    scene_record_contact(aux->scene, &entry);
-}
-
-/* The seed's rule: the handler runs when find_collision starts finding an
- * overlap. */
-static void seed_collision(collision_aux_t *aux) {
-    collision_info_t info = find_collision(aux->body1, aux->body2);
-    if (!info.collided) {
-        aux->colliding = false;
-        return;
-    }
-    if (aux->colliding) return;
-    aux->colliding = true;
-    vector_t body2_impulse_before = aux->body2->impulse;
-    aux->handler(aux->body1, aux->body2, info.axis, aux->aux, aux->force_const);
-    record_seed_collision(aux, info, body2_impulse_before);
-}
-
-/* With world contacts, a pair counts as parted (its handler may fire again)
- * once every point of its contact is further apart than this (m), or it has
- * no contact. Not at any positive separation: bodies that move on together
- * after a meeting hover at separations of rounding size (1e-16 m) on either
- * side of zero, which would call the handler again every few steps. 1 mm is
- * the overlap the solver leaves between resting bodies (its slop): far
- * above rounding, and bodies parting faster than 6 cm/s open more than that
- * in one step of 1/60 s. */
-static const double PARTING_DISTANCE = 0.001;
-
-static bool parted(const contact_t *contact) {
-    for (size_t i = 0; i < contact->point_count; i++) {
-        if (contact->separation[i] <= PARTING_DISTANCE) return false;
-    }
-    return true;
-}
-
-/* A pair that world contacts resolve: the solver stops a fast pair at the
- * surface before it overlaps, so an overlap test would miss the meeting.
- * The handler runs when the world's contact of the pair starts touching
- * instead, read from the last step (this is stage 1, before this step's
- * contacts exist). */
-static void world_collision(collision_aux_t *aux) {
-    /* A sleeping pair keeps its state: no contact is computed for it, nor
-     * in the step it slept through when it wakes. */
-    if (aux->body1->asleep || aux->body2->asleep) {
-        aux->slept = true;
-        return;
-    }
-    contact_t contact;
-    bool found = scene_world_pair_contact(aux->scene, aux->body1, aux->body2, &contact);
-    if (aux->slept) {
-        aux->slept = false;
-        if (!found) return;
-    }
-    if (!found || !contact.touching) {
-        /* Apart by no more than PARTING_DISTANCE: still together. */
-        if (!found || parted(&contact)) aux->colliding = false;
-        return;
-    }
-    if (aux->colliding) return;
-    aux->colliding = true;
-    vector_t body2_impulse_before = aux->body2->impulse;
-    aux->handler(aux->body1, aux->body2, contact.axis, aux->aux, aux->force_const);
-    /* Where and how far apart the world found them, with the handler's
-     * impulse in place of the solver's. */
-    vector_t applied = vec_subtract(aux->body2->impulse, body2_impulse_before);
-    contact.kind = CONTACT_SEED;
-    contact.normal_impulse[0] = vec_dot(applied, contact.axis);
-    contact.normal_impulse[1] = 0.0;
-    contact.tangent_impulse[0] = contact.tangent_impulse[1] = 0.0;
-    scene_record_contact(aux->scene, &contact);
-}
 
 static void collision_force_creator(void *data) {
     collision_aux_t *aux = data;
-    if (scene_world_resolves(aux->scene, aux->body1, aux->body2)) {
-        world_collision(aux);
-    } else {
-        seed_collision(aux);
-    }
+    collision_event_read(&aux->rule, aux->body1, aux->body2, &aux->state);
 }
 
 void create_collision(scene_t *scene, body_t *body1, body_t *body2,
@@ -444,13 +334,14 @@ void create_collision(scene_t *scene, body_t *body1, body_t *body2,
     REQUIRE(body1 != body2, "a body cannot collide with itself");
     claim_pair(scene, body1, body2, __func__);
     collision_aux_t *collision = memory_alloc(sizeof(collision_aux_t));
-    *collision = (collision_aux_t){scene, body1, body2, handler, aux, force_const, false, false};
-    scene_add_bodies_force_creator(scene, collision_force_creator, collision,
-                                   bodies_list(body1, body2), memory_free);
+    *collision = (collision_aux_t){{scene, handler, aux, force_const}, body1, body2, {0}};
+    scene_creator_t creator = {collision_force_creator, collision, memory_free,
+                               bodies_list(body1, body2), true, NULL};
+    scene_add_creator(scene, &creator);
 }
 
-static void destructive_collision_handler(body_t *body1, body_t *body2, vector_t axis, void *aux,
-                                          double force_const) {
+void destructive_collision_handler(body_t *body1, body_t *body2, vector_t axis, void *aux,
+                                   double force_const) {
     (void)axis, (void)aux, (void)force_const;
     body_remove(body1);
     body_remove(body2);

@@ -2,16 +2,17 @@
 #define FORCES_PRIVATE_H
 
 /* What the scene needs from forces.c to explain a tick whose integration
- * overflowed: the springs, which bound the stable dt. */
+ * overflowed (the springs, which bound the stable dt), and the force that
+ * the gravity groups share with create_newtonian_gravity. */
 
 #include <stdbool.h>
 #include <stddef.h>
+#include "body.h"
 #include "scene.h"
 
-/* Whether the force creator is an event of the step (a collision of
- * create_collision and its kin) rather than a force: a multi-stage
- * integrator calls it at the first stage only. */
-bool forces_is_event(force_creator_t forcer);
+/* Newtonian gravity between the pair, as create_newtonian_gravity applies
+ * it (a force that is not finite stops scene_tick, naming the pair). */
+void forces_gravity_between(scene_t *scene, double G, body_t *body1, body_t *body2);
 
 /* Whether the force creator's forces depend on its bodies' centroids and
  * masses alone, and it adds nothing else (no impulse, torque or event):

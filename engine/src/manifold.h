@@ -10,6 +10,9 @@
  * Points are reported while the separation is at most `margin` (metres), so
  * the solver sees contacts that are about to form (speculative contacts) and
  * can stop bodies before they touch instead of after they overlap.
+ *
+ * Against a static body with flush static neighbours (seams.h), the contact
+ * keeps to the faces of their combined surface, as against one body.
  */
 
 #include <stdint.h>
@@ -47,6 +50,10 @@ typedef struct {
     /* Both points are the incident edge's own ends (no clipping cut it):
      * the edge lies on the reference face. */
     bool edge_ends;
+    /* The reference face is one of a run of flush static faces (seams.h):
+     * which face of the run holds the contact depends on where the other
+     * body is, so the features are not reused from step to step. */
+    bool on_run;
     int point_count;
     vector_t normal;     /* reference frame */
     vector_t face_point; /* reference frame */

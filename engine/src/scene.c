@@ -11,13 +11,8 @@
 #include "workers.h"
 #include "world.h"
 
-typedef struct {
-    force_creator_t forcer;
-    void *aux;
-    free_func_t freer;
-    /* The bodies the force creator depends on; NULL for none. */
-    list_t *bodies;
-} force_entry_t;
+/* A force creator, as scene_add_creator takes it (scene_private.h). */
+typedef scene_creator_t force_entry_t;
 
 struct scene {
     body_t **bodies;
@@ -45,6 +40,9 @@ struct scene {
     size_t stage_force_count;
     /* The dt of the tick in progress, for the message of one that fails. */
     double dt;
+    /* "scene_tick" or "scene_free" while one runs (and calls back), else
+     * NULL: what may not be called back into then (scene_require_idle). */
+    const char *running;
 
     /* The world contact pipeline and its functions; NULL while contacts
      * are off. */
@@ -79,9 +77,10 @@ static void free_body_list(list_t *bodies) {
     list_free(bodies);
 }
 
-static void force_entry_free(force_entry_t *entry) {
-    if (entry->freer != NULL) entry->freer(entry->aux);
-    free_body_list(entry->bodies);
+/* By value: its freer may add force creators, which moves the array. */
+static void force_entry_free(force_entry_t entry) {
+    if (entry.freer != NULL) entry.freer(entry.aux);
+    free_body_list(entry.bodies);
 }
 
 /* Whether the body is another scene's, owned or named by its force
@@ -102,12 +101,30 @@ static void release_unowned_bodies(scene_t *scene) {
     }
 }
 
+void scene_require_idle(const scene_t *scene, const char *function, const char *instead) {
+    if (scene->running == NULL) return;
+    engine_fail(function,
+                "called inside %s of the same scene (by a force creator, collision handler or "
+                "freer it ran), which is still using the scene; %s",
+                scene->running, instead);
+}
+
+/* A body the scene owns, freed by the scene (body_free refuses a body that
+ * is still a scene's). */
+static void free_owned_body(body_t *body) {
+    body->scene = NULL;
+    body->in_scene = false;
+    body_free(body);
+}
+
 void scene_free(scene_t *scene) {
     REQUIRE_NOT_NULL(scene);
+    scene_require_idle(scene, __func__, "free the scene after scene_tick returns");
+    scene->running = "scene_free";
     scene_install_world(scene, NULL, NULL);
     release_unowned_bodies(scene);
-    for (size_t i = 0; i < scene->force_count; i++) force_entry_free(&scene->forces[i]);
-    for (size_t i = 0; i < scene->body_count; i++) body_free(scene->bodies[i]);
+    for (size_t i = 0; i < scene->force_count; i++) force_entry_free(scene->forces[i]);
+    for (size_t i = 0; i < scene->body_count; i++) free_owned_body(scene->bodies[i]);
     memory_free(scene->forces);
     memory_free(scene->bodies);
     memory_free(scene->record);
@@ -143,6 +160,7 @@ void scene_add_body(scene_t *scene, body_t *body) {
                    sizeof(body_t *));
     body->id = scene->next_body_id++;
     scene->bodies[scene->body_count++] = body;
+    body_mark_changed(body); /* sleeping bodies it lands in wake */
 }
 
 void scene_remove_body(scene_t *scene, size_t index) {
@@ -152,12 +170,16 @@ void scene_remove_body(scene_t *scene, size_t index) {
     body_remove(scene->bodies[index]);
 }
 
-static void add_force_entry(scene_t *scene, force_creator_t forcer, void *aux, list_t *bodies,
-                            free_func_t freer) {
+void scene_add_creator(scene_t *scene, const scene_creator_t *creator) {
     memory_reserve((void **)&scene->forces, &scene->force_capacity, scene->force_count + 1,
                    sizeof(force_entry_t));
-    scene->forces[scene->force_count++] = (force_entry_t){forcer, aux, freer, bodies};
+    scene->forces[scene->force_count++] = *creator;
     scene->forces_version++;
+}
+
+static void add_force_entry(scene_t *scene, force_creator_t forcer, void *aux, list_t *bodies,
+                            free_func_t freer) {
+    scene_add_creator(scene, &(scene_creator_t){forcer, aux, freer, bodies, false, NULL});
 }
 
 void scene_add_force_creator(scene_t *scene, force_creator_t forcer, void *aux,
@@ -184,14 +206,38 @@ void scene_add_bodies_force_creator(scene_t *scene, force_creator_t forcer, void
     add_force_entry(scene, forcer, aux, bodies, freer);
 }
 
+void scene_require_added(const scene_t *scene, const body_t *body, const char *function,
+                         const char *name, size_t index) {
+    char label[64];
+    if (index == SIZE_MAX) {
+        snprintf(label, sizeof label, "%s", name);
+    } else {
+        snprintf(label, sizeof label, "%s[%zu]", name, index);
+    }
+    if (body == NULL) engine_fail(function, "%s is NULL", label);
+    if (!body->in_scene || body->scene != scene) {
+        engine_fail(function, "%s is not in the scene (add it with scene_add_body first)", label);
+    }
+}
+
 void scene_claim_body(scene_t *scene, body_t *body, const char *name, const char *function) {
     if (belongs_elsewhere(scene, body)) engine_fail(function, "%s belongs to another scene", name);
     body->scene = scene;
 }
 
+/* What scene_require_idle says for the settings a tick is running with. */
+static const char *const SETTING_ADVICE = "change the setting between ticks";
+
 void scene_set_gravity(scene_t *scene, vector_t gravity) {
     REQUIRE_NOT_NULL(scene);
     REQUIRE_FINITE_VECTOR(gravity);
+    if (gravity.x != scene->gravity.x || gravity.y != scene->gravity.y) {
+        /* Gravity pulls every body of finite mass: none may rest as it was. */
+        for (size_t i = 0; i < scene->body_count; i++) {
+            body_t *body = scene->bodies[i];
+            if (body->asleep && body->inverse_mass > 0.0) body_wake(body);
+        }
+    }
     scene->gravity = gravity;
 }
 
@@ -202,6 +248,7 @@ vector_t scene_get_gravity(scene_t *scene) {
 
 void scene_set_integrator(scene_t *scene, integrator_t integrator) {
     REQUIRE_NOT_NULL(scene);
+    scene_require_idle(scene, __func__, SETTING_ADVICE);
     REQUIRE((unsigned)integrator < INTEGRATOR_COUNT, "unknown integrator %d", (int)integrator);
     scene->integrator = integrator;
 }
@@ -224,6 +271,7 @@ static void wake_all(scene_t *scene) {
 
 void scene_set_sleeping(scene_t *scene, bool enabled) {
     REQUIRE_NOT_NULL(scene);
+    scene_require_idle(scene, __func__, SETTING_ADVICE);
     scene->sleeping = enabled;
     if (!enabled) wake_all(scene);
 }
@@ -240,6 +288,15 @@ void scene_install_world(scene_t *scene, world_t *world, const world_ops_t *ops)
     scene->world_ops = ops;
 }
 
+world_t *scene_world(const scene_t *scene, const world_ops_t **ops) {
+    *ops = scene->world_ops;
+    return scene->world;
+}
+
+body_t **scene_body_array(const scene_t *scene) {
+    return scene->bodies;
+}
+
 void scene_get_iterations(const scene_t *scene, size_t *velocity_iterations,
                           size_t *position_iterations) {
     *velocity_iterations = scene->velocity_iterations;
@@ -254,6 +311,7 @@ bool scene_get_contacts_enabled(scene_t *scene) {
 void scene_set_solver_iterations(scene_t *scene, size_t velocity_iterations,
                                  size_t position_iterations) {
     REQUIRE_NOT_NULL(scene);
+    scene_require_idle(scene, __func__, SETTING_ADVICE);
     REQUIRE(velocity_iterations >= 1 && velocity_iterations <= 1000,
             "velocity_iterations must be in [1, 1000] (got %zu)", velocity_iterations);
     REQUIRE(position_iterations >= 1 && position_iterations <= 1000,
@@ -267,6 +325,7 @@ void scene_set_solver_iterations(scene_t *scene, size_t velocity_iterations,
 
 void scene_set_workers(scene_t *scene, size_t workers) {
     REQUIRE_NOT_NULL(scene);
+    scene_require_idle(scene, __func__, SETTING_ADVICE);
     REQUIRE(workers >= 1 && workers <= SCENE_MAX_WORKERS, "workers must be in [1, %d] (got %zu)",
             SCENE_MAX_WORKERS, workers);
     scene->workers = workers;
@@ -316,6 +375,18 @@ void scene_record_contact(scene_t *scene, const contact_t *entry) {
     scene->record[scene->record_count++] = *entry;
 }
 
+void scene_count_broadphase_tests(scene_t *scene, size_t tests) {
+    scene->stats.broadphase_tests += tests;
+}
+
+size_t scene_world_contact_count(const scene_t *scene) {
+    return scene->world != NULL ? scene->world_ops->contact_count(scene->world) : 0;
+}
+
+contact_t scene_world_get_contact(const scene_t *scene, size_t index) {
+    return scene->world_ops->get_contact(scene->world, index);
+}
+
 bool scene_world_resolves(const scene_t *scene, const body_t *body1, const body_t *body2) {
     return scene->world != NULL && scene->world_ops->pair_collides(body1, body2);
 }
@@ -355,7 +426,7 @@ static void stage_forces_again(void *context) {
     scene->stats.force_evaluations++;
     for (size_t i = 0; i < scene->stage_force_count; i++) {
         const force_entry_t *entry = &scene->forces[i];
-        if (!forces_is_event(entry->forcer)) entry->forcer(entry->aux);
+        if (!entry->event) entry->forcer(entry->aux);
     }
 }
 
@@ -403,6 +474,9 @@ static const integrator_motion_t *stage_motion(scene_t *scene, integrator_step_t
         scene->stage_force_count = scene->force_count;
     } else if (scene->force_count > 0) {
         stage_forces(scene);
+    }
+    if (scene->world != NULL && scene->sleeping) {
+        scene->world_ops->wake_changed(scene->world, scene->bodies, scene->body_count, step->dt);
     }
     if (one_stage && scene->world == NULL) return NULL;
     memory_reserve((void **)&scene->motions, &scene->motion_capacity, scene->body_count,
@@ -522,12 +596,14 @@ static void forget_removed_in_record(scene_t *scene) {
 static void stage_reap(scene_t *scene) {
     size_t kept = 0;
     for (size_t i = 0; i < scene->force_count; i++) {
-        force_entry_t *entry = &scene->forces[i];
-        if (depends_on_removed_body(entry)) {
+        /* A copy: a freer may add force creators (they are kept too). */
+        force_entry_t entry = scene->forces[i];
+        if (entry.forget != NULL) entry.forget(entry.aux);
+        if (depends_on_removed_body(&entry)) {
             force_entry_free(entry);
             scene->forces_version++;
         } else {
-            scene->forces[kept++] = *entry;
+            scene->forces[kept++] = entry;
         }
     }
     scene->force_count = kept;
@@ -537,7 +613,7 @@ static void stage_reap(scene_t *scene) {
     for (size_t i = 0; i < scene->body_count; i++) {
         body_t *body = scene->bodies[i];
         if (body->removed) {
-            body_free(body);
+            free_owned_body(body);
             scene->stats.removed_bodies++;
         } else {
             scene->bodies[kept++] = body;
@@ -546,16 +622,17 @@ static void stage_reap(scene_t *scene) {
     scene->body_count = kept;
 }
 
-void scene_tick(scene_t *scene, double dt) {
-    REQUIRE_NOT_NULL(scene);
-    REQUIRE(isfinite(dt) && dt >= 0.0, "dt must be finite and >= 0 (got %g)", dt);
+static void tick(scene_t *scene, double dt) {
     scene->record_count = 0;
     scene->record_needs_world = false;
     scene->stats = (scene_stats_t){0};
     scene->dt = dt;
     if (dt == 0.0) {
         /* No time passes, so nothing may move or collide; the caller only
-         * wants the pending removals applied (a paused game). */
+         * wants the pending removals applied (a paused game). The world
+         * keeps its last contacts and its sleepers for the next step, but
+         * forgets the bodies about to be freed. */
+        if (scene->world != NULL) scene->world_ops->forget_removed(scene->world);
         stage_reap(scene);
         return;
     }
@@ -570,4 +647,13 @@ void scene_tick(scene_t *scene, double dt) {
         scene->record_needs_world = true;
     }
     if (stage_integrate(scene, &step, motions)) stage_reap(scene);
+}
+
+void scene_tick(scene_t *scene, double dt) {
+    REQUIRE_NOT_NULL(scene);
+    scene_require_idle(scene, __func__, "tick the scene again after scene_tick returns");
+    REQUIRE(isfinite(dt) && dt >= 0.0, "dt must be finite and >= 0 (got %g)", dt);
+    scene->running = __func__;
+    tick(scene, dt);
+    scene->running = NULL;
 }

@@ -6,12 +6,14 @@
 
 static const world_ops_t WORLD_OPS = {
     world_free,         world_set_iterations, world_set_workers,   world_for_bodies,
-    world_step,         world_contact_count,  world_get_contact,   world_pair_collides,
-    world_pair_contact,
+    world_wake_changed, world_step,           world_contact_count, world_get_contact,
+    world_pair_collides, world_pair_contact,  world_get_memory,    world_restore_memory,
+    world_forget_removed, world_get_sleep_phase, world_set_sleep_phase, world_index_sleepers,
 };
 
 void scene_set_contacts_enabled(scene_t *scene, bool enabled) {
     REQUIRE_NOT_NULL(scene);
+    scene_require_idle(scene, __func__, "change the setting between ticks");
     if (enabled == scene_get_contacts_enabled(scene)) return;
     if (!enabled) {
         scene_install_world(scene, NULL, NULL);

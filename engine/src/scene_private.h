@@ -5,8 +5,46 @@
 
 #include "contact.h"
 #include "scene.h"
+#include "scene_state.h"
 #include "workers.h"
 #include "world.h"
+
+/* Stops the program, naming `function`, when it was called back from
+ * inside scene_tick or scene_free of this scene, which are still using it;
+ * `instead` says what to do. */
+void scene_require_idle(const scene_t *scene, const char *function, const char *instead);
+
+/* A force creator with what scene.h's cannot say. An event of the step (a
+ * collision of forces.h) is called at the first stage of a multi-stage
+ * integrator only. forget, when not NULL, is called with aux in every reap
+ * before the removed bodies are freed: a creator over a group of bodies
+ * lets go of its removed ones there instead of being dropped (its bodies
+ * list is then NULL). */
+typedef struct {
+    force_creator_t forcer;
+    void *aux;
+    free_func_t freer;
+    list_t *bodies; /* the bodies it depends on; NULL for none */
+    bool event;
+    void (*forget)(void *aux);
+} scene_creator_t;
+
+void scene_add_creator(scene_t *scene, const scene_creator_t *creator);
+
+/* Stops the program, naming `function` and the body (`name`, or
+ * name[index] when index is not SIZE_MAX), unless the body is in the
+ * scene: a group orders its members by when they joined and owns none. */
+void scene_require_added(const scene_t *scene, const body_t *body, const char *function,
+                         const char *name, size_t index);
+
+/* Adds the number of bounding-box comparisons a collision group made to
+ * the tick's scene_stats_t.broadphase_tests. */
+void scene_count_broadphase_tests(scene_t *scene, size_t tests);
+
+/* The world contacts of the last step (none while contacts are off), as
+ * scene_get_contact gives them: between ticks and in stage 1. */
+size_t scene_world_contact_count(const scene_t *scene);
+contact_t scene_world_get_contact(const scene_t *scene, size_t index);
 
 /* Appends an entry to the record of the tick in progress. */
 void scene_record_contact(scene_t *scene, const contact_t *entry);
@@ -28,17 +66,30 @@ typedef struct {
                            size_t position_iterations);
     void (*set_workers)(world_t *world, size_t workers);
     void (*for_bodies)(world_t *world, size_t count, workers_fn_t fn, void *context);
+    void (*wake_changed)(world_t *world, body_t **bodies, size_t count, double dt);
     void (*step)(world_t *world, body_t **bodies, integrator_motion_t *motions, size_t count,
                  const world_step_t *step, scene_stats_t *stats);
     size_t (*contact_count)(const world_t *world);
     contact_t (*get_contact)(const world_t *world, size_t index);
     bool (*pair_collides)(const body_t *body1, const body_t *body2);
     bool (*pair_contact)(const world_t *world, body_t *body1, body_t *body2, contact_t *contact);
+    /* The state a continuation needs (scene_state.c). */
+    void (*get_memory)(const world_t *world, size_t index, scene_contact_memory_t *memory);
+    void (*restore_memory)(world_t *world, const scene_contact_memory_t *memories, size_t count);
+    void (*forget_removed)(world_t *world);
+    unsigned (*get_sleep_phase)(const world_t *world);
+    void (*set_sleep_phase)(world_t *world, unsigned phase);
+    void (*index_sleepers)(world_t *world, body_t **bodies, size_t count);
 } world_ops_t;
 
 /* Hands the scene a world (NULL with ops NULL: contacts off), freeing the
  * one it had. */
 void scene_install_world(scene_t *scene, world_t *world, const world_ops_t *ops);
+
+/* The scene's world and its functions (NULL, with *ops NULL, while
+ * contacts are off), and its bodies, scene_bodies of them, in order. */
+world_t *scene_world(const scene_t *scene, const world_ops_t **ops);
+body_t **scene_body_array(const scene_t *scene);
 
 /* The solver iterations the scene keeps for its world. */
 void scene_get_iterations(const scene_t *scene, size_t *velocity_iterations,

@@ -222,14 +222,38 @@ static void wake_within(const sleep_t *sleep, aabb_t reach) {
     }
 }
 
+static aabb_t grown(aabb_t box, double by) {
+    return (aabb_t){{box.min.x - by, box.min.y - by}, {box.max.x + by, box.max.y + by}};
+}
+
+void sleep_wake_changed(const sleep_t *sleep, body_t *body, double dt, double margin) {
+    body_update_world(body);
+    double speed = vec_get_length(body->velocity) + fabs(body->angular_velocity) * body->radius;
+    double grow = dt * speed + margin;
+    wake_within(sleep, grown(body->changed_bounds, grow));
+    wake_within(sleep, grown(body->bounds, grow));
+}
+
 /* Where a body may be by the end of the next step: its box over this one
  * grown by what its end velocities cover in a step, and the margin. */
 static aabb_t reach_of(const sleep_step_t *step, size_t i) {
     const solver_velocity_t *row = &step->velocities[i];
     double grow = step->dt * (vec_get_length(row->v) + fabs(row->w) * step->bodies[i]->radius) +
                   step->margin;
-    aabb_t box = step->proxies[i].box;
-    return (aabb_t){{box.min.x - grow, box.min.y - grow}, {box.max.x + grow, box.max.y + grow}};
+    return grown(step->proxies[i].box, grow);
+}
+
+void sleep_forget_removed(sleep_t *sleep) {
+    size_t kept = 0;
+    for (size_t k = 0; k < sleep->count; k++) {
+        if (!sleep->entries[k].body->removed) sleep->entries[kept++] = sleep->entries[k];
+    }
+    sleep->count = kept;
+}
+
+void sleep_index_asleep(sleep_t *sleep, body_t **bodies, size_t count) {
+    rebuild_index(sleep, bodies, count, count_asleep(bodies, count));
+    sleep->slept = 0;
 }
 
 void sleep_wake_reached(sleep_t *sleep, const sleep_step_t *step, body_t **all_bodies,

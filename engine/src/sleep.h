@@ -5,7 +5,9 @@
  * Sleeping: islands of touching bodies that have stayed slow for
  * SLEEP_TIME are taken out of the step, and woken when a moving body comes
  * within a step of them (body.c wakes them when the user sets a pose,
- * velocity, force or impulse, or removes a body of the island).
+ * velocity, force or impulse, or removes a body of the island), or when a
+ * body they touch, static ones included, changed between steps
+ * (sleep_wake_changed).
  *
  * The world calls it at the end of its step: sleep_time_bodies advances the
  * timers, sleep_islands (only when some body is ready) joins the step's
@@ -95,5 +97,21 @@ void sleep_islands(sleep_t *sleep, const sleep_step_t *step, const sleep_link_t 
  * moving faster than the tolerances may reach in the next step. */
 void sleep_wake_reached(sleep_t *sleep, const sleep_step_t *step, body_t **all_bodies,
                         size_t all_count);
+
+/* Drops the bodies marked removed from the index, before they are freed
+ * without a step (a tick of dt 0), which would rebuild it. */
+void sleep_forget_removed(sleep_t *sleep);
+
+/* Indexes the sleeping bodies of bodies[0 .. count) (every body of the
+ * scene) after they were put to sleep outside a step (scene_restore_sleep),
+ * so that the next step leaves them out and wakes them as any others. */
+void sleep_index_asleep(sleep_t *sleep, body_t **bodies, size_t count);
+
+/* Before a step: wakes the sleeping islands that a body marked changed
+ * (body_mark_changed) touched before its change or may touch in the step,
+ * its box then and its box now each grown by what its velocities cover in
+ * dt and by margin. The index is the one of the last step (bodies woken
+ * since are skipped in it). */
+void sleep_wake_changed(const sleep_t *sleep, body_t *body, double dt, double margin);
 
 #endif // #ifndef SLEEP_H

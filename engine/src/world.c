@@ -8,6 +8,7 @@
 #include "memory.h"
 #include "scalar.h"
 #include "scene_private.h"
+#include "seams.h"
 #include "solver.h"
 #include "shock.h"
 #include "sleep.h"
@@ -128,6 +129,12 @@ struct world {
      * older one. */
     uint64_t step_number;
 
+    /* Which static bodies lie flush (seams.h), found again when a static
+     * body changes; with workers, each chunk of the loading says whether it
+     * saw one change. */
+    seams_t seams;
+    bool seams_changed[WORKERS_MAX_CHUNKS];
+
     solver_wide_t wide;
     shock_t shock;
     int velocity_iterations, position_iterations;
@@ -174,6 +181,7 @@ void world_free(world_t *world) {
     memory_free(world->old_sources);
     memory_free(world->gaps);
     memory_free(world->old_gaps);
+    seams_free(&world->seams);
     solver_wide_free(&world->wide);
     shock_free(&world->shock);
     sleep_free(&world->sleep);
@@ -247,10 +255,12 @@ static void set_filter(broadphase_proxy_t *proxy, const body_t *body) {
     proxy->group = body->group;
 }
 
-/* Loads body i's rows for the solver and its broadphase proxy. */
-WORLD_INLINE void load_body(world_t *world, body_t *body, const integrator_motion_t *motion, size_t i,
+/* Loads body i's rows for the solver and its broadphase proxy; returns
+ * whether the body changed what the seams were found from. */
+WORLD_INLINE bool load_body(world_t *world, body_t *body, const integrator_motion_t *motion, size_t i,
                       double dt) {
     body->solver_index = (uint32_t)i;
+    body->changed = false; /* world_wake_changed has seen it */
     body_update_world(body);
     solver_state_t *state = &world->states[i];
     solver_velocity_t *velocity = &world->velocities[i];
@@ -285,6 +295,7 @@ WORLD_INLINE void load_body(world_t *world, body_t *body, const integrator_motio
     proxy->box = swept_box(body->bounds, dt, state, dt * spin + CONTACT_MARGIN);
     set_filter(proxy, body);
     if (body->removed) proxy->category = 0;
+    return (proxy->fixed || body->seam_listed) && seams_body_changed(body);
 }
 
 /* The arguments of a loop over bodies split over the workers. */
@@ -298,22 +309,31 @@ typedef struct {
 
 static void load_chunk(void *context, size_t chunk, size_t begin, size_t end) {
     const body_loop_t *loop = context;
-    (void)chunk;
+    bool changed = false;
     for (size_t i = begin; i < end; i++) {
-        load_body(loop->world, loop->bodies[i], &loop->free_motions[i], i, loop->dt);
+        changed |= load_body(loop->world, loop->bodies[i], &loop->free_motions[i], i, loop->dt);
     }
+    loop->world->seams_changed[chunk] = changed;
 }
 
-/* Loads each body's rows for the solver and its broadphase proxy. */
-static void load_bodies(world_t *world, body_t **bodies, const integrator_motion_t *motions,
+/* Loads each body's rows for the solver and its broadphase proxy; returns
+ * whether a static body changed since the seams were found. */
+static bool load_bodies(world_t *world, body_t **bodies, const integrator_motion_t *motions,
                         size_t count, const world_step_t *step) {
     reserve_rows(world, count);
+    bool changed = false;
     if (world->workers != NULL) {
         body_loop_t loop = {world, bodies, motions, NULL, step->dt};
+        size_t chunks = workers_chunks(world->workers, count);
+        for (size_t k = 0; k < chunks; k++) world->seams_changed[k] = false;
         workers_for(world->workers, count, load_chunk, &loop);
-        return;
+        for (size_t k = 0; k < chunks; k++) changed |= world->seams_changed[k];
+        return changed;
     }
-    for (size_t i = 0; i < count; i++) load_body(world, bodies[i], &motions[i], i, step->dt);
+    for (size_t i = 0; i < count; i++) {
+        changed |= load_body(world, bodies[i], &motions[i], i, step->dt);
+    }
+    return changed;
 }
 
 /* The contact of the pair with this key among the contacts body a had as
@@ -472,7 +492,8 @@ WORLD_INLINE void collide_pair(const world_t *world, body_t *a, body_t *b, const
     found->old = old;
     found->apart = false;
     found->pose = relative_pose(a, b);
-    if (old != SIZE_MAX && pose_is_close(found->pose, world->old_sources[old].pose)) {
+    if (old != SIZE_MAX && pose_is_close(found->pose, world->old_sources[old].pose) &&
+        !world->old_sources[old].features.on_run) {
         found->features = world->old_sources[old].features;
         found->pose = world->old_sources[old].pose; /* measure drift from where they were found */
         found->manifold = manifold_evaluate(&found->features, a, b, margin);
@@ -749,7 +770,12 @@ static void update_sleep(world_t *world, body_t **bodies, size_t count, double d
 static void run_pipeline(world_t *world, body_t **bodies, integrator_motion_t *motions,
                          size_t count, const world_step_t *step, scene_stats_t *stats,
                          body_t **all_bodies, size_t all_count) {
-    load_bodies(world, bodies, motions, count, step);
+    /* A new world searches before loading, whose checks would read what an
+     * older world (since freed) left in the bodies. */
+    if (!world->seams.found) seams_find(&world->seams, bodies, count);
+    if (load_bodies(world, bodies, motions, count, step)) {
+        seams_find(&world->seams, bodies, count);
+    }
     const broadphase_pair_t *pairs;
     size_t pair_count = broadphase_find_pairs(world->broadphase, world->proxies, count, &pairs,
                                               &stats->broadphase_tests);
@@ -797,6 +823,14 @@ static void time_step(world_t *world, double dt) {
     world->last_dt = dt;
 }
 
+void world_wake_changed(world_t *world, body_t **bodies, size_t count, double dt) {
+    if (!sleep_any(&world->sleep)) return;
+    for (size_t i = 0; i < count; i++) {
+        if (!bodies[i]->changed) continue;
+        sleep_wake_changed(&world->sleep, bodies[i], dt, CONTACT_MARGIN);
+    }
+}
+
 void world_step(world_t *world, body_t **bodies, integrator_motion_t *motions, size_t count,
                 const world_step_t *step, scene_stats_t *stats) {
     time_step(world, step->dt);
@@ -828,6 +862,118 @@ contact_t world_get_contact(const world_t *world, size_t index) {
         entry.touching |= c->points[j].separation <= 0.0 || entry.normal_impulse[j] > 0.0;
     }
     return entry;
+}
+
+void world_get_memory(const world_t *world, size_t index, scene_contact_memory_t *memory) {
+    const solver_contact_t *c = &world->contacts[index];
+    const contact_source_t *source = &world->sources[index];
+    *memory = (scene_contact_memory_t){
+        .body_a = source->body_a,
+        .body_b = source->body_b,
+        .normal = c->normal,
+        .point_count = c->point_count,
+        .flip = source->features.flip,
+        .edge_ends = source->features.edge_ends,
+        .feature_count = source->features.point_count,
+        .face_normal = source->features.normal,
+        .face_point = source->features.face_point,
+        .pose = source->pose.position,
+        .pose_angle = source->pose.angle,
+    };
+    for (int j = 0; j < c->point_count; j++) {
+        const solver_point_t *p = &c->points[j];
+        memory->points[j] = (scene_memory_point_t){
+            p->id, source->points[j], p->separation, p->normal_impulse, p->tangent_impulse,
+            p->restitution_impulse, p->restitution_tangent_impulse};
+    }
+    for (int j = 0; j < source->features.point_count; j++) {
+        memory->feature_points[j] = source->features.points[j];
+        memory->feature_ids[j] = source->features.ids[j];
+    }
+}
+
+/* Writes contact n of the step from a memory (world_restore_memory). */
+static void add_remembered(world_t *world, size_t n, const scene_contact_memory_t *memory) {
+    solver_contact_t *contact = &world->contacts[n];
+    contact_source_t *source = &world->sources[n];
+    *contact = (solver_contact_t){.normal = memory->normal, .point_count = memory->point_count};
+    *source = (contact_source_t){
+        .key = pair_key(memory->body_a, memory->body_b),
+        .body_a = memory->body_a,
+        .body_b = memory->body_b,
+        .features = {.flip = memory->flip,
+                     .edge_ends = memory->edge_ends,
+                     .point_count = memory->feature_count,
+                     .normal = memory->face_normal,
+                     .face_point = memory->face_point},
+        .pose = {memory->pose, memory->pose_angle},
+    };
+    for (int j = 0; j < memory->point_count; j++) {
+        const scene_memory_point_t *from = &memory->points[j];
+        solver_point_t *p = &contact->points[j];
+        p->id = from->id;
+        p->separation = from->separation;
+        p->normal_impulse = from->normal_impulse;
+        p->tangent_impulse = from->tangent_impulse;
+        p->restitution_impulse = from->restitution_impulse;
+        p->restitution_tangent_impulse = from->restitution_tangent_impulse;
+        source->points[j] = from->point;
+    }
+    for (int j = 0; j < memory->feature_count; j++) {
+        source->features.points[j] = memory->feature_points[j];
+        source->features.ids[j] = memory->feature_ids[j];
+    }
+}
+
+void world_restore_memory(world_t *world, const scene_contact_memory_t *memories,
+                          size_t count) {
+    /* A new step: whatever groups the bodies had point to an older one. */
+    world->step_number++;
+    memory_reserve((void **)&world->contacts, &world->contact_capacity, count,
+                   sizeof(solver_contact_t));
+    memory_reserve((void **)&world->sources, &world->source_capacity, count,
+                   sizeof(contact_source_t));
+    world->contact_count = count;
+    world->gap_count = 0;
+    for (size_t i = 0; i < count;) {
+        body_t *a = memories[i].body_a;
+        size_t first = i;
+        for (; i < count && memories[i].body_a == a; i++) {
+            add_remembered(world, i, &memories[i]);
+        }
+        place_group(world, a, first, i, 0, 0);
+    }
+}
+
+void world_forget_removed(world_t *world) {
+    size_t kept = 0;
+    for (size_t i = 0; i < world->contact_count;) {
+        body_t *a = world->sources[i].body_a;
+        size_t first = kept;
+        for (; i < world->contact_count && world->sources[i].body_a == a; i++) {
+            if (a->removed || world->sources[i].body_b->removed) continue;
+            world->contacts[kept] = world->contacts[i];
+            world->sources[kept++] = world->sources[i];
+        }
+        if (!a->removed) {
+            a->contact_first = (uint32_t)first;
+            a->contact_count = (uint32_t)(kept - first);
+        }
+    }
+    world->contact_count = kept;
+    sleep_forget_removed(&world->sleep);
+}
+
+unsigned world_get_sleep_phase(const world_t *world) {
+    return world->sleep.steps;
+}
+
+void world_set_sleep_phase(world_t *world, unsigned phase) {
+    world->sleep.steps = phase;
+}
+
+void world_index_sleepers(world_t *world, body_t **bodies, size_t count) {
+    sleep_index_asleep(&world->sleep, bodies, count);
 }
 
 bool world_pair_collides(const body_t *body1, const body_t *body2) {

@@ -19,6 +19,7 @@
 #include "body.h"
 #include "integrator.h"
 #include "scene.h"
+#include "scene_state.h"
 #include "workers.h"
 
 typedef struct world world_t;
@@ -45,6 +46,13 @@ typedef struct {
     bool sleeping;
 } world_step_t;
 
+/* Wakes the sleeping islands that a body of bodies[0 .. count) changed
+ * since the last step (body_mark_changed) touched or may touch in the next
+ * step of dt (sleep_wake_changed). The scene calls it after the force
+ * creators and before the free motions, so that what wakes moves in the
+ * step; world_step clears the marks. */
+void world_wake_changed(world_t *world, body_t **bodies, size_t count, double dt);
+
 /* Runs the pipeline over bodies[0..count) (removed bodies take no part):
  * motions[i] holds body i's free motion on entry and the motion with its
  * contacts on return. Adds to the counters of stats. */
@@ -68,5 +76,20 @@ bool world_pair_collides(const body_t *body1, const body_t *body2);
  * contact (not even a speculative one). The world finds it among body1's or
  * body2's contacts, a handful, without a search of the step. */
 bool world_pair_contact(const world_t *world, body_t *body1, body_t *body2, contact_t *contact);
+
+/* The state a continuation needs (scene_state.h). world_get_memory reads
+ * contact index (below world_contact_count) of the last step;
+ * world_restore_memory makes the memories the contacts of a last step
+ * (checked by the caller, and sorted by pair: body_a's id, then body_b's);
+ * world_forget_removed drops the contacts and sleeping bodies that name a
+ * body marked removed, before a tick without a step frees it. The phase is sleep.h's
+ * island check count; world_index_sleepers indexes the bodies of
+ * bodies[0 .. count) that were put to sleep outside a step. */
+void world_get_memory(const world_t *world, size_t index, scene_contact_memory_t *memory);
+void world_restore_memory(world_t *world, const scene_contact_memory_t *memories, size_t count);
+void world_forget_removed(world_t *world);
+unsigned world_get_sleep_phase(const world_t *world);
+void world_set_sleep_phase(world_t *world, unsigned phase);
+void world_index_sleepers(world_t *world, body_t **bodies, size_t count);
 
 #endif // #ifndef WORLD_H

@@ -2,22 +2,30 @@
  * The canonical scenes (bench_scenes.h) on Chipmunk2D 7 (Debian
  * libchipmunk-dev): cc -O2 bench_chipmunk.c -lchipmunk -lm.
  *
- * Settings. Chipmunk's defaults are kept (printed by describe() from a fresh
- * cpSpace): 10 solver iterations, collision bias (1 - 0.1)^60, collision
- * persistence 3 steps, damping 1, sleeping off (sleep time threshold
- * INFINITY), the bounding-box-tree spatial index, the single-threaded
- * cpSpace (not cpHastySpace). Changed:
- *   - collision slop 0.005 m (Chipmunk's default is 0.1 m), the same as
- *     Box2D's linear slop, so that penetration figures are comparable;
- *   - Chipmunk multiplies the two shapes' coefficients (friction u = ua ub,
- *     elasticity e = ea eb), so every shape gets friction sqrt(mu) for a
- *     pair friction of mu, and static shapes get elasticity 1 so that the
- *     dynamic body's elasticity is the pair's (bounce: floor 1.0, box 0.8).
+ * Variants (describe() prints each one's settings beside Chipmunk's
+ * defaults, read from a fresh cpSpace):
+ *   chipmunk-default  Chipmunk's defaults: 10 solver iterations, collision
+ *                     slop 0.1 m, collision bias (1 - 0.1)^60, collision
+ *                     persistence 3 steps, damping 1, sleeping off (sleep
+ *                     time threshold INFINITY), the bounding-box-tree
+ *                     spatial index, the single-threaded cpSpace (not
+ *                     cpHastySpace);
+ *   chipmunk          matched to our engine where Chipmunk has the same
+ *                     setting: 8 solver iterations (our velocity
+ *                     iterations; default 10) and collision slop 0.001 m
+ *                     (the overlap our solver leaves alone; default 0.1 m);
+ *                     the rest as chipmunk-default (sleeping off in both).
+ * In both, Chipmunk multiplies the two shapes' coefficients (friction
+ * u = ua ub, elasticity e = ea eb), so every shape gets friction sqrt(mu)
+ * for a pair friction of mu, and static shapes get elasticity 1 so that the
+ * dynamic body's elasticity is the pair's (bounce: floor 1.0, box 0.8).
+ * --iterations N sets both variants' iterations.
  * Bodies get the scene's mass and cpMomentForPoly's moment; static boxes are
  * static bodies of their own at the box's centre.
  * Penetration: -distance of the points of cpArbiterGetContactPointSet over
  * the arbiters of the dynamic bodies after the step (Chipmunk moves bodies,
- * then collides, then solves, so these are the current positions').
+ * then collides, then solves, so these are the current positions'; its
+ * polygons have radius 0, so the distances are the scene's geometry).
  */
 
 #include <chipmunk/chipmunk.h>
@@ -67,33 +75,64 @@ static cpSpace *cp_space_new_quiet(void) {
     return space;
 }
 
+/* The matched variant's settings: our engine's velocity iterations and the
+ * overlap its solver leaves alone (engine/src/solver.c, SOLVER_LINEAR_SLOP). */
+#define CP_MATCHED_ITERATIONS 8
+#define CP_MATCHED_SLOP 0.001
+
 static void cp_describe(FILE *out) {
     cpSpace *space = cp_space_new_quiet();
     fprintf(out,
-            "# chipmunk: Chipmunk2D %s (library %s), cpFloat %s; defaults kept: iterations %d, "
-            "collision bias %g, collision persistence %u, damping %g, sleep time threshold %g "
-            "(sleeping off), BB-tree spatial index, single thread; set: collision slop 0.005 m "
-            "(default %g) to compare penetration with Box2D's linear slop; coefficients are "
-            "multiplied, so shape friction sqrt(mu) and static elasticity 1\n",
+            "# chipmunk-default: Chipmunk2D %s (library %s), cpFloat %s, at its defaults: "
+            "iterations %d, collision slop %g m, collision bias %g, collision persistence %u, "
+            "damping %g, sleep time threshold %g (sleeping off), BB-tree spatial index, single "
+            "thread; coefficients are multiplied, so shape friction sqrt(mu) and static "
+            "elasticity 1\n",
             cpVersionString,
             cp_debug_build ? "built with debug checks: 'Debug Enabled'" : "release build",
             sizeof(cpFloat) == sizeof(double) ? "double" : "float", cpSpaceGetIterations(space),
-            (double)cpSpaceGetCollisionBias(space), (unsigned)cpSpaceGetCollisionPersistence(space),
-            (double)cpSpaceGetDamping(space), (double)cpSpaceGetSleepTimeThreshold(space),
+            (double)cpSpaceGetCollisionSlop(space), (double)cpSpaceGetCollisionBias(space),
+            (unsigned)cpSpaceGetCollisionPersistence(space), (double)cpSpaceGetDamping(space),
+            (double)cpSpaceGetSleepTimeThreshold(space));
+    fprintf(out,
+            "# chipmunk: matched to our engine, differs from chipmunk-default in: iterations %d "
+            "(default %d), collision slop %g m (default %g); penetration: contact point "
+            "distances at the final positions (radius-0 polygons)\n",
+            CP_MATCHED_ITERATIONS, cpSpaceGetIterations(space), CP_MATCHED_SLOP,
             (double)cpSpaceGetCollisionSlop(space));
+    if (bench_iterations > 0) {
+        fprintf(out, "# chipmunk, chipmunk-default: --iterations %d\n", bench_iterations);
+    }
     cpSpaceFree(space);
 }
 
-static void *cp_world_new(double gy, int contacts, int capacity) {
-    (void)contacts; /* non-colliding bodies get CP_SHAPE_FILTER_NONE */
+static void *cp_world_new_common(double gy, int capacity, int matched) {
     cp_world_t *w = (cp_world_t *)calloc(1, sizeof(cp_world_t));
     w->space = cp_space_new_quiet();
     cpSpaceSetGravity(w->space, cpv(0.0, gy));
-    cpSpaceSetCollisionSlop(w->space, 0.005);
+    if (matched) {
+        cpSpaceSetCollisionSlop(w->space, CP_MATCHED_SLOP);
+        cpSpaceSetIterations(w->space, CP_MATCHED_ITERATIONS);
+    }
     if (bench_iterations > 0) cpSpaceSetIterations(w->space, bench_iterations);
     w->capacity = capacity > 0 ? capacity : 4;
     w->bodies = (cpBody **)malloc(sizeof(cpBody *) * (size_t)w->capacity);
     return w;
+}
+
+/* contacts: non-colliding bodies get CP_SHAPE_FILTER_NONE instead. */
+static void *cp_world_new(double gy, int contacts, int capacity) {
+    (void)contacts;
+    return cp_world_new_common(gy, capacity, 1);
+}
+
+static void *cp_world_new_default(double gy, int contacts, int capacity) {
+    (void)contacts;
+    return cp_world_new_common(gy, capacity, 0);
+}
+
+static void cp_describe_none(FILE *out) {
+    (void)out;
 }
 
 static void cp_free_shape(cpBody *body, cpShape *shape, void *data) {
@@ -292,7 +331,16 @@ static const bench_ops_t chipmunk_ops = {
     1.0,
 };
 
+static const bench_ops_t chipmunk_default_ops = {
+    "chipmunk-default",   NULL,           1, 1, cp_describe_none,
+    cp_world_new_default, cp_world_free,  cp_add_static_box,
+    cp_add_body,          cp_set_velocity, cp_add_gravity_pair,
+    cp_step,              cp_get_state,   cp_max_penetration,
+    cp_pair_penetration,  cp_add_spring,  cp_set_angular_velocity,
+    1.0,
+};
+
 int main(int argc, char **argv) {
-    const bench_ops_t *ops[1] = {&chipmunk_ops};
-    return bench_main(argc, argv, ops, 1);
+    const bench_ops_t *ops[2] = {&chipmunk_ops, &chipmunk_default_ops};
+    return bench_main(argc, argv, ops, 2);
 }

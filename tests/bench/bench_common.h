@@ -15,8 +15,9 @@
  * Output format, one line per scene, size and engine:
  *   engine=NAME scene=NAME size=N runs=R mean_ms=M median_ms=M [more key=value]
  * mean_ms and median_ms are the mean and the median over the R runs of each
- * run's mean milliseconds per step (only the engine's step call is timed:
- * building the scene and reading states for the quality figures are not).
+ * run's mean milliseconds per step, in CPU time of the process
+ * (CLOCK_PROCESS_CPUTIME_ID; only the engine's step call is timed: building
+ * the scene and reading states for the quality figures are not).
  * Lines starting with '#' are comments (settings, compiler).
  */
 
@@ -114,16 +115,34 @@ static const double tunnel_speeds[10] = {1, 2, 5, 10, 20, 50, 100, 200, 500, 100
 /* ---- Random numbers ----
  * SCENES.md: s0 = 12345; s(k+1) = (1103515245 s(k) + 12345) mod 2^31;
  * u(k) = s(k) / 2^31. Interpretation used here: the state starts at
- * s = 12345, and every draw FIRST advances the state, then returns the new
+ * s = s0, and every draw FIRST advances the state, then returns the new
  * state divided by 2^31 (so the first number drawn is u(1) = s(1) / 2^31;
  * s0 itself is never returned). The product is computed in 64 bits, exactly.
+ *
+ * s0 is the layout seed (--layout-seed, docs/bench-scenes.md "Layout
+ * seeds"): 12345, the canonical layout, unless a run asks for another so
+ * that a chaotic quality figure can be judged over several layouts. With a
+ * seed other than the canonical one, the scenes with no random layout whose
+ * figures are chaotic (the pyramids and overlap) shift each box sideways by
+ * up to BENCH_LAYOUT_JITTER (times the scene's scale), drawn from the seed.
  */
+#define BENCH_CANONICAL_SEED 12345u
+#define BENCH_LAYOUT_JITTER 1e-4 /* m, at scale 1 */
+
+static uint64_t bench_layout_seed = BENCH_CANONICAL_SEED;
+
 typedef struct {
     uint64_t s;
 } bench_rng_t;
 
 static inline void bench_rng_init(bench_rng_t *rng) {
-    rng->s = 12345u;
+    rng->s = bench_layout_seed;
+}
+
+/* Whether the layout differs from the canonical one (the jittered scenes
+ * then move their boxes). */
+static inline int bench_layout_jittered(void) {
+    return bench_layout_seed != BENCH_CANONICAL_SEED;
 }
 
 static inline double bench_rng_next(bench_rng_t *rng) {
@@ -131,14 +150,41 @@ static inline double bench_rng_next(bench_rng_t *rng) {
     return (double)rng->s / 2147483648.0;
 }
 
+/* A sideways shift in [-amplitude, amplitude) for the next box of a
+ * jittered scene; 0 (and no draw) with the canonical seed. */
+static inline double bench_layout_shift(bench_rng_t *rng, double amplitude) {
+    if (!bench_layout_jittered()) return 0.0;
+    return amplitude * (2.0 * bench_rng_next(rng) - 1.0);
+}
+
 /* ---- Timing and statistics ---- */
 
-/* Milliseconds on the monotonic clock. */
+/* Milliseconds on the monotonic clock (wall time). */
 static inline double bench_now_ms(void) {
     struct timespec ts;
     clock_gettime(CLOCK_MONOTONIC, &ts);
     return (double)ts.tv_sec * 1e3 + (double)ts.tv_nsec * 1e-6;
 }
+
+/* Milliseconds of CPU time of the whole process (every thread): what the
+ * step figures are measured in, so that time the process spends waiting for
+ * a core another program holds is not counted. */
+static inline double bench_cpu_ms(void) {
+    struct timespec ts;
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+    return (double)ts.tv_sec * 1e3 + (double)ts.tv_nsec * 1e-6;
+}
+
+/* --wall: the result lines add wall_median_ms, the wall time of the same
+ * step calls (beside CPU time it shows whether the threads of a
+ * multi-threaded step had their cores). bench_wall_ms sums it over a run,
+ * bench_timed_steps counts the step calls of the run; --count-steps adds
+ * timed_steps=N to the result lines (tests/bench/instructions.sh divides an
+ * instruction count by it). */
+static int bench_wall = 0;
+static int bench_count_steps = 0;
+static double bench_wall_ms = 0.0;
+static long bench_timed_steps = 0;
 
 static inline double bench_mean(const double *values, int count) {
     double sum = 0.0;

@@ -16,6 +16,16 @@
  *                    repeatable or a comma list
  *   --runs R         runs of each scene (default 5); the median is reported
  *   --quick          smaller sizes and 1 run (a smoke run)
+ *   --wall           adds wall_median_ms (wall time of the step calls) to
+ *                    each line; mean_ms and median_ms are CPU time of the
+ *                    process (CLOCK_PROCESS_CPUTIME_ID)
+ *   --count-steps    adds timed_steps (step calls of the last run)
+ *   --layout-seed K  the random generator's first state (0 .. 2^31 - 1;
+ *                    default 12345, the canonical layout): pile, column and
+ *                    the stability scenes drawing random numbers get another
+ *                    layout, the pyramids and overlap a sideways jitter of
+ *                    each box (bench_common.h); result lines then end with
+ *                    layout_seed=K (docs/bench-scenes.md, tests/bench/seeds.sh)
  * No --scene: the benchmark set pile 1000, 4000, 10000; pyramid 20, 40;
  * bounce 0.8 at dt 1/60 and 1/600; cradle 5.
  *
@@ -117,11 +127,21 @@ typedef struct {
     double max_return_speed;
 } bench_run_t;
 
-/* A timed step: returns its duration in ms. */
-static inline double bench_step(const bench_ops_t *ops, void *world, double dt) {
-    double t0 = bench_now_ms();
+/* A timed step: returns its CPU time in ms (and adds its wall time to
+ * bench_wall_ms under --wall). Never inlined, so that an instruction count
+ * can be restricted to it (callgrind --toggle-collect='bench_step*',
+ * tests/bench/instructions.sh). */
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
+static double bench_step(const bench_ops_t *ops, void *world, double dt) {
+    double w0 = bench_wall ? bench_now_ms() : 0.0;
+    double t0 = bench_cpu_ms();
     ops->step(world, dt);
-    return bench_now_ms() - t0;
+    double ms = bench_cpu_ms() - t0;
+    if (bench_wall) bench_wall_ms += bench_now_ms() - w0;
+    bench_timed_steps++;
+    return ms;
 }
 
 static inline bench_shape_t bench_box_shape(double hx, double hy) {
@@ -255,9 +275,12 @@ static inline double pyramid_generic(const bench_ops_t *ops, const pyramid_confi
     double *mass = (double *)malloc(sizeof(double) * (size_t)count);
     int top = -1, n = 0;
     double top_x0 = 0.0, top_y0 = 0.0;
+    bench_rng_t rng;
+    bench_rng_init(&rng);
     for (int j = 0; j < base; j++) {
         for (int k = 0; k < base - j; k++) {
-            double x = cfg->ox + (k - (base - j - 1) / 2.0) * 1.0 * s;
+            double x = cfg->ox + (k - (base - j - 1) / 2.0) * 1.0 * s +
+                       bench_layout_shift(&rng, BENCH_LAYOUT_JITTER * s);
             double y = cfg->oy + (0.5 + j * 1.0) * s;
             double m = bench_shape_area(&box) * (j == base - 1 ? cfg->top_ratio : 1.0);
             top = ids[n] = ops->add_body(w, &box, x, y, 0.0, m, mu, 0.0, 1);
@@ -545,9 +568,12 @@ static inline void overlap_run(const bench_ops_t *ops, const bench_case_t *c, be
                         bench_static_elasticity(ops));
     bench_shape_t box = bench_box_shape(0.5, 0.5);
     int ids[OVERLAP_BASE * (OVERLAP_BASE + 1) / 2], count = 0;
+    bench_rng_t rng;
+    bench_rng_init(&rng);
     for (int j = 0; j < OVERLAP_BASE; j++) {
         for (int k = 0; k < OVERLAP_BASE - j; k++) {
-            double x = (k - (OVERLAP_BASE - j - 1) / 2.0) * OVERLAP_PITCH;
+            double x = (k - (OVERLAP_BASE - j - 1) / 2.0) * OVERLAP_PITCH +
+                       bench_layout_shift(&rng, BENCH_LAYOUT_JITTER);
             double y = 0.5 + j * OVERLAP_PITCH;
             ids[count++] = ops->add_body(w, &box, x, y, 0.0, bench_shape_area(&box), mu, 0.0, 1);
         }
@@ -1183,12 +1209,10 @@ static inline int bench_scene_has_dt(bench_scene_id_t scene) {
            scene == SCENE_SCALED;
 }
 
-/* Whether a variant runs a scene (only_scenes is a comma list or NULL). */
-static inline int bench_ops_runs(const bench_ops_t *ops, bench_scene_id_t scene) {
-    if (ops->only_scenes == NULL) return 1;
-    const char *name = bench_scene_names[scene];
+/* Whether `name` is an item of the comma list `list`. */
+static inline int bench_list_has(const char *list, const char *name) {
     size_t len = strlen(name);
-    const char *p = ops->only_scenes;
+    const char *p = list;
     while (*p) {
         const char *end = strchr(p, ',');
         size_t item = end ? (size_t)(end - p) : strlen(p);
@@ -1199,25 +1223,47 @@ static inline int bench_ops_runs(const bench_ops_t *ops, bench_scene_id_t scene)
     return 0;
 }
 
+/* Whether a variant runs a scene (only_scenes is a comma list or NULL). */
+static inline int bench_ops_runs(const bench_ops_t *ops, bench_scene_id_t scene) {
+    return ops->only_scenes == NULL || bench_list_has(ops->only_scenes, bench_scene_names[scene]);
+}
+
 /* Runs one case `runs` times with one engine and prints its line. */
 static inline void bench_run_case(const bench_ops_t *ops, const bench_case_t *c, int runs,
                                   int *summary_tunnelled_v_found, double *summary_first_v,
                                   double *summary_back) {
     double *ms = (double *)malloc(sizeof(double) * (size_t)runs);
     double *settled = (double *)malloc(sizeof(double) * (size_t)runs);
+    double *wall = (double *)malloc(sizeof(double) * (size_t)runs);
     bench_run_t first, run;
     int differ = 0;
     for (int i = 0; i < runs; i++) {
         bench_run_t *r = i == 0 ? &first : &run;
         memset(r, 0, sizeof *r);
+        bench_wall_ms = 0.0;
+        bench_timed_steps = 0;
         bench_runners[c->scene](ops, c, r);
+        wall[i] = bench_timed_steps > 0 ? bench_wall_ms / (double)bench_timed_steps : NAN;
         ms[i] = r->step_ms;
         settled[i] = r->settled_ms;
         if (i > 0 && strcmp(first.quality, run.quality) != 0) differ = 1;
     }
     char size[32], quality[800];
     snprintf(size, sizeof size, "%g", c->size);
-    snprintf(quality, sizeof quality, "%s%s", first.quality, differ ? " runs_differ=1" : "");
+    int len = snprintf(quality, sizeof quality, "%s%s", first.quality,
+                       differ ? " runs_differ=1" : "");
+    if (bench_layout_jittered() && len > 0 && (size_t)len < sizeof quality) {
+        len += snprintf(quality + len, sizeof quality - (size_t)len, " layout_seed=%llu",
+                        (unsigned long long)bench_layout_seed);
+    }
+    if (bench_wall && len > 0 && (size_t)len < sizeof quality) {
+        len += snprintf(quality + len, sizeof quality - (size_t)len, " wall_median_ms=%.4g",
+                        bench_median(wall, runs));
+    }
+    if (bench_count_steps && len > 0 && (size_t)len < sizeof quality) {
+        snprintf(quality + len, sizeof quality - (size_t)len, " timed_steps=%ld",
+                 bench_timed_steps);
+    }
     bench_print_result(ops->name, bench_scene_names[c->scene], size, runs, ms,
                        c->scene == SCENE_PILE ? settled : NULL, quality);
     if (bench_scene_has_summary(c->scene)) {
@@ -1229,6 +1275,7 @@ static inline void bench_run_case(const bench_ops_t *ops, const bench_case_t *c,
     }
     free(ms);
     free(settled);
+    free(wall);
 }
 
 /* ---- command line ---- */
@@ -1265,7 +1312,8 @@ static inline int bench_parse_list(const char *text, double *list, int *count) {
 static inline void bench_usage(FILE *out, const char *program) {
     fprintf(out,
             "usage: %s [--scene NAME[,NAME]] [--size X[,X]] [--dt X[,X]] [--runs R] [--quick]\n"
-            "          [--iterations N] [--variant NAME] [--steps N]\n"
+            "          [--iterations N] [--variant NAME[,NAME]] [--steps N] [--layout-seed K]\n"
+            "          [--wall] [--count-steps]\n"
             "  scenes: pile pyramid bounce cradle orbit stack2 tunnel overlap column all\n"
             "  stability scenes: spring springpair chain heavytop headon tunnelmove bullet rod\n"
             "  drop coincide gas settle wallbounce scaled far\n"
@@ -1274,8 +1322,12 @@ static inline void bench_usage(FILE *out, const char *program) {
             "  --steps N: the step count of pile, pyramid, column, stack2, overlap and the\n"
             "  stability scenes with a fixed count.\n"
             "  --iterations N: the solver's velocity iterations (each engine's own default\n"
-            "  otherwise; position iterations keep theirs). --variant NAME: only that\n"
-            "  variant of the program (e.g. ours, ours-sleeping).\n",
+            "  otherwise; position iterations keep theirs). --variant NAME[,NAME]: only\n"
+            "  these variants of the program (e.g. ours, ours-sleeping; names another\n"
+            "  program has are ignored, so one list serves every program).\n"
+            "  --layout-seed K: the random layouts' seed (default 12345, the canonical\n"
+            "  one); other seeds also jitter the pyramids' and overlap's boxes by 1e-4 m.\n"
+            "  Times are CPU time of the process; --wall adds wall_median_ms.\n",
             program);
 }
 
@@ -1351,6 +1403,10 @@ static inline int bench_main(int argc, char **argv, const bench_ops_t *const *op
         } else if (strcmp(arg, "--quick") == 0) {
             quick = 1;
             bench_quick = 1;
+        } else if (strcmp(arg, "--wall") == 0) {
+            bench_wall = 1;
+        } else if (strcmp(arg, "--count-steps") == 0) {
+            bench_count_steps = 1;
         } else if (value == NULL) {
             fprintf(stderr, "%s: unknown option or missing value: %s\n", argv[0], arg);
             bench_usage(stderr, argv[0]);
@@ -1398,6 +1454,16 @@ static inline int bench_main(int argc, char **argv, const bench_ops_t *const *op
                 return 2;
             }
             i++;
+        } else if (strcmp(arg, "--layout-seed") == 0) {
+            char *end;
+            unsigned long long seed = strtoull(value, &end, 10);
+            if (*end != '\0' || end == value || seed >= 2147483648ull) {
+                fprintf(stderr, "%s: --layout-seed takes 0 .. 2147483647, not %s\n", argv[0],
+                        value);
+                return 2;
+            }
+            bench_layout_seed = seed;
+            i++;
         } else if (strcmp(arg, "--runs") == 0) {
             runs = atoi(value);
             if (runs < 1) {
@@ -1442,6 +1508,13 @@ static inline int bench_main(int argc, char **argv, const bench_ops_t *const *op
 #endif
     );
 #endif
+    printf("# timing: CPU time of the process (CLOCK_PROCESS_CPUTIME_ID) of the step calls%s\n",
+           bench_wall ? "; wall_median_ms: wall time (CLOCK_MONOTONIC) of the same calls" : "");
+    if (bench_layout_jittered()) {
+        printf("# layout seed %llu (canonical 12345): random layouts drawn from it, pyramid and "
+               "overlap boxes shifted sideways by up to %g m\n",
+               (unsigned long long)bench_layout_seed, BENCH_LAYOUT_JITTER);
+    }
     for (int k = 0; k < ops_count; k++) ops[k]->describe(stdout);
     fflush(stdout);
 
@@ -1463,7 +1536,7 @@ static inline int bench_main(int argc, char **argv, const bench_ops_t *const *op
         }
         for (int k = 0; k < ops_count; k++) {
             if (!bench_ops_runs(ops[k], scene)) continue;
-            if (bench_variant != NULL && strcmp(bench_variant, ops[k]->name) != 0) continue;
+            if (bench_variant != NULL && !bench_list_has(bench_variant, ops[k]->name)) continue;
             int found = 0;
             double first_v = 0.0, back = 0.0;
             for (int s = 0; s < ncase_sizes; s++) {

@@ -1,0 +1,352 @@
+/*
+ * The canonical scenes (bench_scenes.h) on Box2D v3 (Erin Catto's C library,
+ * source from ../shared/peers, built by tests/bench/bench.mk into
+ * build/peers; never part of the project): its public API only.
+ * cc -O2 -I$(BOX2D3)/include bench_box2d3.c libbox2d.a -lm -pthread
+ * -DBENCH_BOX2D3_BUILD='"sse2"' (or "avx2": the name the library was built
+ * for, printed in the engine's name).
+ *
+ * Settings: Box2D v3's defaults (b2DefaultWorldDef, b2DefaultBodyDef,
+ * b2DefaultShapeDef, printed by describe()) are kept: 4 sub-steps per step
+ * (b2World_Step's usual count), its soft contacts (contact hertz 30, damping
+ * ratio 10, push-out speed 3 m/s), restitution threshold 1 m/s, continuous
+ * collision against static bodies, maximum linear speed 400 m/s, single
+ * precision, one thread (workerCount 1). Changed: sleeping off
+ * (worldDef.enableSleep = false) in the variant box2d3-BUILD, so that every
+ * body is stepped every step, as in the other programs; box2d3-BUILD-sleeping
+ * (pile only) keeps its default, sleeping on. --iterations is ignored: v3's
+ * sub-steps are not solver iterations. Friction is mixed by sqrt(f1 f2) and
+ * restitution by max, as in our engine, so shapes get the scene's values.
+ * Polygons have radius 0 (no skin): the shapes are the scene's polygons.
+ * Mass: density = scene mass / polygon area. Angles are read as
+ * atan2(s, c) of the body's rotation (b2Rot_GetAngle is an approximation).
+ *
+ * Penetration: v3's manifolds are computed at the start of a step (before
+ * its solve) and keep speculative points up to 0.02 m apart, so they are not
+ * read as they are: for every contact a dynamic body holds after the step
+ * whose manifold has points, the two polygons are collided again at the
+ * bodies' current transforms (b2CollidePolygons, radius 0) and the
+ * penetration is the largest -separation of that manifold (0 when apart).
+ *
+ * Springs: b2DistanceJoint between the two centres as a spring of rest
+ * length 1 m (spring_rest), with hertz = sqrt(k / m) / (2 pi) and damping
+ * ratio c / (2 sqrt(k m)), m the reduced mass of the two bodies (the mass
+ * v3's joint sees along the line of centres), so that the spring's force is
+ * k (length - rest) + c (rate of change of length); v3 solves it as a soft
+ * constraint inside its sub-steps.
+ */
+
+#include "box2d/box2d.h"
+#include "box2d/math_functions.h"
+
+#include "bench_scenes.h"
+
+#ifndef BENCH_BOX2D3_BUILD
+#define BENCH_BOX2D3_BUILD "sse2"
+#endif
+
+#define B3_SUBSTEPS 4
+#define B3_SPRING_REST 1.0
+#define B3_MAX_PAIRS 4
+
+typedef struct {
+    int body1, body2;
+    double G;
+} b3_pair_t;
+
+typedef struct {
+    b2WorldId world;
+    b2BodyId *bodies;
+    b2ShapeId *shapes; /* each body's one shape */
+    double *mass;      /* the scene's mass; 0 for static bodies */
+    int count, capacity;
+    b3_pair_t pairs[B3_MAX_PAIRS];
+    int pair_count;
+    b2ContactData *contacts; /* scratch for the penetration queries */
+    int contact_capacity;
+} b3_world_t;
+
+static void b3_describe(FILE *out) {
+    b2Version v = b2GetVersion();
+    b2WorldDef def = b2DefaultWorldDef();
+    b2BodyDef body = b2DefaultBodyDef();
+    fprintf(out,
+            "# box2d3-%s: Box2D v3 %d.%d.%d (source 617d32ab, %s build, %s precision); defaults "
+            "kept: %d sub-steps, contact hertz %g, damping ratio %g, push-out speed %g m/s, "
+            "restitution threshold %g m/s, continuous %s, maximum linear speed %g m/s, "
+            "workers %d, body sleep threshold %g m/s, polygon radius 0; set: sleeping off "
+            "(default %s; box2d3-%s-sleeping keeps it on, pile only); penetration: polygons "
+            "collided again at the final transforms (no speculative margin, no skin)\n",
+            BENCH_BOX2D3_BUILD, v.major, v.minor, v.revision, BENCH_BOX2D3_BUILD,
+            b2IsDoublePrecision() ? "double" : "single", B3_SUBSTEPS, (double)def.contactHertz,
+            (double)def.contactDampingRatio, (double)def.contactSpeed,
+            (double)def.restitutionThreshold, def.enableContinuous ? "on" : "off",
+            (double)def.maximumLinearSpeed, def.workerCount < 1 ? 1 : def.workerCount,
+            (double)body.sleepThreshold, def.enableSleep ? "on" : "off", BENCH_BOX2D3_BUILD);
+}
+
+static void b3_describe_none(FILE *out) {
+    (void)out;
+}
+
+static void *b3_world_new_common(double gy, int capacity, int sleeping) {
+    b3_world_t *w = (b3_world_t *)calloc(1, sizeof(b3_world_t));
+    b2WorldDef def = b2DefaultWorldDef();
+    def.gravity = (b2Vec2){0.0f, (float)gy};
+    def.enableSleep = sleeping != 0;
+    w->world = b2CreateWorld(&def);
+    w->capacity = capacity > 0 ? capacity : 4;
+    w->bodies = (b2BodyId *)malloc(sizeof(b2BodyId) * (size_t)w->capacity);
+    w->shapes = (b2ShapeId *)malloc(sizeof(b2ShapeId) * (size_t)w->capacity);
+    w->mass = (double *)malloc(sizeof(double) * (size_t)w->capacity);
+    return w;
+}
+
+static void *b3_world_new(double gy, int contacts, int capacity) {
+    (void)contacts; /* non-colliding bodies get maskBits 0 */
+    return b3_world_new_common(gy, capacity, 0);
+}
+
+static void *b3_world_new_sleeping(double gy, int contacts, int capacity) {
+    (void)contacts;
+    return b3_world_new_common(gy, capacity, 1);
+}
+
+static void b3_world_free(void *world) {
+    b3_world_t *w = (b3_world_t *)world;
+    b2DestroyWorld(w->world);
+    free(w->bodies);
+    free(w->shapes);
+    free(w->mass);
+    free(w->contacts);
+    free(w);
+}
+
+static int b3_add(b3_world_t *w, b2BodyId body, b2ShapeId shape, double mass) {
+    if (w->count == w->capacity) {
+        w->capacity *= 2;
+        w->bodies = (b2BodyId *)realloc(w->bodies, sizeof(b2BodyId) * (size_t)w->capacity);
+        w->shapes = (b2ShapeId *)realloc(w->shapes, sizeof(b2ShapeId) * (size_t)w->capacity);
+        w->mass = (double *)realloc(w->mass, sizeof(double) * (size_t)w->capacity);
+    }
+    w->bodies[w->count] = body;
+    w->shapes[w->count] = shape;
+    w->mass[w->count] = mass;
+    return w->count++;
+}
+
+/* The exact rotation (b2MakeRot approximates cos and sin). */
+static b2Rot b3_rot(double angle) {
+    b2Rot q = {(float)cos(angle), (float)sin(angle)};
+    return q;
+}
+
+static int b3_add_static_box(void *world, double cx, double cy, double hx, double hy,
+                             double friction, double elasticity) {
+    b3_world_t *w = (b3_world_t *)world;
+    b2BodyDef def = b2DefaultBodyDef();
+    def.type = b2_staticBody;
+    def.position = (b2Pos){(float)cx, (float)cy};
+    b2BodyId body = b2CreateBody(w->world, &def);
+    b2ShapeDef shape = b2DefaultShapeDef();
+    shape.material.friction = (float)friction;
+    shape.material.restitution = (float)elasticity;
+    b2Polygon box = b2MakeBox((float)hx, (float)hy);
+    return b3_add(w, body, b2CreatePolygonShape(body, &shape, &box), 0.0);
+}
+
+static b2Polygon b3_polygon(const bench_shape_t *shape) {
+    if (shape->sides == 0) return b2MakeBox((float)shape->hx, (float)shape->hy);
+    b2Vec2 points[B2_MAX_POLYGON_VERTICES];
+    int n = bench_shape_vertex_count(shape);
+    for (int i = 0; i < n; i++) {
+        double x, y;
+        bench_shape_vertex(shape, i, &x, &y);
+        points[i] = (b2Vec2){(float)x, (float)y};
+    }
+    b2Hull hull = b2ComputeHull(points, n);
+    if (hull.count != n) {
+        fprintf(stderr, "bench_box2d3: b2ComputeHull kept %d of %d vertices\n", hull.count, n);
+        abort();
+    }
+    return b2MakePolygon(&hull, 0.0f);
+}
+
+static int b3_add_body(void *world, const bench_shape_t *shape, double x, double y, double angle,
+                       double mass, double friction, double elasticity, int collides) {
+    b3_world_t *w = (b3_world_t *)world;
+    b2BodyDef def = b2DefaultBodyDef();
+    def.type = b2_dynamicBody;
+    def.position = (b2Pos){(float)x, (float)y};
+    def.rotation = b3_rot(angle);
+    b2BodyId body = b2CreateBody(w->world, &def);
+    b2ShapeDef sdef = b2DefaultShapeDef();
+    sdef.density = (float)(mass / bench_shape_area(shape));
+    sdef.material.friction = (float)friction;
+    sdef.material.restitution = (float)elasticity;
+    if (!collides) sdef.filter.maskBits = 0;
+    b2Polygon polygon = b3_polygon(shape);
+    return b3_add(w, body, b2CreatePolygonShape(body, &sdef, &polygon), mass);
+}
+
+static void b3_set_velocity(void *world, int body, double vx, double vy) {
+    b3_world_t *w = (b3_world_t *)world;
+    b2Body_SetLinearVelocity(w->bodies[body], (b2Vec2){(float)vx, (float)vy});
+}
+
+static void b3_set_angular_velocity(void *world, int body, double omega) {
+    b3_world_t *w = (b3_world_t *)world;
+    b2Body_SetAngularVelocity(w->bodies[body], (float)omega);
+}
+
+/* Newtonian gravity: a force on each body at the start of every step (v3
+ * keeps it over the step's sub-steps and clears it after). */
+static void b3_add_gravity_pair(void *world, int body1, int body2, double G) {
+    b3_world_t *w = (b3_world_t *)world;
+    if (w->pair_count == B3_MAX_PAIRS) {
+        fprintf(stderr, "bench_box2d3: more than %d gravity pairs\n", B3_MAX_PAIRS);
+        abort();
+    }
+    w->pairs[w->pair_count].body1 = body1;
+    w->pairs[w->pair_count].body2 = body2;
+    w->pairs[w->pair_count].G = G;
+    w->pair_count++;
+}
+
+static void b3_step(void *world, double dt) {
+    b3_world_t *w = (b3_world_t *)world;
+    for (int i = 0; i < w->pair_count; i++) {
+        b2BodyId a = w->bodies[w->pairs[i].body1], b = w->bodies[w->pairs[i].body2];
+        b2Pos pa = b2Body_GetWorldCenter(a), pb = b2Body_GetWorldCenter(b);
+        double dx = (double)pb.x - pa.x, dy = (double)pb.y - pa.y;
+        double r2 = dx * dx + dy * dy, r = sqrt(r2);
+        if (r < 1e-9) continue;
+        double f = w->pairs[i].G * w->mass[w->pairs[i].body1] * w->mass[w->pairs[i].body2] / r2 / r;
+        b2Body_ApplyForceToCenter(a, (b2Vec2){(float)(f * dx), (float)(f * dy)}, true);
+        b2Body_ApplyForceToCenter(b, (b2Vec2){(float)(-f * dx), (float)(-f * dy)}, true);
+    }
+    b2World_Step(w->world, (float)dt, B3_SUBSTEPS);
+}
+
+static void b3_get_state(void *world, int body, bench_state_t *out) {
+    b3_world_t *w = (b3_world_t *)world;
+    b2BodyId b = w->bodies[body];
+    b2Pos p = b2Body_GetWorldCenter(b);
+    b2Rot q = b2Body_GetRotation(b);
+    b2Vec2 v = b2Body_GetLinearVelocity(b);
+    out->x = p.x;
+    out->y = p.y;
+    out->angle = atan2((double)q.s, (double)q.c);
+    out->vx = v.x;
+    out->vy = v.y;
+    out->omega = b2Body_GetAngularVelocity(b);
+}
+
+/* The deepest penetration of two polygon shapes at their bodies' current
+ * transforms (0 when they do not overlap). */
+static double b3_shape_penetration(b2ShapeId a, b2ShapeId b) {
+    b2Polygon pa = b2Shape_GetPolygon(a), pb = b2Shape_GetPolygon(b);
+    b2Transform xa = b2Body_GetTransform(b2Shape_GetBody(a));
+    b2Transform xb = b2Body_GetTransform(b2Shape_GetBody(b));
+    b2LocalManifold m = b2CollidePolygons(&pa, &pb, b2InvMulTransforms(xa, xb));
+    double pen = 0.0;
+    for (int i = 0; i < m.pointCount; i++) {
+        if (-m.points[i].separation > pen) pen = -m.points[i].separation;
+    }
+    return pen;
+}
+
+/* Over the contacts of body `index` with points; only those with `other`
+ * unless other < 0. */
+static double b3_body_penetration(b3_world_t *w, int index, int other) {
+    b2BodyId body = w->bodies[index];
+    int capacity = b2Body_GetContactCapacity(body);
+    if (capacity > w->contact_capacity) {
+        w->contact_capacity = 2 * capacity;
+        w->contacts = (b2ContactData *)realloc(w->contacts,
+                                               sizeof(b2ContactData) * (size_t)w->contact_capacity);
+    }
+    int count = b2Body_GetContactData(body, w->contacts, w->contact_capacity);
+    double pen = 0.0;
+    for (int i = 0; i < count; i++) {
+        const b2ContactData *c = &w->contacts[i];
+        if (c->manifold.pointCount == 0) continue;
+        if (other >= 0) {
+            b2BodyId ba = b2Shape_GetBody(c->shapeIdA), bb = b2Shape_GetBody(c->shapeIdB);
+            b2BodyId o = w->bodies[other];
+            if (!(B2_ID_EQUALS(ba, o) || B2_ID_EQUALS(bb, o))) continue;
+        }
+        double p = b3_shape_penetration(c->shapeIdA, c->shapeIdB);
+        if (p > pen) pen = p;
+    }
+    return pen;
+}
+
+static double b3_max_penetration(void *world) {
+    b3_world_t *w = (b3_world_t *)world;
+    double pen = 0.0;
+    for (int i = 0; i < w->count; i++) {
+        if (w->mass[i] <= 0.0) continue;
+        double p = b3_body_penetration(w, i, -1);
+        if (p > pen) pen = p;
+    }
+    return pen;
+}
+
+static double b3_pair_penetration(void *world, int body1, int body2) {
+    b3_world_t *w = (b3_world_t *)world;
+    if (w->mass[body1] <= 0.0) {
+        int t = body1;
+        body1 = body2;
+        body2 = t;
+    }
+    return b3_body_penetration(w, body1, body2);
+}
+
+static void b3_add_spring(void *world, int body1, int body2, double k, double damping,
+                          double rest) {
+    b3_world_t *w = (b3_world_t *)world;
+    double m1 = w->mass[body1], m2 = w->mass[body2];
+    double m = m1 <= 0.0 ? m2 : m2 <= 0.0 ? m1 : m1 * m2 / (m1 + m2);
+    b2DistanceJointDef def = b2DefaultDistanceJointDef();
+    def.base.bodyIdA = w->bodies[body1];
+    def.base.bodyIdB = w->bodies[body2];
+    def.base.collideConnected = false;
+    def.length = (float)rest;
+    def.enableSpring = true;
+    def.hertz = (float)(sqrt(k / m) / (2.0 * M_PI));
+    def.dampingRatio = (float)(damping / (2.0 * sqrt(k * m)));
+    def.enableLimit = false;
+    b2CreateDistanceJoint(w->world, &def);
+}
+
+#define B3_OPS(name, only, describe, world_new)                                                    \
+    {name,                                                                                         \
+     only,                                                                                         \
+     0,                                                                                            \
+     0,                                                                                            \
+     describe,                                                                                     \
+     world_new,                                                                                    \
+     b3_world_free,                                                                                \
+     b3_add_static_box,                                                                            \
+     b3_add_body,                                                                                  \
+     b3_set_velocity,                                                                              \
+     b3_add_gravity_pair,                                                                          \
+     b3_step,                                                                                      \
+     b3_get_state,                                                                                 \
+     b3_max_penetration,                                                                           \
+     b3_pair_penetration,                                                                          \
+     b3_add_spring,                                                                                \
+     b3_set_angular_velocity,                                                                      \
+     B3_SPRING_REST}
+
+static const bench_ops_t box2d3_ops =
+    B3_OPS("box2d3-" BENCH_BOX2D3_BUILD, NULL, b3_describe, b3_world_new);
+static const bench_ops_t box2d3_sleeping_ops =
+    B3_OPS("box2d3-" BENCH_BOX2D3_BUILD "-sleeping", "pile", b3_describe_none,
+           b3_world_new_sleeping);
+
+int main(int argc, char **argv) {
+    const bench_ops_t *ops[2] = {&box2d3_ops, &box2d3_sleeping_ops};
+    return bench_main(argc, argv, ops, 2);
+}
