@@ -5,7 +5,7 @@ tests/report/amplification.h:
 
 - on the damped spring x'' = -x - c x' (omega = 1, c = 2 zeta, t = omega h),
   the trace and determinant of the one-step matrix of (x, v), polynomials
-  in t and c;
+  in t and c (over a common denominator for an implicit scheme);
 - on drag alone, v' = -g v, the factor R(z) of a step on v, z = -g h.
 
 Run by hand after changing a scheme's definition:
@@ -59,13 +59,23 @@ def rk4(x, v, acc, h):
             v + h / 6 * (k1[1] + 2 * k2[1] + 2 * k3[1] + k4[1]))
 
 
-# By integrator_get_name's names.
+def backward(x, v, acc, h):
+    # v' = v + h a(x', v'), x' = x + h v': the forces at the end of the step
+    x1, v1 = sp.symbols('x1 v1')
+    solution = sp.solve([sp.Eq(v1, v + h * acc(x1, v1)), sp.Eq(x1, x + h * v1)], [x1, v1],
+                        dict=True)[0]
+    return solution[x1], solution[v1]
+
+
+# By integrator_get_name's names; a scheme scene.h does not have (yet) is
+# matched by none.
 SCHEMES = [('seed', one_stage(sp.Rational(1, 2))),
            ('explicit Euler', one_stage(0)),
            ('symplectic Euler', one_stage(1)),
            ('velocity Verlet', verlet),
            ('RK4', rk4),
-           ('symplectic4', yoshida)]
+           ('symplectic4', yoshida),
+           ('implicit Euler', backward)]
 
 
 def spring(x, v):
@@ -108,11 +118,16 @@ typedef struct {
 
 typedef struct {
     const char *scheme; /* integrator_get_name's */
-    amplification_term_t trace[24], det[24], drag[8]; /* ended by coefficient 0 */
+    /* Each list ends at its first coefficient 0; trace and det share the
+     * denominator; an empty denominator ({{0, 0, 0.0}}) is 1. */
+    amplification_term_t trace[24], det[24], denominator[8];
+    amplification_term_t drag[8], drag_denominator[8];
 } amplification_t;
 """)
 
 def terms(entries):
+    if not entries:
+        return '{{0, 0, 0.0}}'
     return '{' + ', '.join('{%d, %d, %s}' % (i, j, c_number(v)) for (i, j), v in entries) + '}'
 
 print('static const amplification_t AMPLIFICATION[] = {')
@@ -120,16 +135,26 @@ for (name, step) in SCHEMES:
     x1, v1 = step(sp.Integer(1), sp.Integer(0), spring, t)
     x2, v2 = step(sp.Integer(0), sp.Integer(1), spring, t)
     m = sp.Matrix([[x1, x2], [v1, v2]]).applyfunc(sp.expand)
-    trace = sorted(coefficients(m.trace(), t, c).items())
-    det = sorted(coefficients(m.det(), t, c).items())
+    trace_n, trace_d = sp.fraction(sp.cancel(sp.together(m.trace())))
+    det_n, det_d = sp.fraction(sp.cancel(sp.together(m.det())))
+    if sp.simplify(trace_d - det_d) != 0:
+        # one denominator for both
+        trace_n, det_n, trace_d = (sp.expand(trace_n * det_d), sp.expand(det_n * trace_d),
+                                   sp.expand(trace_d * det_d))
+    trace = sorted(coefficients(trace_n, t, c).items())
+    det = sorted(coefficients(det_n, t, c).items())
+    denominator = [] if trace_d == 1 else sorted(coefficients(trace_d, t, c).items())
     _, vd = step(sp.Integer(0), sp.Integer(1), drag, t)
-    factor = sp.expand(sp.expand(vd).subs(g, -z / t))
-    drag_terms = sorted(((i, 0), v) for (i,), v in coefficients(factor, z).items())
-    assert len(trace) < 24 and len(det) < 24 and len(drag_terms) < 8
+    drag_n, drag_d = sp.fraction(sp.cancel(sp.together(sp.expand(vd).subs(g, -z / t))))
+    drag_terms = sorted(((i, 0), v) for (i,), v in coefficients(drag_n, z).items())
+    drag_den = [] if drag_d == 1 else sorted(((i, 0), v) for (i,), v in coefficients(drag_d, z).items())
+    assert len(trace) < 24 and len(det) < 24 and len(drag_terms) < 8 and len(denominator) < 8
     print('    {"%s",' % name)
     print('     ' + terms(trace) + ',')
     print('     ' + terms(det) + ',')
-    print('     ' + terms(drag_terms) + '},')
+    print('     ' + terms(denominator) + ',')
+    print('     ' + terms(drag_terms) + ',')
+    print('     ' + terms(drag_den) + '},')
 print('};\n')
 print('enum { AMPLIFICATION_SCHEMES = sizeof AMPLIFICATION / sizeof AMPLIFICATION[0] };\n')
 print('#endif // #ifndef AMPLIFICATION_H')

@@ -154,7 +154,7 @@ static const report_series_t *sweep_series(const report_sweep_t *sweeps, int cou
 }
 
 static void write_data(const horizon_scene_t *hs, const horizon_run_t *runs, int count,
-                       const report_options_t *options) {
+                       const report_options_t *options, bool plot_files) {
     const char *name = reference_name(hs->scene);
     char file[256];
     snprintf(file, sizeof file, "horizon-%s.csv", name);
@@ -165,17 +165,18 @@ static void write_data(const horizon_scene_t *hs, const horizon_run_t *runs, int
         const horizon_run_t *run = &runs[r];
         if (run->hs != hs) continue;
         snprintf(file, sizeof file, "horizon-%s-%d-%d.dat", name, (int)run->integrator, run->rate);
-        FILE *dat = report_open(options->out_dir, file);
+        FILE *dat = plot_files ? report_open(options->out_dir, file) : NULL;
         for (int c = 0; c < run->count; c++) {
             const checkpoint_t *p = &run->checkpoints[c];
             fprintf(csv, "%s,%g,%.6g,%.6e,%.6e,%.6e,%.6e\n",
                     integrator_get_name(run->integrator), hs->steps_per_period[run->rate],
                     p->periods, p->energy, p->momentum, p->position, p->error);
+            if (dat == NULL) continue;
             fprintf(dat, "%.6g %.6e %.6e %.6e %.6e\n", p->periods, fmax(p->energy, 1e-17),
                     isnan(p->momentum) ? 1e-17 : fmax(p->momentum, 1e-17),
                     fmax(p->position, 1e-17), fmax(p->error, 1e-17));
         }
-        fclose(dat);
+        if (dat != NULL) fclose(dat);
     }
     fclose(csv);
 }
@@ -211,7 +212,7 @@ static void write_precision_data(const horizon_scene_t *hs, const horizon_run_t 
     }
 }
 
-static void write_plots(const horizon_scene_t *hs, FILE *gp) {
+static void write_plots(const horizon_scene_t *hs, FILE *gp, const char *out_dir) {
     const char *name = reference_name(hs->scene);
     const char *quantities[3] = {"largest |E/E0 - 1| since the last point",
                                  "largest |L/L0 - 1| since the last point",
@@ -223,14 +224,17 @@ static void write_plots(const horizon_scene_t *hs, FILE *gp) {
             name, shown, name, hs->steps_per_period[hs->shown]);
     for (int q = 0; q < 3; q++) {
         if (q == 1 && hs->scene == REFERENCE_OSCILLATOR) continue;
-        fprintf(gp, "set title \"%s\"\nset ylabel ''\n%s\nplot ", quantities[q],
-                q == 2 ? "set key outside right top" : "unset key");
+        fprintf(gp, "set title \"%s\"\nset ylabel ''\n%s\n", quantities[q],
+                q == 2 ? "set key outside below horizontal maxrows 2" : "unset key");
+        report_plot_t plot = report_plot_start(gp);
         for (int i = 0; i < INTEGRATOR_COUNT; i++) {
-            fprintf(gp, "%s'horizon-%s-%d-%d.dat' using 1:%d with lines lt %d lw 1.5 title '%s'",
-                    i ? ", " : "", name, i, hs->shown, q + 2, i + 1,
-                    integrator_get_name((integrator_t)i));
+            char file[128];
+            snprintf(file, sizeof file, "horizon-%s-%d-%d.dat", name, i, hs->shown);
+            if (!report_has_data(out_dir, file)) continue;
+            report_plot_add(&plot, "'%s' using 1:%d with lines lt %d lw 1.5 title '%s'", file,
+                            q + 2, i + 1, integrator_get_name((integrator_t)i));
         }
-        fprintf(gp, "\n");
+        report_plot_end(&plot);
     }
     fprintf(gp, "unset multiplot\n");
     fprintf(gp, "set output 'precision-%s.svg'\nset multiplot layout 1,3 title \"%s: error at "
@@ -238,14 +242,17 @@ static void write_plots(const horizon_scene_t *hs, FILE *gp) {
                 "set xlabel 'CPU ms (steps x median per step)'\nunset key\n",
             name, name);
     for (int k = 0; k < 3; k++) {
-        fprintf(gp, "set title '%g periods'\n%s\nplot ", hs->horizons[k],
-                k == 2 ? "set key outside right top" : "unset key");
+        fprintf(gp, "set title '%g periods'\n%s\n", hs->horizons[k],
+                k == 2 ? "set key outside below horizontal maxrows 2" : "unset key");
+        report_plot_t plot = report_plot_start(gp);
         for (int i = 0; i < INTEGRATOR_COUNT; i++) {
-            fprintf(gp, "%s'precision-%s-%d-%d.dat' using 2:1:3:4 with xerrorlines lt %d "
-                        "title '%s'",
-                    i ? ", " : "", name, k, i, i + 1, integrator_get_name((integrator_t)i));
+            char file[128];
+            snprintf(file, sizeof file, "precision-%s-%d-%d.dat", name, k, i);
+            if (!report_has_data(out_dir, file)) continue;
+            report_plot_add(&plot, "'%s' using 2:1:3:4 with xerrorlines lt %d title '%s'", file,
+                            i + 1, integrator_get_name((integrator_t)i));
         }
-        fprintf(gp, "\n");
+        report_plot_end(&plot);
     }
     fprintf(gp, "unset multiplot\nset terminal svg size 760,500 dynamic font 'sans,11'\n"
                 "set key outside right top\n");
@@ -291,14 +298,14 @@ static void write_section(const horizon_scene_t *hs, const horizon_run_t *runs, 
 }
 
 void report_run_horizons(const report_sweep_t *sweeps, int count, FILE *md, FILE *gp,
-                         const report_options_t *options) {
+                         const report_options_t *options, report_summary_t *summary) {
     horizon_scene_t scenes[3] = {
         {REFERENCE_OSCILLATOR, 1e6, 3, {8, 16, 32}, 0, {10, 1e3, 1e5}, 8000000},
         {REFERENCE_KEPLER, 1e5, 4, {16, 32, 64, 128}, 2, {10, 1e3, 1e5}, 6400000},
         {REFERENCE_KEPLER_ECCENTRIC, 1e5, 4, {32, 64, 128, 256}, 1, {10, 1e3, 1e5}, 6400000},
     };
-    for (int s = 0; s < 3 && options->quick; s++) {
-        scenes[s].periods = 100;
+    for (int s = 0; s < 3 && (options->quick || options->reproduce); s++) {
+        scenes[s].periods = options->quick ? 100 : 1000;
         scenes[s].horizons[0] = 1;
         scenes[s].horizons[1] = 10;
         scenes[s].horizons[2] = 100;
@@ -319,6 +326,18 @@ void report_run_horizons(const report_sweep_t *sweeps, int count, FILE *md, FILE
         }
     }
     run_all(runs, n, options->threads);
+    for (int r = 0; r < n && summary != NULL; r++) {
+        const horizon_run_t *run = &runs[r];
+        if (run->hs->scene != REFERENCE_KEPLER || run->rate != run->hs->shown) continue;
+        double error;
+        summary[run->integrator].energy_growth = growth(run, 0, &error);
+        summary[run->integrator].phase_growth = growth(run, 2, &error);
+        summary[run->integrator].growth_rate = run->hs->steps_per_period[run->rate];
+    }
+    if (options->reproduce) {
+        for (int s = 0; s < 3; s++) write_data(&scenes[s], runs, n, options, false);
+        return;
+    }
     fprintf(md, "\n## 2. Long horizons\n\n"
                 "Each scheme runs each scene at a few steps per period, each run until the "
                 "scene's horizon or the scene's budget of steps (the steps the coarsest rate "
@@ -337,9 +356,9 @@ void report_run_horizons(const report_sweep_t *sweeps, int count, FILE *md, FILE
                 "not timed themselves.\n",
             PER_DECADE, FIT_FROM, SATURATED);
     for (int s = 0; s < 3; s++) {
-        write_data(&scenes[s], runs, n, options);
+        write_data(&scenes[s], runs, n, options, true);
         write_precision_data(&scenes[s], runs, n, sweeps, count, options);
-        write_plots(&scenes[s], gp);
+        write_plots(&scenes[s], gp, options->out_dir);
         write_section(&scenes[s], runs, n, md);
     }
 }

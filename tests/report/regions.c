@@ -43,17 +43,23 @@ static double polynomial(const amplification_term_t *terms, int count, double t,
     return sum;
 }
 
+/* A denominator: 1 when the list is empty. */
+static double denominator(const amplification_term_t *terms, int count, double t, double c) {
+    return terms[0].coefficient == 0.0 ? 1.0 : polynomial(terms, count, t, c);
+}
+
 /* The spectral radius of the scheme's step on the damped spring. */
 static double theory_radius(const amplification_t *a, double theta, double zeta) {
-    double c = 2.0 * zeta;
-    double trace = polynomial(a->trace, 24, theta, c), det = polynomial(a->det, 24, theta, c);
+    double c = 2.0 * zeta, q = denominator(a->denominator, 8, theta, c);
+    double trace = polynomial(a->trace, 24, theta, c) / q;
+    double det = polynomial(a->det, 24, theta, c) / q;
     double discriminant = trace * trace - 4.0 * det;
     if (discriminant < 0.0) return sqrt(det);
     return (fabs(trace) + sqrt(discriminant)) / 2.0;
 }
 
 static double theory_drag(const amplification_t *a, double z) {
-    return fabs(polynomial(a->drag, 8, z, 0.0));
+    return fabs(polynomial(a->drag, 8, z, 0.0) / denominator(a->drag_denominator, 8, z, 0.0));
 }
 
 /* The least x in (0, LARGEST] at which radius(x) passes 1 (to 1e-12): a
@@ -337,7 +343,7 @@ static void write_measured(const limits_t *l, const report_options_t *options, i
     fclose(dat);
 }
 
-static void write_plot(FILE *gp, const limits_t *limits) {
+static void write_plot(FILE *gp, const limits_t *limits, const char *out_dir) {
     int columns = INTEGRATOR_COUNT <= 6 ? 3 : 4, rows = (INTEGRATOR_COUNT + columns - 1) / columns;
     fprintf(gp, "set terminal svg size %d,%d dynamic font 'sans,10'\n", 380 * columns,
             360 * rows);
@@ -349,23 +355,30 @@ static void write_plot(FILE *gp, const limits_t *limits) {
         fprintf(gp, "set table 'region-%d.contour'\nsplot 'region-%d.grid' using 1:2:3 with "
                     "lines\nunset table\n", i, i);
     }
-    fprintf(gp, "set output 'regions.svg'\nset multiplot layout %d,%d title \"Stability "
-                "regions in the plane of h lambda: where the spectral radius of a step is 1 "
-                "(closed form, line); the engine's limits (points: damped-spring rays; "
+    fprintf(gp, "set output 'regions.svg'\nset multiplot layout %d,%d title \"Spectral "
+                "radius 1 (closed form, line); the engine's limits (dots: damped springs; "
                 "square: drag alone)\"\nset xrange [-5:0.5]\nset yrange [-4:4]\nunset key\n"
                 "set xlabel 'Re h lambda'\nset ylabel 'Im h lambda'\n",
             rows, columns);
     for (int i = 0; i < INTEGRATOR_COUNT; i++) {
         (void)limits;
-        fprintf(gp, "set title '%s'\nplot ", integrator_get_name((integrator_t)i));
+        fprintf(gp, "set title '%s'\n", integrator_get_name((integrator_t)i));
+        report_plot_t plot = report_plot_start(gp);
+        char file[64];
         if (closed_form((integrator_t)i) != NULL) {
-            fprintf(gp, "'region-%d.contour' with lines lt 1 lw 1.5, ", i);
+            report_plot_add(&plot, "'region-%d.contour' with lines lt 1 lw 1.5", i);
         }
-        fprintf(gp, "'region-%d-measured.dat' with points pt 7 lc rgb 'black', "
-                    "'region-%d-measured.dat' using 1:(-$2) with points pt 7 lc rgb 'black', "
-                    "'region-%d-drag.dat' with points pt 5 ps 1.2 lc rgb 'red', 0 with lines "
-                    "lc rgb 'grey'\n",
-                i, i, i);
+        snprintf(file, sizeof file, "region-%d-measured.dat", i);
+        if (report_has_data(out_dir, file)) {
+            report_plot_add(&plot, "'%s' with points pt 7 lc rgb 'black', '%s' using 1:(-$2) "
+                                   "with points pt 7 lc rgb 'black'", file, file);
+        }
+        snprintf(file, sizeof file, "region-%d-drag.dat", i);
+        if (report_has_data(out_dir, file)) {
+            report_plot_add(&plot, "'%s' with points pt 5 ps 1.2 lc rgb 'red'", file);
+        }
+        if (plot.clauses > 0) report_plot_add(&plot, "0 with lines lc rgb 'grey'");
+        report_plot_end(&plot);
     }
     fprintf(gp, "unset multiplot\nunset contour\nset surface\nunset view\nset size noratio\n"
                 "unset xrange\nunset yrange\nset autoscale\nset logscale xy\n"
@@ -393,17 +406,35 @@ static void write_cell(FILE *md, double theory, double measured, double run) {
             limit_holds(theory, measured) ? "" : " **(misses)**");
 }
 
-void report_write_regions(FILE *md, FILE *gp, const report_options_t *options) {
+void report_write_regions(FILE *md, FILE *gp, const report_options_t *options,
+                          report_summary_t *summary) {
     static limits_t limits[INTEGRATOR_COUNT];
     for (int i = 0; i < INTEGRATOR_COUNT; i++) {
         fprintf(stderr, "\r  stability regions %-18s", integrator_get_name((integrator_t)i));
         limits[i] = measure_limits((integrator_t)i);
         const amplification_t *a = closed_form((integrator_t)i);
+        if (md == NULL) continue;
         if (a != NULL) write_grid(a, options, i);
         write_measured(&limits[i], options, i);
     }
     fprintf(stderr, "\n");
-    write_plot(gp, limits);
+    for (int i = 0; i < INTEGRATOR_COUNT && summary != NULL; i++) {
+        summary[i].spring_limit = limits[i].theory[0];
+        summary[i].drag_limit = limits[i].theory[RAYS];
+    }
+    FILE *csv = report_open(options->out_dir, "regions.csv");
+    fprintf(csv, "integrator,ray,theory,engine_step,engine_runs\n");
+    for (int i = 0; i < INTEGRATOR_COUNT; i++) {
+        for (int r = 0; r <= RAYS; r++) {
+            char ray[32];
+            fprintf(csv, "%s,%s,%.10g,%.10g,%.6g\n", integrator_get_name((integrator_t)i),
+                    ray_name(r, ray, sizeof ray), limits[i].theory[r], limits[i].measured[r],
+                    limits[i].run[r]);
+        }
+    }
+    fclose(csv);
+    if (md == NULL) return;
+    write_plot(gp, limits, options->out_dir);
     fprintf(md,
             "\n## 3. Stability regions\n\n"
             "A damped spring x'' = -omega^2 x - 2 zeta omega x' has the eigenvalues lambda = "
@@ -411,7 +442,7 @@ void report_write_regions(FILE *md, FILE *gp, const report_options_t *options) {
             "[-1, 1], h lambda sweeps the plane, the undamped spring on the imaginary axis and "
             "the damped ones on rays at angle acos(zeta) from it. A scheme's one-step matrix "
             "on (x, v) has a trace and a determinant that are polynomials in omega h and zeta "
-            "(RK4 and explicit Euler are linear one-step methods on (x, v), so their region "
+            "(rational functions for an implicit scheme) (RK4 and explicit Euler are linear one-step methods on (x, v), so their region "
             "depends on h lambda alone; the others treat x and v apart, and their region is "
             "that of this family). Drag alone, x'' = -gamma x', puts h lambda = -gamma h on "
             "the negative real axis; a step multiplies v by R(-gamma h). The closed forms are "
@@ -463,5 +494,5 @@ void report_write_regions(FILE *md, FILE *gp, const report_options_t *options) {
                 "Euler schemes on an undamped spring: the last column gives their growth, the "
                 "spectral radius, against the measured one). On a damped ray a scheme is "
                 "stable from 0 up to the limit given; the plot shows any stable island beyond "
-                "it.\n");
+                "it. CSV: [report/regions.csv](report/regions.csv).\n");
 }

@@ -29,10 +29,13 @@ typedef struct {
     int rounds;        /* timed runs of every point, interleaved */
     const char *out_dir;
     const char *doc_path;
-    const char *solver_csv;
-    const char *provenance; /* a markdown block to put under the title */
+    const char *solver_csv; /* the peers' result lines (solver.c) */
     int threads;       /* for the untimed long runs */
     const char *only;  /* the one case to sweep, or NULL */
+    /* Only the figures make check reproduces (no timing, no page): the
+     * diagnosed sweeps of some cases, the long runs to 1000 periods, the
+     * stability limits, as CSVs. */
+    bool reproduce;
 } report_options_t;
 
 /* CPU time of the process (s), CLOCK_PROCESS_CPUTIME_ID. */
@@ -56,6 +59,23 @@ const char *report_number(char *text, size_t size, double value);
 /* The least-squares slope of y on x and its standard error (NAN for fewer
  * than three points). */
 double report_slope(const double *x, const double *y, int n, double *standard_error);
+
+/* Whether dir/name exists and holds at least one data line. */
+bool report_has_data(const char *dir, const char *name);
+
+/* One gnuplot plot command built clause by clause: a plot with no clause
+ * (no data) draws an empty frame saying so instead of stopping gnuplot. */
+typedef struct {
+    FILE *gp;
+    int clauses;
+} report_plot_t;
+report_plot_t report_plot_start(FILE *gp);
+void report_plot_add(report_plot_t *plot, const char *format, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 2, 3)))
+#endif
+    ;
+void report_plot_end(report_plot_t *plot);
 
 /* A scene with an exact answer, run at step h under an integrator. */
 typedef struct report_case report_case_t;
@@ -127,20 +147,36 @@ void report_run_sweeps(report_sweep_t *sweeps, int count, const report_options_t
  * point does (the time of the last point, a lower bound), 0 otherwise. */
 double report_time_to_reach(const report_series_t *series, double target, char *bound);
 
+/* The sweep's CSV alone. */
+void report_write_sweep_data(const report_sweep_t *sweep, const report_options_t *options);
+
 /* The sweep's CSV and plot lines, and its section of the page. */
 void report_write_sweep(const report_sweep_t *sweep, FILE *md, FILE *gp,
                         const report_options_t *options);
 /* The table of the cheapest scheme per error, over the sweeps. */
 void report_write_picks(const report_sweep_t *sweeps, int count, FILE *md);
 
-/* Long horizons (horizons.c): needs the sweeps of the same scenes for the
- * CPU time per step. */
-void report_run_horizons(const report_sweep_t *sweeps, int count, FILE *md, FILE *gp,
-                         const report_options_t *options);
+/* Head-on collisions against the exact velocities (collisions.c). */
+void report_write_collisions(FILE *md, const report_options_t *options);
 
-/* Stability regions (regions.c). report_check_regions prints PASS/FAIL
- * lines and returns the failures. */
-void report_write_regions(FILE *md, FILE *gp, const report_options_t *options);
+/* What the page's summary takes from the sections, per scheme. */
+typedef struct {
+    double spring_limit, drag_limit;      /* closed forms (NAN: none) */
+    double energy_growth, phase_growth;   /* kepler over 10^5 periods */
+    double growth_rate;                   /* its steps per period */
+} report_summary_t;
+
+/* Long horizons (horizons.c): needs the sweeps of the same scenes for the
+ * CPU time per step. With options->reproduce, only the CSVs, to 1000
+ * periods. */
+void report_run_horizons(const report_sweep_t *sweeps, int count, FILE *md, FILE *gp,
+                         const report_options_t *options, report_summary_t *summary);
+
+/* Stability regions (regions.c): regions.csv, and with md and gp not NULL
+ * the plot and the section. report_check_regions prints PASS/FAIL lines
+ * and returns the failures. */
+void report_write_regions(FILE *md, FILE *gp, const report_options_t *options,
+                          report_summary_t *summary);
 int report_check_regions(void);
 
 #endif // #ifndef REPORT_H

@@ -27,4 +27,4 @@ report-deps:
 
 report: report-deps build/libengine.a $(REPORT_DIR)/accuracy
 	@$(MAKE) --no-print-directory bench-build
-	@PROVENANCE_FLAGS="$(REPORT_CFLAGS)" sh tests/report/report.sh
+	@CC="$(CC)" PROVENANCE_FLAGS="$(REPORT_CFLAGS)" sh tests/report/report.sh

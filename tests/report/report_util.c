@@ -1,6 +1,7 @@
 /* What the parts of make report share: clocks, spreads, files, fits. */
 #include <errno.h>
 #include <math.h>
+#include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
@@ -66,4 +67,38 @@ double report_slope(const double *x, const double *y, int n, double *standard_er
     }
     *standard_error = sqrt(residual / (n - 2) / sxx);
     return slope;
+}
+
+bool report_has_data(const char *dir, const char *name) {
+    char path[1024], line[256];
+    snprintf(path, sizeof path, "%s/%s", dir, name);
+    FILE *file = fopen(path, "r");
+    if (file == NULL) return false;
+    bool found = false;
+    while (!found && fgets(line, sizeof line, file) != NULL) found = line[0] != '\n';
+    fclose(file);
+    return found;
+}
+
+report_plot_t report_plot_start(FILE *gp) {
+    return (report_plot_t){gp, 0};
+}
+
+void report_plot_add(report_plot_t *plot, const char *format, ...) {
+    if (plot->gp == NULL) return;
+    fputs(plot->clauses++ ? ", " : "plot ", plot->gp);
+    va_list args;
+    va_start(args, format);
+    vfprintf(plot->gp, format, args);
+    va_end(args);
+}
+
+void report_plot_end(report_plot_t *plot) {
+    if (plot->clauses == 0) {
+        fputs("set xrange [1:10]\nset yrange [1:10]\nplot 1/0 title 'no data'\n"
+              "set autoscale x\nset autoscale y\n",
+              plot->gp);
+        return;
+    }
+    fputs("\n", plot->gp);
 }

@@ -216,7 +216,7 @@ double report_time_to_reach(const report_series_t *s, double target, char *bound
 
 /* ---- Writing ---- */
 
-static void write_data(const report_sweep_t *sweep, const report_options_t *options) {
+void report_write_sweep_data(const report_sweep_t *sweep, const report_options_t *options) {
     const char *name = sweep->c->name;
     char file[256];
     snprintf(file, sizeof file, "%s.csv", name);
@@ -247,37 +247,58 @@ static void write_data(const report_sweep_t *sweep, const report_options_t *opti
     fclose(csv);
 }
 
-static void write_plots(const report_sweep_t *sweep, FILE *gp) {
+static bool has_evaluations(const report_series_t *s) {
+    for (int k = 0; k < s->count; k++) {
+        if (s->points[k].result.evaluations > 0) return true;
+    }
+    return false;
+}
+
+static void write_plots(const report_sweep_t *sweep, FILE *gp, const report_options_t *options) {
     const char *name = sweep->c->name;
+    char file[256];
     fprintf(gp, "set output 'work-%s.svg'\n", name);
-    fprintf(gp, "set title \"%s: error against CPU time of the run (median; bars: least to "
-                "largest of the timed runs)\"\n", name);
-    fprintf(gp, "set xlabel 'CPU time of the run (ms)'\nset ylabel \"%s\"\nplot ",
+    fprintf(gp, "set title \"%s: error against CPU time (median; bars: range)\"\n", name);
+    fprintf(gp, "set xlabel 'CPU time of the run (ms)'\nset ylabel \"%s\"\n",
             sweep->c->error_name);
+    report_plot_t plot = report_plot_start(gp);
     for (int i = 0; i < INTEGRATOR_COUNT; i++) {
-        fprintf(gp, "%s'%s-%d.dat' using 3:2:4:5 with xerrorlines lt %d title '%s'", i ? ", " : "",
-                name, i, i + 1, integrator_get_name((integrator_t)i));
+        snprintf(file, sizeof file, "%s-%d.dat", name, i);
+        if (!report_has_data(options->out_dir, file)) continue;
+        report_plot_add(&plot, "'%s' using 3:2:4:5 with xerrorlines lt %d title '%s'", file, i + 1,
+                        integrator_get_name((integrator_t)i));
     }
-    fprintf(gp, "\nset output 'evaluations-%s.svg'\n", name);
-    fprintf(gp, "set title \"%s: error against force evaluations over the run\"\n", name);
-    fprintf(gp, "set xlabel 'force evaluations (passes over the force creators)'\nplot ");
+    report_plot_end(&plot);
+    bool any = false;
+    for (int i = 0; i < INTEGRATOR_COUNT; i++) any |= has_evaluations(&sweep->series[i]);
+    if (any) fprintf(gp, "set output 'evaluations-%s.svg'\n", name);
+    fprintf(gp, "set title \"%s: error against force evaluations\"\n", name);
+    fprintf(gp, "set xlabel 'force evaluations (passes over the force creators)'\n");
+    plot = report_plot_start(any ? gp : NULL);
     for (int i = 0; i < INTEGRATOR_COUNT; i++) {
-        fprintf(gp, "%s'%s-%d.dat' using ($6 > 0 ? $6 : 1/0):2 with linespoints lt %d title '%s'",
-                i ? ", " : "", name, i, i + 1, integrator_get_name((integrator_t)i));
+        snprintf(file, sizeof file, "%s-%d.dat", name, i);
+        if (!has_evaluations(&sweep->series[i]) || !report_has_data(options->out_dir, file)) {
+            continue;
+        }
+        report_plot_add(&plot, "'%s' using ($6 > 0 ? $6 : 1/0):2 with linespoints lt %d title '%s'",
+                        file, i + 1, integrator_get_name((integrator_t)i));
     }
-    fprintf(gp, "\nset output 'order-%s.svg'\n", name);
-    fprintf(gp, "set title \"%s: error against step size (filled: the fit window)\"\n", name);
-    fprintf(gp, "set xlabel 'step h (s)'\nplot ");
+    if (any) report_plot_end(&plot);
+    fprintf(gp, "set output 'order-%s.svg'\n", name);
+    fprintf(gp, "set title \"%s: error against h (filled: fit window)\"\n", name);
+    fprintf(gp, "set xlabel 'step h (s)'\n");
+    plot = report_plot_start(gp);
     for (int i = 0; i < INTEGRATOR_COUNT; i++) {
         const report_series_t *s = &sweep->series[i];
+        snprintf(file, sizeof file, "%s-%d.dat", name, i);
+        if (!report_has_data(options->out_dir, file)) continue;
         char order[64] = "no window";
         if (s->first >= 0) snprintf(order, sizeof order, "slope %.2f", s->order);
-        fprintf(gp, "%s'%s-%d.dat' using 1:2 with linespoints lt %d pt 6 title '%s (%s)', "
-                    "'%s-%d.dat' using 1:($7 ? $2 : 1/0) with points lt %d pt 7 notitle",
-                i ? ", " : "", name, i, i + 1, integrator_get_name((integrator_t)i), order, name,
-                i, i + 1);
+        report_plot_add(&plot, "'%s' using 1:2 with linespoints lt %d pt 6 title '%s (%s)', "
+                               "'%s' using 1:($7 > 0 ? $2 : 1/0) with points lt %d pt 7 notitle",
+                        file, i + 1, integrator_get_name((integrator_t)i), order, file, i + 1);
     }
-    fprintf(gp, "\n");
+    report_plot_end(&plot);
 }
 
 static void write_slopes(const report_series_t *s, char *text, size_t size) {
@@ -336,13 +357,17 @@ static void write_order(char *text, size_t size, const report_series_t *s) {
 void report_write_sweep(const report_sweep_t *sweep, FILE *md, FILE *gp,
                         const report_options_t *options) {
     const report_case_t *c = sweep->c;
-    write_data(sweep, options);
-    write_plots(sweep, gp);
+    report_write_sweep_data(sweep, options);
+    write_plots(sweep, gp, options);
+    bool evaluated = false;
+    for (int i = 0; i < INTEGRATOR_COUNT; i++) evaluated |= has_evaluations(&sweep->series[i]);
     int common = 4;
     fprintf(md, "\n### %s\n\n%s.\n\n", c->name, c->title);
     fprintf(md, "![%s: work-precision](report/work-%s.svg)\n", c->name, c->name);
-    fprintf(md, "![%s: error against force evaluations](report/evaluations-%s.svg)\n", c->name,
-            c->name);
+    if (evaluated) {
+        fprintf(md, "![%s: error against force evaluations](report/evaluations-%s.svg)\n",
+                c->name, c->name);
+    }
     fprintf(md, "![%s: error against h](report/order-%s.svg)\n\n", c->name, c->name);
     long budget = options->quick ? QUICK_STEP_BUDGET : STEP_BUDGET;
     if (c->budget > 0 && c->budget < budget) budget = c->budget;
