@@ -93,7 +93,9 @@ static void a_change_between_ticks_evaluates_afresh(void) {
             scene_t *scene = k == 0 ? a : b;
             body_t *bob = scene_get_body(scene, 1), *moon = scene_get_body(scene, 2);
             switch (change) {
-            case 0: body_set_centroid(bob, vec_add(body_get_centroid(bob), (vector_t){1e-9, 0})); break;
+            case 0:
+                body_set_centroid(bob, vec_add(body_get_centroid(bob), (vector_t){1e-9, 0}));
+                break;
             case 1: body_set_velocity(moon, (vector_t){0.1, 0.0}); break;
             case 2: body_add_force(bob, (vector_t){0.5, 0.0}); break;
             case 3: create_spring(scene, 1.0, scene_get_body(scene, 0), moon); break;

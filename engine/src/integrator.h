@@ -32,8 +32,9 @@
  *                     omega h < 2 sqrt(2).
  *   symplectic4       Yoshida's composition of three Verlet steps of
  *                     h / (2 - 2^(1/3)), -2^(1/3) h / (2 - 2^(1/3)),
- *                     h / (2 - 2^(1/3)); 4 evaluations, 3 when the first is reused. Order 4, symplectic;
- *                     stable for omega h < 1.573.
+ *                     h / (2 - 2^(1/3)); 4 evaluations, 3 when the first
+ *                     is reused. Order 4, symplectic; stable for
+ *                     omega h < 1.573.
  * Every scheme sees the force creators' forces and torques at its stages;
  * impulses act at the start of the step.
  */

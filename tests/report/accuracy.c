@@ -135,8 +135,9 @@ static void write_summary(FILE *md, const report_sweep_t *sweeps, int count,
                 "evaluations per step (the oscillator's; section 1), the fitted order on five "
                 "cases (\"-\": no asymptotic window; sections 1 and 4), the largest stable "
                 "omega h on an undamped spring and gamma h under drag alone (closed forms, "
-                "which the engine meets; section 3), the largest energy drift |E/E0 - 1| on "
-                "the oscillator at h = 1/32 s (32 steps a period; section 1), and the growth p (error ~ t^p) of the "
+                "which the engine meets; 0: unstable at every h; section 3), the largest "
+                "energy drift |E/E0 - 1| on the oscillator at h = 1/32 s (32 steps a period; "
+                "section 1), and the growth p (error ~ t^p) of the "
                 "energy error and the phase error on Kepler e = 0.6 at %g steps per period "
                 "(section 2; \"-\": the error saturated or the orbit was lost before the fit "
                 "had four points).\n\n",
@@ -159,9 +160,14 @@ static void write_summary(FILE *md, const report_sweep_t *sweeps, int count,
             write_order_cell(md, series_of(sweeps, count, orders[k], i));
         }
         const report_summary_t *s = &summary[i];
-        fprintf(md, " | %s", isnan(s->spring_limit) ? "-" : s->spring_limit == 0.0 ? "none" : "");
-        if (s->spring_limit > 0.0) fprintf(md, "%.4g", s->spring_limit);
-        fprintf(md, " | %s", report_number(text, sizeof text, s->drag_limit));
+        for (int l = 0; l < 2; l++) {
+            double limit = l == 0 ? s->spring_limit : s->drag_limit;
+            if (isinf(limit)) {
+                fprintf(md, " | no limit");
+            } else {
+                fprintf(md, " | %s", report_number(text, sizeof text, limit));
+            }
+        }
         double drift = NAN;
         if (oscillator != NULL && oscillator->count > OSCILLATOR_DRIFT_POINT) {
             const reference_result_t *r = &oscillator->points[OSCILLATOR_DRIFT_POINT].result;

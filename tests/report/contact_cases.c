@@ -223,7 +223,9 @@ static double error_of(const contact_run_t *run, double t) {
     }
     default: {
         double error = fabs(body_get_velocity(run->row[run->boxes - 1]).x - CRADLE_V0);
-        for (int i = 0; i < run->boxes - 1; i++) error += vec_get_length(body_get_velocity(run->row[i]));
+        for (int i = 0; i < run->boxes - 1; i++) {
+            error += vec_get_length(body_get_velocity(run->row[i]));
+        }
         return error / CRADLE_V0;
     }
     }

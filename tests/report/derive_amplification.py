@@ -128,7 +128,9 @@ typedef struct {
 def terms(entries):
     if not entries:
         return '{{0, 0, 0.0}}'
-    return '{' + ', '.join('{%d, %d, %s}' % (i, j, c_number(v)) for (i, j), v in entries) + '}'
+    items = ['{%d, %d, %s}' % (i, j, c_number(v)) for (i, j), v in entries]
+    lines = [', '.join(items[k:k + 2]) for k in range(0, len(items), 2)]
+    return '{' + ',\n      '.join(lines) + '}'
 
 print('static const amplification_t AMPLIFICATION[] = {')
 for (name, step) in SCHEMES:

@@ -77,9 +77,9 @@ int report_reference_cases(report_case_t *cases, int capacity, bool quick) {
                        "over the distance flown",
                        quick ? 1.0 : 5.0, 0.5),
         reference_case(REFERENCE_BOUNCE,
-                       "the bounce scene of [bench-scenes.md](bench-scenes.md) with world contacts: "
-                       "a 1 m box from 10 m at elasticity 0.8 under g = 10; apex n at 10 e^(2n) m. "
-                       "Error: the largest relative apex error over five bounces, each apex from "
+                       "the bounce scene of [bench-scenes.md](bench-scenes.md) with world "
+                       "contacts: a 1 m box from 10 m at elasticity 0.8 under g = 10; apex n "
+                       "at 10 e^(2n) m. Error: the largest relative apex error over five bounces, each apex from "
                        "the parabola through the last rising step",
                        1.0, 1.0 / 15.0),
     };

@@ -112,7 +112,9 @@ static void write_plots(FILE *gp, const row_t *rows, int count, const report_opt
     int first[MAX_ROWS], distinct = 0;
     for (int i = 0; i < count; i++) {
         bool seen = false;
-        for (int k = 0; k < distinct; k++) seen |= strcmp(rows[first[k]].variant, rows[i].variant) == 0;
+        for (int k = 0; k < distinct; k++) {
+            seen |= strcmp(rows[first[k]].variant, rows[i].variant) == 0;
+        }
         if (!seen) first[distinct++] = i;
     }
     for (int k = 0; k < distinct; k++) {
