@@ -37,6 +37,12 @@ static bool same_settings(scene_file_t *a, scene_file_t *b, char *why, size_t si
         return differ(why, size, "sleeping differs");
     if (scene_get_sleep_phase(x) != scene_get_sleep_phase(y))
         return differ(why, size, "sleep phase differs");
+    double last[2], before[2];
+    scene_get_step_lengths(x, &last[0], &before[0]);
+    scene_get_step_lengths(y, &last[1], &before[1]);
+    if (last[0] != last[1] || before[0] != before[1])
+        return differ(why, size, "step lengths differ (%.17g, %.17g against %.17g, %.17g)",
+                      last[0], before[0], last[1], before[1]);
     return true;
 }
 
@@ -184,6 +190,12 @@ static bool same_memory(const scene_contact_memory_t *m, const scene_contact_mem
     for (int j = 0; same && j < m->feature_count; j++) {
         same = same_vector(m->feature_points[j], n->feature_points[j]) &&
                m->feature_ids[j] == n->feature_ids[j];
+    }
+    same = same && m->previous_count == n->previous_count;
+    for (int j = 0; same && j < m->previous_count; j++) {
+        same = m->previous[j].id == n->previous[j].id &&
+               m->previous[j].normal_impulse == n->previous[j].normal_impulse &&
+               m->previous[j].tangent_impulse == n->previous[j].tangent_impulse;
     }
     return same;
 }

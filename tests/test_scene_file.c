@@ -426,6 +426,51 @@ static void a_running_scene_is_written_as_it_is_now(void) {
     CHECK(test_no_leaks());
 }
 
+/* step_lengths and a contact's previous points reach the world, and a
+ * scene written after steps of two lengths carries them. */
+static void step_lengths_and_previous_points_reach_the_world(void) {
+    const char *text = "contacts on\nstep_lengths 1/120 0.0125\n"
+                       "body floor { box 10 1; static; position 0 -0.5 }\n"
+                       "body box { box 1 1; position 0 0.5 }\n"
+                       "contact 0 1 {\n    normal 0 1\n    point 131072 -0.5 0 0 0.02 0 0 0\n"
+                       "    face a 0 1 5 0.5 edge\n    incident 131072 -0.5 -0.5\n"
+                       "    pose 0 1 0\n    previous 131072 0.03 -0.25\n"
+                       "    previous 7 1e-300 0\n}\n";
+    scene_file_t *file = parse(text);
+    scene_t *scene = scene_file_get_scene(file);
+    double last = 0.0, before = 0.0;
+    scene_get_step_lengths(scene, &last, &before);
+    CHECK(last == 1.0 / 120.0 && before == 0.0125);
+    CHECK(scene_contact_memory_count(scene) == 1);
+    scene_contact_memory_t m = scene_get_contact_memory(scene, 0);
+    CHECK(m.previous_count == 2);
+    CHECK(m.previous[0].id == 131072 && m.previous[0].normal_impulse == 0.03 &&
+          m.previous[0].tangent_impulse == -0.25);
+    CHECK(m.previous[1].id == 7 && m.previous[1].normal_impulse == 1e-300 &&
+          m.previous[1].tangent_impulse == 0.0);
+    char why[256] = "";
+    CHECK(scene_file_round_trip((const uint8_t *)text, strlen(text), "t.scene", why, sizeof why));
+    if (why[0] != '\0') printf("    %s\n", why);
+    scene_file_free(file);
+
+    file = parse("gravity 0 -10\ncontacts on\nbody floor { box 10 1; static; position 0 -0.5 }\n"
+                 "body box { box 1 1; position 0 0.5 }\n");
+    scene = scene_file_get_scene(file);
+    size_t length = 0;
+    char *written = scene_file_write(file, &length, NULL);
+    CHECK(strstr(written, "step_lengths") == NULL); /* no step yet */
+    free(written);
+    scene_tick(scene, 1.0 / 60.0);
+    scene_tick(scene, 1.0 / 30.0);
+    scene_tick(scene, 1.0 / 90.0);
+    written = scene_file_write(file, &length, NULL);
+    CHECK(strstr(written, "step_lengths 0.011111111111111112 0.03333333333333333\n") != NULL);
+    CHECK(strstr(written, "    previous ") != NULL);
+    free(written);
+    scene_file_free(file);
+    CHECK(test_no_leaks());
+}
+
 static void save_and_load_through_a_path(void) {
     scene_file_t *file = parse("gravity 0 -1\nbody a { regular 7 1; position 1 2 }\n");
     char path[] = "/tmp/scene_file_test_XXXXXX";
@@ -464,8 +509,8 @@ typedef struct {
 static const bad_file_t BAD_FILES[] = {
     {"bdoy x { box 1 1 }",
      "t.scene:1:1: expected a statement (body, template, group, gravity, contacts, integrator, "
-     "iterations, timestep, view, game, sleeping, sleep_phase, spring, newton, drag, collide, "
-     "contact), found \"bdoy\""},
+     "iterations, timestep, view, game, sleeping, sleep_phase, step_lengths, spring, newton, drag, "
+     "collide, contact), found \"bdoy\""},
     {"gravity 0 abc",
      "t.scene:1:11: expected a gravity component (m/s^2), a number, found \"abc\""},
     {"gravity 0 1e999",
@@ -620,8 +665,8 @@ static const bad_file_t BAD_FILES[] = {
     {"contacts on\nsleep_phase 8",
      "t.scene:2:13: expected the sleep phase, a whole number from 0 to 7, found \"8\""},
     {"body a { box 1 1; asleep 0 }",
-     "t.scene:1:19: expected contacts on for the world's state (asleep, contact, sleep_phase), "
-     "found contacts off"},
+     "t.scene:1:19: expected contacts on for the world's state (asleep, contact, sleep_phase, "
+     "step_lengths), found contacts off"},
     {"contacts on\nsleeping off\nbody a { box 1 1; asleep 0 }",
      "t.scene:3:19: expected sleeping on for a body asleep, found sleeping off"},
     {"contacts on\nbody a { box 1 1; static; asleep 0 }",
@@ -647,10 +692,30 @@ static const bad_file_t BAD_FILES[] = {
      "t.scene:4:1: expected one contact per pair, found a second for 0 and 1 (the first at line "
      "3)"},
     {"contacts on\nbody a { box 1 1; repeat 2 1 2 0 }\ncontact 0 1 { norm 0 1 }",
-     "t.scene:3:15: expected a contact line (normal, point, face, incident, pose) or '}', found "
-     "\"norm\""},
+     "t.scene:3:15: expected a contact line (normal, point, face, incident, pose, previous) or "
+     "'}', found \"norm\""},
     {"contact 0 1 { incident 1 0 0; incident 2 0 0; incident 3 0 0 }",
      "t.scene:1:47: expected at most two incident lines in a contact, found a third"},
+    {"contact 0 1 { previous 1 0 0; previous 2 0 0; previous 3 0 0 }",
+     "t.scene:1:47: expected at most two previous lines in a contact, found a third"},
+    {"contact 0 1 { previous 1 0 nan }",
+     "t.scene:1:28: expected the tangent impulse of the step before (N s), a number, found "
+     "\"nan\""},
+    {"step_lengths 0.01 0.02",
+     "t.scene:1:1: expected contacts on for the world's state (asleep, contact, sleep_phase, "
+     "step_lengths), found contacts off"},
+    {"contacts on\nstep_lengths 0 0.02",
+     "t.scene:2:1: expected a last step longer than 0 when the step before it has a length, "
+     "found 0 and 0.02"},
+    {"contacts on\nstep_lengths -0.01 0",
+     "t.scene:2:14: expected the last step's length (s), a number >= 0 and <= 1e+300, found "
+     "\"-0.01\""},
+    {"contacts on\nstep_lengths 0.01",
+     "t.scene:2:18: expected the length of the step before it (s), a number, found the end of the "
+     "file"},
+    {"contacts on\nstep_lengths 0.01 0\nstep_lengths 0.01 0",
+     "t.scene:3:1: expected one step_lengths statement per file, found a second (the first at "
+     "line 2)"},
     {"contact 0 1 { face c 0 1 0 0 }",
      "t.scene:1:20: expected a or b (the body holding the reference face), found \"c\""},
     {"contact 0 1 { normal 0 1 }\ncontact 0",
@@ -817,6 +882,7 @@ TEST_SUITE(scene_file, TEST_CASE(settings_reach_the_scene),
            TEST_CASE(many_spawns_and_destructions_leave_nothing_behind),
            TEST_CASE(find_body_forgets_freed_bodies), TEST_CASE(written_scenes_load_back_the_same),
            TEST_CASE(a_running_scene_is_written_as_it_is_now),
+           TEST_CASE(step_lengths_and_previous_points_reach_the_world),
            TEST_CASE(save_and_load_through_a_path),
            TEST_CASE(malformed_files_are_refused_with_where_and_what),
            TEST_CASE(a_nul_byte_is_refused_where_it_is),

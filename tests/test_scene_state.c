@@ -2,6 +2,7 @@
  * rebuilt from another's bodies and that state continues bit for bit, and
  * bad input to the restoring functions stops with a message. */
 #include <math.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 #include "engine.h"
@@ -81,6 +82,9 @@ static scene_t *copy_of(scene_t *from, bool state) {
     free(sleepers);
     free(islands);
     scene_set_sleep_phase(to, scene_get_sleep_phase(from));
+    double last, before;
+    scene_get_step_lengths(from, &last, &before);
+    scene_set_step_lengths(to, last, before);
     size_t count = scene_contact_memory_count(from);
     scene_contact_memory_t *memories = malloc((count + 1) * sizeof *memories);
     for (size_t k = 0; k < count; k++) {
@@ -152,6 +156,74 @@ static void a_copy_with_its_state_continues_bit_for_bit(void) {
     scene_free(original);
     scene_free(copy);
     scene_free(bare);
+}
+
+/* A step length drawn uniformly from 1/240 to 1/30 s (a fixed generator). */
+static double random_dt(uint32_t *seed) {
+    *seed = (uint32_t)((1103515245ull * *seed + 12345u) % 2147483648u);
+    return 1.0 / 240.0 + (*seed / 2147483648.0) * (1.0 / 30.0 - 1.0 / 240.0);
+}
+
+/* The same under steps that vary: the copy takes the lengths of the last
+ * two steps and, in each memory, the pair's points of the step before
+ * last, which a step of another length reads. Without them (a copy of the
+ * rest alone) it departs at the first step. */
+static void a_copy_continues_bit_for_bit_under_varying_steps(void) {
+    scene_t *original = new_scene();
+    uint32_t seed = 99u;
+    for (int i = 0; i < 80; i++) scene_tick(original, random_dt(&seed));
+    double last, before;
+    scene_get_step_lengths(original, &last, &before);
+    CHECK(last > 0.0 && before > 0.0 && last != before);
+    size_t with_previous = 0;
+    for (size_t k = 0; k < scene_contact_memory_count(original); k++) {
+        with_previous += scene_get_contact_memory(original, k).previous_count > 0;
+    }
+    CHECK(with_previous > 20);
+    scene_t *copy = copy_of(original, true);
+    scene_t *forgetful = copy_of(original, true);
+    scene_set_step_lengths(forgetful, 0.0, 0.0);
+    CHECK(bodies_differing(original, copy) == 0);
+    bool forgetful_departed = false;
+    for (int step = 0; step < 300; step++) {
+        double dt = random_dt(&seed);
+        scene_tick(original, dt);
+        scene_tick(copy, dt);
+        scene_tick(forgetful, dt);
+        if (bodies_differing(original, copy) != 0) {
+            test_fail(__FILE__, __LINE__, "%d bodies differ at step %d",
+                      bodies_differing(original, copy), step + 1);
+            break;
+        }
+        forgetful_departed |= bodies_differing(original, forgetful) > 0;
+    }
+    CHECK(forgetful_departed);
+    scene_free(original);
+    scene_free(copy);
+    scene_free(forgetful);
+}
+
+/* The lengths read back as the last two steps were, and as set; a tick of
+ * dt 0 takes no step and keeps them; contacts off reads 0. */
+static void step_lengths_read_back(void) {
+    scene_t *scene = new_scene();
+    double last = -1.0, before = -1.0;
+    scene_get_step_lengths(scene, &last, &before);
+    CHECK(last == 0.0 && before == 0.0);
+    scene_tick(scene, 0.02);
+    scene_get_step_lengths(scene, &last, &before);
+    CHECK(last == 0.02 && before == 0.0);
+    scene_tick(scene, 0.005);
+    scene_tick(scene, 0.0);
+    scene_get_step_lengths(scene, &last, &before);
+    CHECK(last == 0.005 && before == 0.02);
+    scene_set_step_lengths(scene, 0.25, 0.125);
+    scene_get_step_lengths(scene, &last, &before);
+    CHECK(last == 0.25 && before == 0.125);
+    scene_set_contacts_enabled(scene, false);
+    scene_get_step_lengths(scene, &last, &before);
+    CHECK(last == 0.0 && before == 0.0);
+    scene_free(scene);
 }
 
 /* The contact memory is kept through a tick of dt 0 (a paused game), but
@@ -238,6 +310,16 @@ BAD_CALL(memory_nan, bad_nan = bad_pair(3, 4); bad_nan.pose_angle = NAN;
          scene_restore_contact_memory(bad_scene, &bad_nan, 1))
 BAD_CALL(memory_count, bad_count = bad_pair(3, 4); bad_count.point_count = 3;
          scene_restore_contact_memory(bad_scene, &bad_count, 1))
+BAD_CALL(lengths_negative, scene_set_step_lengths(bad_scene, -0.01, 0.0))
+BAD_CALL(lengths_nan, scene_set_step_lengths(bad_scene, 0.01, NAN))
+BAD_CALL(lengths_before_alone, scene_set_step_lengths(bad_scene, 0.0, 0.01))
+BAD_CALL(lengths_contacts_off, scene_set_contacts_enabled(bad_scene, false);
+         scene_set_step_lengths(bad_scene, 0.01, 0.0))
+BAD_CALL(memory_previous_count, bad_count = bad_pair(3, 4); bad_count.previous_count = 3;
+         scene_restore_contact_memory(bad_scene, &bad_count, 1))
+BAD_CALL(memory_previous_nan, bad_nan = bad_pair(3, 4); bad_nan.previous_count = 1;
+         bad_nan.previous[0].tangent_impulse = NAN;
+         scene_restore_contact_memory(bad_scene, &bad_nan, 1))
 BAD_CALL(memory_twice, scene_restore_contact_memory(bad_scene,
                                                     (scene_contact_memory_t[]){bad_pair(3, 4),
                                                                                bad_pair(3, 4)},
@@ -259,12 +341,26 @@ static void bad_state_stops_with_a_message(void) {
                "memories[0] pairs a body with itself");
     CHECK_DIES(memory_nan, NULL, "engine error in scene_restore_contact_memory:", "not finite");
     CHECK_DIES(memory_count, NULL, "engine error in scene_restore_contact_memory:", "0 to 2");
+    CHECK_DIES(lengths_negative, NULL, "engine error in scene_set_step_lengths:",
+               "last must be finite and >= 0 (got -0.01)");
+    CHECK_DIES(lengths_nan, NULL, "engine error in scene_set_step_lengths:",
+               "before must be finite and >= 0 (got nan)");
+    CHECK_DIES(lengths_before_alone, NULL, "engine error in scene_set_step_lengths:",
+               "a step before the last needs a last step");
+    CHECK_DIES(lengths_contacts_off, NULL, "engine error in scene_set_step_lengths:",
+               "world contacts are off");
+    CHECK_DIES(memory_previous_count, NULL, "engine error in scene_restore_contact_memory:",
+               "previous_count must be 0 to 2");
+    CHECK_DIES(memory_previous_nan, NULL, "engine error in scene_restore_contact_memory:",
+               "not finite");
     CHECK_DIES(memory_twice, NULL, "engine error in scene_restore_contact_memory:",
                "bodies 3 and 4 is listed twice");
     scene_free(bad_scene);
 }
 
 TEST_SUITE(scene_state, TEST_CASE(a_copy_with_its_state_continues_bit_for_bit),
+           TEST_CASE(a_copy_continues_bit_for_bit_under_varying_steps),
+           TEST_CASE(step_lengths_read_back),
            TEST_CASE(a_paused_tick_keeps_the_memory_of_the_bodies_it_keeps),
            TEST_CASE(timers_filters_and_islands_read_back),
            TEST_CASE(bad_state_stops_with_a_message));

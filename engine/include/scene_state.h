@@ -4,9 +4,10 @@
 /*
  * What a scene carries from one step into the next beyond the values body.h
  * and scene.h report: each body's sleep timer and sleeping island, the
- * phase of the island check, and the world's contact memory (last step's
- * contacts, whose impulses warm-start the next step's and whose features
- * it reuses). A program that saves a scene and loads it into a new one
+ * phase of the island check, the lengths of the last two steps, and the
+ * world's contact memory (last step's contacts, whose impulses warm-start
+ * the next step's and whose features it reuses, with what the step before
+ * left on the same points). A program that saves a scene and loads it into a new one
  * (scene_file.h) reads these after a tick and hands them back before the
  * first tick of the new scene, which then continues bit for bit as the
  * saved one would have.
@@ -74,6 +75,18 @@ void scene_restore_sleep(scene_t *scene, body_t *const *bodies, const size_t *is
 unsigned scene_get_sleep_phase(scene_t *scene);
 void scene_set_sleep_phase(scene_t *scene, unsigned phase);
 
+/* ---- Step lengths ------------------------------------------------------------ */
+
+/* The lengths of the last step and of the step before it (s; 0 for a step
+ * not taken yet), with world contacts on (both 0 while they are off). A
+ * step of another length than the last starts its contacts from their
+ * force over both (docs/api.md, Step size), and one longer than the last
+ * first wakes what moving bodies may reach in it. Set them to continue a
+ * saved scene; refused: world contacts off, a length that is negative or
+ * not finite, or a step before the last without a last. */
+void scene_get_step_lengths(scene_t *scene, double *last, double *before);
+void scene_set_step_lengths(scene_t *scene, double last, double before);
+
 /* ---- Contact memory ---------------------------------------------------------- */
 
 /*
@@ -89,7 +102,10 @@ void scene_set_sleep_phase(scene_t *scene, unsigned phase);
  * ids; edge_ends when those points are the incident edge's own ends. pose
  * is body_b's centroid in body_a's frame (m) and pose_angle body_b's angle
  * less body_a's (rad), when the features were found: while the bodies stay
- * close to that, the next steps reuse the features.
+ * close to that, the next steps reuse the features. previous holds the
+ * points of the pair's contact in the step before the last (none when it
+ * had none), with their ids and velocity-pass impulses: a step of another
+ * length reads them with the last step's.
  */
 typedef struct {
     uint32_t id;
@@ -98,6 +114,11 @@ typedef struct {
     double normal_impulse, tangent_impulse;
     double restitution_impulse, restitution_tangent_impulse;
 } scene_memory_point_t;
+
+typedef struct {
+    uint32_t id;
+    double normal_impulse, tangent_impulse;
+} scene_memory_previous_t;
 
 typedef struct {
     body_t *body_a, *body_b;
@@ -111,6 +132,8 @@ typedef struct {
     uint32_t feature_ids[2];
     vector_t pose;
     double pose_angle;
+    int previous_count; /* 0 to 2 */
+    scene_memory_previous_t previous[2];
 } scene_contact_memory_t;
 
 /* The world contacts of the last tick, as scene_contact_count's world
@@ -124,7 +147,8 @@ scene_contact_memory_t scene_get_contact_memory(scene_t *scene, size_t index);
  * them as from the contacts of a step it took. Between ticks, with world
  * contacts on. Refused: a NULL array with count > 0; a body that is NULL,
  * not in this scene or marked removed; body_a == body_b; a pair listed
- * twice; a count outside 0 to 2; a value that is not finite.
+ * twice; a count (of points, features or previous points) outside 0 to 2;
+ * a value that is not finite.
  */
 void scene_restore_contact_memory(scene_t *scene, const scene_contact_memory_t *memories,
                                   size_t count);

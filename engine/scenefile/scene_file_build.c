@@ -365,10 +365,17 @@ static bool check_state(const sf_doc_t *doc, sf_lexer_t *lexer) {
     sf_where_t needs_contacts = doc->first_island;
     if (needs_contacts.line == 0 && doc->contact_count > 0) needs_contacts = doc->contacts[0].where;
     if (needs_contacts.line == 0) needs_contacts = s->sleep_phase_where;
+    if (needs_contacts.line == 0) needs_contacts = s->step_lengths_where;
     if (needs_contacts.line != 0 && !s->contacts) {
         return sf_fail(lexer, needs_contacts,
-                       "expected contacts on for the world's state (asleep, contact, sleep_phase), "
-                       "found contacts off");
+                       "expected contacts on for the world's state (asleep, contact, sleep_phase, "
+                       "step_lengths), found contacts off");
+    }
+    if (s->step_lengths_where.line != 0 && s->last_step == 0.0 && s->step_before != 0.0) {
+        return sf_fail(lexer, s->step_lengths_where,
+                       "expected a last step longer than 0 when the step before it has a length, "
+                       "found 0 and %g",
+                       s->step_before);
     }
     if (doc->first_island.line != 0 && !s->sleeping) {
         return sf_fail(lexer, doc->first_island,
@@ -378,7 +385,8 @@ static bool check_state(const sf_doc_t *doc, sf_lexer_t *lexer) {
 }
 
 /* After every body is made and set: the timers (which setting a body's
- * pose restarts), the sleeping islands, the phase, the contact memory. */
+ * pose restarts), the sleeping islands, the phase, the step lengths, the
+ * contact memory. */
 static void restore_state(scene_file_t *file) {
     sf_doc_t *doc = &file->doc;
     scene_t *scene = file->scene;
@@ -400,6 +408,9 @@ static void restore_state(scene_file_t *file) {
     free(islands);
     if (doc->settings.sleep_phase_where.line != 0) {
         scene_set_sleep_phase(scene, doc->settings.sleep_phase);
+    }
+    if (doc->settings.step_lengths_where.line != 0) {
+        scene_set_step_lengths(scene, doc->settings.last_step, doc->settings.step_before);
     }
     if (doc->contact_count == 0) return;
     scene_contact_memory_t *memories = malloc(doc->contact_count * sizeof *memories);

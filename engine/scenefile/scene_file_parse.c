@@ -363,6 +363,14 @@ static bool parse_setting(parser_t *p, const char *keyword, sf_where_t here) {
         s->sleep_phase = (unsigned)phase;
         return true;
     }
+    if (strcmp(keyword, "step_lengths") == 0) {
+        quantity_t last = DURATION, before = DURATION;
+        last.what = "the last step's length (s)";
+        before.what = "the length of the step before it (s)";
+        return first_time(p, &s->step_lengths_where, keyword, here) &&
+               read_quantity(p, &last, &s->last_step) &&
+               read_quantity(p, &before, &s->step_before);
+    }
     /* game */
     return first_time(p, &s->game_where, keyword, here) &&
            read_name(p, "the game's name", &s->game, NULL);
@@ -942,6 +950,16 @@ static bool read_memory_point(parser_t *p, scene_memory_point_t *point) {
            read_quantity(p, &impulses[3], &point->restitution_tangent_impulse);
 }
 
+/* `previous ID NORMAL TANGENT` */
+static bool read_previous_point(parser_t *p, scene_memory_previous_t *point) {
+    quantity_t normal = STATE_VALUE, tangent = STATE_VALUE;
+    normal.what = "the normal impulse of the step before (N s)";
+    tangent.what = "the tangent impulse of the step before (N s)";
+    return read_bits(p, "the previous point's feature id", &point->id) &&
+           read_quantity(p, &normal, &point->normal_impulse) &&
+           read_quantity(p, &tangent, &point->tangent_impulse);
+}
+
 /* `face a|b NX NY X Y [edge]` */
 static bool read_face(parser_t *p, scene_contact_memory_t *m) {
     if (!sf_token_is(&p->token, "a") && !sf_token_is(&p->token, "b")) {
@@ -966,13 +984,23 @@ static bool parse_contact_line(parser_t *p, sf_contact_t *contact, sf_where_t *s
     char keyword[16] = "";
     if (p->token.length < sizeof keyword) memcpy(keyword, p->token.text, p->token.length);
     keyword[p->token.length < sizeof keyword ? p->token.length : 0] = '\0';
-    static const char *const LINES[] = {"normal", "point", "incident", "face", "pose"};
+    static const char *const LINES[] = {"normal", "point", "incident", "face", "pose",
+                                        "previous"};
     bool known = false;
     for (size_t i = 0; i < sizeof LINES / sizeof LINES[0]; i++) {
         known = known || strcmp(keyword, LINES[i]) == 0;
     }
-    if (!known) return expected(p, "a contact line (normal, point, face, incident, pose) or '}'");
+    if (!known) {
+        return expected(p, "a contact line (normal, point, face, incident, pose, previous) or '}'");
+    }
     next(p);
+    if (strcmp(keyword, "previous") == 0) {
+        if (m->previous_count == 2) {
+            return sf_fail(p->lexer, here,
+                           "expected at most two previous lines in a contact, found a third");
+        }
+        return read_previous_point(p, &m->previous[m->previous_count++]);
+    }
     if (strcmp(keyword, "normal") == 0) {
         return first_time(p, &seen[0], "normal", here) &&
                read_vector(p, &UNIT_COMPONENT, &m->normal);
@@ -1042,7 +1070,7 @@ static bool parse_contact(parser_t *p, sf_where_t here) {
 
 static const char *const SETTINGS[] = {"gravity",  "contacts", "integrator", "iterations",
                                        "timestep", "view",     "game",       "sleeping",
-                                       "sleep_phase"};
+                                       "sleep_phase", "step_lengths"};
 static const char *const FORCES[] = {"spring", "newton", "drag", "collide"};
 
 static bool parse_one(parser_t *p) {
@@ -1082,8 +1110,8 @@ static bool parse_one(parser_t *p) {
     }
     if (p->token.kind == TOKEN_BAD_BYTE) return expected(p, "text");
     return expected(p, "a statement (body, template, group, gravity, contacts, integrator, "
-                       "iterations, timestep, view, game, sleeping, sleep_phase, spring, newton, "
-                       "drag, collide, contact)");
+                       "iterations, timestep, view, game, sleeping, sleep_phase, step_lengths, "
+                       "spring, newton, drag, collide, contact)");
 }
 
 bool sf_parse(sf_lexer_t *lexer, sf_doc_t *doc) {

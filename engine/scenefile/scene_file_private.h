@@ -208,6 +208,8 @@ typedef struct {
     sf_where_t sleeping_where;
     unsigned sleep_phase;
     sf_where_t sleep_phase_where;
+    double last_step, step_before; /* scene_set_step_lengths */
+    sf_where_t step_lengths_where;
 } sf_settings_t;
 
 /* A `contact A B { ... }` block: the world's contact memory of one pair

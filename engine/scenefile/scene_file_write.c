@@ -79,6 +79,14 @@ static void put_settings(out_t *out, scene_file_t *file, const char *integrator)
     put(out, "sleeping %s\n", scene_get_sleeping(file->scene) ? "on" : "off");
     unsigned phase = scene_get_sleep_phase(file->scene);
     if (phase != 0) put(out, "sleep_phase %u\n", phase);
+    double last, before;
+    scene_get_step_lengths(file->scene, &last, &before);
+    if (last != 0.0) {
+        put(out, "step_lengths");
+        put_number(out, last);
+        put_number(out, before);
+        put(out, "\n");
+    }
 }
 
 static void put_shape(out_t *out, const sf_shape_t *shape) {
@@ -396,7 +404,14 @@ static void put_contact(out_t *out, const numbered_contact_t *c) {
     put(out, "    pose");
     put_vector(out, m->pose);
     put_number(out, m->pose_angle);
-    put(out, "\n}\n");
+    put(out, "\n");
+    for (int j = 0; j < m->previous_count; j++) {
+        put(out, "    previous %u", (unsigned)m->previous[j].id);
+        put_number(out, m->previous[j].normal_impulse);
+        put_number(out, m->previous[j].tangent_impulse);
+        put(out, "\n");
+    }
+    put(out, "}\n");
 }
 
 /* The contacts, by their bodies' places in the file, in that order. */

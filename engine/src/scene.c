@@ -18,6 +18,9 @@ struct scene {
     body_t **bodies;
     size_t body_count, body_capacity;
     uint32_t next_body_id;
+    /* The most vertices of any body ever added: what a step's scratch room
+     * for posed polygons must hold (world_step_t). */
+    size_t largest_polygon;
 
     force_entry_t *forces;
     size_t force_count, force_capacity;
@@ -160,6 +163,7 @@ void scene_add_body(scene_t *scene, body_t *body) {
                    sizeof(body_t *));
     body->id = scene->next_body_id++;
     scene->bodies[scene->body_count++] = body;
+    if (body->count > scene->largest_polygon) scene->largest_polygon = body->count;
     body_mark_changed(body); /* sleeping bodies it lands in wake */
 }
 
@@ -476,7 +480,8 @@ static const integrator_motion_t *stage_motion(scene_t *scene, integrator_step_t
         stage_forces(scene);
     }
     if (scene->world != NULL && scene->sleeping) {
-        scene->world_ops->wake_changed(scene->world, scene->bodies, scene->body_count, step->dt);
+        scene->world_ops->wake_changed(scene->world, scene->bodies, scene->body_count, step->dt,
+                                       scene->gravity);
     }
     if (one_stage && scene->world == NULL) return NULL;
     memory_reserve((void **)&scene->motions, &scene->motion_capacity, scene->body_count,
@@ -641,7 +646,7 @@ static void tick(scene_t *scene, double dt) {
     const integrator_motion_t *motions = stage_motion(scene, &step);
     if (scene->world != NULL && scene->body_count > 0) {
         world_step_t world_step = {dt, integrator_position_weight(scene->integrator),
-                                   scene->sleeping};
+                                   scene->sleeping, scene->largest_polygon};
         scene->world_ops->step(scene->world, scene->bodies, scene->motions, scene->body_count,
                                &world_step, &scene->stats);
         scene->record_needs_world = true;

@@ -9,6 +9,7 @@ static const world_ops_t WORLD_OPS = {
     world_wake_changed, world_step,           world_contact_count, world_get_contact,
     world_pair_collides, world_pair_contact,  world_get_memory,    world_restore_memory,
     world_forget_removed, world_get_sleep_phase, world_set_sleep_phase, world_index_sleepers,
+    world_get_step_lengths, world_set_step_lengths,
 };
 
 void scene_set_contacts_enabled(scene_t *scene, bool enabled) {

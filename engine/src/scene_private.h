@@ -66,7 +66,8 @@ typedef struct {
                            size_t position_iterations);
     void (*set_workers)(world_t *world, size_t workers);
     void (*for_bodies)(world_t *world, size_t count, workers_fn_t fn, void *context);
-    void (*wake_changed)(world_t *world, body_t **bodies, size_t count, double dt);
+    void (*wake_changed)(world_t *world, body_t **bodies, size_t count, double dt,
+                         vector_t gravity);
     void (*step)(world_t *world, body_t **bodies, integrator_motion_t *motions, size_t count,
                  const world_step_t *step, scene_stats_t *stats);
     size_t (*contact_count)(const world_t *world);
@@ -80,6 +81,8 @@ typedef struct {
     unsigned (*get_sleep_phase)(const world_t *world);
     void (*set_sleep_phase)(world_t *world, unsigned phase);
     void (*index_sleepers)(world_t *world, body_t **bodies, size_t count);
+    void (*get_step_lengths)(const world_t *world, double *last, double *before);
+    void (*set_step_lengths)(world_t *world, double last, double before);
 } world_ops_t;
 
 /* Hands the scene a world (NULL with ops NULL: contacts off), freeing the

@@ -115,6 +115,27 @@ void scene_set_sleep_phase(scene_t *scene, unsigned phase) {
     ops->set_sleep_phase(world, phase);
 }
 
+void scene_get_step_lengths(scene_t *scene, double *last, double *before) {
+    REQUIRE_NOT_NULL(scene);
+    REQUIRE(last != NULL && before != NULL, "last and before must not be NULL");
+    const world_ops_t *ops;
+    world_t *world = scene_world(scene, &ops);
+    *last = *before = 0.0;
+    if (world != NULL) ops->get_step_lengths(world, last, before);
+}
+
+void scene_set_step_lengths(scene_t *scene, double last, double before) {
+    REQUIRE_NOT_NULL(scene);
+    const world_ops_t *ops;
+    world_t *world = world_of(scene, &ops, __func__);
+    REQUIRE(isfinite(last) && last >= 0.0, "last must be finite and >= 0 (got %g)", last);
+    REQUIRE(isfinite(before) && before >= 0.0, "before must be finite and >= 0 (got %g)",
+            before);
+    REQUIRE(last > 0.0 || before == 0.0,
+            "a step before the last needs a last step (got last 0, before %g)", before);
+    ops->set_step_lengths(world, last, before);
+}
+
 size_t scene_contact_memory_count(scene_t *scene) {
     REQUIRE_NOT_NULL(scene);
     const world_ops_t *ops;
@@ -150,6 +171,10 @@ static bool memory_is_finite(const scene_contact_memory_t *m) {
     for (int j = 0; j < m->feature_count; j++) {
         finite = finite && finite_vector(m->feature_points[j]);
     }
+    for (int j = 0; j < m->previous_count; j++) {
+        finite = finite && isfinite(m->previous[j].normal_impulse) &&
+                 isfinite(m->previous[j].tangent_impulse);
+    }
     return finite;
 }
 
@@ -162,10 +187,12 @@ static void check_memory(const scene_t *scene, const scene_contact_memory_t *m, 
     if (m->body_a == m->body_b) {
         engine_fail("scene_restore_contact_memory", "memories[%zu] pairs a body with itself", i);
     }
-    if (m->point_count < 0 || m->point_count > 2 || m->feature_count < 0 || m->feature_count > 2) {
+    if (m->point_count < 0 || m->point_count > 2 || m->feature_count < 0 || m->feature_count > 2 ||
+        m->previous_count < 0 || m->previous_count > 2) {
         engine_fail("scene_restore_contact_memory",
-                    "memories[%zu]: point_count and feature_count must be 0 to 2 (got %d, %d)", i,
-                    m->point_count, m->feature_count);
+                    "memories[%zu]: point_count, feature_count and previous_count must be 0 to 2 "
+                    "(got %d, %d, %d)",
+                    i, m->point_count, m->feature_count, m->previous_count);
     }
     if (!memory_is_finite(m)) {
         engine_fail("scene_restore_contact_memory",

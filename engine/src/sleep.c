@@ -196,7 +196,10 @@ static void rebuild_index(sleep_t *sleep, body_t **bodies, size_t count, size_t 
         sleep->entries[sleep->count++] = (struct sleep_entry){body->bounds.min.x, body};
         sleep->widest = fmax(sleep->widest, body->bounds.max.x - body->bounds.min.x);
     }
-    qsort(sleep->entries, sleep->count, sizeof(struct sleep_entry), compare_entries);
+    /* entries is NULL while no body ever slept. */
+    if (sleep->count > 1) {
+        qsort(sleep->entries, sleep->count, sizeof(struct sleep_entry), compare_entries);
+    }
 }
 
 static bool boxes_overlap(aabb_t a, aabb_t b) {
@@ -226,12 +229,35 @@ static aabb_t grown(aabb_t box, double by) {
     return (aabb_t){{box.min.x - by, box.min.y - by}, {box.max.x + by, box.max.y + by}};
 }
 
-void sleep_wake_changed(const sleep_t *sleep, body_t *body, double dt, double margin) {
+/* How far any point of the body may go in a step of dt before contacts act
+ * on it: at its speed now or at the one gravity, its force and its impulse
+ * give it by the end of the step, whichever is more, and likewise its spin. */
+static double step_travel(const body_t *body, double dt, vector_t gravity) {
+    vector_t pull = vec_multiply(body->inverse_mass, body->force);
+    if (body->inverse_mass != 0.0) pull = vec_add(pull, gravity);
+    vector_t free = vec_add(body->velocity, vec_add(vec_multiply(dt, pull),
+                                                    vec_multiply(body->inverse_mass, body->impulse)));
+    double spin = body->angular_velocity +
+                  body->inverse_inertia * (dt * body->torque + body->angular_impulse);
+    double speed = fmax(vec_get_length(body->velocity), vec_get_length(free));
+    return dt * (speed + fmax(fabs(body->angular_velocity), fabs(spin)) * body->radius);
+}
+
+void sleep_wake_changed(const sleep_t *sleep, body_t *body, double dt, vector_t gravity,
+                        double margin) {
     body_update_world(body);
-    double speed = vec_get_length(body->velocity) + fabs(body->angular_velocity) * body->radius;
-    double grow = dt * speed + margin;
+    double grow = step_travel(body, dt, gravity) + margin;
     wake_within(sleep, grown(body->changed_bounds, grow));
     wake_within(sleep, grown(body->bounds, grow));
+}
+
+void sleep_wake_ahead(const sleep_t *sleep, body_t *body, double dt, vector_t gravity,
+                      double margin) {
+    bool moving = body->velocity.x != 0.0 || body->velocity.y != 0.0 ||
+                  body->angular_velocity != 0.0;
+    if (body->asleep || body->removed || !moving || body->sleep_time != 0.0) return;
+    body_update_world(body);
+    wake_within(sleep, grown(body->bounds, step_travel(body, dt, gravity) + margin));
 }
 
 /* Where a body may be by the end of the next step: its box over this one

@@ -109,9 +109,19 @@ void sleep_index_asleep(sleep_t *sleep, body_t **bodies, size_t count);
 
 /* Before a step: wakes the sleeping islands that a body marked changed
  * (body_mark_changed) touched before its change or may touch in the step,
- * its box then and its box now each grown by what its velocities cover in
- * dt and by margin. The index is the one of the last step (bodies woken
- * since are skipped in it). */
-void sleep_wake_changed(const sleep_t *sleep, body_t *body, double dt, double margin);
+ * its box then and its box now each grown by margin and by how far it may
+ * go in dt (at its velocities now or at those that gravity, its force,
+ * torque and impulses give it by the end of the step, the larger). The
+ * index is the one of the last step (bodies woken since are skipped in
+ * it). */
+void sleep_wake_changed(const sleep_t *sleep, body_t *body, double dt, vector_t gravity,
+                        double margin);
+
+/* Before a step longer than the last, whose reach sleep_wake_reached
+ * sized: wakes the sleeping islands that an awake body moving faster than
+ * the tolerances (as sleep_wake_reached counts it) may reach in this step,
+ * its box grown as sleep_wake_changed grows it. */
+void sleep_wake_ahead(const sleep_t *sleep, body_t *body, double dt, vector_t gravity,
+                      double margin);
 
 #endif // #ifndef SLEEP_H

@@ -215,6 +215,19 @@ static inline double solver_contact_slop(double radius_a, double radius_b) {
     return scaled < SOLVER_LINEAR_SLOP ? scaled : SOLVER_LINEAR_SLOP;
 }
 
+/* The earliest time in [0, dt] at which a gap s closing as s + v t + a t^2 / 2
+ * reaches 0, or a negative number when it does not: the solver's model of
+ * a point's approach over the step (m, m/s, m/s^2, s). */
+double solver_time_of_impact(double s, double v, double a, double dt);
+
+/* The approach speed (m/s) from which a contact with this restitution
+ * between bodies with these rows bounces: SOLVER_FREE_RESTITUTION_THRESHOLD
+ * for an elastic pair that nothing accelerates, else
+ * SOLVER_RESTITUTION_THRESHOLD, which for inelastic contacts also decides
+ * which approaches are timed as impacts. */
+double solver_bounce_threshold(double restitution, const solver_state_t *sa,
+                               const solver_state_t *sb);
+
 typedef struct solver_wide solver_wide_t;
 typedef struct shock shock_t;
 

@@ -13,6 +13,7 @@
 #include "shock.h"
 #include "sleep.h"
 #include "solver_wide.h"
+#include "time_of_impact.h"
 #include "workers.h"
 
 /* Every body's box is enlarged by how far it can move in a step plus this
@@ -157,6 +158,9 @@ struct world {
     size_t result_capacity;
     size_t chunk_first[WORKERS_MAX_CHUNKS + 1];
     size_t chunk_gap_first[WORKERS_MAX_CHUNKS + 1];
+
+    /* Room for time_of_impact's posed polygons. */
+    toi_scratch_t toi_scratch;
 };
 
 world_t *world_init(size_t velocity_iterations, size_t position_iterations) {
@@ -191,6 +195,7 @@ void world_free(world_t *world) {
     memory_free(world->links);
     workers_free(world->workers);
     memory_free(world->results);
+    memory_free(world->toi_scratch.vectors);
     memory_free(world);
 }
 
@@ -420,6 +425,18 @@ static void warm_rescaled(const world_t *world, solver_contact_t *contact, size_
     }
 }
 
+/* Copies the impulses of `from`'s points to those of contact that are the
+ * same features. */
+WORLD_INLINE void impulses_by_feature(solver_contact_t *contact, const solver_contact_t *from) {
+    for (int i = 0; i < contact->point_count; i++) {
+        for (int j = 0; j < from->point_count; j++) {
+            if (contact->points[i].id != from->points[j].id) continue;
+            contact->points[i].normal_impulse = from->points[j].normal_impulse;
+            contact->points[i].tangent_impulse = from->points[j].tangent_impulse;
+        }
+    }
+}
+
 /* Copies last step's impulses to the points that are the same features;
  * rescaled when this step is not as long as the last (warm_rescaled). */
 WORLD_INLINE void warm_from_old(const world_t *world, solver_contact_t *contact,
@@ -428,14 +445,7 @@ WORLD_INLINE void warm_from_old(const world_t *world, solver_contact_t *contact,
         warm_rescaled(world, contact, old_index);
         return;
     }
-    const solver_contact_t *old = &world->old_contacts[old_index];
-    for (int i = 0; i < contact->point_count; i++) {
-        for (int j = 0; j < old->point_count; j++) {
-            if (contact->points[i].id != old->points[j].id) continue;
-            contact->points[i].normal_impulse = old->points[j].normal_impulse;
-            contact->points[i].tangent_impulse = old->points[j].tangent_impulse;
-        }
-    }
+    impulses_by_feature(contact, &world->old_contacts[old_index]);
 }
 
 static relative_pose_t relative_pose(const body_t *a, const body_t *b) {
@@ -666,20 +676,145 @@ static void swap_contact_buffers(world_t *world) {
 static void narrowphase(world_t *world, body_t **bodies, const broadphase_pair_t *pairs,
                         size_t pair_count) {
     swap_contact_buffers(world);
-    /* A pair makes at most one contact. */
-    memory_reserve((void **)&world->contacts, &world->contact_capacity, pair_count,
+    /* A pair makes at most one contact. The buffers that take turns grow
+     * together (they keep their contents), so a new most of pairs costs
+     * one step's allocations, not one in each of the next steps. */
+    size_t n = pair_count;
+    memory_reserve((void **)&world->contacts, &world->contact_capacity, n, sizeof(solver_contact_t));
+    memory_reserve((void **)&world->old_contacts, &world->old_contact_capacity, n,
                    sizeof(solver_contact_t));
-    memory_reserve((void **)&world->sources, &world->source_capacity, pair_count,
+    memory_reserve((void **)&world->older_contacts, &world->older_contact_capacity, n,
+                   sizeof(solver_contact_t));
+    memory_reserve((void **)&world->sources, &world->source_capacity, n, sizeof(contact_source_t));
+    memory_reserve((void **)&world->old_sources, &world->old_source_capacity, n,
                    sizeof(contact_source_t));
-    memory_reserve((void **)&world->anchors, &world->anchor_capacity, pair_count,
-                   sizeof(solver_anchor_t));
-    memory_reserve((void **)&world->gaps, &world->gap_capacity, pair_count, sizeof(pair_gap_t));
+    memory_reserve((void **)&world->anchors, &world->anchor_capacity, n, sizeof(solver_anchor_t));
+    memory_reserve((void **)&world->gaps, &world->gap_capacity, n, sizeof(pair_gap_t));
+    memory_reserve((void **)&world->old_gaps, &world->old_gap_capacity, n, sizeof(pair_gap_t));
     if (world->workers != NULL) {
         narrowphase_split(world, bodies, pairs, pair_count);
         return;
     }
     for (size_t i = 0; i < pair_count;) {
         i += collide_group(world, bodies, pairs + i, pair_count - i);
+    }
+}
+
+/* A moment of impact is found to within this fraction of the two bodies'
+ * radii (m per m) of touching. */
+static const double IMPACT_TOLERANCE = 1e-12;
+
+/* The motion the solver's times of impact assume for a body's row. */
+static toi_motion_t impact_motion(const solver_state_t *state) {
+    return (toi_motion_t){state->v_start, state->acceleration, state->w_start};
+}
+
+/* The velocity at the start of the step of b's point at lever arm r_b over
+ * a's at r_a. */
+static vector_t start_approach(const solver_state_t *sa, vector_t r_a, const solver_state_t *sb,
+                               vector_t r_b) {
+    return vec_subtract(vec_add(sb->v_start, vec_cross_scalar(sb->w_start, r_b)),
+                        vec_add(sa->v_start, vec_cross_scalar(sa->w_start, r_a)));
+}
+
+/* Whether the solver will time an impact of contact c within the step: its
+ * points all apart, and one that closes its gap within the step faster than
+ * the bounce threshold, at the start velocities and accelerations, in the
+ * geometry of the start (solver.c, set_target). */
+static bool impact_in_step(const solver_contact_t *c, const solver_anchor_t *anchor,
+                           const solver_state_t *sa, const solver_state_t *sb, double dt) {
+    double pull = vec_dot(c->normal, vec_subtract(sb->acceleration, sa->acceleration));
+    double threshold = solver_bounce_threshold(c->restitution, sa, sb);
+    bool impact = false;
+    for (int i = 0; i < c->point_count; i++) {
+        double gap = c->points[i].separation;
+        if (!(gap > 0.0)) return false;
+        double speed = vec_dot(c->normal, start_approach(sa, anchor->r_a[i], sb, anchor->r_b[i]));
+        double tau = solver_time_of_impact(gap, speed, pull, dt);
+        impact |= tau >= 0.0 && speed + pull * tau < -threshold;
+    }
+    return impact;
+}
+
+/*
+ * Contact n, found where its bodies were at the start of the step, taken
+ * again at moment `hit` of the step: the normal, points and lever arms
+ * there. Each point's separation becomes the one that the solver's model of
+ * the step (each body at its start velocities and acceleration) closes to
+ * the point's separation at that moment, so the solver times an impact at
+ * it. Impulses stay with the points of the same features.
+ */
+static void take_at(world_t *world, size_t n, const toi_contact_t *hit) {
+    solver_contact_t *c = &world->contacts[n];
+    const solver_state_t *sa = &world->states[c->a], *sb = &world->states[c->b];
+    const manifold_t *manifold = &hit->manifold;
+    vector_t normal = manifold->normal;
+    double t = hit->time;
+    double pull = vec_dot(normal, vec_subtract(sb->acceleration, sa->acceleration));
+    vector_t r_a[2], r_b[2];
+    double separation[2];
+    for (int i = 0; i < manifold->point_count; i++) {
+        r_a[i] = vec_subtract(manifold->points[i].point, hit->centroid_a);
+        r_b[i] = vec_subtract(manifold->points[i].point, hit->centroid_b);
+        double speed = vec_dot(normal, start_approach(sa, r_a[i], sb, r_b[i]));
+        double at = manifold->points[i].separation;
+        separation[i] = at - t * (speed + 0.5 * pull * t);
+        /* A pair that passes may part at a point the model would have
+         * touching earlier: it keeps the gap it ends with. */
+        if (!hit->touches) separation[i] = max_of(separation[i], at);
+    }
+    solver_contact_t before = *c;
+    solver_anchor_t *anchor = &world->anchors[n];
+    contact_source_t *source = &world->sources[n];
+    c->normal = normal;
+    c->point_count = manifold->point_count;
+    c->edge_ends = hit->features.edge_ends && manifold->point_count == 2;
+    for (int i = 0; i < manifold->point_count; i++) {
+        solver_point_t *point = &c->points[i];
+        anchor->r_a[i] = r_a[i];
+        anchor->r_b[i] = r_b[i];
+        point->separation = separation[i];
+        point->id = manifold->points[i].id;
+        point->normal_impulse = point->tangent_impulse = 0.0;
+        source->points[i] = manifold->points[i].point;
+    }
+    impulses_by_feature(c, &before);
+    double cos_a = cos(hit->angle_a), sin_a = sin(hit->angle_a);
+    vector_t d = vec_subtract(hit->centroid_b, hit->centroid_a);
+    source->features = hit->features;
+    source->pose = (relative_pose_t){{cos_a * d.x + sin_a * d.y, -sin_a * d.x + cos_a * d.y},
+                                     hit->angle_b - hit->angle_a};
+}
+
+/* Contact n taken at the moment of its impact, if the solver will time one
+ * (take_impacts). Not inlined: a scene without elastic contacts pays only
+ * for the loop that looks for them. */
+static __attribute__((noinline)) void take_impact(world_t *world, size_t n, double dt) {
+    const solver_contact_t *c = &world->contacts[n];
+    const solver_state_t *sa = &world->states[c->a], *sb = &world->states[c->b];
+    if (!impact_in_step(c, &world->anchors[n], sa, sb, dt)) return;
+    body_t *a = world->sources[n].body_a, *b = world->sources[n].body_b;
+    toi_motion_t ma = impact_motion(sa), mb = impact_motion(sb);
+    double margin = world->margins[c->a] + world->margins[c->b];
+    toi_contact_t hit;
+    bool found = time_of_impact(a, &ma, b, &mb, dt, margin,
+                                IMPACT_TOLERANCE * (a->radius + b->radius),
+                                &world->toi_scratch, &hit);
+    if (found && hit.time > 0.0) take_at(world, n, &hit);
+}
+
+/*
+ * Every elastic contact in which the solver would time an impact within the
+ * step is taken where its bodies first touch, or, when they pass without
+ * touching, where they are at the end of the step: the collision pass then
+ * bounces through the geometry of the moment of impact, and a near miss is
+ * not bounced along a normal of the start (docs/design.md, "Impacts within
+ * the step").
+ */
+static void take_impacts(world_t *world, double dt, size_t largest_polygon) {
+    toi_scratch_reserve(&world->toi_scratch, largest_polygon);
+    for (size_t n = 0; n < world->contact_count; n++) {
+        if (world->contacts[n].restitution != 0.0) take_impact(world, n, dt);
     }
 }
 
@@ -780,6 +915,7 @@ static void run_pipeline(world_t *world, body_t **bodies, integrator_motion_t *m
     size_t pair_count = broadphase_find_pairs(world->broadphase, world->proxies, count, &pairs,
                                               &stats->broadphase_tests);
     narrowphase(world, bodies, pairs, pair_count);
+    take_impacts(world, step->dt, step->largest_polygon);
     solver_settings_t settings = {step->dt, step->position_weight, world->velocity_iterations,
                                   world->position_iterations};
     solver_bodies_t rows = {world->velocities, world->displacements, world->states, count};
@@ -823,11 +959,17 @@ static void time_step(world_t *world, double dt) {
     world->last_dt = dt;
 }
 
-void world_wake_changed(world_t *world, body_t **bodies, size_t count, double dt) {
+void world_wake_changed(world_t *world, body_t **bodies, size_t count, double dt,
+                        vector_t gravity) {
     if (!sleep_any(&world->sleep)) return;
+    /* Last step's reach covered a step as long as itself. */
+    bool longer = dt > world->last_dt;
     for (size_t i = 0; i < count; i++) {
-        if (!bodies[i]->changed) continue;
-        sleep_wake_changed(&world->sleep, bodies[i], dt, CONTACT_MARGIN);
+        if (bodies[i]->changed) {
+            sleep_wake_changed(&world->sleep, bodies[i], dt, gravity, CONTACT_MARGIN);
+        } else if (longer) {
+            sleep_wake_ahead(&world->sleep, bodies[i], dt, gravity, CONTACT_MARGIN);
+        }
     }
 }
 
@@ -890,6 +1032,32 @@ void world_get_memory(const world_t *world, size_t index, scene_contact_memory_t
         memory->feature_points[j] = source->features.points[j];
         memory->feature_ids[j] = source->features.ids[j];
     }
+    if (source->previous == NO_CONTACT) return;
+    const solver_contact_t *before = &world->old_contacts[source->previous];
+    memory->previous_count = before->point_count;
+    for (int j = 0; j < before->point_count; j++) {
+        const solver_point_t *p = &before->points[j];
+        memory->previous[j] = (scene_memory_previous_t){p->id, p->normal_impulse,
+                                                        p->tangent_impulse};
+    }
+}
+
+/* Writes the pair's contact of the step before last from a memory into
+ * old_contacts at `at`, which the next step's swap makes the contacts of
+ * the step before its last; returns where, or NO_CONTACT when it had none
+ * (world_restore_memory). */
+static uint32_t add_remembered_before(world_t *world, size_t at,
+                                      const scene_contact_memory_t *memory) {
+    if (memory->previous_count == 0) return NO_CONTACT;
+    solver_contact_t *before = &world->old_contacts[at];
+    *before = (solver_contact_t){.point_count = memory->previous_count};
+    for (int j = 0; j < memory->previous_count; j++) {
+        const scene_memory_previous_t *from = &memory->previous[j];
+        before->points[j].id = from->id;
+        before->points[j].normal_impulse = from->normal_impulse;
+        before->points[j].tangent_impulse = from->tangent_impulse;
+    }
+    return (uint32_t)at;
 }
 
 /* Writes contact n of the step from a memory (world_restore_memory). */
@@ -907,6 +1075,7 @@ static void add_remembered(world_t *world, size_t n, const scene_contact_memory_
                      .normal = memory->face_normal,
                      .face_point = memory->face_point},
         .pose = {memory->pose, memory->pose_angle},
+        .previous = add_remembered_before(world, n, memory),
     };
     for (int j = 0; j < memory->point_count; j++) {
         const scene_memory_point_t *from = &memory->points[j];
@@ -933,6 +1102,8 @@ void world_restore_memory(world_t *world, const scene_contact_memory_t *memories
                    sizeof(solver_contact_t));
     memory_reserve((void **)&world->sources, &world->source_capacity, count,
                    sizeof(contact_source_t));
+    memory_reserve((void **)&world->old_contacts, &world->old_contact_capacity, count,
+                   sizeof(solver_contact_t));
     world->contact_count = count;
     world->gap_count = 0;
     for (size_t i = 0; i < count;) {
@@ -974,6 +1145,16 @@ void world_set_sleep_phase(world_t *world, unsigned phase) {
 
 void world_index_sleepers(world_t *world, body_t **bodies, size_t count) {
     sleep_index_asleep(&world->sleep, bodies, count);
+}
+
+void world_get_step_lengths(const world_t *world, double *last, double *before) {
+    *last = world->last_dt;
+    *before = world->older_dt;
+}
+
+void world_set_step_lengths(world_t *world, double last, double before) {
+    world->last_dt = last;
+    world->older_dt = before;
 }
 
 bool world_pair_collides(const body_t *body1, const body_t *body2) {

@@ -44,14 +44,20 @@ typedef struct {
     double position_weight;
     /* Whether slow islands sleep (sleep.h): asleep bodies take no part. */
     bool sleeping;
+    /* At least the vertex count of the largest polygon in the step: scratch
+     * room is sized by it once, so a new pair never allocates. */
+    size_t largest_polygon;
 } world_step_t;
 
 /* Wakes the sleeping islands that a body of bodies[0 .. count) changed
  * since the last step (body_mark_changed) touched or may touch in the next
- * step of dt (sleep_wake_changed). The scene calls it after the force
- * creators and before the free motions, so that what wakes moves in the
- * step; world_step clears the marks. */
-void world_wake_changed(world_t *world, body_t **bodies, size_t count, double dt);
+ * step of dt (sleep_wake_changed), and, when this step is longer than the
+ * last, those that a moving body may reach in it (sleep_wake_ahead), under
+ * the scene's gravity. The scene calls it after the force creators and
+ * before the free motions, so that what wakes moves in the step;
+ * world_step clears the marks. */
+void world_wake_changed(world_t *world, body_t **bodies, size_t count, double dt,
+                        vector_t gravity);
 
 /* Runs the pipeline over bodies[0..count) (removed bodies take no part):
  * motions[i] holds body i's free motion on entry and the motion with its
@@ -82,14 +88,19 @@ bool world_pair_contact(const world_t *world, body_t *body1, body_t *body2, cont
  * world_restore_memory makes the memories the contacts of a last step
  * (checked by the caller, and sorted by pair: body_a's id, then body_b's);
  * world_forget_removed drops the contacts and sleeping bodies that name a
- * body marked removed, before a tick without a step frees it. The phase is sleep.h's
+ * body marked removed, before a tick without a step frees it. A memory
+ * carries the pair's points of the step before last, which
+ * world_restore_memory makes that step's. The phase is sleep.h's
  * island check count; world_index_sleepers indexes the bodies of
- * bodies[0 .. count) that were put to sleep outside a step. */
+ * bodies[0 .. count) that were put to sleep outside a step. The step
+ * lengths are those of the last step and the one before (s, 0: none). */
 void world_get_memory(const world_t *world, size_t index, scene_contact_memory_t *memory);
 void world_restore_memory(world_t *world, const scene_contact_memory_t *memories, size_t count);
 void world_forget_removed(world_t *world);
 unsigned world_get_sleep_phase(const world_t *world);
 void world_set_sleep_phase(world_t *world, unsigned phase);
 void world_index_sleepers(world_t *world, body_t **bodies, size_t count);
+void world_get_step_lengths(const world_t *world, double *last, double *before);
+void world_set_step_lengths(world_t *world, double last, double before);
 
 #endif // #ifndef WORLD_H
