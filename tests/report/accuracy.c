@@ -137,11 +137,10 @@ static void write_summary(FILE *md, const report_sweep_t *sweeps, int count,
                 "omega h on an undamped spring and gamma h under drag alone (closed forms, "
                 "which the engine meets; 0: unstable at every h; section 3), the largest "
                 "energy drift |E/E0 - 1| on the oscillator at h = 1/32 s (32 steps a period; "
-                "section 1), and the growth p (error ~ t^p) of the "
-                "energy error and the phase error on Kepler e = 0.6 at %g steps per period "
-                "(section 2; \"-\": the error saturated or the orbit was lost before the fit "
-                "had four points).\n\n",
-            summary[0].growth_rate);
+                "section 1), and the growth p (error ~ t^p) of the energy error and the phase "
+                "error on Kepler e = 0.6 at %g and %g steps per period (section 2; \"-\": the "
+                "error saturated or the orbit was lost before the fit had four points).\n\n",
+            summary[0].growth_rate, summary[0].phase_rate);
     fprintf(md, "| integrator | evaluations per step");
     for (size_t k = 0; k < sizeof orders / sizeof orders[0]; k++) {
         fprintf(md, " | order: %s", orders[k]);

@@ -162,8 +162,8 @@ void report_write_collisions(FILE *md, const report_options_t *options);
 /* What the page's summary takes from the sections, per scheme. */
 typedef struct {
     double spring_limit, drag_limit;      /* closed forms (NAN: none) */
-    double energy_growth, phase_growth;   /* kepler over 10^5 periods */
-    double growth_rate;                   /* its steps per period */
+    double energy_growth, phase_growth;   /* kepler's long runs */
+    double growth_rate, phase_rate;       /* their steps per period */
 } report_summary_t;
 
 /* Long horizons (horizons.c): needs the sweeps of the same scenes for the
