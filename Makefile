@@ -1,6 +1,7 @@
-# make            the engine library (build/libengine.a) and, when SDL2 is there, ./sandbox
+# make            the library (build/libjostle.a, build/libjostle.so) and, when SDL2 is there, ./sandbox
 # make check      builds and runs every test (sanitized, warnings are errors)
 # make run        installs the sandbox's Debian packages when it can, builds and starts it
+# make install    headers, libraries, jostle.pc, the sandbox and its scenes under PREFIX (and DESTDIR)
 # make bench      the benchmark scenes (docs/bench.md)
 # make report     numerical error against run time (docs/accuracy.md)
 # make stability  stiff and extreme cases beside theory and the peers (docs/stability.md)
@@ -17,17 +18,28 @@ WARN := -Wall -Wextra -Werror -Wshadow -Wstrict-prototypes
 OPT := -O2 -g
 SAN := -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
 
-ENGINE_SRC := $(wildcard engine/src/*.c)
-ENGINE_HDR := $(wildcard engine/include/*.h engine/src/*.h)
+# The library's version, from its umbrella header (docs/api.md, "Headers and
+# versions"): the soname carries the major number.
+JOSTLE_VERSION := $(shell awk '/define JOSTLE_VERSION_(MAJOR|MINOR|PATCH)/ {printf "%s%s", sep, $$3; sep = "."}' engine/include/jostle/jostle.h)
+JOSTLE_MAJOR := $(firstword $(subst ., ,$(JOSTLE_VERSION)))
+
+# engine/src/LAYER/*.c, the layers listed lowest first in engine/src/LAYERS;
+# sources include public headers as "jostle/X.h" and private ones as
+# "LAYER/X.h".
+ENGINE_INC := -Iengine/include -Iengine/src
+ENGINE_SRC := $(wildcard engine/src/*/*.c)
+ENGINE_HDR := $(wildcard engine/include/*.h engine/include/jostle/*.h engine/src/*/*.h)
 ENGINE_OBJ := $(patsubst engine/src/%.c,build/engine/%.o,$(ENGINE_SRC))
 ENGINE_SAN_OBJ := $(patsubst engine/src/%.c,build/engine-san/%.o,$(ENGINE_SRC))
+ENGINE_PIC_OBJ := $(patsubst engine/src/%.c,build/engine-pic/%.o,$(ENGINE_SRC))
 
 # Scene files (engine/scenefile/, docs/scenes.md): built on the public API only,
-# so compiled with engine/include alone, and archived into the engine's libraries.
+# and archived into the engine's libraries.
 SCENEFILE_SRC := $(wildcard engine/scenefile/*.c)
-SCENEFILE_HDR := $(wildcard engine/include/*.h engine/scenefile/*.h)
+SCENEFILE_HDR := $(wildcard engine/include/jostle/*.h engine/scenefile/*.h)
 ENGINE_OBJ += $(patsubst engine/scenefile/%.c,build/scenefile/%.o,$(SCENEFILE_SRC))
 ENGINE_SAN_OBJ += $(patsubst engine/scenefile/%.c,build/scenefile-san/%.o,$(SCENEFILE_SRC))
+ENGINE_PIC_OBJ += $(patsubst engine/scenefile/%.c,build/scenefile-pic/%.o,$(SCENEFILE_SRC))
 
 # Game rules for scene files (app/games/): no SDL, so the tests link them.
 GAMES_SRC := $(wildcard app/games/*.c)
@@ -38,22 +50,34 @@ TEST_SRC := $(wildcard tests/test_*.c) tests/test.c tests/main.c tests/reference
 	tests/scene_file_check.c
 TEST_SAN_OBJ := $(patsubst tests/%.c,build/tests/%.o,$(TEST_SRC))
 
-.PHONY: all check clean tsan
-all: build/libengine.a
+.PHONY: all check clean tsan install uninstall
+all: build/libjostle.a build/libjostle.so
 
 build/engine/%.o: engine/src/%.c $(ENGINE_HDR)
 	@mkdir -p $(dir $@)
-	$(CC) $(CSTD) $(WARN) $(OPT) -Iengine/include -c $< -o $@
+	$(CC) $(CSTD) $(WARN) $(OPT) $(ENGINE_INC) -c $< -o $@
 
-build/libengine.a: $(ENGINE_OBJ)
+build/libjostle.a: $(ENGINE_OBJ)
+	@rm -f $@
 	ar rcs $@ $^
 
 build/engine-san/%.o: engine/src/%.c $(ENGINE_HDR)
 	@mkdir -p $(dir $@)
-	$(CC) $(CSTD) $(WARN) -O1 -g $(SAN) -Iengine/include -c $< -o $@
+	$(CC) $(CSTD) $(WARN) -O1 -g $(SAN) $(ENGINE_INC) -c $< -o $@
 
-build/libengine-san.a: $(ENGINE_SAN_OBJ)
+build/libjostle-san.a: $(ENGINE_SAN_OBJ)
+	@rm -f $@
 	ar rcs $@ $^
+
+# The shared library: position-independent objects, and only what the public
+# headers declare exported (they set default visibility; the rest is hidden).
+build/engine-pic/%.o: engine/src/%.c $(ENGINE_HDR)
+	@mkdir -p $(dir $@)
+	$(CC) $(CSTD) $(WARN) $(OPT) -fPIC -fvisibility=hidden $(ENGINE_INC) -c $< -o $@
+
+build/libjostle.so: $(ENGINE_PIC_OBJ) engine/jostle.map
+	$(CC) -shared -Wl,-soname,libjostle.so.$(JOSTLE_MAJOR) -Wl,--version-script=engine/jostle.map \
+	    $(ENGINE_PIC_OBJ) -pthread -lm -o $@
 
 build/scenefile/%.o: engine/scenefile/%.c $(SCENEFILE_HDR)
 	@mkdir -p $(dir $@)
@@ -62,6 +86,10 @@ build/scenefile/%.o: engine/scenefile/%.c $(SCENEFILE_HDR)
 build/scenefile-san/%.o: engine/scenefile/%.c $(SCENEFILE_HDR)
 	@mkdir -p $(dir $@)
 	$(CC) $(CSTD) $(WARN) -O1 -g $(SAN) -Iengine/include -c $< -o $@
+
+build/scenefile-pic/%.o: engine/scenefile/%.c $(SCENEFILE_HDR)
+	@mkdir -p $(dir $@)
+	$(CC) $(CSTD) $(WARN) $(OPT) -fPIC -fvisibility=hidden -Iengine/include -c $< -o $@
 
 build/games-san/%.o: app/games/%.c $(GAMES_HDR) $(ENGINE_HDR)
 	@mkdir -p $(dir $@)
@@ -72,13 +100,16 @@ build/tests/%.o: tests/%.c tests/test.h tests/suites.h tests/reference.h tests/s
 	@mkdir -p $(dir $@)
 	$(CC) $(CSTD) $(WARN) -O1 -g $(SAN) -Iengine/include -Iengine/src -Itests -Iapp/games -c $< -o $@
 
-build/tests/engine_tests: $(TEST_SAN_OBJ) $(GAMES_SAN_OBJ) build/libengine-san.a
+build/tests/engine_tests: $(TEST_SAN_OBJ) $(GAMES_SAN_OBJ) build/libjostle-san.a
 	$(CC) $(SAN) $^ -pthread -lm -o $@
 
 # Programs `make check` runs; app/app.mk adds the sandbox's smoke tests.
 # check_examples.sh builds tests/examples/ (and the README's example) against
-# the release library with the public headers only.
-CHECK_PROGRAMS := build/tests/engine_tests tests/check_examples.sh tests/report/check_report.sh
+# the release library with the public headers only; check_house.sh reads the
+# release objects for circles and calls up the layers; check_install.sh
+# installs into a temporary DESTDIR and builds the examples with pkg-config.
+CHECK_PROGRAMS := build/tests/engine_tests tests/check_examples.sh tests/report/check_report.sh \
+	tests/check_house.sh tests/check_install.sh
 
 -include app/app.mk
 -include tests/bench/bench.mk
@@ -86,7 +117,7 @@ CHECK_PROGRAMS := build/tests/engine_tests tests/check_examples.sh tests/report/
 -include tests/fuzz/fuzz.mk
 -include tests/stability/stability.mk
 
-check: $(CHECK_PROGRAMS) build/libengine.a build/report/accuracy
+check: $(CHECK_PROGRAMS) build/libjostle.a build/libjostle.so build/report/accuracy
 	@tests/run_all.sh $(CHECK_PROGRAMS)
 
 # make tsan: the test program built with ThreadSanitizer (whole, so the
@@ -105,6 +136,40 @@ tsan: build/tsan/engine_tests
 		TSAN_OPTIONS="halt_on_error=1 exitcode=66 second_deadlock_stack=1" \
 			build/tsan/engine_tests $$suite || exit 1; \
 	done
+
+# make install: the public headers (PREFIX/include/jostle/), the static and
+# shared libraries with its soname link (PREFIX/lib/), jostle.pc
+# (PREFIX/lib/pkgconfig/), and, when SDL2 is there, the sandbox as
+# PREFIX/bin/jostle-sandbox with its scenes in PREFIX/share/jostle/scenes/.
+# DESTDIR stages it all elsewhere (packaging, tests/check_install.sh).
+PREFIX ?= /usr/local
+INSTALL_ROOT = $(DESTDIR)$(PREFIX)
+SONAME := libjostle.so.$(JOSTLE_MAJOR)
+build/jostle.pc: engine/jostle.pc.in engine/include/jostle/jostle.h
+	@mkdir -p $(dir $@)
+	sed -e 's|@PREFIX@|$(PREFIX)|' -e 's|@VERSION@|$(JOSTLE_VERSION)|' $< > $@
+
+# The .pc file names PREFIX: made anew for each install.
+.PHONY: build/jostle.pc
+install: build/libjostle.a build/libjostle.so build/jostle.pc $(INSTALL_SANDBOX)
+	install -d $(INSTALL_ROOT)/include/jostle $(INSTALL_ROOT)/lib/pkgconfig
+	install -m 644 engine/include/jostle/*.h $(INSTALL_ROOT)/include/jostle/
+	install -m 644 build/libjostle.a $(INSTALL_ROOT)/lib/
+	install -m 755 build/libjostle.so $(INSTALL_ROOT)/lib/libjostle.so.$(JOSTLE_VERSION)
+	ln -sf libjostle.so.$(JOSTLE_VERSION) $(INSTALL_ROOT)/lib/$(SONAME)
+	ln -sf $(SONAME) $(INSTALL_ROOT)/lib/libjostle.so
+	install -m 644 build/jostle.pc $(INSTALL_ROOT)/lib/pkgconfig/
+	@if [ -n "$(INSTALL_SANDBOX)" ]; then \
+	    install -d $(INSTALL_ROOT)/bin $(INSTALL_ROOT)/share/jostle/scenes && \
+	    install -m 755 sandbox $(INSTALL_ROOT)/bin/jostle-sandbox && \
+	    install -m 644 assets/scenes/*.scene $(INSTALL_ROOT)/share/jostle/scenes/; \
+	fi
+
+uninstall:
+	rm -rf $(INSTALL_ROOT)/include/jostle $(INSTALL_ROOT)/share/jostle
+	rm -f $(INSTALL_ROOT)/lib/libjostle.a $(INSTALL_ROOT)/lib/libjostle.so \
+	    $(INSTALL_ROOT)/lib/$(SONAME) $(INSTALL_ROOT)/lib/libjostle.so.$(JOSTLE_VERSION) \
+	    $(INSTALL_ROOT)/lib/pkgconfig/jostle.pc $(INSTALL_ROOT)/bin/jostle-sandbox
 
 clean:
 	rm -rf build sandbox

@@ -23,18 +23,19 @@ SANDBOX_LIBS := $(shell pkg-config --libs $(SANDBOX_PKGS))
 
 all: sandbox
 
-build/app/games/%.o: app/games/%.c $(GAMES_HDR) $(wildcard engine/include/*.h) app/app.mk
+build/app/games/%.o: app/games/%.c $(GAMES_HDR) $(wildcard engine/include/jostle/*.h) app/app.mk
 	@mkdir -p $(dir $@)
 	$(CC) $(CSTD) $(WARN) $(OPT) -Iengine/include -c $< -o $@
 
-build/app/%.o: app/%.c $(APP_HDR) $(wildcard engine/include/*.h) app/app.mk
+build/app/%.o: app/%.c $(APP_HDR) $(wildcard engine/include/jostle/*.h) app/app.mk
 	@mkdir -p $(dir $@)
 	$(CC) $(CSTD) $(WARN) $(OPT) -Iengine/include -Iapp/games $(SANDBOX_CFLAGS) -c $< -o $@
 
-sandbox: $(APP_OBJ) $(APP_GAMES_OBJ) build/libengine.a
-	$(CC) $(APP_OBJ) $(APP_GAMES_OBJ) build/libengine.a $(SANDBOX_LIBS) -pthread -lm -o $@
+sandbox: $(APP_OBJ) $(APP_GAMES_OBJ) build/libjostle.a
+	$(CC) $(APP_OBJ) $(APP_GAMES_OBJ) build/libjostle.a $(SANDBOX_LIBS) -pthread -lm -o $@
 
 APP_SMOKE_DEPS := sandbox
+INSTALL_SANDBOX := sandbox
 
 # The scan converter's two threads against one (tests/app_raster.c): SDL2
 # only, no window.
@@ -71,20 +72,20 @@ APP_UNIT_SRC := tests/app_units.c app/text.c app/stats_text.c app/step_clock.c a
                 app/energy_drift.c app/integrator_choice.c app/presets.c app/scene_text.c \
                 app/sandbox_scene.c app/batch.c
 build/tests/app_units: $(APP_UNIT_SRC) tests/app_expect.h $(wildcard app/*.h) $(GAMES_HDR) app/app.mk \
-                       build/libengine-san.a $(GAMES_SAN_OBJ)
+                       build/libjostle-san.a $(GAMES_SAN_OBJ)
 	@mkdir -p $(dir $@)
 	$(CC) $(CSTD) $(WARN) -O1 -g $(SAN) -Iapp -Iapp/games -Iengine/include $(APP_UNIT_SRC) \
-	    $(GAMES_SAN_OBJ) build/libengine-san.a -pthread -lm -o $@
+	    $(GAMES_SAN_OBJ) build/libjostle-san.a -pthread -lm -o $@
 
 # The smoke tests drive ./sandbox from outside and read its screenshots; they
 # link no SDL, but the sanitized engine, to load the scene files the sandbox
 # saves (scene_file_load), and the list of presets.
 APP_SMOKE_SRC := tests/app_smoke.c tests/app_image.c app/layout.c app/presets.c
 build/tests/app_smoke: $(APP_SMOKE_SRC) tests/app_image.h tests/app_expect.h app/palette.h app/layout.h \
-                       app/presets.h app/app.mk build/libengine-san.a $(APP_SMOKE_DEPS)
+                       app/presets.h app/app.mk build/libjostle-san.a $(APP_SMOKE_DEPS)
 	@mkdir -p $(dir $@)
 	$(CC) $(CSTD) $(WARN) -O1 -g $(SAN) $(APP_SMOKE_DEFS) -Iapp -Itests -Iengine/include \
-	    $(APP_SMOKE_SRC) build/libengine-san.a $(APP_SMOKE_LIBS) -pthread -lm -o $@
+	    $(APP_SMOKE_SRC) build/libjostle-san.a $(APP_SMOKE_LIBS) -pthread -lm -o $@
 
 CHECK_PROGRAMS += build/tests/app_units build/tests/app_smoke
 

@@ -20,7 +20,7 @@
 #include <stdbool.h>
 #include <stddef.h>
 #include "palette.h"
-#include "vector.h"
+#include "jostle/vector.h"
 
 /* The layout SDL_RenderGeometryRaw reads: x, y at offset 0, an SDL_Color's
  * bytes (r, g, b, a) at offset 8; the stride is sizeof(batch_vertex_t). */

@@ -8,7 +8,7 @@
  */
 
 #include <stdbool.h>
-#include "vector.h"
+#include "jostle/vector.h"
 
 typedef struct {
     vector_t center;

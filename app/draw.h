@@ -7,7 +7,7 @@
 #include <stdbool.h>
 #include "layout.h"
 #include "palette.h"
-#include "vector.h"
+#include "jostle/vector.h"
 
 /* Pixel coordinates clamped to what SDL2_gfx's Sint16 can hold. */
 Sint16 draw_coord(double pixel);

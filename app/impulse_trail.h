@@ -9,7 +9,7 @@
  */
 
 #include <stddef.h>
-#include "engine.h"
+#include "jostle/jostle.h"
 
 #define IMPULSE_TRAIL_SECONDS 0.5
 #define IMPULSE_TRAIL_CAPACITY 4096

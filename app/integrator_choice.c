@@ -1,5 +1,6 @@
 #include "integrator_choice.h"
 #include <ctype.h>
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -52,6 +53,8 @@ bool integrator_choice_unstable(integrator_t integrator) {
 void integrator_choice_stability(integrator_t integrator, char *out, size_t size) {
     if (integrator_choice_unstable(integrator)) {
         snprintf(out, size, "unstable with springs");
+    } else if (isinf(integrator_get_stability_limit(integrator))) {
+        snprintf(out, size, "stable for any w dt");
     } else {
         snprintf(out, size, "stable for w dt < %.2f", integrator_get_stability_limit(integrator));
     }

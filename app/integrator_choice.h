@@ -10,7 +10,7 @@
 
 #include <stdbool.h>
 #include <stddef.h>
-#include "scene.h"
+#include "jostle/scene.h"
 
 /* The integrator named `text`: integrator_get_name's names, in any case, with
  * spaces, underscores or hyphens alike ("symplectic_euler", "Symplectic
@@ -29,7 +29,8 @@ integrator_t integrator_choice_step(integrator_t integrator, int step);
 bool integrator_choice_unstable(integrator_t integrator);
 
 /* What it does with springs, in at most 22 characters: "unstable with
- * springs", or "stable for w dt < 2.00" (w = sqrt(k / m) of the spring). */
+ * springs", "stable for w dt < 2.00" (w = sqrt(k / m) of the spring), or
+ * "stable for any w dt" (implicit Euler). */
 void integrator_choice_stability(integrator_t integrator, char *out, size_t size);
 
 #endif

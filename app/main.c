@@ -84,8 +84,8 @@ static void usage(FILE *out) {
             "                      (default axes,impulses,sleeping)\n"
             "  --integrator NAME   the scene's integrator: seed (the default),\n"
             "                      explicit_euler, symplectic_euler, velocity_verlet,\n"
-            "                      rk4, symplectic4 (any case; spaces or underscores);\n"
-            "                      N and Shift+N switch it while it runs\n"
+            "                      rk4, symplectic4, implicit_euler (any case; spaces\n"
+            "                      or underscores); N and Shift+N switch it while it runs\n"
             "  --seed N            seed of the random polygons (default 1)\n"
             "  --save-dir DIR      where Ctrl+S writes saved-N.scene (default: the\n"
             "                      current directory)\n"
@@ -263,22 +263,32 @@ static int parse_options(int argc, char **argv, options_t *o) {
     return -1;
 }
 
-/* The presets' directory: assets/scenes here, else beside the program (run
- * from elsewhere, or through a link). NULL when there is none. */
-static char *presets_dir(void) {
-    static const char RELATIVE[] = "assets/scenes";
+static bool is_dir(const char *path) {
     struct stat info;
-    if (stat(RELATIVE, &info) == 0 && S_ISDIR(info.st_mode)) return SDL_strdup(RELATIVE);
+    return stat(path, &info) == 0 && S_ISDIR(info.st_mode);
+}
+
+/* The presets' directory: assets/scenes here; else beside the program (run
+ * from elsewhere, or through a link); else where make install puts them,
+ * PREFIX/share/jostle/scenes beside PREFIX/bin. NULL when there is none. */
+static char *presets_dir(void) {
+    static const char HERE[] = "assets/scenes";
+    static const char *const BESIDE[] = {"assets/scenes", "../share/jostle/scenes"};
+    if (is_dir(HERE)) return SDL_strdup(HERE);
     char *base = SDL_GetBasePath();
     if (base == NULL) return NULL;
-    size_t size = strlen(base) + sizeof(RELATIVE);
-    char *dir = SDL_malloc(size);
-    if (dir != NULL) snprintf(dir, size, "%s%s", base, RELATIVE);
-    SDL_free(base);
-    if (dir != NULL && (stat(dir, &info) != 0 || !S_ISDIR(info.st_mode))) {
-        SDL_free(dir);
-        dir = NULL;
+    char *dir = NULL;
+    for (size_t i = 0; i < sizeof BESIDE / sizeof BESIDE[0] && dir == NULL; i++) {
+        size_t size = strlen(base) + strlen(BESIDE[i]) + 1;
+        dir = SDL_malloc(size);
+        if (dir == NULL) break;
+        snprintf(dir, size, "%s%s", base, BESIDE[i]);
+        if (!is_dir(dir)) {
+            SDL_free(dir);
+            dir = NULL;
+        }
     }
+    SDL_free(base);
     return dir;
 }
 

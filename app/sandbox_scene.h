@@ -3,7 +3,7 @@
 
 /*
  * The sandbox's world: an engine scene read from a scene file
- * (engine/include/scene_file.h), the game its file names (app/games/), the
+ * (engine/include/jostle/scene_file.h), the game its file names (app/games/), the
  * bodies the user drops, and the grab spring. The default scene, a static
  * floor and two walls under gravity with world contacts, is a scene file
  * too, built into the app (SANDBOX_DEFAULT_SCENE), so that every scene the
@@ -12,9 +12,9 @@
 
 #include <stdbool.h>
 #include <stdint.h>
-#include "engine.h"
+#include "jostle/jostle.h"
 #include "game.h"
-#include "scene_file.h"
+#include "jostle/scene_file.h"
 
 /* The default scene's layout (metres): the floor's top is y = 0, the walls'
  * inner faces are at x = +-WALL_X and they rise to WALL_TOP. */

@@ -29,7 +29,7 @@
 #include "layout.h"
 #include "palette.h"
 #include "presets.h"
-#include "scene_file.h"
+#include "jostle/scene_file.h"
 
 #ifndef APP_SMOKE_HAVE_SDL
 #define APP_SMOKE_HAVE_SDL 0
@@ -812,7 +812,7 @@ static void test_bad_flags_are_refused(void) {
     const char *integrator[] = {"--headless", "--integrator", "leapfrog", NULL};
     const char *e8[] = {"--integrator: 'leapfrog'",
                         "seed, explicit_euler, symplectic_euler, velocity_verlet, rk4, "
-                        "symplectic4", NULL};
+                        "symplectic4, implicit_euler", NULL};
     check_refusal("unknown integrator", integrator, 2, e8);
 
     const char *jpeg[] = {"--headless", "--screenshot", TMP_DIR "/x.jpg", NULL};
@@ -955,7 +955,7 @@ static bool find_in_panel(const image_t *image, const char *title, const char *t
 }
 
 /* The INTEGRATOR panel shows `name` (in the accent colour) with `position`
- * ("3 of 6") and `springs` (in red when unstable). */
+ * ("3 of 7") and `springs` (in red when unstable). */
 static void expect_integrator(const image_t *image, const char *what, const char *name,
                               const char *position, const char *springs, bool unstable) {
     unsigned char color[3];
@@ -971,7 +971,7 @@ static void expect_integrator(const image_t *image, const char *what, const char
            "%s: '%s' in (%d, %d, %d)", what, springs, color[0], color[1], color[2]);
 }
 
-/* N and Shift+N switch the integrator while the scene runs, round the six,
+/* N and Shift+N switch the integrator while the scene runs, round the seven,
  * each confirmed on the status line; --integrator picks one by name. */
 static void test_integrator_key_switches_live(void) {
     const char *script = "move px 5 5\nscreenshot " TMP_DIR "/integrator_0.bmp\n"
@@ -982,18 +982,18 @@ static void test_integrator_key_switches_live(void) {
     image_t image;
     if (!run_script("integrator", script, NULL, &run)) return;
     if (load_shot("integrator_0", &image)) {
-        expect_integrator(&image, "at start", "seed", "1 of 6", "unstable with springs", true);
+        expect_integrator(&image, "at start", "seed", "1 of 7", "unstable with springs", true);
         image_free(&image);
     }
     if (load_shot("integrator_1", &image)) {
-        expect_integrator(&image, "after N", "explicit Euler", "2 of 6", "unstable with springs",
+        expect_integrator(&image, "after N", "explicit Euler", "2 of 7", "unstable with springs",
                           true);
         EXPECT(shows(&image, "integrator: explicit Euler", false),
                "after N: no status line 'integrator: explicit Euler'");
         image_free(&image);
     }
     if (load_shot("integrator_2", &image)) {
-        expect_integrator(&image, "after N N", "symplectic Euler", "3 of 6",
+        expect_integrator(&image, "after N N", "symplectic Euler", "3 of 7",
                           "stable for w dt < 2.00", false);
         EXPECT(shows(&image, "integrator: symplectic Euler", false) &&
                    shows(&image, "(stable for w dt < 2.00)", false),
@@ -1002,13 +1002,13 @@ static void test_integrator_key_switches_live(void) {
         image_free(&image);
     }
     if (load_shot("integrator", &image)) {
-        expect_integrator(&image, "after three Shift+N", "symplectic4", "6 of 6",
-                          "stable for w dt < 1.57", false);
+        expect_integrator(&image, "after three Shift+N", "implicit Euler", "7 of 7",
+                          "stable for any w dt", false);
         image_free(&image);
     }
-    const char *names[][4] = {{"Velocity_Verlet", "velocity Verlet", "4 of 6", "2.00"},
-                              {"rk4", "RK4", "5 of 6", "2.83"},
-                              {"symplectic euler", "symplectic Euler", "3 of 6", "2.00"}};
+    const char *names[][4] = {{"Velocity_Verlet", "velocity Verlet", "4 of 7", "2.00"},
+                              {"rk4", "RK4", "5 of 7", "2.83"},
+                              {"symplectic euler", "symplectic Euler", "3 of 7", "2.00"}};
     for (size_t i = 0; i < sizeof names / sizeof names[0]; i++) {
         const char *flags[] = {"--integrator", names[i][0], NULL};
         char what[64], springs[40];

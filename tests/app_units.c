@@ -425,6 +425,8 @@ static void test_integrators_by_name(void) {
         {"velocity-Verlet", INTEGRATOR_VELOCITY_VERLET},
         {"rk4", INTEGRATOR_RK4},
         {"Symplectic4", INTEGRATOR_SYMPLECTIC4},
+        {"implicit_euler", INTEGRATOR_IMPLICIT_EULER},
+        {"Implicit Euler", INTEGRATOR_IMPLICIT_EULER},
     };
     for (size_t i = 0; i < sizeof names / sizeof names[0]; i++) {
         integrator_t got = INTEGRATOR_COUNT;
@@ -441,7 +443,7 @@ static void test_integrators_by_name(void) {
     char list[256];
     integrator_choice_list(list, sizeof(list));
     EXPECT(strcmp(list, "seed, explicit_euler, symplectic_euler, velocity_verlet, rk4, "
-                        "symplectic4") == 0,
+                        "symplectic4, implicit_euler") == 0,
            "the list of integrators: \"%s\"", list);
     for (int i = 0; i < INTEGRATOR_COUNT; i++) {
         integrator_t got;
@@ -449,14 +451,16 @@ static void test_integrators_by_name(void) {
                    got == (integrator_t)i,
                "the engine's own name '%s' is refused", integrator_get_name((integrator_t)i));
     }
-    EXPECT(integrator_choice_step(INTEGRATOR_SYMPLECTIC4, 1) == INTEGRATOR_SEED &&
-               integrator_choice_step(INTEGRATOR_SEED, -1) == INTEGRATOR_SYMPLECTIC4 &&
+    EXPECT(integrator_choice_step(INTEGRATOR_SYMPLECTIC4, 1) == INTEGRATOR_IMPLICIT_EULER &&
+               integrator_choice_step(INTEGRATOR_IMPLICIT_EULER, 1) == INTEGRATOR_SEED &&
+               integrator_choice_step(INTEGRATOR_SEED, -1) == INTEGRATOR_IMPLICIT_EULER &&
                integrator_choice_step(INTEGRATOR_EXPLICIT_EULER, 1) ==
                    INTEGRATOR_SYMPLECTIC_EULER,
            "N and Shift+N do not go round the integrators");
     const char *expected[INTEGRATOR_COUNT] = {
         "unstable with springs",  "unstable with springs",  "stable for w dt < 2.00",
-        "stable for w dt < 2.00", "stable for w dt < 2.83", "stable for w dt < 1.57"};
+        "stable for w dt < 2.00", "stable for w dt < 2.83", "stable for w dt < 1.57",
+        "stable for any w dt"};
     for (int i = 0; i < INTEGRATOR_COUNT; i++) {
         char words[64];
         integrator_choice_stability((integrator_t)i, words, sizeof(words));

@@ -1,7 +1,7 @@
 #!/bin/sh
 # Builds each program in tests/examples/ against the release library with
 # nothing but the public headers (cc -std=c11 -Iengine/include ...
-# build/libengine.a -pthread -lm), runs it, and checks that README.md shows every line
+# build/libjostle.a -pthread -lm), runs it, and checks that README.md shows every line
 # of each example it quotes (falling_hexagon.c), so the README cannot drift
 # from code that compiles. Ends with "N passed, N failed".
 passed=0
@@ -10,7 +10,7 @@ CC=${CC:-cc}
 mkdir -p build/examples
 for source in tests/examples/*.c; do
     name=$(basename "$source" .c)
-    if $CC -std=c11 -Wall -Wextra -Werror -Iengine/include "$source" build/libengine.a -pthread -lm \
+    if $CC -std=c11 -Wall -Wextra -Werror -Iengine/include "$source" build/libjostle.a -pthread -lm \
         -o "build/examples/$name" && output=$("build/examples/$name"); then
         echo "$output" | sed 's/^/    /'
         echo "PASS examples.$name"

@@ -1,7 +1,7 @@
 #include "reference.h"
 #include <math.h>
 #include <stdlib.h>
-#include "engine.h"
+#include "jostle/jostle.h"
 
 static const rgb_color_t GREY = {0.5f, 0.5f, 0.5f};
 static const double KEPLER_ECCENTRICITY = 0.6, KEPLER_ECCENTRIC = 0.9;

@@ -10,7 +10,7 @@
  */
 
 #include <stdbool.h>
-#include "scene.h"
+#include "jostle/scene.h"
 
 typedef enum {
     /* A 1 kg body on a spring (omega = 2 pi, period 1 s) to an anchor of

@@ -3,7 +3,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "engine.h"
+#include "jostle/jostle.h"
 
 static bool differ(char *why, size_t size, const char *format, ...) {
     va_list args;

@@ -10,7 +10,7 @@
 #include <stdbool.h>
 #include <stddef.h>
 #include <stdint.h>
-#include "scene_file.h"
+#include "jostle/scene_file.h"
 
 /* True when both files hold the same scene: settings (sleeping and the sleep
  * phase included), timestep, view, game; the same bodies in the same order

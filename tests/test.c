@@ -1,5 +1,5 @@
 #include "test.h"
-#include "engine.h"
+#include "jostle/jostle.h"
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>

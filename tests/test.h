@@ -12,9 +12,9 @@
 #include <stdbool.h>
 #include <stddef.h>
 #include <stdio.h>
-#include "list.h"
-#include "scene.h"
-#include "vector.h"
+#include "jostle/list.h"
+#include "jostle/scene.h"
+#include "jostle/vector.h"
 
 typedef struct {
     const char *name;

@@ -2,8 +2,8 @@
  * removal marks, rotation and the geometric queries. */
 #include <stdlib.h>
 #include <string.h>
-#include "body.h"
-#include "polygon.h"
+#include "jostle/body.h"
+#include "jostle/polygon.h"
 #include "test.h"
 
 

@@ -4,9 +4,9 @@
  * grid takes, so the large-proxy path runs too). */
 #include <stdlib.h>
 #include <string.h>
-#include "broadphase.h"
+#include "collision/broadphase.h"
 #include "test.h"
-#include "workers.h"
+#include "base/workers.h"
 
 static uint32_t lcg_state = 12345;
 

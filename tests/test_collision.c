@@ -1,7 +1,7 @@
 /* collision.h: the separating axis test, the axis of least overlap and its
  * direction, the depth, and that it allocates nothing. */
 #include <stdlib.h>
-#include "engine.h"
+#include "jostle/jostle.h"
 #include "test.h"
 
 static const rgb_color_t GREEN = {0, 1, 0};

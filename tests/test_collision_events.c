@@ -4,7 +4,7 @@
  * new one. The pair has parted when it is further apart than a tenth of
  * the smaller body's radius at two reads in a row (docs/api.md). */
 #include <stdlib.h>
-#include "engine.h"
+#include "jostle/jostle.h"
 #include "test.h"
 
 #define COUNT_OF(array) (sizeof(array) / sizeof((array)[0]))

@@ -4,8 +4,8 @@
  * newton and collide, built on them. */
 #include <stdlib.h>
 #include <string.h>
-#include "engine.h"
-#include "scene_file.h"
+#include "jostle/jostle.h"
+#include "jostle/scene_file.h"
 #include "test.h"
 
 #define COUNT_OF(array) (sizeof(array) / sizeof((array)[0]))

@@ -4,7 +4,7 @@
  * moved or changed in between; the result is the same to the bit as
  * evaluating again. */
 #include <string.h>
-#include "engine.h"
+#include "jostle/jostle.h"
 #include "test.h"
 
 static const rgb_color_t GREY = {0.5f, 0.5f, 0.5f};

@@ -1,7 +1,7 @@
 /* forces.h: springs, Newtonian gravity, drag, and the seed's collision force
  * creators (handler calls, destructive and physics collisions, the record). */
 #include <stdlib.h>
-#include "engine.h"
+#include "jostle/jostle.h"
 #include "test.h"
 
 static const rgb_color_t BLUE = {0, 0, 1};
@@ -984,6 +984,29 @@ static void far_apart_spring(void *unused) {
     scene_tick(scene, 1e-101);
 }
 
+static void implicit_far_apart_spring(void *unused) {
+    (void)unused;
+    scene_t *scene = scene_init();
+    scene_set_integrator(scene, INTEGRATOR_IMPLICIT_EULER);
+    body_t *a = added(scene, square((vector_t){-1e110, 0}, 1e97, INFINITY));
+    body_t *b = added(scene, square(VEC_ZERO, 0.5, 1.0));
+    create_spring(scene, 1e200, a, b);
+    scene_tick(scene, 1.0 / 60.0);
+}
+
+/* Under implicit Euler the spring of run_spring_until_it_fails (omega dt =
+ * 16.7) never fails: 10^4 steps later the bob rests on its anchor. */
+static void implicit_euler_holds_the_spring_the_others_refuse(void) {
+    scene_t *scene = scene_init();
+    scene_set_integrator(scene, INTEGRATOR_IMPLICIT_EULER);
+    body_t *anchor = added(scene, square(VEC_ZERO, 0.1, INFINITY));
+    body_t *bob = added(scene, square((vector_t){1, 0}, 0.1, 1.0));
+    create_spring(scene, 1e6, anchor, bob);
+    for (int i = 0; i < 10000; i++) scene_tick(scene, 1.0 / 60.0);
+    CHECK_VEC(body_get_centroid(bob), 0.0, 0.0, 1e-12);
+    scene_free(scene);
+}
+
 static void fast_body_with_drag(void *unused) {
     (void)unused;
     scene_t *scene = scene_init();
@@ -1005,18 +1028,28 @@ static void heavy_bodies_too_close(void *unused) {
 
 static void unstable_forces_abort_naming_the_force_and_the_cause(void) {
     /* The seed scheme gains energy on any spring; omega = 1000 rad/s. */
+    /* Each names the scheme that is stable at this dt. */
     spring_case_t seed = {1e6, 1.0, INTEGRATOR_SEED};
     CHECK_DIES(run_spring_until_it_fails, &seed, "engine error in scene_tick:",
                "spring between body 0 and body 1", "k = 1e+06 N/m", "seed integrator",
-               "dt < 2 sqrt(m/k) = 0.002 s");
+               "dt < 2 sqrt(m/k) = 0.002 s", "INTEGRATOR_IMPLICIT_EULER at any dt");
     spring_case_t euler = {1e6, 1.0, INTEGRATOR_EXPLICIT_EULER};
     CHECK_DIES(run_spring_until_it_fails, &euler, "engine error in scene_tick:",
                "spring between body 0 and body 1", "explicit Euler integrator",
-               "dt < 2 sqrt(m/k) = 0.002 s");
+               "dt < 2 sqrt(m/k) = 0.002 s", "INTEGRATOR_IMPLICIT_EULER at any dt");
     spring_case_t symplectic = {1e6, 1.0, INTEGRATOR_SYMPLECTIC_EULER};
     CHECK_DIES(run_spring_until_it_fails, &symplectic, "engine error in scene_tick:",
                "spring between body 0 and body 1", "dt = 0.0166667 s is above",
-               "dt < 2 sqrt(m/k) = 0.002 s");
+               "dt < 2 sqrt(m/k) = 0.002 s",
+               "INTEGRATOR_IMPLICIT_EULER is stable for it at any dt");
+    spring_case_t verlet = {1e6, 1.0, INTEGRATOR_VELOCITY_VERLET};
+    CHECK_DIES(run_spring_until_it_fails, &verlet, "engine error in scene_tick:",
+               "velocity Verlet integrator", "INTEGRATOR_IMPLICIT_EULER is stable for it");
+    /* Implicit Euler: the same spring only loses energy; too far apart for
+     * k, the message says the scheme is not the cause. */
+    CHECK_DIES(implicit_far_apart_spring, NULL, "engine error in scene_tick:", "force stage",
+               "spring between body 0 and body 1", "too far apart",
+               "the implicit Euler integrator is stable for it at any dt");
     /* A light bob: its velocity overflows before the spring's force does, so
      * the integrate stage reports it, naming the scene's stiffest spring. */
     spring_case_t light = {1.0, 1e-200, INTEGRATOR_SEED};
@@ -1028,7 +1061,7 @@ static void unstable_forces_abort_naming_the_force_and_the_cause(void) {
                "stretch (1e+110, 0) m", "too far apart");
     CHECK_DIES(fast_body_with_drag, NULL, "engine error in scene_tick:", "force stage",
                "drag on body 1", "gamma = 1e+10 kg/s", "force is not finite",
-               "dt < 2 m / gamma = 2e-10 s");
+               "dt < 2 m / gamma = 2e-10 s", "INTEGRATOR_IMPLICIT_EULER is stable for it");
     CHECK_DIES(heavy_bodies_too_close, NULL, "engine error in scene_tick:", "force stage",
                "newtonian gravity between body 0 and body 1", "force is not finite",
                "too close");
@@ -1309,6 +1342,7 @@ TEST_SUITE(forces, TEST_CASE(spring_is_hooke_with_rest_length_zero),
            TEST_CASE(destructive_collision_with_world_contacts_removes_both),
            TEST_CASE(pair_out_of_world_contacts_keeps_the_seed_rule),
            TEST_CASE(unstable_forces_abort_naming_the_force_and_the_cause),
+           TEST_CASE(implicit_euler_holds_the_spring_the_others_refuse),
            TEST_CASE(gravity_between_huge_masses_is_applied),
            TEST_CASE(physics_handler_refuses_an_impulse_that_overflows),
            TEST_CASE(bad_input_aborts_with_message));

@@ -3,9 +3,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "engine.h"
+#include "jostle/jostle.h"
 #include "game.h"
-#include "scene_file.h"
+#include "jostle/scene_file.h"
 #include "test.h"
 
 typedef game_input_t (*controller_t)(scene_file_t *file);

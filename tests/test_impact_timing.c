@@ -4,7 +4,7 @@
  * on whether its bodies touch, overlap or stand apart. */
 #include <math.h>
 #include <stdlib.h>
-#include "engine.h"
+#include "jostle/jostle.h"
 #include "test.h"
 
 static const rgb_color_t GREY = {0.5, 0.5, 0.5};

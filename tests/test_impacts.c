@@ -3,7 +3,7 @@
  * for the motion they contain. */
 #include <math.h>
 #include <stdlib.h>
-#include "engine.h"
+#include "jostle/jostle.h"
 #include "test.h"
 
 static const double DT = 1.0 / 60.0;

@@ -1,7 +1,7 @@
 /* list.h: a growable array of void pointers with an optional element freer. */
 #include <stdint.h>
 #include <stdlib.h>
-#include "list.h"
+#include "jostle/list.h"
 #include "test.h"
 
 /* Counts the elements a freer was called on, and frees them. */

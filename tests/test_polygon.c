@@ -2,7 +2,7 @@
  * checks and the shape makers, on lists of heap vector_t *. */
 #include <stdlib.h>
 #include <string.h>
-#include "polygon.h"
+#include "jostle/polygon.h"
 #include "test.h"
 
 

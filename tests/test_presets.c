@@ -7,9 +7,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "engine.h"
+#include "jostle/jostle.h"
 #include "game.h"
-#include "scene_file.h"
+#include "jostle/scene_file.h"
 #include "scene_file_check.h"
 #include "test.h"
 

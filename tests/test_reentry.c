@@ -3,7 +3,7 @@
  * the scene out from under the tick stop with a message saying what to do
  * instead; the others act as docs/api.md says. */
 #include <stdlib.h>
-#include "engine.h"
+#include "jostle/jostle.h"
 #include "test.h"
 
 static const rgb_color_t GREY = {0.5, 0.5, 0.5};

@@ -1,7 +1,7 @@
 /* scene.h: bodies, force creators, the tick's order, the removal timeline,
  * ownership, gravity and the integrators. */
 #include <stdlib.h>
-#include "engine.h"
+#include "jostle/jostle.h"
 #include "test.h"
 
 
@@ -482,6 +482,7 @@ static void integrators_follow_their_formulas(void) {
     check_integrator(INTEGRATOR_SEED, 0.5);
     check_integrator(INTEGRATOR_EXPLICIT_EULER, 0.0);
     check_integrator(INTEGRATOR_SYMPLECTIC_EULER, 1.0);
+    check_integrator(INTEGRATOR_IMPLICIT_EULER, 1.0); /* no spring or drag: symplectic */
 }
 
 /* A centripetal force toward `center` for the body's current speed and

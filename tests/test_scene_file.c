@@ -5,8 +5,8 @@
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
-#include "engine.h"
-#include "scene_file.h"
+#include "jostle/jostle.h"
+#include "jostle/scene_file.h"
 #include "scene_file_check.h"
 #include "test.h"
 
@@ -526,7 +526,7 @@ static const bad_file_t BAD_FILES[] = {
     {"timestep 0", "t.scene:1:10: expected the timestep (s), a number > 0 and <= 10, found \"0\""},
     {"contacts maybe", "t.scene:1:10: expected on or off (world contacts), found \"maybe\""},
     {"integrator rk5", "t.scene:1:12: expected an integrator (seed, explicit_euler, "
-                       "symplectic_euler, velocity_verlet, rk4, symplectic4), found \"rk5\""},
+                       "symplectic_euler, velocity_verlet, rk4, symplectic4, implicit_euler), found \"rk5\""},
     {"iterations 0 4",
      "t.scene:1:12: expected the velocity iterations, a whole number from 1 to 1000, found \"0\""},
     {"gravity 0 -10\ngravity 0 -9",

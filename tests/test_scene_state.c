@@ -5,7 +5,7 @@
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
-#include "engine.h"
+#include "jostle/jostle.h"
 #include "test.h"
 
 static const double DT = 1.0 / 60.0;

@@ -9,7 +9,7 @@
  * surface's, rotation under 1e-6 rad, speed within 0.1%. */
 #include <math.h>
 #include <string.h>
-#include "engine.h"
+#include "jostle/jostle.h"
 #include "test.h"
 
 static const double DT = 1.0 / 60.0;

@@ -1,7 +1,7 @@
 /* Sleeping (scene_set_sleeping): resting islands leave the step and wake
  * when touched, pushed, moved or undermined; nothing sleeps in mid-air. */
 #include <math.h>
-#include "engine.h"
+#include "jostle/jostle.h"
 #include "test.h"
 
 static const double DT = 1.0 / 60.0;

@@ -6,8 +6,9 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include "coloring.h"
-#include "solver_wide.h"
+#include "solver/coloring.h"
+#include "solver/solver_split.h"
+#include "solver/solver_wide.h"
 #include "test.h"
 
 /* The SCENES.md generator, for reproducible random graphs. */
@@ -182,7 +183,7 @@ static void batches_solve_isolated_contacts(void) {
     memcpy(before, rows, sizeof rows);
 
     solver_wide_t wide = {0};
-    solver_wide_load(&wide, contacts, CONTACTS, rows, BODIES);
+    solver_split_load(&wide, contacts, CONTACTS, rows, BODIES);
     CHECK(wide.loose_count == 0);
     solver_wide_iterate(&wide, rows);
     solver_wide_store(&wide, contacts);
@@ -248,7 +249,7 @@ static void batches_converge_when_iterated(void) {
         }
     }
     solver_wide_t wide = {0};
-    solver_wide_load(&wide, contacts, 2, rows, 3);
+    solver_split_load(&wide, contacts, 2, rows, 3);
     for (int iteration = 0; iteration < 60; iteration++) solver_wide_iterate(&wide, rows);
     solver_wide_store(&wide, contacts);
     for (int i = 0; i < 2; i++) {
@@ -313,7 +314,7 @@ static void batches_correct_overlaps_by_their_rate(void) {
             c->points[0].separation = -overlaps[i] - moved_separation(c, &c->points[0], moved);
         }
         solver_wide_t wide = {0};
-        solver_wide_load(&wide, contacts, CONTACTS, rows, BODIES);
+        solver_split_load(&wide, contacts, CONTACTS, rows, BODIES);
         solver_wide_correct_positions(&wide, moved, backward);
         for (int i = 0; i < CONTACTS; i++) {
             double before = -overlaps[i];

@@ -1,9 +1,9 @@
 /* Tall and heavy stacks with world contacts: a column of twenty boxes and
  * a heavy box on a light one, the cases a few velocity iterations alone
- * cannot hold (engine/src/shock.h). */
+ * cannot hold (engine/src/solver/shock.h). */
 #include <math.h>
 #include <stdint.h>
-#include "engine.h"
+#include "jostle/jostle.h"
 #include "test.h"
 
 static const double DT = 1.0 / 60.0;

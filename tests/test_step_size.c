@@ -6,8 +6,8 @@
 #include <math.h>
 #include <stdint.h>
 #include <string.h>
-#include "engine.h"
-#include "scene_file.h"
+#include "jostle/jostle.h"
+#include "jostle/scene_file.h"
 #include "test.h"
 
 static const rgb_color_t GREY = {0.5, 0.5, 0.5};

@@ -1,6 +1,6 @@
 #include <math.h>
 #include "test.h"
-#include "vector.h"
+#include "jostle/vector.h"
 
 static void zero_is_zero(void) {
     CHECK(VEC_ZERO.x == 0.0 && VEC_ZERO.y == 0.0);

@@ -6,9 +6,9 @@
 #include <math.h>
 #include <stdint.h>
 #include <string.h>
-#include "engine.h"
+#include "jostle/jostle.h"
 #include "test.h"
-#include "workers.h"
+#include "base/workers.h"
 
 static const double DT = 1.0 / 60.0;
 static const rgb_color_t GREY = {0.5, 0.5, 0.5};

@@ -29,7 +29,7 @@
 
 #include <stdbool.h>
 #include <stddef.h>
-#include "scene_file.h"
+#include "jostle/scene_file.h"
 
 /* The player's controls for one step. */
 typedef struct {

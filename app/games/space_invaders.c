@@ -21,7 +21,7 @@
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include "collision.h"
+#include "jostle/collision.h"
 #include "game.h"
 
 static const double GUN_SPEED = 8.0;        /* m/s at move = 1 */

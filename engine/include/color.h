@@ -1,12 +1,4 @@
-#ifndef COLOR_H
-#define COLOR_H
-
-/* A colour with red, green and blue components, each in [0, 1]. The engine
- * stores it for its callers (the sandbox draws it) and never reads it. */
-typedef struct {
-    double r;
-    double g;
-    double b;
-} rgb_color_t;
-
-#endif // #ifndef COLOR_H
+/* The seed's bare header name, kept so that code written against the seed
+ * API ("color.h" with -Iengine/include) compiles unchanged; new code includes
+ * <jostle/color.h>. docs/api.md, "Headers and versions". */
+#include "jostle/color.h"

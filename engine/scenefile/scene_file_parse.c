@@ -22,6 +22,7 @@ static const struct {
     {"velocity_verlet", INTEGRATOR_VELOCITY_VERLET},
     {"rk4", INTEGRATOR_RK4},
     {"symplectic4", INTEGRATOR_SYMPLECTIC4},
+    {"implicit_euler", INTEGRATOR_IMPLICIT_EULER},
 };
 #define INTEGRATOR_NAMES (sizeof INTEGRATORS / sizeof INTEGRATORS[0])
 

@@ -17,8 +17,8 @@
 #include <stdbool.h>
 #include <stddef.h>
 #include <stdint.h>
-#include "engine.h"
-#include "scene_file.h"
+#include "jostle/jostle.h"
+#include "jostle/scene_file.h"
 
 /* Where in the text something was written (1-based; column in bytes). */
 typedef struct {

@@ -67,14 +67,14 @@ BENCH_VARIANT_PROGRAM_box2d := bench_box2d
 BENCH_VARIANT_PROGRAM_box2d-nosleep := bench_box2d
 BENCH_VARIANT_PROGRAM_box2d-matched := bench_box2d
 
-$(BENCH_DIR)/bench_engine: tests/bench/bench_engine.c $(BENCH_HDR) build/libengine.a
+$(BENCH_DIR)/bench_engine: tests/bench/bench_engine.c $(BENCH_HDR) build/libjostle.a
 	@mkdir -p $(dir $@)
 	$(CC) $(BENCH_CFLAGS) -Iengine/include -DBENCH_ENGINE_VERSION='"$(BENCH_ENGINE_VERSION)"' \
-		$< build/libengine.a -pthread -lm -o $@
+		$< build/libjostle.a -pthread -lm -o $@
 
-$(BENCH_DIR)/bench_scale: tests/bench/bench_scale.c $(BENCH_HDR) build/libengine.a
+$(BENCH_DIR)/bench_scale: tests/bench/bench_scale.c $(BENCH_HDR) build/libjostle.a
 	@mkdir -p $(dir $@)
-	$(CC) $(BENCH_CFLAGS) -Iengine/include $< build/libengine.a -lm -o $@
+	$(CC) $(BENCH_CFLAGS) -Iengine/include $< build/libjostle.a -lm -o $@
 
 $(BENCH_DIR)/bench_chipmunk: tests/bench/bench_chipmunk.c $(BENCH_HDR)
 	@mkdir -p $(dir $@)
@@ -109,7 +109,7 @@ bench-build: $(BENCH_PROGRAMS)
 
 # The other engines' packages are installed first when missing (as root), so
 # the programs to build are decided by a second make once they are there.
-bench-compare: build/libengine.a
+bench-compare: build/libjostle.a
 	@CC="$(CC)" CXX="$(CXX)" sh tests/bench/deps.sh
 	@$(MAKE) --no-print-directory bench-compare-run
 
@@ -132,7 +132,7 @@ bench-instructions: $(BENCH_PROGRAMS)
 		$(foreach p,$(BENCH_PROGRAMS),$(foreach v,$(subst $(comma), ,$(BENCH_VARIANTS)),$(if \
 		$(filter $(notdir $(p)),$(BENCH_VARIANT_PROGRAM_$(v))),$(p):$(v))))
 
-bench-report: build/libengine.a
+bench-report: build/libjostle.a
 	@CC="$(CC)" CXX="$(CXX)" sh tests/bench/deps.sh
 	@$(MAKE) --no-print-directory bench-report-run
 
@@ -145,9 +145,9 @@ bench-report-run: $(BENCH_PROGRAMS)
 
 # make bench-stages: what a scene pays for the stages it does not use
 # (docs/leave-out.md, about a minute and a half).
-$(BENCH_DIR)/bench_stages: tests/bench/bench_stages.c build/libengine.a
+$(BENCH_DIR)/bench_stages: tests/bench/bench_stages.c build/libjostle.a
 	@mkdir -p $(dir $@)
-	$(CC) $(BENCH_CFLAGS) -Iengine/include $< build/libengine.a -pthread -lm -o $@
+	$(CC) $(BENCH_CFLAGS) -Iengine/include $< build/libjostle.a -pthread -lm -o $@
 
 bench-stages: $(BENCH_DIR)/bench_stages
 	@tests/provenance.sh begin build/bench/stages.provenance

@@ -76,7 +76,7 @@ static cpSpace *cp_space_new_quiet(void) {
 }
 
 /* The matched variant's settings: our engine's velocity iterations and the
- * overlap its solver leaves alone (engine/src/solver.c, SOLVER_LINEAR_SLOP). */
+ * overlap its solver leaves alone (engine/src/solver/solver.c, SOLVER_LINEAR_SLOP). */
 #define CP_MATCHED_ITERATIONS 8
 #define CP_MATCHED_SLOP 0.001
 

@@ -1,10 +1,11 @@
 /*
  * The canonical scenes (bench_scenes.h) on this project's engine, through its
- * public API only: cc -O2 -Iengine/include bench_engine.c build/libengine.a -lm.
+ * public API only: cc -O2 -Iengine/include bench_engine.c build/libjostle.a -lm.
  * The engine's variants and settings are in bench_ours.h.
  *
  * Besides bench_scenes.h's options: --integrator NAME (seed,
- * explicit-euler, symplectic-euler, velocity-verlet, rk4, symplectic4)
+ * explicit-euler, symplectic-euler, velocity-verlet, rk4, symplectic4,
+ * implicit-euler)
  * runs every variant but ours-symplectic with that integrator; --workers N
  * (1 to SCENE_MAX_WORKERS, default 1) steps every scene on N threads
  * (scene_set_workers).

@@ -3,7 +3,7 @@
  * benchmark program (bench_engine.c) and the stability suite
  * (tests/stability/stability.c), so that both run the scenes of
  * bench_scenes.h through the same code. Include after bench_scenes.h's
- * includes are available; link build/libengine.a.
+ * includes are available; link build/libjostle.a.
  *
  * Settings: world contacts on (scene_set_contacts_enabled), the default
  * solver iterations (scene_set_solver_iterations is not called: 8 velocity,
@@ -32,7 +32,7 @@
 #ifndef BENCH_OURS_H
 #define BENCH_OURS_H
 
-#include "engine.h"
+#include "jostle/jostle.h"
 #include "bench_scenes.h"
 
 /* The integrator of every scene made after it is set (an integrator_t);
@@ -58,7 +58,7 @@ static const rgb_color_t grey = {0.5, 0.5, 0.5};
 
 static void ours_describe(FILE *out) {
     fprintf(out,
-            "# ours: this engine (build/libengine.a, %s); world contacts on, the default solver "
+            "# ours: this engine (build/libjostle.a, %s); world contacts on, the default solver "
             "iterations (scene.h), seed integrator, friction mixed by geometric "
             "mean, elasticity by max; penetration from the step record (before the last "
             "solve); ours-seed (cradle): contacts off, create_physics_collision for every pair; "

@@ -20,7 +20,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
-#include "engine.h"
+#include "jostle/jostle.h"
 
 /* Rounds of each table; the page states them from here. */
 enum { SCENE_ROUNDS = 7, PILE_ROUNDS = 3, ORBIT_ROUNDS = 7, MAX_ROUNDS = 7 };

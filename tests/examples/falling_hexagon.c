@@ -1,5 +1,5 @@
 #include <stdio.h>
-#include "engine.h"
+#include <jostle/jostle.h>
 
 int main(void) {
     scene_t *scene = scene_init();

@@ -15,7 +15,7 @@
 
 #include <stdbool.h>
 #include <stdio.h>
-#include "engine.h"
+#include "jostle/jostle.h"
 #include "reference.h"
 
 enum {

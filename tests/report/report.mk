@@ -6,10 +6,10 @@ REPORT_SRC := $(wildcard tests/report/*.c) tests/reference.c
 REPORT_HDR := $(wildcard tests/report/*.h) tests/reference.h
 REPORT_CFLAGS := $(CSTD) $(WARN) -O2
 
-$(REPORT_DIR)/accuracy: $(REPORT_SRC) $(REPORT_HDR) build/libengine.a
+$(REPORT_DIR)/accuracy: $(REPORT_SRC) $(REPORT_HDR) build/libjostle.a
 	@mkdir -p $(dir $@)
 	$(CC) $(REPORT_CFLAGS) -Iengine/include -Itests -Itests/report $(REPORT_SRC) \
-		build/libengine.a -pthread -lm -o $@
+		build/libjostle.a -pthread -lm -o $@
 
 .PHONY: report report-deps
 # gnuplot (Debian gnuplot-nox) and the peers' headers, installed as root when
@@ -25,6 +25,6 @@ report-deps:
 		fi; }
 	@CC="$(CC)" CXX="$(CXX)" sh tests/bench/deps.sh
 
-report: report-deps build/libengine.a $(REPORT_DIR)/accuracy
+report: report-deps build/libjostle.a $(REPORT_DIR)/accuracy
 	@$(MAKE) --no-print-directory bench-build
 	@CC="$(CC)" PROVENANCE_FLAGS="$(REPORT_CFLAGS)" sh tests/report/report.sh

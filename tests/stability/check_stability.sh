@@ -20,7 +20,7 @@ failed=$(echo "$summary" | sed -E 's/^[0-9]+ passed, ([0-9]+) failed.*/\1/')
 missing=""
 for section in "Stiff springs" "Mass ratios" "Speed and step size" "Overlap recovery" \
     "Stacks and piles" "Restitution" "Size and place" "Degenerate shapes and bad input" \
-    "Long run and determinism"; do
+    "Long run and determinism" "Stiff and extreme cases"; do
     grep -q "^## [0-9]*\. $section\$" "$out/stability.md" || missing="$missing '$section'"
 done
 if [ -z "$missing" ]; then

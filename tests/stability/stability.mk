@@ -6,11 +6,12 @@
 
 STABILITY_DIR := build/stability
 
-$(STABILITY_DIR)/stability: tests/stability/stability.c tests/stability/theory.h $(BENCH_HDR) \
-		build/libengine.a
+$(STABILITY_DIR)/stability: tests/stability/stability.c tests/stability/theory.h \
+		tests/stability/extreme_cases.h $(BENCH_HDR) \
+		build/libjostle.a
 	@mkdir -p $(dir $@)
 	$(CC) $(CSTD) $(WARN) -O2 -Iengine/include -Itests/bench -Itests/stability \
-		-DBENCH_ENGINE_VERSION='"$(BENCH_ENGINE_VERSION)"' $< build/libengine.a -pthread -lm -o $@
+		-DBENCH_ENGINE_VERSION='"$(BENCH_ENGINE_VERSION)"' $< build/libjostle.a -pthread -lm -o $@
 
 CHECK_PROGRAMS += tests/stability/check_stability.sh
 check: $(STABILITY_DIR)/stability
@@ -19,7 +20,7 @@ check: $(STABILITY_DIR)/stability
 # The peers' programs are built when their headers are there (installed as
 # root when missing, tests/bench/deps.sh); without them the peers' columns
 # say "not run".
-stability: build/libengine.a $(STABILITY_DIR)/stability
+stability: build/libjostle.a $(STABILITY_DIR)/stability
 	@CC="$(CC)" CXX="$(CXX)" sh tests/bench/deps.sh
 	@$(MAKE) --no-print-directory bench-build
 	@tests/provenance.sh begin $(STABILITY_DIR)/provenance.state

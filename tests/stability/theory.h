@@ -2,7 +2,7 @@
 #define STABILITY_THEORY_H
 
 /*
- * Each integrator's step, as docs/design.md and engine/src/integrator.h
+ * Each integrator's step, as docs/design.md and engine/src/dynamics/integrator.h
  * write it, applied to the damped oscillator x'' = -omega^2 x - 2 zeta
  * omega x' with omega = 1 and step theta: a linear map of (x, v) whose
  * spectral radius squared is the energy factor per step once the run has
@@ -14,7 +14,7 @@
 
 #include <math.h>
 #include <stdbool.h>
-#include "scene.h"
+#include "jostle/scene.h"
 
 typedef struct {
     double x, v;
@@ -55,6 +55,11 @@ static inline theory_state_t theory_step(integrator_t integrator, theory_state_t
         s = theory_verlet(s, outer * h, zeta, &a);
         s = theory_verlet(s, inner * h, zeta, &a);
         return theory_verlet(s, outer * h, zeta, &a);
+    }
+    case INTEGRATOR_IMPLICIT_EULER: {
+        /* v' = v + h a(x', v'), x' = x + h v': v' (1 + 2 zeta h + h^2) = v - h x. */
+        double v = (s.v - h * s.x) / (1.0 + 2.0 * zeta * h + h * h);
+        return (theory_state_t){s.x + h * v, v};
     }
     case INTEGRATOR_RK4: {
         const double offsets[3] = {0.5, 0.5, 1.0}, weights[3] = {2.0, 2.0, 1.0};

@@ -1,0 +1,50 @@
+#include "base/memory.h"
+#include <stdatomic.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include "base/check.h"
+#include "jostle/jostle.h"
+
+/* Atomic: the worker threads of scene_set_workers grow their own buffers. */
+static atomic_size_t allocation_count = 0;
+
+size_t engine_allocation_count(void) {
+    return atomic_load_explicit(&allocation_count, memory_order_relaxed);
+}
+
+static void count_allocation(void) {
+    atomic_fetch_add_explicit(&allocation_count, 1, memory_order_relaxed);
+}
+
+void *memory_alloc(size_t size) {
+    void *block = malloc(size == 0 ? 1 : size);
+    REQUIRE(block != NULL, "out of memory allocating %zu bytes", size);
+    count_allocation();
+    return block;
+}
+
+void *memory_calloc(size_t count, size_t size) {
+    void *block = calloc(count == 0 ? 1 : count, size == 0 ? 1 : size);
+    REQUIRE(block != NULL, "out of memory allocating %zu x %zu bytes", count, size);
+    count_allocation();
+    return block;
+}
+
+void *memory_realloc(void *block, size_t size) {
+    void *moved = realloc(block, size == 0 ? 1 : size);
+    REQUIRE(moved != NULL, "out of memory growing a block to %zu bytes", size);
+    if (moved != block) count_allocation();
+    return moved;
+}
+
+void memory_free(void *block) {
+    free(block);
+}
+
+void memory_reserve(void **array, size_t *capacity, size_t needed, size_t element_size) {
+    if (needed <= *capacity) return;
+    size_t grown = *capacity < 16 ? 16 : *capacity * 2;
+    while (grown < needed) grown *= 2;
+    *array = memory_realloc(*array, grown * element_size);
+    *capacity = grown;
+}

@@ -1,0 +1,84 @@
+#include "jostle/collision.h"
+#include <math.h>
+#include "dynamics/body_private.h"
+#include "base/check.h"
+#include "collision/collision_private.h"
+
+typedef struct {
+    double min;
+    double max;
+} projection_t;
+
+static projection_t project(const body_t *body, vector_t axis) {
+    projection_t p = {INFINITY, -INFINITY};
+    for (size_t i = 0; i < body->count; i++) {
+        double d = vec_dot(body->world_vertices[i], axis);
+        p.min = fmin(p.min, d);
+        p.max = fmax(p.max, d);
+    }
+    return p;
+}
+
+/*
+ * Tests the edge normals of `owner` as candidate separating axes. Returns
+ * false at the first axis that separates. Otherwise lowers *least_overlap to
+ * the smallest push-out distance seen and sets *axis to point the way body2
+ * must move, from body1 toward body2.
+ */
+static bool overlaps_on_normals_of(const body_t *owner, const body_t *body1,
+                                   const body_t *body2, double *least_overlap, vector_t *axis) {
+    for (size_t i = 0; i < owner->count; i++) {
+        vector_t normal = owner->world_normals[i];
+        projection_t p1 = project(body1, normal);
+        projection_t p2 = project(body2, normal);
+        if (p1.max < p2.min || p2.max < p1.min) return false;
+        /* Pushing body2 along +normal takes p1.max - p2.min; along -normal,
+         * p2.max - p1.min. The smaller is the overlap on this axis, and it
+         * handles containment, where centroid directions mislead. */
+        double forward = p1.max - p2.min;
+        double backward = p2.max - p1.min;
+        double overlap = fmin(forward, backward);
+        if (overlap < *least_overlap) {
+            *least_overlap = overlap;
+            *axis = forward <= backward ? normal : vec_negate(normal);
+        }
+    }
+    return true;
+}
+
+collision_info_t find_collision(body_t *body1, body_t *body2) {
+    REQUIRE_NOT_NULL(body1);
+    REQUIRE_NOT_NULL(body2);
+    body_update_world(body1);
+    body_update_world(body2);
+    collision_info_t info = {false, VEC_ZERO, 0.0};
+    /* Bounds apart by a gap: some edge normal separates them too, so the
+     * answer is the same; most pairs of a scene are far apart. */
+    const aabb_t a = body1->bounds, b = body2->bounds;
+    if (a.max.x < b.min.x || b.max.x < a.min.x || a.max.y < b.min.y || b.max.y < a.min.y)
+        return info;
+    double least_overlap = INFINITY;
+    if (!overlaps_on_normals_of(body1, body1, body2, &least_overlap, &info.axis)) return info;
+    if (!overlaps_on_normals_of(body2, body1, body2, &least_overlap, &info.axis)) return info;
+    info.collided = true;
+    info.depth = least_overlap;
+    return info;
+}
+
+/* The largest gap between the projections on the normals of owner. */
+static double gap_on_normals_of(const body_t *owner, const body_t *body1, const body_t *body2) {
+    double gap = -INFINITY;
+    for (size_t i = 0; i < owner->count; i++) {
+        vector_t normal = owner->world_normals[i];
+        projection_t p1 = project(body1, normal);
+        projection_t p2 = project(body2, normal);
+        gap = fmax(gap, fmax(p2.min - p1.max, p1.min - p2.max));
+    }
+    return gap;
+}
+
+double collision_separation(body_t *body1, body_t *body2) {
+    body_update_world(body1);
+    body_update_world(body2);
+    return fmax(gap_on_normals_of(body1, body1, body2), gap_on_normals_of(body2, body1, body2));
+}

@@ -1,0 +1,203 @@
+#ifndef BODY_PRIVATE_H
+#define BODY_PRIVATE_H
+
+/* The body's fields, shared with the scene, the integrator and the contact
+ * pipeline (which read and write them in bulk); everyone else uses body.h. */
+
+#include <stdint.h>
+#include "jostle/body.h"
+
+struct body {
+    /* The fields every step reads for each pair and each body (the
+     * narrowphase, the solver's loading, integration) come first, so that a
+     * pair touches two cache lines of each body rather than five. */
+
+    /* World polygon, recomputed lazily after the pose changes, with cos and
+     * sin of angle; the arrays lie in this body's own block (shape below). */
+    size_t count;
+    vector_t *world_vertices;
+    vector_t *world_normals;
+    /* Pose. */
+    vector_t centroid;
+    double angle;
+    double rotation_cos, rotation_sin;
+
+    /* Set by the scene: a number no other body of the scene has had, so
+     * contact caches can match pairs across steps even as indices shift. */
+    uint32_t id;
+    /* Set by the scene each step: the body's row in the solver's arrays. */
+    uint32_t solver_index;
+    /* Set by the contact pipeline: the contacts this body had as body a in
+     * the step of its world numbered contact_step (modulo 2^32), at
+     * [contact_first, contact_first + contact_count) of that step's contact
+     * buffer, and its pairs that were apart at [gap_first, gap_first +
+     * gap_count) of the step's gap buffer (world.c). */
+    uint32_t contact_first, contact_count;
+    uint32_t gap_first, gap_count;
+    uint32_t contact_step;
+    /* Seams (seams.h), in what was padding: whether the world's last
+     * search for seams counted this body as static (the world checks such
+     * bodies, and static ones, for change while it loads them), and whether
+     * a flush static neighbour covers or continues a part of its boundary
+     * (read for every pair the narrowphase searches). */
+    bool seam_listed;
+    bool has_seams;
+    /* Largest distance from the centroid to a vertex (m). */
+    double radius;
+    double friction;
+    double elasticity;
+    double inverse_mass, inverse_inertia;
+
+    /* Motion. */
+    vector_t velocity;
+    double angular_velocity;
+    aabb_t bounds;
+    bool world_valid;
+    bool removed;
+    /* Sleeping (sleep.c): asleep bodies are left out of the step; the
+     * bodies of one sleeping island are linked in a circle by sleep_next
+     * (NULL when awake); sleep_time is how long the body has been slow (s),
+     * sleep_anchor and sleep_anchor_angle where it was sleep_window (s) ago. */
+    bool asleep;
+    /* Changed since the world last stepped it (body_mark_changed): the world
+     * wakes, at the start of its next step, the sleeping islands that
+     * changed_bounds (its box before the first such change) or its box now
+     * touches. */
+    bool changed;
+    /* Whether a scene owns the body (a body belongs to one scene, once). */
+    bool in_scene;
+    uint32_t category, mask, group;
+
+    /* Accumulated since the last tick. */
+    vector_t force;
+    double torque;
+    vector_t impulse;
+    double angular_impulse;
+
+    double sleep_time, sleep_window;
+    vector_t sleep_anchor;
+    double sleep_anchor_angle;
+    struct body *sleep_next;
+    aabb_t changed_bounds;
+
+    double mass, inertia;
+    rgb_color_t color;
+    void *info;
+    free_func_t info_freer;
+    /* The scene that owns the body or whose force creators name it (before
+     * it is added); NULL for neither. A force creator of one scene must not
+     * read a body that another scene frees. */
+    struct scene *scene;
+
+    /* What the last search for seams found of a listed body (seams.h; the
+     * world owns it). */
+    struct seam_record *seam;
+
+    /* Shape in the body frame, relative to the centroid, counter-clockwise. */
+    vector_t *local_vertices;
+    vector_t *local_normals;
+    /* The four arrays of count vectors: world vertices and normals, then
+     * local ones. */
+    vector_t shape[];
+};
+
+/* Wakes the body and every body of its sleeping island. */
+void body_wake(body_t *body);
+
+/* A change that sleeping bodies around the body must see (its pose,
+ * velocity, mass, material or filter set, its removal, its arrival in a
+ * scene): wakes its island now, and marks it changed so that the world
+ * wakes the islands its box touched before the change or touches after it
+ * (a static body has no island of its own, but holds others up). */
+void body_mark_changed(body_t *body);
+
+/* Adds a force already checked (body_add_force checks the caller's;
+ * forces.c checks its own): a nonzero push keeps the body awake. */
+static inline void body_push(body_t *body, vector_t force) {
+    body->force.x += force.x;
+    body->force.y += force.y;
+    if (force.x != 0.0 || force.y != 0.0) {
+        if (body->asleep) {
+            body_wake(body);
+        } else {
+            body->sleep_time = 0.0;
+        }
+    }
+}
+
+/* The velocity with the impulses accumulated for the step applied. */
+static inline vector_t body_velocity_after_impulses(const body_t *body) {
+    return vec_add(body->velocity, vec_multiply(body->inverse_mass, body->impulse));
+}
+
+/* Clears the force, torque and impulses accumulated for the step. */
+static inline void body_clear_accumulators(body_t *body) {
+    body->force = VEC_ZERO;
+    body->torque = 0.0;
+    body->impulse = VEC_ZERO;
+    body->angular_impulse = 0.0;
+}
+
+/* Whether the body can be moved by contacts (finite mass or inertia). */
+static inline bool body_is_movable(const body_t *body) {
+    return body->inverse_mass > 0.0 || body->inverse_inertia > 0.0;
+}
+
+/* Recomputes the world vertices, normals and bounds if the pose changed. */
+void body_update_world(body_t *body);
+
+/* What a step starts from and the integrator clears, kept by whoever
+ * integrates so that a step whose result does not fit a double can be
+ * explained (body_explain_non_finite). The fields the message needs only:
+ * this is copied for every body at every step. */
+typedef struct {
+    vector_t centroid;
+    vector_t force;
+    double torque;
+    vector_t impulse;
+    double angular_impulse;
+} body_motion_t;
+
+static inline body_motion_t body_motion(const body_t *body) {
+    return (body_motion_t){body->centroid, body->force, body->torque, body->impulse,
+                           body->angular_impulse};
+}
+
+/* Whether a pose and velocities are finite. 0 x is 0 for finite x and NaN
+ * otherwise, and a sum of zeros cannot overflow: one test for six values in
+ * the per-body path of every step (paired to shorten the chain of adds). */
+static inline bool body_state_is_finite(vector_t centroid, double angle, vector_t velocity,
+                                        double angular_velocity) {
+    double zero = (0.0 * centroid.x + 0.0 * centroid.y) + (0.0 * velocity.x + 0.0 * velocity.y) +
+                  (0.0 * angle + 0.0 * angular_velocity);
+    return zero == 0.0;
+}
+
+static inline bool body_motion_is_finite(const body_t *body) {
+    return body_state_is_finite(body->centroid, body->angle, body->velocity,
+                                body->angular_velocity);
+}
+
+/* Writes into message which of the body's pose and velocities is not finite
+ * after a step of dt from `before`, and the likely cause. */
+void body_explain_non_finite(const body_t *body, const body_motion_t *before, double dt,
+                             char *message, size_t size);
+
+/* Frame changes between the body's own frame (relative to its centroid,
+ * unrotated) and the world. They use the rotation cached with the world
+ * polygon: call body_update_world after the pose changes. */
+static inline vector_t body_rotate_vector(const body_t *body, vector_t v) {
+    return vec_rotate_cs(v, body->rotation_cos, body->rotation_sin);
+}
+
+static inline vector_t body_to_world(const body_t *body, vector_t local) {
+    return vec_add(body->centroid, body_rotate_vector(body, local));
+}
+
+static inline vector_t body_to_local(const body_t *body, vector_t world) {
+    vector_t d = vec_subtract(world, body->centroid);
+    return (vector_t){body->rotation_cos * d.x + body->rotation_sin * d.y,
+                      -body->rotation_sin * d.x + body->rotation_cos * d.y};
+}
+
+#endif // #ifndef BODY_PRIVATE_H

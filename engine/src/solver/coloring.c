@@ -1,0 +1,37 @@
+#include "solver/coloring.h"
+#include <string.h>
+#include "base/memory.h"
+
+/* Every colour taken. */
+static const uint32_t FULL = ((uint32_t)1 << COLORING_MAX_COLORS) - 1;
+
+void coloring_free(coloring_t *coloring) {
+    memory_free(coloring->used);
+    coloring->used = NULL;
+    coloring->used_capacity = 0;
+}
+
+int coloring_assign(coloring_t *coloring, const solver_contact_t *contacts, size_t contact_count,
+                    const solver_velocity_t *rows, size_t body_count, uint8_t *colors) {
+    memory_reserve((void **)&coloring->used, &coloring->used_capacity, body_count,
+                   sizeof(uint32_t));
+    uint32_t *used = coloring->used;
+    memset(used, 0, body_count * sizeof(uint32_t));
+    uint32_t all = 0;
+    for (size_t i = 0; i < contact_count; i++) {
+        uint32_t a = contacts[i].a, b = contacts[i].b;
+        bool move_a = !solver_row_is_static(&rows[a]);
+        bool move_b = !solver_row_is_static(&rows[b]);
+        uint32_t taken = (move_a ? used[a] : 0) | (move_b ? used[b] : 0);
+        if (taken == FULL) {
+            colors[i] = COLORING_NONE;
+            continue;
+        }
+        uint32_t color_bit = ~taken & (taken + 1); /* the lowest free colour */
+        if (move_a) used[a] |= color_bit;
+        if (move_b) used[b] |= color_bit;
+        all |= color_bit;
+        colors[i] = (uint8_t)__builtin_ctz(color_bit);
+    }
+    return all == 0 ? 0 : 32 - __builtin_clz(all);
+}

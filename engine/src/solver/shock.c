@@ -1,0 +1,373 @@
+#include "solver/shock.h"
+#include <math.h>
+#include <string.h>
+#include "base/memory.h"
+#include "base/workers.h"
+
+static const uint32_t UNREACHED = UINT32_MAX;
+/* The slot of a loose contact: its impulses are in the contact. */
+static const solver_slot_t IN_CONTACT = UINT32_MAX;
+/* The sign of a side, -1 seen from a and +1 from b: looked up, since
+ * which one it is is random and a branch on it mispredicted. */
+static const double SIGN[2] = {-1.0, 1.0};
+
+void shock_free(shock_t *shock) {
+    memory_free(shock->level);
+    memory_free(shock->first);
+    memory_free(shock->sides);
+    memory_free(shock->slots);
+    memory_free(shock->queue);
+    memory_free(shock->held);
+    memory_free(shock->support_end);
+    memset(shock, 0, sizeof *shock);
+}
+
+/* Whether the iterations pressed either point of a contact solved on its
+ * own (not in a batch). */
+static bool carries_load(const solver_contact_t *c) {
+    return c->points[0].normal_impulse > 0.0 ||
+           (c->point_count == 2 && c->points[1].normal_impulse > 0.0);
+}
+
+/*
+ * Lists each body's load-bearing contacts: contact i's sides are 2i (seen
+ * from a) and 2i + 1 (from b), each pushed on its body's list, the batched
+ * contacts' straight from the batches' impulses (solver_wide_link_loaded),
+ * then the loose ones'. The lists are in no particular order; hold_up puts
+ * a body's supports in contact order. Returns whether any contact carries
+ * load.
+ */
+static bool link_bodies(shock_t *shock, const solver_wide_t *wide,
+                        const solver_contact_t *contacts, size_t body_count) {
+    uint32_t *first = shock->first;
+    solver_side_t *sides = shock->sides;
+    memset(first, 0xff, body_count * sizeof(uint32_t)); /* SOLVER_NO_SIDE */
+    bool any = solver_wide_link_loaded(wide, first, sides, shock->slots);
+    for (size_t k = 0; k < wide->loose_count; k++) {
+        uint32_t i = wide->loose[k];
+        const solver_contact_t *c = &contacts[i];
+        if (!carries_load(c)) continue;
+        uint32_t side = 2 * i; /* fits: 2^31 contacts would not fit in memory */
+        sides[side] = (solver_side_t){first[c->a], c->b};
+        first[c->a] = side;
+        sides[side + 1] = (solver_side_t){first[c->b], c->a};
+        first[c->b] = side + 1;
+        shock->slots[i] = IN_CONTACT;
+        any = true;
+    }
+    return any;
+}
+
+/* The relative normal velocity of b over a at point p, less its target:
+ * below zero, the point approaches. Measured from a and b, not from the
+ * upper body and the sign: negating a difference is exact (but for the
+ * sign of a zero, which no test or sum below tells apart), and a choice
+ * of lever terms by the sign was a branch that mispredicted. */
+static double approach(const solver_contact_t *c, const solver_point_t *p,
+                       const solver_velocity_t *a, const solver_velocity_t *b) {
+    double at_b = vec_dot(c->normal, b->v) + b->w * p->rn_b;
+    double at_a = vec_dot(c->normal, a->v) + a->w * p->rn_a;
+    return (at_b - at_a) - p->target;
+}
+
+/* The upper body's lever term along the normal at p, picked by address:
+ * a pick of the value was a branch. */
+static double upper_rn(const solver_point_t *p, bool upper_is_b) {
+    const double *rn = upper_is_b ? &p->rn_b : &p->rn_a;
+    return *rn;
+}
+
+/* Normal impulses x1, x2 at the points, lever terms rn1, rn2 of the upper
+ * body, applied to it. */
+static void push_upper(const solver_contact_t *c, solver_velocity_t *upper, bool upper_is_b,
+                       double x1, double x2, double rn1, double rn2) {
+    double sign = SIGN[upper_is_b], total = x1 + x2;
+    upper->v = vec_add(upper->v, vec_multiply(sign * upper->inverse_mass * total, c->normal));
+    upper->w += sign * upper->inverse_inertia * (x1 * rn1 + x2 * rn2);
+}
+
+/* The impulse along the normal that stops the upper body's approach at a
+ * one-point contact, the lower body (the other of a, b) held still. */
+static void stop_one(const solver_contact_t *c, solver_velocity_t *a, solver_velocity_t *b,
+                     bool upper_is_b) {
+    const solver_point_t *p = &c->points[0];
+    double gap = approach(c, p, a, b);
+    if (gap >= 0.0) return;
+    solver_velocity_t *upper = upper_is_b ? b : a;
+    double rn = upper_rn(p, upper_is_b);
+    double k = upper->inverse_mass + upper->inverse_inertia * rn * rn;
+    double x = k > 0.0 ? -gap / k : 0.0;
+    push_upper(c, upper, upper_is_b, x, 0.0, rn, 0.0);
+}
+
+/* The impulses along the normal that stop the upper body's approach at a
+ * two-point contact, the lower body held still: the same LCP as the
+ * iterations' block solve, from zero. */
+static void stop_two(const solver_contact_t *c, solver_velocity_t *a, solver_velocity_t *b,
+                     bool upper_is_b) {
+    const solver_point_t *p1 = &c->points[0], *p2 = &c->points[1];
+    double gap1 = approach(c, p1, a, b), gap2 = approach(c, p2, a, b);
+    if (gap1 >= 0.0 && gap2 >= 0.0) return;
+    solver_velocity_t *upper = upper_is_b ? b : a;
+    double m = upper->inverse_mass, ii = upper->inverse_inertia;
+    double rn1 = upper_rn(p1, upper_is_b), rn2 = upper_rn(p2, upper_is_b);
+    double k11 = m + ii * rn1 * rn1, k22 = m + ii * rn2 * rn2, k12 = m + ii * rn1 * rn2;
+    double det = k11 * k22 - k12 * k12;
+    double x1 = det > 1e-12 * k11 * k22 ? (k12 * gap2 - k22 * gap1) / det : -1.0;
+    double x2 = det > 1e-12 * k11 * k22 ? (k12 * gap1 - k11 * gap2) / det : -1.0;
+    if (x1 >= 0.0 && x2 >= 0.0) {
+        push_upper(c, upper, upper_is_b, x1, x2, rn1, rn2);
+    } else if (gap1 < 0.0 && k11 > 0.0 && gap2 - k12 * gap1 / k11 >= 0.0) {
+        push_upper(c, upper, upper_is_b, -gap1 / k11, 0.0, rn1, rn2);
+    } else if (gap2 < 0.0 && k22 > 0.0 && gap1 - k12 * gap2 / k22 >= 0.0) {
+        push_upper(c, upper, upper_is_b, 0.0, -gap2 / k22, rn1, rn2);
+    } else {
+        push_upper(c, upper, upper_is_b, 0.0, 0.0, rn1, rn2);
+    }
+}
+
+/*
+ * The upper body moved with the lower one as one rigid body (both points
+ * of a two-point contact touching and held, no sliding), when the impulses
+ * that takes, added to the iterations' at each point, press (>= 0) and stay
+ * within the friction cone. Returns false, changing nothing, when they would not: the contact
+ * is then opening, tipping or sliding, and only its approach is stopped.
+ */
+static bool weld_upper(const solver_contact_t *c, const double normal_impulse[2],
+                       const double tangent_impulse[2], solver_velocity_t *upper,
+                       const solver_velocity_t *lower, double sign) {
+    if (upper->inverse_mass <= 0.0 || upper->inverse_inertia <= 0.0) return false;
+    const solver_point_t *p1 = &c->points[0], *p2 = &c->points[1];
+    /* Only faces in touch: a gap the step may close is no support yet,
+     * and welding across it left a landed box hovering (measured). */
+    if (p1->separation > 0.0 || p2->separation > 0.0) return false;
+    bool b_upper = sign > 0.0;
+    double rn1 = b_upper ? p1->rn_b : p1->rn_a, rn2 = b_upper ? p2->rn_b : p2->rn_a;
+    double rt1 = b_upper ? p1->rt_b : p1->rt_a, rt2 = b_upper ? p2->rt_b : p2->rt_a;
+    if (fabs(rn1 - rn2) < 1e-9) return false;
+    vector_t n = c->normal, t = vec_perpendicular(n);
+    /* From the lower centroid to the upper one, through point 1's lever
+     * arms (r = (r x t) n - (r x n) t in the contact frame). */
+    double lower_rn1 = b_upper ? p1->rn_a : p1->rn_b, lower_rt1 = b_upper ? p1->rt_a : p1->rt_b;
+    vector_t r_lower = vec_subtract(vec_multiply(lower_rt1, n), vec_multiply(lower_rn1, t));
+    vector_t r_upper = vec_subtract(vec_multiply(rt1, n), vec_multiply(rn1, t));
+    vector_t offset = vec_subtract(r_lower, r_upper);
+    vector_t target_v = vec_add(lower->v, (vector_t){-lower->w * offset.y, lower->w * offset.x});
+    vector_t impulse = vec_multiply(1.0 / upper->inverse_mass, vec_subtract(target_v, upper->v));
+    double moment = (lower->w - upper->w) / upper->inverse_inertia;
+    /* Per point: the tangential impulse shared equally, the normal ones
+     * from the total and the moment. */
+    double jn = sign * vec_dot(impulse, n), jt = sign * vec_dot(impulse, t);
+    double turn = sign * moment - 0.5 * jt * (rt1 + rt2);
+    double n1 = (turn - rn2 * jn) / (rn1 - rn2), n2 = jn - n1;
+    double pressed1 = normal_impulse[0] + n1, pressed2 = normal_impulse[1] + n2;
+    if (!(pressed1 >= 0.0 && pressed2 >= 0.0)) return false;
+    if (fabs(tangent_impulse[0] + 0.5 * jt) > c->friction * pressed1) return false;
+    if (fabs(tangent_impulse[1] + 0.5 * jt) > c->friction * pressed2) return false;
+    upper->v = target_v;
+    upper->w = lower->w;
+    return true;
+}
+
+/* The accumulated impulses so far of the two-point contact of side: in the
+ * batches, or in the contact for a loose one. */
+static void impulses_of(const shock_t *shock, const solver_wide_t *wide,
+                        const solver_contact_t *c, uint32_t side, double normal[2],
+                        double tangent[2]) {
+    solver_slot_t slot = shock->slots[side / 2];
+    if (slot != IN_CONTACT) {
+        solver_wide_impulses(wide, slot, c->point_count, normal, tangent);
+        return;
+    }
+    for (int k = 0; k < c->point_count; k++) {
+        normal[k] = c->points[k].normal_impulse;
+        tangent[k] = c->points[k].tangent_impulse;
+    }
+}
+
+/* Sides in increasing order, which is contact order (a body has one side
+ * per contact): insertion sort, as a body has a handful of supports. */
+static void sort_sides(uint32_t *held, uint32_t count) {
+    for (uint32_t k = 1; k < count; k++) {
+        uint32_t side = held[k], j = k;
+        for (; j > 0 && held[j - 1] > side; j--) held[j] = held[j - 1];
+        held[j] = side;
+    }
+}
+
+/* The lines of the contact that hold_up reads. Written out here: GCC
+ * deems a function of prefetches alone const and drops its calls. */
+#define PREFETCH_CONTACT(c)                                                          \
+    do {                                                                             \
+        const char *line_ = (const char *)(c);                                       \
+        __builtin_prefetch(line_ + offsetof(solver_contact_t, point_count));         \
+        __builtin_prefetch(line_ + offsetof(solver_contact_t, points[0].rn_a));      \
+        __builtin_prefetch(line_ + offsetof(solver_contact_t, points[0].separation)); \
+        __builtin_prefetch(line_ + offsetof(solver_contact_t, points[1].rn_a));      \
+        __builtin_prefetch(line_ + offsetof(solver_contact_t, points[1].separation)); \
+    } while (0)
+
+/* How many supports ahead hold_up's contacts are fetched: a pile of 4000
+ * bodies has more contacts than the cache holds. */
+enum { PREFETCH_AHEAD = 8 };
+
+/* body's contacts with the level below (its sides held[0 .. count)), each
+ * solved with the lower body held still, in contact order; welded when it
+ * is the only one (a column), since a body held by two is pulled two ways. */
+static void hold_up(const shock_t *shock, const solver_wide_t *wide,
+                    const solver_contact_t *contacts, uint32_t body, uint32_t *held,
+                    uint32_t count, uint32_t readable, solver_velocity_t *velocities) {
+    if (count > 1) sort_sides(held, count);
+    for (uint32_t k = 0; k < count; k++) {
+        uint32_t side = held[k];
+        if (k + PREFETCH_AHEAD < readable) {
+            PREFETCH_CONTACT(&contacts[held[k + PREFETCH_AHEAD] / 2]);
+        }
+        const solver_contact_t *c = &contacts[side / 2];
+        bool upper_is_b = side % 2 == 1; /* the odd side is b's */
+        solver_velocity_t *upper = &velocities[body];
+        solver_velocity_t *lower = &velocities[shock->sides[side].other];
+        solver_velocity_t *a = upper_is_b ? lower : upper, *b = upper_is_b ? upper : lower;
+        if (c->point_count == 1) {
+            stop_one(c, a, b, upper_is_b);
+            continue;
+        }
+        if (count == 1) {
+            double normal[2], tangent[2];
+            impulses_of(shock, wide, c, side, normal, tangent);
+            if (weld_upper(c, normal, tangent, upper, lower, SIGN[upper_is_b])) continue;
+        }
+        stop_two(c, a, b, upper_is_b);
+    }
+}
+
+/*
+ * Breadth first from every static body: each body's level, and its
+ * supports (its sides to the level below) in held, those of queue[q] at
+ * held[support_end[q - 1] .. support_end[q]). Returns how many bodies the
+ * queue holds.
+ *
+ * The walk over a body's sides has no branch but the loop's: whether a
+ * neighbour is below, level or unreached is random in a pile, and
+ * mispredicting it cost more than the stores done regardless.
+ */
+static size_t find_levels(shock_t *shock, const solver_velocity_t *velocities,
+                          size_t body_count) {
+    uint32_t *level = shock->level, *queue = shock->queue, *held = shock->held;
+    uint32_t *support_end = shock->support_end;
+    const uint32_t *first = shock->first;
+    const solver_side_t *sides = shock->sides;
+    size_t head = 0, tail = 0;
+    for (size_t k = 0; k < body_count; k++) {
+        level[k] = solver_row_is_static(&velocities[k]) ? 0 : UNREACHED;
+        if (level[k] == 0) queue[tail++] = (uint32_t)k;
+    }
+    uint32_t supports = 0;
+    for (; head < tail; head++) {
+        uint32_t body = queue[head], here = level[body];
+        for (uint32_t side = first[body]; side != SOLVER_NO_SIDE; side = sides[side].next) {
+            uint32_t other = sides[side].other, there = level[other];
+            held[supports] = side; /* kept when it is a support */
+            supports += there < here;
+            /* Neighbours differ by a level at most, so this reaches the
+             * unreached and leaves the rest. */
+            level[other] = there < here + 1 ? there : here + 1;
+            queue[tail] = other; /* kept when it was unreached */
+            tail += there >> 31; /* only UNREACHED has the top bit: levels < bodies */
+        }
+        support_end[head] = supports;
+    }
+    /* What hold_up fetches ahead past the last support: a contact it has. */
+    for (uint32_t k = 0; k < PREFETCH_AHEAD; k++) held[supports + k] = supports > 0 ? held[0] : 0;
+    return tail;
+}
+
+/* The bodies queue[begin .. end) held up, each by its supports: hold_up may
+ * read ahead in held as far as the last of these bodies' supports, plus
+ * `past` entries beyond. */
+static void hold_up_range(shock_t *shock, const solver_wide_t *wide,
+                          const solver_contact_t *contacts, solver_velocity_t *velocities,
+                          size_t begin, size_t end, uint32_t past) {
+    uint32_t start = begin > 0 ? shock->support_end[begin - 1] : 0;
+    uint32_t last = end > 0 ? shock->support_end[end - 1] + past : 0;
+    for (size_t q = begin; q < end; q++) {
+        uint32_t stop = shock->support_end[q];
+        if (stop == start) continue;
+        hold_up(shock, wide, contacts, shock->queue[q], shock->held + start, stop - start,
+                last - start, velocities);
+        start = stop;
+    }
+}
+
+/* A level of this many bodies or more is spread over the workers: below
+ * it, the call costs more than the bodies. */
+enum { SPLIT_LEVEL = 64 };
+
+typedef struct {
+    shock_t *shock;
+    const solver_wide_t *wide;
+    const solver_contact_t *contacts;
+    solver_velocity_t *velocities;
+    size_t first; /* the level's first place in the queue */
+} level_split_t;
+
+/* A chunk of one level: hold_up reads ahead no further than the chunk's
+ * own supports, which no other thread sorts. */
+static void level_chunk(void *context, size_t chunk, size_t begin, size_t end) {
+    const level_split_t *split = context;
+    (void)chunk;
+    hold_up_range(split->shock, split->wide, split->contacts, split->velocities,
+                  split->first + begin, split->first + end, 0);
+}
+
+/*
+ * Each body held up by its supports, in the order the levels reached the
+ * bodies, which is level by level from the ground up: a body's supports
+ * are all of the level below, held up before it, so their velocities are
+ * final. A body's pass changes its own velocity only, so the bodies of one
+ * level may go in any order, and a large level goes over the workers with
+ * the same result.
+ */
+static void propagate(shock_t *shock, const solver_wide_t *wide,
+                      const solver_contact_t *contacts, solver_velocity_t *velocities,
+                      size_t body_count) {
+    size_t reached = find_levels(shock, velocities, body_count);
+    if (wide->workers == NULL) {
+        hold_up_range(shock, wide, contacts, velocities, 0, reached, PREFETCH_AHEAD);
+        return;
+    }
+    level_split_t split = {shock, wide, contacts, velocities, 0};
+    for (size_t q = 0; q < reached;) {
+        uint32_t level = shock->level[shock->queue[q]];
+        size_t end = q + 1;
+        while (end < reached && shock->level[shock->queue[end]] == level) end++;
+        if (end - q >= SPLIT_LEVEL) {
+            split.first = q;
+            workers_for(wide->workers, end - q, level_chunk, &split);
+        } else {
+            hold_up_range(shock, wide, contacts, velocities, q, end, 0);
+        }
+        q = end;
+    }
+}
+
+void shock_propagate(shock_t *shock, const solver_wide_t *wide, const solver_contact_t *contacts,
+                     size_t count, solver_velocity_t *velocities, size_t body_count) {
+    if (count == 0) return;
+    memory_reserve((void **)&shock->level, &shock->level_capacity, body_count, sizeof(uint32_t));
+    memory_reserve((void **)&shock->first, &shock->first_capacity, body_count, sizeof(uint32_t));
+    memory_reserve((void **)&shock->sides, &shock->side_capacity, 2 * count,
+                   sizeof(solver_side_t));
+    memory_reserve((void **)&shock->slots, &shock->slot_capacity, count, sizeof(solver_slot_t));
+    /* One more than can be kept, for the stores done regardless. */
+    memory_reserve((void **)&shock->queue, &shock->queue_capacity, body_count + 1,
+                   sizeof(uint32_t));
+    memory_reserve((void **)&shock->support_end, &shock->support_end_capacity, body_count,
+                   sizeof(uint32_t));
+    /* One more than can be kept, for the store done regardless, and what
+     * hold_up fetches ahead. */
+    memory_reserve((void **)&shock->held, &shock->held_capacity, count + 1 + PREFETCH_AHEAD,
+                   sizeof(uint32_t));
+    if (!link_bodies(shock, wide, contacts, body_count)) return;
+    propagate(shock, wide, contacts, velocities, body_count);
+}

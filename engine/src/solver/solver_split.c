@@ -1,0 +1,120 @@
+#include "solver/solver_split.h"
+#include "base/workers.h"
+
+/* A colour with fewer batches than this is swept by the calling thread
+ * alone: waking the others would cost more than it saves. */
+static const size_t SPLIT_MIN_BATCHES = 16;
+
+typedef enum { SWEEP_PACK, SWEEP_STORE, SWEEP_WARM, SWEEP_ITERATE, SWEEP_CORRECT } sweep_t;
+
+typedef struct {
+    solver_wide_t *wide;
+    sweep_t sweep;
+    solver_velocity_t *rows;
+    solver_displacement_t *displacements;
+    solver_contact_t *contacts; /* packing reads them, storing writes them */
+    size_t first; /* the colour's first batch */
+} colour_sweep_t;
+
+static void sweep_range(const colour_sweep_t *s, size_t begin, size_t end) {
+    switch (s->sweep) {
+    case SWEEP_PACK:
+        solver_wide_pack(s->wide, s->contacts, s->rows, begin, end);
+        solver_wide_mark_fixed(s->wide, s->rows, begin, end);
+        break;
+    case SWEEP_STORE:
+        solver_wide_store_range(s->wide, s->contacts, begin, end);
+        break;
+    case SWEEP_WARM:
+        solver_wide_warm_start_range(s->wide, s->rows, begin, end);
+        break;
+    case SWEEP_ITERATE:
+        solver_wide_iterate_range(s->wide, s->rows, begin, end);
+        break;
+    case SWEEP_CORRECT:
+        solver_wide_correct_range(s->wide, s->displacements, begin, end);
+        break;
+    }
+}
+
+static void sweep_chunk(void *context, size_t chunk, size_t begin, size_t end) {
+    const colour_sweep_t *s = context;
+    (void)chunk;
+    sweep_range(s, s->first + begin, s->first + end);
+}
+
+static void sweep_colour(colour_sweep_t *s, int colour) {
+    const solver_wide_t *wide = s->wide;
+    size_t begin = wide->group_batch[colour * SOLVER_WIDE_KINDS];
+    size_t end = wide->group_batch[(colour + 1) * SOLVER_WIDE_KINDS];
+    if (end - begin < SPLIT_MIN_BATCHES) {
+        sweep_range(s, begin, end);
+        return;
+    }
+    s->first = begin;
+    workers_for(wide->workers, end - begin, sweep_chunk, s);
+}
+
+static void sweep_forward(colour_sweep_t *s) {
+    for (int c = 0; c < COLORING_MAX_COLORS; c++) sweep_colour(s, c);
+}
+
+/* Over every batch at once: packing and storing touch no body row. */
+static void sweep_all(colour_sweep_t *s) {
+    workers_for(s->wide->workers, s->wide->batch_count, sweep_chunk, s);
+}
+
+void solver_split_load(solver_wide_t *wide, const solver_contact_t *contacts, size_t count,
+                       const solver_velocity_t *rows, size_t body_count) {
+    solver_wide_arrange(wide, contacts, count, rows, body_count);
+    if (wide->workers == NULL) {
+        solver_wide_pack_all(wide, contacts, rows);
+        return;
+    }
+    /* Both are only read. */
+    colour_sweep_t s = {wide, SWEEP_PACK, (solver_velocity_t *)rows, NULL,
+                        (solver_contact_t *)contacts, 0};
+    sweep_all(&s);
+}
+
+void solver_split_store(const solver_wide_t *wide, solver_contact_t *contacts) {
+    if (wide->workers == NULL) {
+        solver_wide_store(wide, contacts);
+        return;
+    }
+    /* Only read. */
+    colour_sweep_t s = {(solver_wide_t *)wide, SWEEP_STORE, NULL, NULL, contacts, 0};
+    sweep_all(&s);
+}
+
+void solver_split_warm_start(solver_wide_t *wide, solver_velocity_t *rows) {
+    if (wide->workers == NULL) {
+        solver_wide_warm_start(wide, rows);
+        return;
+    }
+    colour_sweep_t s = {wide, SWEEP_WARM, rows, NULL, NULL, 0};
+    sweep_forward(&s);
+}
+
+void solver_split_iterate(solver_wide_t *wide, solver_velocity_t *rows) {
+    if (wide->workers == NULL) {
+        solver_wide_iterate(wide, rows);
+        return;
+    }
+    colour_sweep_t s = {wide, SWEEP_ITERATE, rows, NULL, NULL, 0};
+    sweep_forward(&s);
+}
+
+void solver_split_correct_positions(solver_wide_t *wide, solver_displacement_t *displacements,
+                                    bool backward) {
+    if (wide->workers == NULL) {
+        solver_wide_correct_positions(wide, displacements, backward);
+        return;
+    }
+    colour_sweep_t s = {wide, SWEEP_CORRECT, NULL, displacements, NULL, 0};
+    if (!backward) {
+        sweep_forward(&s);
+        return;
+    }
+    for (int c = COLORING_MAX_COLORS; c-- > 0;) sweep_colour(&s, c);
+}

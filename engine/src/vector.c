@@ -1,3 +1,0 @@
-#include "vector.h"
-
-const vector_t VEC_ZERO = {0.0, 0.0};
