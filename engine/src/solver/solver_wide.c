@@ -310,7 +310,7 @@ LANE_INLINE void solve_normal_points(const solver_batch_t *batch, lane_point_t *
     }
 }
 
-/* solver.c's block solve with its four cases evaluated in every lane and
+/* velocity_solve.c's block solve with its four cases evaluated in every lane and
  * the first that holds selected (the case order is the scalar one). */
 LANE_INLINE void solve_normal_block(const solver_batch_t *batch, lane_point_t *points,
                                     const lane_block_t *k, lane_body_t *a, lane_body_t *b) {
@@ -479,7 +479,7 @@ LANE_INLINE void scatter_displacements(solver_displacement_t *rows, const uint32
     }
 }
 
-/* solver.c's solve_position, lane by lane. */
+/* position_pass.c's solver_solve_position, lane by lane. */
 LANE_INLINE void correct_batch(const solver_position_batch_t *batch,
                                const solver_position_point_t *points, lane_displacement_t *a,
                                lane_displacement_t *b) {

@@ -1,6 +1,7 @@
 #include "world/impacts.h"
 #include <math.h>
 #include "base/scalar.h"
+#include "solver/velocity_solve.h"
 
 /* A moment of impact is found to within this fraction of the two bodies'
  * radii (m per m) of touching. */
@@ -22,7 +23,7 @@ static vector_t start_approach(const solver_state_t *sa, vector_t r_a, const sol
 /* Whether the solver will time an impact of contact c within the step: its
  * points all apart, and one that closes its gap within the step faster than
  * the bounce threshold, at the start velocities and accelerations, in the
- * geometry of the start (solver.c, set_target). */
+ * geometry of the start (velocity_solve.c, set_target). */
 static bool impact_in_step(const solver_contact_t *c, const solver_anchor_t *anchor,
                            const solver_state_t *sa, const solver_state_t *sb, double dt) {
     double pull = vec_dot(c->normal, vec_subtract(sb->acceleration, sa->acceleration));
