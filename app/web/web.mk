@@ -1,5 +1,6 @@
 # make web        the sandbox as one web page, build/web/sandbox.html (docs/web.md)
 # make check-web  that page in headless Chromium, against the native build
+# make web-bench  its figures in docs/bench.md; make web-picture  docs/web.png
 #
 # The engine and the app compiled with Debian's Emscripten (package
 # emscripten) against SDL2, SDL2_gfx and SDL2_image built for WebAssembly
@@ -136,10 +137,26 @@ $(WEB)/bench_engine-%.js: tests/bench/bench_engine.c $(BENCH_HDR)
 $(WEB)/bench_engine-%.html: $(WEB)/bench_engine-%.js tests/web/bench_shell.html
 	$(call web_page,$<,tests/web/bench_shell.html,$@)
 
-.PHONY: web-bench
-web-bench: web-check-deps $(WEB)/sandbox.html $(WEB)/bench_engine-simd.html \
-		$(WEB)/bench_engine-scalar.html build/bench/bench_engine
+# docs/web.png: the page in headless Chromium running app/scripts/demo.txt,
+# the script of docs/sandbox.png, with the page's bar above it: its quit
+# replaced by a pause, and the picture taken once the script logs that.
+.PHONY: web-picture
+web-picture: web-check-deps $(WEB)/sandbox.html
+	script=$$({ grep -v '^quit$$' app/scripts/demo.txt; printf 'key space\nlog\nwait 600s\n'; } | node -e \
+	    'process.stdout.write(encodeURIComponent(require("fs").readFileSync(0, "utf8")))') && \
+	node tests/web/browse.js --size 1280x753 --screenshot docs/web.png --timeout 120 --until "state:" \
+	    --url "file://$$(pwd)/$(WEB)/sandbox.html?args=--headless+--elasticity+0.4&script=$$script" >/dev/null
+	@echo "make web-picture: docs/web.png"
+
+.PHONY: web-bench web-bench-pages
+web-bench: web-bench-pages
 	sh tests/web/bench_web.sh
+
+# What make web-bench measures, built: `nice make web-bench-pages` then
+# `sh tests/web/bench_web.sh` keeps the builds at low priority and the
+# measured runs at the normal one.
+web-bench-pages: web-check-deps $(WEB)/sandbox.html $(WEB)/bench_engine-simd.html \
+		$(WEB)/bench_engine-scalar.html build/bench/bench_engine
 
 # The page in headless Chromium beside the native build
 # (tests/web/web_check.c). make check runs it too, and builds the page for

@@ -39,10 +39,9 @@
 
 /* ---- running programs ---- */
 
-/* Runs argv (NULL-terminated) with stdout and stderr into out_path, for at
- * most timeout_s seconds; returns the exit status, or -1 (a failure said)
- * when it could not run, died or was killed. */
-static int run(const char *const *argv, const char *out_path, int timeout_s) {
+/* Starts argv (NULL-terminated) with stdout and stderr into out_path;
+ * returns its pid, or -1 (a failure said). */
+static pid_t start(const char *const *argv, const char *out_path) {
     fflush(stdout);
     pid_t child = fork();
     if (child < 0) {
@@ -56,6 +55,14 @@ static int run(const char *const *argv, const char *out_path, int timeout_s) {
         fprintf(stderr, "cannot run %s: %s\n", argv[0], strerror(errno));
         _exit(127);
     }
+    return child;
+}
+
+/* Waits at most timeout_s seconds for child (started by start), named by
+ * name; returns its exit status, or -1 (a failure said) when it could not
+ * run, died or was killed. */
+static int finish(pid_t child, const char *name, const char *out_path, int timeout_s) {
+    if (child < 0) return -1;
     int status = 0;
     struct timespec pause = {0, 20 * 1000 * 1000};
     for (int waited = 0;; waited++) {
@@ -63,16 +70,21 @@ static int run(const char *const *argv, const char *out_path, int timeout_s) {
         if (waited > timeout_s * 50) {
             kill(child, SIGKILL);
             waitpid(child, &status, 0);
-            app_fail("%s did not finish within %d s (output in %s)", argv[0], timeout_s, out_path);
+            app_fail("%s did not finish within %d s (output in %s)", name, timeout_s, out_path);
             return -1;
         }
         nanosleep(&pause, NULL);
     }
     if (WIFSIGNALED(status)) {
-        app_fail("%s died with signal %d (output in %s)", argv[0], WTERMSIG(status), out_path);
+        app_fail("%s died with signal %d (output in %s)", name, WTERMSIG(status), out_path);
         return -1;
     }
     return WEXITSTATUS(status);
+}
+
+/* Runs argv to its end (see start and finish). */
+static int run(const char *const *argv, const char *out_path, int timeout_s) {
+    return finish(start(argv, out_path), argv[0], out_path, timeout_s);
 }
 
 static bool have_command(const char *name) {
@@ -161,26 +173,25 @@ static bool run_both(const char *name, const char *args, int width, int height,
     char size[32];
     snprintf(size, sizeof size, "%dx%d", width, height);
 
+    char page[4096];
+    if (realpath(PAGE, page) == NULL) {
+        app_fail("%s: %s (make web)", PAGE, strerror(errno));
+        return false;
+    }
+
+    /* The native run goes on beside the page's (two processors). */
+    pid_t native_run = -1;
+    const char *native_out = tmp_path(name, ".native.txt");
     if (native) {
         const char *argv[16] = {SANDBOX, "--headless", "--size", size, "--script", script_path};
         char words[256];
         snprintf(words, sizeof words, "%s", args);
         int n = 6;
         for (char *w = strtok(words, " "); w != NULL && n < 15; w = strtok(NULL, " ")) argv[n++] = w;
-        const char *out = tmp_path(name, ".native.txt");
-        int status = run(argv, out, 60);
-        r->native = read_file(out);
-        if (status != 0) {
-            app_fail("the native sandbox exited with %d:\n%s", status, r->native ? r->native : "");
-            return false;
-        }
+        native_run = start(argv, native_out);
+        if (native_run < 0) return false;
     }
 
-    char page[4096];
-    if (realpath(PAGE, page) == NULL) {
-        app_fail("%s: %s (make web)", PAGE, strerror(errno));
-        return false;
-    }
     char *query_args = url_encode(args), *query_script = url_encode(script);
     size_t url_size = strlen(page) + strlen(query_args) + strlen(query_script) + 96;
     char *url = malloc(url_size);
@@ -205,6 +216,15 @@ static bool run_both(const char *name, const char *args, int width, int height,
     const char *out = tmp_path(name, ".page.txt");
     int status = run(argv, out, PAGE_TIMEOUT + 30);
     free(url);
+    if (native) {
+        int native_status = finish(native_run, SANDBOX, native_out, 60);
+        r->native = read_file(native_out);
+        if (native_status != 0) {
+            app_fail("the native sandbox exited with %d:\n%s", native_status,
+                     r->native ? r->native : "");
+            return false;
+        }
+    }
     r->page = read_file(out);
     if (status != 0 || r->page == NULL) {
         app_fail("the page run failed (status %d):\n%s", status, r->page ? r->page : "");
