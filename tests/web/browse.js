@@ -8,10 +8,12 @@
 //
 // node tests/web/browse.js --url URL [--until TEXT] [--timeout S]
 //     [--screenshot FILE] [--downloads DIR] [--size WxH] [--chromium PATH]
-//     [--choose FILE]
+//     [--choose FILE] [--cpu 1]
 //
 // --choose gives FILE to the page's file chooser (#file) once the page says
-// it showed its first frame.
+// it showed its first frame. --cpu 1 prints, at the end, the processor time
+// the page's renderer process has taken since it started ("cpu: renderer
+// process S s", Chromium's ProcessTime metric).
 "use strict";
 const { spawn } = require("child_process");
 const fs = require("fs");
@@ -20,7 +22,7 @@ const path = require("path");
 
 function options(argv) {
   const o = { until: "sandbox: stopped", timeout: 60, size: "1280x760", chromium: "chromium",
-              choose: "" };
+              choose: "", cpu: "" };
   for (let i = 2; i < argv.length; i += 2) {
     const key = argv[i].replace(/^--/, "");
     if (!(key in o) && !["url", "screenshot", "downloads"].includes(key)) {
@@ -141,6 +143,12 @@ function main() {
     await send("Page.navigate", { url: o.url }, sessionId);
     await untilSeen;
     clearTimeout(timer);
+    if (o.cpu) {
+      await send("Performance.enable", {}, sessionId);
+      const { metrics } = await send("Performance.getMetrics", {}, sessionId);
+      const cpu = metrics.find((m) => m.name === "ProcessTime");
+      console.log("cpu: renderer process " + (cpu ? cpu.value : "unknown") + " s");
+    }
     if (o.screenshot) {
       const shot = await send("Page.captureScreenshot", { format: "png" }, sessionId);
       fs.writeFileSync(o.screenshot, Buffer.from(shot.data, "base64"));
