@@ -231,6 +231,12 @@ const char *integrator_get_name(integrator_t integrator);
  * energy at every h, INFINITY for one stable at every h (implicit Euler). */
 double integrator_get_stability_limit(integrator_t integrator);
 
+/* The stability limit of gamma h / m on a body under create_drag: 2 for the
+ * one-stage explicit schemes and velocity Verlet, 2.785 for RK4, 1.372 for
+ * symplectic4 (its negative middle step turns drag into a push), INFINITY
+ * for implicit Euler. Past it the body's speed grows every step. */
+double integrator_get_drag_limit(integrator_t integrator);
+
 void scene_set_integrator(scene_t *scene, integrator_t integrator);
 integrator_t scene_get_integrator(scene_t *scene);
 
