@@ -260,6 +260,10 @@ record (before the last solve), Box2D v3's on the polygons at the final
 positions.
 
 EOF
+    if [ -n "$BENCH_SEEDS_ARGS" ]; then
+        echo "Run with seeds.sh $BENCH_SEEDS_ARGS (--quick leaves out pile(10000))."
+        echo
+    fi
     if [ ! -s "$work/seeds-v3" ]; then
         echo "Box2D v3 was not built for this run (no BOX2D3_DIR and no shared archive): its column is left out."
         echo
