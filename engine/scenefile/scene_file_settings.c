@@ -1,8 +1,10 @@
 /*
  * The settings (scene_file_parse.h): gravity, contacts, integrator,
- * iterations, timestep, view, sleeping, sleep_phase, step_lengths and game,
+ * iterations, warm_starting, restitution_threshold, sleep_tolerance,
+ * sleep_time, timestep, view, sleeping, sleep_phase, step_lengths and game,
  * each written at most once.
  */
+#include <math.h>
 #include <string.h>
 #include "scene_file_parse.h"
 
@@ -107,6 +109,32 @@ bool sf_parse_setting(parser_t *p, const char *keyword, sf_where_t here) {
         return sf_first_time(p, &s->step_lengths_where, keyword, here) &&
                sf_read_quantity(p, &last, &s->last_step) &&
                sf_read_quantity(p, &before, &s->step_before);
+    }
+    if (strcmp(keyword, "warm_starting") == 0) {
+        if (!sf_first_time(p, &s->warm_starting_where, keyword, here)) return false;
+        if (sf_token_is(&p->token, "on") || sf_token_is(&p->token, "off")) {
+            s->warm_starting = sf_token_is(&p->token, "on");
+            next(p);
+            return true;
+        }
+        return sf_expected(p, "on or off (warm starting)");
+    }
+    if (strcmp(keyword, "restitution_threshold") == 0) {
+        return sf_first_time(p, &s->restitution_threshold_where, keyword, here) &&
+               sf_read_quantity(p, &RESTITUTION_THRESHOLD, &s->restitution_threshold);
+    }
+    if (strcmp(keyword, "sleep_tolerance") == 0) {
+        s->sleep_angular = INFINITY;
+        if (!sf_first_time(p, &s->sleep_tolerance_where, keyword, here) ||
+            !sf_read_quantity(p, &SLEEP_LINEAR, &s->sleep_linear))
+            return false;
+        /* The angular tolerance is optional: none of its own when absent. */
+        if (p->token.kind != TOKEN_WORD) return true;
+        return sf_read_quantity(p, &SLEEP_ANGULAR, &s->sleep_angular);
+    }
+    if (strcmp(keyword, "sleep_time") == 0) {
+        return sf_first_time(p, &s->sleep_time_where, keyword, here) &&
+               sf_read_quantity(p, &SLEEP_TIME, &s->sleep_time);
     }
     /* game */
     return sf_first_time(p, &s->game_where, keyword, here) &&

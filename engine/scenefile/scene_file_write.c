@@ -58,13 +58,47 @@ static bool is_zero(vector_t v) {
     return v.x == 0.0 && v.y == 0.0;
 }
 
+/* The solver's settings as the scene has them now; all but the iterations
+ * only when they differ from a new scene's. */
+static void put_solver_settings(out_t *out, const scene_t *scene) {
+    size_t velocity, position;
+    scene_get_solver_iterations(scene, &velocity, &position);
+    put(out, "iterations %zu %zu\n", velocity, position);
+    scene_t *defaults = scene_init();
+    if (scene_get_warm_starting(scene) != scene_get_warm_starting(defaults)) {
+        put(out, "warm_starting %s\n", scene_get_warm_starting(scene) ? "on" : "off");
+    }
+    double threshold = scene_get_restitution_threshold(scene);
+    if (threshold != scene_get_restitution_threshold(defaults)) {
+        put(out, "restitution_threshold");
+        put_number(out, threshold);
+        put(out, "\n");
+    }
+    double linear, angular, default_linear, default_angular;
+    scene_get_sleep_tolerance(scene, &linear, &angular);
+    scene_get_sleep_tolerance(defaults, &default_linear, &default_angular);
+    if (linear != default_linear || angular != default_angular) {
+        put(out, "sleep_tolerance");
+        put_number(out, linear);
+        if (isfinite(angular)) put_number(out, angular);
+        put(out, "\n");
+    }
+    double time = scene_get_sleep_time(scene);
+    if (time != scene_get_sleep_time(defaults)) {
+        put(out, "sleep_time");
+        put_number(out, time);
+        put(out, "\n");
+    }
+    scene_free(defaults);
+}
+
 static void put_settings(out_t *out, scene_file_t *file, const char *integrator) {
     const sf_settings_t *s = &file->doc.settings;
     put(out, "gravity");
     put_vector(out, scene_get_gravity(file->scene));
     put(out, "\ncontacts %s\n", scene_get_contacts_enabled(file->scene) ? "on" : "off");
     put(out, "integrator %s\n", integrator);
-    put(out, "iterations %zu %zu\n", s->velocity_iterations, s->position_iterations);
+    put_solver_settings(out, file->scene);
     put(out, "timestep");
     put_number(out, s->timestep);
     put(out, "\n");
