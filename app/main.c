@@ -11,16 +11,16 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
-#include "app.h"
-#include "draw.h"
-#include "input.h"
-#include "integrator_choice.h"
-#include "layout.h"
-#include "render.h"
-#include "script.h"
-#include "stepper.h"
-#include "ui.h"
-#include "video.h"
+#include "core/app.h"
+#include "draw/draw.h"
+#include "input/input.h"
+#include "scene/integrator_choice.h"
+#include "core/layout.h"
+#include "draw/render.h"
+#include "input/script.h"
+#include "core/stepper.h"
+#include "panels/ui.h"
+#include "draw/video.h"
 
 typedef struct {
     bool headless;

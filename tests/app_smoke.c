@@ -26,9 +26,9 @@
 #include <time.h>
 #include <unistd.h>
 #include "app_image.h"
-#include "layout.h"
-#include "palette.h"
-#include "presets.h"
+#include "core/layout.h"
+#include "draw/palette.h"
+#include "scene/presets.h"
 #include "jostle/scene_file.h"
 
 #ifndef APP_SMOKE_HAVE_SDL

@@ -16,17 +16,17 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "batch.h"
-#include "energy_drift.h"
-#include "integrator_choice.h"
-#include "layout.h"
-#include "palette.h"
-#include "presets.h"
-#include "sandbox_scene.h"
-#include "scene_text.h"
-#include "stats_text.h"
-#include "step_clock.h"
-#include "text.h"
+#include "draw/batch.h"
+#include "core/energy_drift.h"
+#include "scene/integrator_choice.h"
+#include "core/layout.h"
+#include "draw/palette.h"
+#include "scene/presets.h"
+#include "scene/sandbox_scene.h"
+#include "panels/scene_text.h"
+#include "panels/stats_text.h"
+#include "core/step_clock.h"
+#include "panels/text.h"
 
 #include "app_expect.h"
 

@@ -1,0 +1,85 @@
+#include "panels/ui.h"
+#include <SDL2_gfxPrimitives.h>
+#include "draw/draw.h"
+#include "panels/end_screen.h"
+#include "panels/help.h"
+#include "panels/ui_section.h"
+
+/* The side bar, top to bottom. A new panel goes here. */
+static const ui_section_t *const SECTIONS[] = {
+    &UI_STATUS, &UI_STATS, &UI_SHAPE, &UI_ELASTICITY, &UI_OVERLAYS, &UI_INTEGRATOR, &UI_SCENE,
+};
+#define SECTION_COUNT (sizeof(SECTIONS) / sizeof(SECTIONS[0]))
+
+#define GAP 7     /* between panels, a rule at its middle */
+#define TITLE_H (DRAW_LINE_H + 3)
+
+/* A panel's whole area (title and content) and its content, stacked. */
+typedef struct {
+    SDL_Rect whole, content;
+} placed_t;
+
+static placed_t place(const app_t *app, size_t index) {
+    layout_rect_t bar = app->layout.sidebar;
+    int y = bar.y + LAYOUT_PAD;
+    placed_t placed = {{0, 0, 0, 0}, {0, 0, 0, 0}};
+    for (size_t i = 0; i <= index; i++) {
+        const ui_section_t *s = SECTIONS[i];
+        int title = s->title != NULL ? TITLE_H : 0;
+        placed.whole = (SDL_Rect){bar.x, y - GAP / 2, bar.w, title + s->height + GAP};
+        placed.content = (SDL_Rect){bar.x + LAYOUT_PAD, y + title, bar.w - 2 * LAYOUT_PAD,
+                                    s->height};
+        y += title + s->height + GAP;
+    }
+    return placed;
+}
+
+SDL_Rect ui_section_content(const app_t *app, const ui_section_t *section) {
+    for (size_t i = 0; i < SECTION_COUNT; i++) {
+        if (SECTIONS[i] == section) return place(app, i).content;
+    }
+    return (SDL_Rect){0, 0, 0, 0};
+}
+
+bool ui_rect_contains(SDL_Rect r, vector_t p, int grow) {
+    return p.x >= r.x - grow && p.x < r.x + r.w + grow && p.y >= r.y - grow &&
+           p.y < r.y + r.h + grow;
+}
+
+drag_t ui_press(app_t *app, vector_t pixel) {
+    for (size_t i = 0; i < SECTION_COUNT; i++) {
+        placed_t placed = place(app, i);
+        if (SECTIONS[i]->press != NULL && ui_rect_contains(placed.whole, pixel, 0)) {
+            return SECTIONS[i]->press(app, placed.content, pixel);
+        }
+    }
+    return DRAG_NONE;
+}
+
+static void draw_sidebar(SDL_Renderer *renderer, app_t *app, body_t *hovered) {
+    layout_rect_t bar = app->layout.sidebar;
+    if (bar.w <= 0) return;
+    draw_panel(renderer, bar.x, bar.y, bar.w, bar.h, PALETTE_PANEL, 255);
+    vlineRGBA(renderer, draw_coord(bar.x), draw_coord(bar.y), draw_coord(bar.y + bar.h - 1),
+              PALETTE_RULE.r, PALETTE_RULE.g, PALETTE_RULE.b, 255);
+    for (size_t i = 0; i < SECTION_COUNT; i++) {
+        const ui_section_t *s = SECTIONS[i];
+        placed_t placed = place(app, i);
+        if (i > 0) {
+            hlineRGBA(renderer, draw_coord(bar.x + LAYOUT_PAD),
+                      draw_coord(bar.x + bar.w - 1 - LAYOUT_PAD), draw_coord(placed.whole.y),
+                      PALETTE_RULE.r, PALETTE_RULE.g, PALETTE_RULE.b, 255);
+        }
+        if (s->title != NULL) {
+            draw_text(renderer, placed.content.x, placed.content.y - TITLE_H, PALETTE_TEXT_DIM,
+                      "%s", s->title);
+        }
+        s->draw(renderer, app, hovered, placed.content);
+    }
+}
+
+void ui_draw(SDL_Renderer *renderer, app_t *app, body_t *hovered) {
+    draw_sidebar(renderer, app, hovered);
+    end_screen_draw(renderer, app);
+    if (app->show_help) help_draw(renderer, app);
+}
