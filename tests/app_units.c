@@ -18,6 +18,8 @@
 #include <string.h>
 #include "draw/batch.h"
 #include "core/energy_drift.h"
+#include "core/frame_meter.h"
+#include "draw/focus.h"
 #include "scene/integrator_choice.h"
 #include "core/layout.h"
 #include "draw/palette.h"
@@ -114,7 +116,8 @@ static void test_stats_lines_fit_the_side_bar(void) {
     stats_text(&resting, lines);
     EXPECT(strcmp(lines[3], "bodies 3  sleeping off") == 0, "bodies line with sleeping off: "
            "\"%s\"", lines[3]);
-    stats_values_t pile = {.fps = 1149.6, .frame_ms = 249.99, .physics_ms = 123.456,
+    stats_values_t pile = {.fps = 1149.6, .frame_ms = 249.99, .busy_ms = 999.99,
+                           .physics_ms = 123.456,
                            .render_ms = 999.99, .steps = 4, .bodies = 20000,
                            .sleeping = 19999, .sleeping_on = true,
                            .collisions = 36130, .near = 11440, .energy = -123456789.0,
@@ -126,6 +129,85 @@ static void test_stats_lines_fit_the_side_bar(void) {
     stats_text(&pile, lines);
     EXPECT(strstr(lines[4], "36130") && strstr(lines[4], "11440"), "collisions line: \"%s\"",
            lines[4]);
+}
+
+/* The frame rate and the frame time come from the same window of frames:
+ * FPS x ms a frame = 1000 in every window, whatever the frames' busy times
+ * (the panel used to show a half-second frame rate beside an exponentially
+ * smoothed busy time: "51.1 FPS, frame 27.29 ms"). */
+static void test_frame_times_from_one_window(void) {
+    frame_meter_t meter = {0};
+    /* 20 ms frames, 12 ms of them busy, a late one of 70 ms each 0.5 s. */
+    for (int i = 0; i < 300; i++) {
+        bool late = i % 25 == 24;
+        frame_meter_add(&meter, late ? 0.070 : 0.020, late ? 0.062 : 0.012, 0.006, 2, 0.004);
+        const frame_times_t *t = &meter.shown;
+        EXPECT(fabs(t->fps * t->frame_ms - 1000.0) < 1e-9,
+               "frame %d: %.3f FPS and %.3f ms a frame", i, t->fps, t->frame_ms);
+    }
+    /* The windows of 25 frames: 24 x 20 ms + 70 ms = 0.55 s. */
+    EXPECT(fabs(meter.shown.fps - 25.0 / 0.55) < 1e-9, "%.4f FPS over a window", meter.shown.fps);
+    EXPECT(fabs(meter.shown.busy_ms - (24 * 12.0 + 62.0) / 25.0) < 1e-9, "busy %.4f ms",
+           meter.shown.busy_ms);
+    EXPECT(fabs(meter.shown.physics_ms - 3.0) < 1e-9 && fabs(meter.shown.render_ms - 4.0) < 1e-9,
+           "physics %.4f ms a step, drawing %.4f ms", meter.shown.physics_ms,
+           meter.shown.render_ms);
+    /* Before the first window is full, the frames so far. */
+    frame_meter_t fresh = {0};
+    frame_meter_add(&fresh, 0.010, 0.005, 0.0, 0, 0.002);
+    EXPECT(fabs(fresh.shown.fps - 100.0) < 1e-9 && fabs(fresh.shown.frame_ms - 10.0) < 1e-9,
+           "one frame: %.3f FPS, %.3f ms", fresh.shown.fps, fresh.shown.frame_ms);
+}
+
+/* The focus keeps the k strongest of any number offered, and the nearest
+ * to the cursor within its radius; asked in increasing index order. */
+static void test_overlays_focus_on_the_strongest_and_nearest(void) {
+    focus_top_t top;
+    focus_top_init(&top, FOCUS_STRONG);
+    uint64_t x = 12345;
+    double weights[5000];
+    for (size_t i = 0; i < 5000; i++) {
+        x = x * 6364136223846793005ULL + 1442695040888963407ULL;
+        weights[i] = (double)(x >> 11) / 9007199254740992.0;
+        focus_top_offer(&top, i, weights[i]);
+    }
+    /* The FOCUS_STRONG-th largest weight: every kept one is at least it. */
+    double sorted[5000];
+    memcpy(sorted, weights, sizeof sorted);
+    for (size_t i = 0; i < FOCUS_STRONG; i++) {
+        for (size_t j = i + 1; j < 5000; j++) {
+            if (sorted[j] > sorted[i]) {
+                double t = sorted[i];
+                sorted[i] = sorted[j];
+                sorted[j] = t;
+            }
+        }
+    }
+    double threshold = sorted[FOCUS_STRONG - 1];
+    focus_top_sort(&top);
+    size_t kept = 0;
+    for (size_t i = 0; i < 5000; i++) {
+        bool has = focus_top_has(&top, i);
+        kept += has;
+        EXPECT(has == (weights[i] >= threshold), "item %zu (weight %.6f) kept: %d", i,
+               weights[i], has);
+    }
+    EXPECT(kept == FOCUS_STRONG, "%zu kept of 5000", kept);
+    /* Near: within the radius only, the nearest first. */
+    focus_top_t near;
+    focus_top_init(&near, 3);
+    vector_t cursor = {100, 100};
+    const vector_t points[] = {{100, 150}, {100, 210}, {100, 101}, {300, 100}, {130, 100},
+                               {100, 60}};
+    for (size_t i = 0; i < 6; i++) focus_near_offer(&near, i, points[i], true, cursor);
+    focus_top_sort(&near);
+    bool expected[6] = {false, false, true, false, true, true};
+    for (size_t i = 0; i < 6; i++) {
+        EXPECT(focus_top_has(&near, i) == expected[i], "point %zu near: %d", i, !expected[i]);
+    }
+    focus_top_init(&near, 3);
+    focus_near_offer(&near, 0, cursor, false, cursor);
+    EXPECT(near.count == 0, "kept a point with no cursor over the view");
 }
 
 /* 11 minutes at 60 frames per second where one frame a second is late
@@ -260,6 +342,31 @@ static void test_layout_leaves_the_view_free(void) {
                l.view.w, l.sidebar.x, l.sidebar.w);
         EXPECT(!layout_contains(l.view, l.sidebar.x, 10) && layout_contains(l.view, 0, 0),
                "%dx%d: the view and the side bar overlap", sizes[i][0], sizes[i][1]);
+    }
+}
+
+/* The UI grows with the window past 1280x720, in quarters: the side bar's
+ * panels keep their size in UI units and a window pixel maps into them. */
+static void test_layout_scales_the_ui_with_the_window(void) {
+    const struct {
+        int w, h;
+        double scale;
+    } cases[] = {{800, 600, 1.0},   {1280, 720, 1.0},  {1279, 2000, 1.0}, {1920, 1080, 1.5},
+                 {2560, 1440, 2.0}, {2560, 1000, 1.25}, {8192, 8192, 6.25}};
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        layout_t l = layout_of(cases[i].w, cases[i].h);
+        EXPECT(l.scale == cases[i].scale, "%dx%d: scale %g, not %g", cases[i].w, cases[i].h,
+               l.scale, cases[i].scale);
+        EXPECT(l.sidebar.w == (int)lround(LAYOUT_SIDEBAR_W * l.scale) &&
+                   l.panels.w == LAYOUT_SIDEBAR_W && l.view.w + l.sidebar.w == cases[i].w,
+               "%dx%d: side bar %d wide (%d in UI units), view %d", cases[i].w, cases[i].h,
+               l.sidebar.w, l.panels.w, l.view.w);
+        double ux, uy;
+        layout_to_panels(&l, l.sidebar.x + l.sidebar.w - 1, cases[i].h - 1, &ux, &uy);
+        EXPECT(ux >= l.panels.x + l.panels.w - 1 && ux < l.panels.x + l.panels.w &&
+                   uy < l.panels.y + l.panels.h + 1,
+               "%dx%d: the side bar's last pixel maps to (%g, %g) of %dx%d", cases[i].w,
+               cases[i].h, ux, uy, l.panels.w, l.panels.h);
     }
 }
 
@@ -570,7 +677,16 @@ static void test_default_scene_is_a_scene_file(void) {
     EXPECT(why != NULL && strcmp(why, "inside the left wall") == 0, "a drop in the left wall: %s",
            why != NULL ? why : "accepted");
     why = sandbox_place(&sandbox, shape, (vector_t){0.0, -1.4}, &placed);
-    EXPECT(why != NULL && strcmp(why, "outside the container") == 0, "a drop below the floor: %s",
+    EXPECT(why == NULL && placed.y == -1.4, "a drop just below the floor: %s at y = %g",
+           why != NULL ? why : "accepted", placed.y);
+    why = sandbox_place(&sandbox, shape, (vector_t){0.0, -40.01}, &placed);
+    EXPECT(why != NULL &&
+               strcmp(why, "outside the world: bodies below y = -40 m are removed") == 0,
+           "a drop below the world's floor: %s", why != NULL ? why : "accepted");
+    list_t *box = sandbox_make_shape(&sandbox, (shape_choice_t){SHAPE_BOX, 0, 0.5}, &problem);
+    sandbox_drop(&sandbox, box, (vector_t){5.0, 5.0}, VEC_ZERO, 0.5, &problem);
+    why = sandbox_place(&sandbox, shape, (vector_t){5.1, 5.1}, &placed);
+    EXPECT(why != NULL && strcmp(why, "inside a body") == 0, "a drop inside a dropped box: %s",
            why != NULL ? why : "accepted");
     why = sandbox_place(&sandbox, shape, (vector_t){0.0, 0.1}, &placed);
     EXPECT(why == NULL && fabs(placed.y - 0.3) < 1e-12, "a drop on the floor goes to y = %g",
@@ -856,6 +972,9 @@ static const app_test_t TESTS[] = {
     {"app_units.large_numbers_shorten_to_fit", test_large_numbers_shorten_to_fit},
     {"app_units.fit_and_wrap", test_fit_and_wrap},
     {"app_units.stats_lines_fit_the_side_bar", test_stats_lines_fit_the_side_bar},
+    {"app_units.frame_times_from_one_window", test_frame_times_from_one_window},
+    {"app_units.overlays_focus_on_the_strongest_and_nearest",
+     test_overlays_focus_on_the_strongest_and_nearest},
     {"app_units.clock_keeps_real_time_through_late_frames",
      test_clock_keeps_real_time_through_late_frames},
     {"app_units.clock_forgives_a_stall", test_clock_forgives_a_stall},
@@ -863,6 +982,7 @@ static const app_test_t TESTS[] = {
     {"app_units.step_cost_is_planned_from_frames_of_two_steps",
      test_step_cost_is_planned_from_frames_of_two_steps},
     {"app_units.layout_leaves_the_view_free", test_layout_leaves_the_view_free},
+    {"app_units.layout_scales_the_ui_with_the_window", test_layout_scales_the_ui_with_the_window},
     {"app_units.energy_drift_from_its_reference", test_energy_drift_from_its_reference},
     {"app_units.energy_drift_chart_window_and_scale", test_energy_drift_chart_window_and_scale},
     {"app_units.energy_drift_text_fits", test_energy_drift_text_fits},

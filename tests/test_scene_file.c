@@ -352,6 +352,25 @@ static void find_body_forgets_freed_bodies(void) {
     scene_file_free(file);
 }
 
+static void body_names_are_found_from_their_bodies(void) {
+    scene_file_t *file = parse("body a { box 1 1 }\nbody { box 1 1; position 5 0 }\n"
+                               "body row { box 1 1; position 0 5; repeat 2 1 2 0 }\n"
+                               "template shot { box 0.1 0.3; mass 0.1 }\n");
+    CHECK(strcmp(scene_file_body_name(file, body_at(file, 0)), "a") == 0);
+    CHECK(strcmp(scene_file_body_name(file, body_at(file, 1)), "") == 0);
+    CHECK(strcmp(scene_file_body_name(file, body_at(file, 3)), "row") == 0);
+    body_t *shot = scene_file_spawn(file, "shot", VEC_ZERO, VEC_ZERO);
+    CHECK(strcmp(scene_file_body_name(file, shot), "shot") == 0);
+    /* A body the file did not make, and NULL arguments. */
+    list_t *shape = polygon_make_box((vector_t){0, 9}, 0.5, 0.5);
+    body_t *mine = body_init(shape, 1, (rgb_color_t){1, 1, 1});
+    scene_add_body(scene_file_get_scene(file), mine);
+    CHECK(scene_file_body_name(file, mine) == NULL);
+    CHECK(scene_file_body_name(NULL, mine) == NULL);
+    CHECK(scene_file_body_name(file, NULL) == NULL);
+    scene_file_free(file);
+}
+
 /* ---- Writing -------------------------------------------------------------- */
 
 static void written_scenes_load_back_the_same(void) {
@@ -880,7 +899,9 @@ TEST_SUITE(scene_file, TEST_CASE(settings_reach_the_scene),
            TEST_CASE(layout_is_free), TEST_CASE(names_and_groups_may_be_used_before_their_blocks),
            TEST_CASE(spawn_applies_the_rules_of_its_groups),
            TEST_CASE(many_spawns_and_destructions_leave_nothing_behind),
-           TEST_CASE(find_body_forgets_freed_bodies), TEST_CASE(written_scenes_load_back_the_same),
+           TEST_CASE(find_body_forgets_freed_bodies),
+           TEST_CASE(body_names_are_found_from_their_bodies),
+           TEST_CASE(written_scenes_load_back_the_same),
            TEST_CASE(a_running_scene_is_written_as_it_is_now),
            TEST_CASE(step_lengths_and_previous_points_reach_the_world),
            TEST_CASE(save_and_load_through_a_path),

@@ -9,6 +9,11 @@
 #include <unistd.h>
 #include "scene/integrator_choice.h"
 
+/* Throws: the cursor's velocity over the last THROW_WINDOW seconds, at most
+ * THROW_MAX_SPEED. */
+static const double THROW_WINDOW = 0.1;
+static const double THROW_MAX_SPEED = 40.0;
+
 /* Impulses below this (N s) are not kept in the trail: resting contacts
  * carry about m g dt each step, too small to draw, and thousands of them
  * would push the impacts out. */
@@ -74,6 +79,15 @@ void app_new_shape(app_t *app) {
     }
 }
 
+double app_default_size(double pixels_per_metre) {
+    double size = APP_DEFAULT_SIZE_PIXELS / 2.0 / pixels_per_metre;
+    if (!(size > 0.0) || !isfinite(size)) return SHAPE_MIN_SIZE;
+    /* Two significant digits, so the status line reads "size 1.2 m". */
+    double unit = pow(10.0, floor(log10(size)) - 1.0);
+    size = round(size / unit) * unit;
+    return fmin(SHAPE_MAX_SIZE, fmax(SHAPE_MIN_SIZE, size));
+}
+
 /* The camera, clock, drift, trail, drags and keys of a newly shown scene.
  * Another scene starts a new drift chart; the same one again (R) goes on
  * with a mark where it was reset. */
@@ -104,6 +118,11 @@ static void scene_shown(app_t *app, bool another) {
     app->totals = sandbox_totals(&app->sandbox);
     app->scene_index = presets_find(&app->presets, sandbox->is_default ? NULL : sandbox->path);
     if (app->scene_index >= 0) app->scene_cursor = app->scene_index;
+    /* Another scene has another scale: its shapes start at a size that shows. */
+    if (another) {
+        app->shape.size = app_default_size(app->camera.scale / app->layout.scale);
+        if (app->next_vertices != NULL) app_new_shape(app);
+    }
 }
 
 void app_init(app_t *app, int width, int height, uint64_t seed, const char *presets_dir) {
@@ -128,7 +147,17 @@ bool app_game_mode(const app_t *app) {
     return game_takes_input(app->sandbox.game);
 }
 
-/* "breakout: Left/Right or A/D move, Space fires" or "pyramid (55 bodies)". */
+/* "14 bodies, 1 static", "1 body": the bodies that move, as the side bar
+ * counts them, and the static ones apart. */
+static void count_words(const sandbox_totals_t *totals, char *out, size_t size) {
+    int n = snprintf(out, size, "%zu bod%s", totals->bodies, totals->bodies == 1 ? "y" : "ies");
+    if (totals->statics > 0 && n > 0 && (size_t)n < size) {
+        snprintf(out + n, size - (size_t)n, ", %zu static", totals->statics);
+    }
+}
+
+/* "breakout: Left/Right or A/D move, Space fires" or "pyramid (55 bodies,
+ * 1 static)". */
 static void say_opened(app_t *app) {
     const sandbox_t *sandbox = &app->sandbox;
     if (app_game_mode(app)) {
@@ -136,8 +165,9 @@ static void say_opened(app_t *app) {
     } else if (sandbox->is_default) {
         app_status(app, "opened %s: the empty container", sandbox->name);
     } else {
-        size_t bodies = scene_bodies(sandbox->scene);
-        app_status(app, "opened %s (%zu bod%s)", sandbox->name, bodies, bodies == 1 ? "y" : "ies");
+        char count[48];
+        count_words(&app->totals, count, sizeof(count));
+        app_status(app, "opened %s (%s)", sandbox->name, count);
     }
 }
 
@@ -222,10 +252,6 @@ void app_save_scene(app_t *app) {
         app_warn(app, "cannot save: %s", error.message);
         return;
     }
-    size_t bodies = 0;
-    for (size_t i = 0; i < scene_bodies(app->sandbox.scene); i++) {
-        bodies += !body_is_removed(scene_get_body(app->sandbox.scene, i));
-    }
     char path[SANDBOX_PATH_MAX + 32];
     bool saved = false;
     for (int n = 1; n <= 100000 && !saved; n++) {
@@ -244,7 +270,10 @@ void app_save_scene(app_t *app) {
         app_warn(app, "cannot save: %s/saved-1 to -100000.scene all exist", app->save_dir);
         return;
     }
-    app_status(app, "saved %s (%zu bod%s)", path, bodies, bodies == 1 ? "y" : "ies");
+    sandbox_totals_t totals = sandbox_totals(&app->sandbox);
+    char count[48];
+    count_words(&totals, count, sizeof(count));
+    app_status(app, "saved %s (%s)", path, count);
 }
 
 void app_resize(app_t *app, int width, int height) {
@@ -312,6 +341,21 @@ int app_plan_steps(app_t *app, double frame_dt) {
     return steps;
 }
 
+/* Bodies the sandbox removed for leaving the world since the last frame:
+ * named on the status line. */
+static void announce_removals(app_t *app) {
+    unsigned long count = app->sandbox.removed.count, fresh = count - app->removals_said;
+    app->removals_said = count;
+    if (fresh == 1) {
+        const char *who = app->sandbox.removed.last;
+        if (strncmp(who, "the ", 4) == 0) who += 4;
+        app_warn(app, "removed %s: %s", who, app->sandbox.removed.why);
+    } else if (fresh > 1) {
+        app_warn(app, "removed %lu bodies that left the world (the last: %s)", fresh,
+                 app->sandbox.removed.last);
+    }
+}
+
 /* A life lost, a game won or lost: on the status line. */
 static void announce_game(app_t *app) {
     if (app->sandbox.game == NULL) return;
@@ -339,6 +383,7 @@ void app_frame_done(app_t *app, int steps) {
     /* Bodies a game spawned or a collision destroyed change the energy from
      * outside the integrator too. */
     if (app->totals.bodies != before) app->sandbox.changes++;
+    announce_removals(app);
     announce_game(app);
     energy_drift_sample(&app->drift, steps, app->totals.kinetic + app->totals.potential,
                         app->totals.bodies, app->sandbox.changes);
@@ -360,4 +405,24 @@ void app_set_gravity(app_t *app, bool on) {
 
 void app_run_steps(app_t *app, int steps) {
     for (int i = 0; i < steps; i++) step(app);
+}
+
+vector_t app_throw_velocity(const app_t *app) {
+    if (app->sample_count < 2) return VEC_ZERO;
+    const motion_sample_t *newest = &app->samples[(app->sample_count - 1) % APP_MOTION_SAMPLES];
+    if (app->now - newest->time > THROW_WINDOW) return VEC_ZERO; /* held still */
+    const motion_sample_t *oldest = newest;
+    size_t available = app->sample_count < APP_MOTION_SAMPLES ? app->sample_count
+                                                              : APP_MOTION_SAMPLES;
+    for (size_t back = 1; back < available; back++) {
+        const motion_sample_t *s = &app->samples[(app->sample_count - 1 - back) % APP_MOTION_SAMPLES];
+        if (newest->time - s->time > THROW_WINDOW) break;
+        oldest = s;
+    }
+    double dt = newest->time - oldest->time;
+    if (dt <= 1e-6) return VEC_ZERO;
+    vector_t v = vec_multiply(1.0 / dt, vec_subtract(newest->world, oldest->world));
+    double speed = vec_get_length(v);
+    if (speed > THROW_MAX_SPEED) v = vec_multiply(THROW_MAX_SPEED / speed, v);
+    return v;
 }

@@ -11,6 +11,7 @@
 #include <stdint.h>
 #include "core/camera.h"
 #include "core/energy_drift.h"
+#include "core/frame_meter.h"
 #include "core/impulse_trail.h"
 #include "core/layout.h"
 #include "scene/presets.h"
@@ -55,18 +56,21 @@ typedef struct {
     vector_t world;  /* cursor (m) */
 } motion_sample_t;
 
-/* Timings for the HUD (smoothed) and for --stats (totals). */
+/* Timings for the side bar (core/frame_meter.h), for the frame budget and
+ * for --stats (totals). */
 typedef struct {
-    double fps;
-    double frame_ms;         /* whole frame, events to present */
-    double physics_ms;       /* per step */
+    frame_meter_t meter;     /* the SIMULATION panel's: one window of frames */
     double planned_step_s;   /* per step, as the frame budget plans (step_clock_step_cost) */
-    double render_ms;        /* drawing the frame */
+    double render_ms;        /* drawing the frame, smoothed, for the frame budget */
     int steps;               /* physics steps in the last frame */
+    /* The last frame's, for the meter once its wall time is known. */
+    double last_busy_s, last_physics_s, last_render_s;
+    int last_steps;
     /* Totals since the start (for --stats). */
     uint64_t frames;
     uint64_t total_steps;
     double total_frame_s, total_physics_s, total_render_s, total_present_s;
+    double total_overlays_s; /* of total_render_s: the overlays (render_world) */
 } app_timing_t;
 
 typedef struct {
@@ -80,6 +84,7 @@ typedef struct {
     char save_dir[SANDBOX_PATH_MAX]; /* where Ctrl+S writes saved-N.scene */
     game_keys_t keys;                /* the game's controls (a game's scene only) */
     game_status_t game_status;       /* as of the last frame, to announce changes */
+    unsigned long removals_said;     /* sandbox.removed.count as last announced */
     layout_t layout;  /* the view area and the side bar */
     camera_t camera;  /* the world in the view area */
     bool headless;    /* no clock: the side bar shows no wall-clock timings */
@@ -90,6 +95,9 @@ typedef struct {
     double elasticity;
 
     bool overlays[OVERLAY_COUNT];
+    /* The axes and impulse arrows the last frame drew, of how many there
+     * were (near the cursor and the strongest or newest: draw/focus.h). */
+    size_t overlay_shown[OVERLAY_COUNT], overlay_total[OVERLAY_COUNT];
     /* A game's scene opens with the overlays drawn over the bodies off; they
      * are kept here to come back when a scene without a game opens. */
     bool overlays_before_game[OVERLAY_COUNT];
@@ -98,6 +106,7 @@ typedef struct {
     bool step_once;  /* run one step at the next frame (while paused) */
     bool show_help;
     bool quit;
+    int resize_width, resize_height; /* a size the script asked for; 0: none */
     double time_scale; /* simulated seconds per displayed second, 0.1 to 1 */
     double impulse_scale; /* impulse arrow length (m) per N s, 0.2 to start */
 
@@ -221,6 +230,19 @@ void app_set_elasticity(app_t *app, double elasticity);
 
 /* The collisions (touching contacts) of the last step. */
 size_t app_collision_count(app_t *app);
+
+/* A throw's velocity (m/s): the cursor's over the last 0.1 s of motion
+ * samples (zero when it was held still), at most 40 m/s. */
+vector_t app_throw_velocity(const app_t *app);
+
+/* A new shape is about this many pixels across at the scene's default view
+ * (times the UI's scale, layout.h). */
+#define APP_DEFAULT_SIZE_PIXELS 40.0
+
+/* The size (circumradius, m) of a shape APP_DEFAULT_SIZE_PIXELS across at
+ * that scale (UI pixels a metre), to two significant digits, within
+ * SHAPE_MIN_SIZE .. SHAPE_MAX_SIZE: each scene opens with it. */
+double app_default_size(double pixels_per_metre);
 
 /* Makes the next body's vertices for the current shape and size (a new random
  * polygon for the random shape). */

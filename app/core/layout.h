@@ -15,7 +15,8 @@
 #define LAYOUT_MIN_WIDTH 800
 #define LAYOUT_MIN_HEIGHT 600
 
-/* The side bar's width: 32 characters of the 8x8 font between its paddings. */
+/* The side bar's width at scale 1: 32 characters of the 8x8 font between
+ * its paddings. */
 #define LAYOUT_SIDEBAR_W 272
 #define LAYOUT_PAD 8
 #define LAYOUT_CHAR_W 8
@@ -30,10 +31,22 @@ typedef struct {
 typedef struct {
     layout_rect_t view;    /* the world, at the window's top left */
     layout_rect_t sidebar; /* the panels, along the right edge */
+    /* The UI's scale: the side bar, the help and the end screen are drawn
+     * at it (text `scale` times the font's size), so that they grow with the
+     * window: 1 up to 1280x720 (or any window narrower or lower), then
+     * min(width / 1280, height / 720) in quarters (2 at 2560x1440). */
+    double scale;
+    /* The side bar in UI units, where its panels are laid out: the side bar
+     * itself at scale 1, else a surface of its own (x = y = 0) drawn scaled
+     * into it. */
+    layout_rect_t panels;
 } layout_t;
 
 /* The layout of a window of width x height pixels. */
 layout_t layout_of(int width, int height);
+
+/* A window pixel in the side bar's UI units (layout.panels). */
+void layout_to_panels(const layout_t *layout, double x, double y, double *ux, double *uy);
 
 bool layout_contains(layout_rect_t rect, double x, double y);
 

@@ -5,10 +5,12 @@
 #include "draw/batch.h"
 #include "draw/draw.h"
 #include "draw/edge_markers.h"
+#include "draw/focus.h"
 #include "draw/raster.h"
 
 #define MAX_VERTICES BATCH_MAX_POLYGON
 #define IMPULSE_MAX_PIXELS 200.0
+#define THROW_PIXELS 4.0 /* a throw's arrow, pixels per m/s */
 
 static palette_rgb_t rgb_of(rgb_color_t c) {
     return (palette_rgb_t){(unsigned char)lround(fmin(1.0, fmax(0.0, c.r)) * 255.0),
@@ -40,12 +42,13 @@ static void draw_grid(SDL_Renderer *renderer, const camera_t *camera) {
 }
 
 /* Kept across frames so that once warm a frame allocates nothing. */
-static batch_t body_batch, arrow_batch, impulse_batch;
+static batch_t body_batch, arrow_batch, impulse_batch, throw_batch;
 
 void render_free(void) {
     batch_free(&body_batch);
     batch_free(&arrow_batch);
     batch_free(&impulse_batch);
+    batch_free(&throw_batch);
     edge_markers_free();
     raster_free();
 }
@@ -115,9 +118,26 @@ static void draw_springs(SDL_Renderer *renderer, app_t *app) {
     }
 }
 
+/* While a throw is dragged: the velocity it will leave with, as an arrow
+ * from the shape (THROW_PIXELS a m/s) in the velocity overlay's colour,
+ * with its speed written at the head. */
+static void draw_throw(SDL_Renderer *renderer, vector_t from, vector_t velocity) {
+    double speed = vec_get_length(velocity);
+    vector_t head = {from.x + THROW_PIXELS * velocity.x, from.y - THROW_PIXELS * velocity.y};
+    SDL_RenderFlush(renderer);
+    batch_clear(&throw_batch);
+    batch_arrow(&throw_batch, from, head, PALETTE_VELOCITY, 255, 2);
+    raster_batch(&throw_batch);
+    draw_text(renderer, draw_coord(head.x + 6), draw_coord(head.y - 4), PALETTE_VELOCITY,
+              "%.1f m/s", speed);
+}
+
 /* The shape the next click drops, translucent, where it would go (moved
- * clear of the floor and walls); a red outline where a drop is refused. */
+ * clear of the floor and walls); a red outline where a drop is refused.
+ * None in a game. */
 static void draw_preview(SDL_Renderer *renderer, app_t *app) {
+    /* A player wants the field, not a shape hanging at the cursor. */
+    if (app->sandbox.game != NULL) return;
     if (!app->mouse_inside || app->next_vertices == NULL) return;
     if (app->drag != DRAG_NONE && app->drag != DRAG_THROW) return;
     if (!app_in_view(app, app->mouse)) return;
@@ -143,6 +163,9 @@ static void draw_preview(SDL_Renderer *renderer, app_t *app) {
     Uint8 alpha = app->drag == DRAG_THROW ? 150 : 70;
     filledPolygonRGBA(renderer, xs, ys, (int)n, c.r, c.g, c.b, alpha);
     polygonRGBA(renderer, xs, ys, (int)n, c.r, c.g, c.b, 200);
+    if (app->drag == DRAG_THROW) {
+        draw_throw(renderer, camera_to_pixel(&app->camera, at), app_throw_velocity(app));
+    }
 }
 
 static void draw_grab(SDL_Renderer *renderer, app_t *app) {
@@ -212,21 +235,57 @@ static double body_extent(const camera_t *camera, body_t *body) {
     return 0.5 * camera_length_to_pixels(camera, fmin(box.max.x - box.min.x, box.max.y - box.min.y));
 }
 
+/* The cursor over the view, in pixels; false when it is elsewhere. */
+static bool cursor_in_view(const app_t *app, vector_t *cursor) {
+    *cursor = app->mouse;
+    return app->mouse_inside && app_in_view(app, app->mouse);
+}
+
+/* The strength of a contact's impact this step: its normal impulses. */
+static double contact_weight(const contact_t *contact) {
+    size_t n = contact->point_count > 2 ? 2 : contact->point_count;
+    double sum = n == 0 ? contact->normal_impulse[0] : 0.0;
+    for (size_t k = 0; k < n; k++) sum += contact->normal_impulse[k];
+    return isfinite(sum) ? sum : 0.0;
+}
+
+/* An arrow along the collision axis of the touching contacts nearest the
+ * cursor and of the step's strongest impacts (draw/focus.h). */
 static void draw_axes(app_t *app) {
     scene_t *scene = app->sandbox.scene;
-    for (size_t i = 0; i < scene_contact_count(scene); i++) {
+    size_t count = scene_contact_count(scene), total = 0, shown = 0;
+    vector_t cursor;
+    bool has_cursor = cursor_in_view(app, &cursor);
+    focus_top_t near, strong;
+    focus_top_init(&near, FOCUS_NEAR);
+    focus_top_init(&strong, FOCUS_STRONG);
+    for (size_t i = 0; i < count; i++) {
         const contact_t *contact = scene_get_contact(scene, i);
         if (!vec_is_finite(contact->axis) || !contact->touching) continue;
+        total++;
+        focus_top_offer(&strong, i, contact_weight(contact));
+        focus_near_offer(&near, i, camera_to_pixel(&app->camera, contact_anchor(contact)),
+                         has_cursor, cursor);
+    }
+    focus_top_sort(&near);
+    focus_top_sort(&strong);
+    for (size_t i = 0; i < count; i++) {
+        bool is_near = focus_top_has(&near, i), is_strong = focus_top_has(&strong, i);
+        if (!is_near && !is_strong) continue;
+        const contact_t *contact = scene_get_contact(scene, i);
+        vector_t tail = camera_to_pixel(&app->camera, contact_anchor(contact));
+        shown++;
         /* As long as the smaller body allows, so that neighbours' arrows stay apart. */
         double extent = fmin(body_extent(&app->camera, contact->body1),
                              body_extent(&app->camera, contact->body2));
         double length = fmin(48.0, fmax(10.0, 1.3 * extent));
-        vector_t tail = camera_to_pixel(&app->camera, contact_anchor(contact));
         /* World y is up, pixel y is down. */
         vector_t dir = {contact->axis.x, -contact->axis.y};
         batch_arrow(&arrow_batch, tail, vec_add(tail, vec_multiply(length, dir)), PALETTE_AXIS,
                     255, 2);
     }
+    app->overlay_shown[OVERLAY_AXES] = shown;
+    app->overlay_total[OVERLAY_AXES] = total;
 }
 
 static void draw_points(SDL_Renderer *renderer, app_t *app) {
@@ -251,26 +310,62 @@ static void draw_points(SDL_Renderer *renderer, app_t *app) {
     }
 }
 
+/* The impulses of the trail nearest the cursor, and its strongest (faded
+ * with their age), as arrows that fade out (draw/focus.h). */
 static void draw_impulses(app_t *app) {
-    for (size_t i = 0; i < app->trail.count; i++) {
+    vector_t cursor;
+    bool has_cursor = cursor_in_view(app, &cursor);
+    size_t count = app->trail.count, shown = 0;
+    focus_top_t near, strong;
+    focus_top_init(&near, FOCUS_NEAR);
+    focus_top_init(&strong, FOCUS_STRONG);
+    for (size_t i = 0; i < count; i++) {
         const impulse_mark_t *mark = impulse_trail_get(&app->trail, i);
         double fade = 1.0 - mark->age / IMPULSE_TRAIL_SECONDS;
         if (fade <= 0.0) continue;
+        focus_top_offer(&strong, i, fade * vec_get_length(mark->impulse));
+        focus_near_offer(&near, i, camera_to_pixel(&app->camera, mark->point), has_cursor,
+                         cursor);
+    }
+    focus_top_sort(&near);
+    focus_top_sort(&strong);
+    for (size_t i = 0; i < count; i++) {
+        if (!focus_top_has(&near, i) && !focus_top_has(&strong, i)) continue;
+        const impulse_mark_t *mark = impulse_trail_get(&app->trail, i);
+        double fade = 1.0 - mark->age / IMPULSE_TRAIL_SECONDS;
         vector_t tail = camera_to_pixel(&app->camera, mark->point);
         vector_t head = camera_to_pixel(
             &app->camera, vec_add(mark->point, vec_multiply(app->impulse_scale, mark->impulse)));
         vector_t arrow = vec_subtract(head, tail);
         double length = vec_get_length(arrow);
         if (length < 3.0) continue;
+        shown++;
         /* Linear in the impulse up to a cap, so a heavy impact stays on screen. */
         if (length > IMPULSE_MAX_PIXELS) {
             head = vec_add(tail, vec_multiply(IMPULSE_MAX_PIXELS / length, arrow));
         }
         batch_arrow(&impulse_batch, tail, head, PALETTE_IMPULSE, (Uint8)lround(255.0 * fade), 4);
     }
+    app->overlay_shown[OVERLAY_IMPULSES] = shown;
+    app->overlay_total[OVERLAY_IMPULSES] = count;
 }
 
-void render_world(SDL_Renderer *renderer, SDL_Surface *canvas, app_t *app, body_t *hovered) {
+/* Where the axes and impulses are drawn in full: a faint ring round the
+ * cursor, when some were left out elsewhere. */
+static void draw_focus_ring(SDL_Renderer *renderer, app_t *app) {
+    vector_t cursor;
+    if (!cursor_in_view(app, &cursor) || app->drag != DRAG_NONE) return;
+    bool left_out = false;
+    for (int o = OVERLAY_AXES; o <= OVERLAY_IMPULSES; o++) {
+        left_out = left_out || (app->overlays[o] && app->overlay_shown[o] < app->overlay_total[o]);
+    }
+    if (!left_out) return;
+    palette_rgb_t c = PALETTE_FOCUS;
+    aacircleRGBA(renderer, draw_coord(cursor.x), draw_coord(cursor.y), (Sint16)FOCUS_RADIUS, c.r,
+                 c.g, c.b, 255);
+}
+
+double render_world(SDL_Renderer *renderer, SDL_Surface *canvas, app_t *app, body_t *hovered) {
     SDL_SetRenderDrawBlendMode(renderer, SDL_BLENDMODE_NONE);
     SDL_SetRenderDrawColor(renderer, PALETTE_BACKGROUND.r, PALETTE_BACKGROUND.g,
                            PALETTE_BACKGROUND.b, 255);
@@ -278,6 +373,8 @@ void render_world(SDL_Renderer *renderer, SDL_Surface *canvas, app_t *app, body_
     draw_grid(renderer, &app->camera);
     draw_bodies(renderer, canvas, app, hovered);
     draw_springs(renderer, app);
+    SDL_RenderFlush(renderer);
+    Uint64 overlays_start = SDL_GetPerformanceCounter();
     if (app->overlays[OVERLAY_BOUNDS]) draw_bounds(renderer, app);
     /* The velocities and the axes: opaque arrows, over the bounds and
      * under the centroids, as they always were. */
@@ -298,7 +395,12 @@ void render_world(SDL_Renderer *renderer, SDL_Surface *canvas, app_t *app, body_
     raster_begin(renderer, canvas);
     raster_batch(&impulse_batch);
     if (app->overlays[OVERLAY_POINTS]) draw_points(renderer, app);
+    draw_focus_ring(renderer, app);
+    SDL_RenderFlush(renderer);
+    double overlays_s = (double)(SDL_GetPerformanceCounter() - overlays_start) /
+                        (double)SDL_GetPerformanceFrequency();
     draw_grab(renderer, app);
     draw_preview(renderer, app);
     edge_markers_draw(renderer, canvas, app);
+    return overlays_s;
 }

@@ -12,8 +12,10 @@
 #include "core/app.h"
 
 /* canvas: the surface renderer draws into when it is a software renderer
- * (the bodies are then written straight into it), else NULL. */
-void render_world(SDL_Renderer *renderer, SDL_Surface *canvas, app_t *app, body_t *hovered);
+ * (the bodies are then written straight into it), else NULL. Returns the
+ * seconds the overlays took (from the bounding boxes to the ring round the
+ * cursor), for --stats. */
+double render_world(SDL_Renderer *renderer, SDL_Surface *canvas, app_t *app, body_t *hovered);
 
 /* Frees the buffers kept from frame to frame (at exit). */
 void render_free(void);

@@ -79,6 +79,25 @@ bool video_open(video_t *video, bool headless, bool gpu, bool vsync, int width, 
     return make_canvas(video, width, height);
 }
 
+/* The smallest window the side bar fits (layout.h): nothing holds a window
+ * to its minimum without a window manager, so the app does. */
+static void at_least_minimum(int *width, int *height) {
+    if (*width < LAYOUT_MIN_WIDTH) *width = LAYOUT_MIN_WIDTH;
+    if (*height < LAYOUT_MIN_HEIGHT) *height = LAYOUT_MIN_HEIGHT;
+}
+
+bool video_request_size(video_t *video, int width, int height) {
+    at_least_minimum(&width, &height);
+    if (width > 8192) width = 8192;
+    if (height > 8192) height = 8192;
+    if (video->window != NULL) {
+        SDL_SetWindowSize(video->window, width, height);
+        return false;
+    }
+    if (width == video->width && height == video->height) return false;
+    return make_canvas(video, width, height);
+}
+
 bool video_sync_size(video_t *video) {
     if (video->window == NULL) return false;
     int width, height;
@@ -92,6 +111,13 @@ bool video_sync_size(video_t *video) {
     SDL_GetWindowSize(video->window, &width, &height);
     if (width == video->width && height == video->height) return false;
     if (width < 1 || height < 1) return false;
+    int least_w = width, least_h = height;
+    at_least_minimum(&least_w, &least_h);
+    if (least_w != width || least_h != height) {
+        /* Too small for the side bar: grow back (followed at a later frame). */
+        SDL_SetWindowSize(video->window, least_w, least_h);
+        return false;
+    }
     if (!make_canvas(video, width, height)) {
         fprintf(stderr, "sandbox: cannot follow the window's new size\n");
         return false;

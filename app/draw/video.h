@@ -24,8 +24,16 @@ typedef struct {
 /* Opens the output; false (with a message on stderr) when it cannot. */
 bool video_open(video_t *video, bool headless, bool gpu, bool vsync, int width, int height);
 
-/* Follows the window's size; true when the output size changed. */
+/* Follows the window's size; true when the output size changed. A window
+ * made smaller than LAYOUT_MIN_WIDTH x LAYOUT_MIN_HEIGHT (which a window
+ * manager would refuse, but there may be none) is grown back to it. */
 bool video_sync_size(video_t *video);
+
+/* Asks for an output of width x height pixels (the script's `resize`), at
+ * least the minimum: a window is resized as a person would resize it, and
+ * video_sync_size follows at a later frame; headless, the canvas is made
+ * anew at once. True when the output size changed now. */
+bool video_request_size(video_t *video, int width, int height);
 
 /* The file formats a screenshot can be saved in, told by the file name's
  * extension (.png or .bmp, any case). */

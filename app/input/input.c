@@ -3,10 +3,6 @@
 #include "scene/integrator_choice.h"
 #include "panels/ui.h"
 
-/* Throws: the cursor's velocity over the last THROW_WINDOW seconds, at most
- * THROW_MAX_SPEED. */
-static const double THROW_WINDOW = 0.1;
-static const double THROW_MAX_SPEED = 40.0;
 static const double ELASTICITY_STEP = 0.05;
 static const double SIZE_FACTOR = 1.1;
 static const double ZOOM_FACTOR = 1.15;
@@ -15,7 +11,7 @@ static const double FRAME_MARGIN = 1.1;
 static const double FRAME_MIN_SIZE = 6.0;
 
 const input_control_t INPUT_CONTROLS[] = {
-    {"Left click", "drop the shape at the cursor (not in a wall or outside)"},
+    {"Left click", "drop the shape at the cursor (not inside a body)"},
     {"Shift + left drag", "throw it with the drag's velocity"},
     {"Right drag on a body", "pull it with a spring to the cursor"},
     {"Right drag elsewhere, middle drag", "pan the view"},
@@ -33,7 +29,7 @@ const input_control_t INPUT_CONTROLS[] = {
     {"M", "overlay: centroids"},
     {"X", "overlay: bounding boxes"},
     {"Z / Shift + Z", "overlay: sleeping bodies dimmer / sleeping on, off"},
-    {"O", "all overlays on / off (a click on a line toggles it)"},
+    {"O", "show every overlay (all shown: hide them all)"},
     {"Space, Enter", "pause / resume (in a game Enter only)"},
     {"S", "single step (pauses)"},
     {"[ / ]", "slow motion: time x0.1 to x1"},
@@ -66,29 +62,8 @@ body_t *input_hovered_body(app_t *app) {
 
 static void add_sample(app_t *app) {
     app->samples[app->sample_count % APP_MOTION_SAMPLES] =
-        (motion_sample_t){app->now, input_cursor_world(app)};
+        (motion_sample_t){app->now, camera_to_world(&app->camera, app->mouse)};
     app->sample_count++;
-}
-
-/* The cursor's recent velocity (m/s) from the motion samples. */
-static vector_t throw_velocity(const app_t *app) {
-    if (app->sample_count < 2) return VEC_ZERO;
-    const motion_sample_t *newest = &app->samples[(app->sample_count - 1) % APP_MOTION_SAMPLES];
-    if (app->now - newest->time > THROW_WINDOW) return VEC_ZERO; /* held still */
-    const motion_sample_t *oldest = newest;
-    size_t available = app->sample_count < APP_MOTION_SAMPLES ? app->sample_count
-                                                              : APP_MOTION_SAMPLES;
-    for (size_t back = 1; back < available; back++) {
-        const motion_sample_t *s = &app->samples[(app->sample_count - 1 - back) % APP_MOTION_SAMPLES];
-        if (newest->time - s->time > THROW_WINDOW) break;
-        oldest = s;
-    }
-    double dt = newest->time - oldest->time;
-    if (dt <= 1e-6) return VEC_ZERO;
-    vector_t v = vec_multiply(1.0 / dt, vec_subtract(newest->world, oldest->world));
-    double speed = vec_get_length(v);
-    if (speed > THROW_MAX_SPEED) v = vec_multiply(THROW_MAX_SPEED / speed, v);
-    return v;
 }
 
 /* Drops the next shape at `at` (moved clear of the floor and walls), or
@@ -355,10 +330,11 @@ static void on_key(app_t *app, const SDL_KeyboardEvent *key) {
         app_status(app, "impulse arrows: %.3g m per N s", app->impulse_scale);
         break;
     case SDLK_o: {
-        bool any = false;
-        for (int i = 0; i < OVERLAY_COUNT; i++) any = any || app->overlays[i];
-        for (int i = 0; i < OVERLAY_COUNT; i++) app->overlays[i] = !any;
-        app_status(app, "all overlays %s", any ? "off" : "on");
+        /* Show all, unless all are shown already (some are on at start). */
+        bool all = true;
+        for (int i = 0; i < OVERLAY_COUNT; i++) all = all && app->overlays[i];
+        for (int i = 0; i < OVERLAY_COUNT; i++) app->overlays[i] = !all;
+        app_status(app, "all overlays %s", all ? "off" : "on");
         break;
     }
     case SDLK_SPACE:
@@ -471,7 +447,7 @@ static void on_button_up(app_t *app, const SDL_MouseButtonEvent *button) {
     case DRAG_THROW:
         if (button->button == SDL_BUTTON_LEFT) {
             add_sample(app);
-            drop_at(app, input_cursor_world(app), throw_velocity(app));
+            drop_at(app, input_cursor_world(app), app_throw_velocity(app));
             app->drag = DRAG_NONE;
         }
         break;

@@ -35,6 +35,8 @@ const char SCRIPT_HELP[] =
     "  wheel N                 turn the mouse wheel N notches (N < 0: down)\n"
     "  spawn N [SIZE]          add N bodies (SIZE m, default 0.2) in a grid\n"
     "  open FILE               open a scene file, as if dropped on the window\n"
+    "  resize W H              resize the window to W x H pixels (as if dragged;\n"
+    "                          never below 800x600)\n"
     "  screenshot FILE         save this frame (FILE ends in .png or .bmp)\n"
     "  quit                    stop the app\n";
 
@@ -49,6 +51,7 @@ typedef enum {
     ACT_SPAWN,
     ACT_SCREENSHOT,
     ACT_OPEN,
+    ACT_RESIZE,
     ACT_QUIT,
 } action_kind_t;
 
@@ -418,13 +421,24 @@ static bool parse_line(parser_t *p, char **tokens, int n) {
         strcpy(a->path, tokens[1]);
         return true;
     }
+    if (strcmp(command, "resize") == 0) {
+        long width, height;
+        if (n != 3) return fail(p, "'resize' needs a width and a height in pixels");
+        if (!parse_integer(p, tokens[1], "the width", 1, 8192, &width) ||
+            !parse_integer(p, tokens[2], "the height", 1, 8192, &height)) {
+            return false;
+        }
+        action_t *a = add(p, ACT_RESIZE);
+        a->position = (vector_t){(double)width, (double)height};
+        return true;
+    }
     if (strcmp(command, "quit") == 0) {
         if (n != 1) return fail(p, "'quit' takes no arguments");
         add(p, ACT_QUIT);
         return true;
     }
     return fail(p, "unknown command '%s' (expected wait, key, keydown, keyup, move, click, "
-                   "press, release, drag, throw, grab, wheel, spawn, open, screenshot or quit)",
+                   "press, release, drag, throw, grab, wheel, spawn, open, resize, screenshot or quit)",
                 command);
 }
 
@@ -612,6 +626,10 @@ static void run_action(const action_t *a, app_t *app, const char **screenshot) {
         event.drop.timestamp = timestamp;
         event.drop.file = SDL_strdup(a->path);
         input_handle_event(app, &event);
+        break;
+    case ACT_RESIZE:
+        app->resize_width = (int)a->position.x;
+        app->resize_height = (int)a->position.y;
         break;
     case ACT_QUIT:
         app->quit = true;

@@ -16,14 +16,22 @@ static SDL_Rect slider_rect(const app_t *app) {
     return (SDL_Rect){r.x + VALUE_W + KNOB, r.y, r.w - VALUE_W - 2 * KNOB, SLIDER_H};
 }
 
-bool ui_slider_hit(const app_t *app, vector_t pixel) {
+static bool slider_hit(const app_t *app, vector_t pixel) {
     return ui_rect_contains(slider_rect(app), pixel, KNOB);
 }
 
-double ui_slider_value_at(const app_t *app, vector_t pixel) {
+bool ui_slider_hit(const app_t *app, vector_t pixel) {
+    return slider_hit(app, ui_to_panels(app, pixel));
+}
+
+static double slider_value_at(const app_t *app, vector_t pixel) {
     SDL_Rect r = slider_rect(app);
     double t = (pixel.x - r.x) / (double)r.w;
     return fmin(1.0, fmax(0.0, t)) * APP_ELASTICITY_MAX;
+}
+
+double ui_slider_value_at(const app_t *app, vector_t pixel) {
+    return slider_value_at(app, ui_to_panels(app, pixel));
 }
 
 static void draw_slider(SDL_Renderer *renderer, const app_t *app) {
@@ -58,8 +66,8 @@ static void draw_elasticity(SDL_Renderer *renderer, app_t *app, body_t *hovered,
 
 static drag_t press_elasticity(app_t *app, SDL_Rect content, vector_t pixel) {
     (void)content;
-    if (!ui_slider_hit(app, pixel)) return DRAG_NONE;
-    app_set_elasticity(app, ui_slider_value_at(app, pixel));
+    if (!slider_hit(app, pixel)) return DRAG_NONE;
+    app_set_elasticity(app, slider_value_at(app, pixel));
     app_status(app, "elasticity of new bodies %.2f", app->elasticity);
     return DRAG_SLIDER;
 }

@@ -7,16 +7,16 @@
 
 static stats_values_t values_of(app_t *app) {
     const app_timing_t *t = &app->timing;
+    const frame_times_t *shown = &t->meter.shown; /* one window of frames */
     const sandbox_totals_t totals = app->totals; /* measured once a frame */
     size_t collisions = app_collision_count(app);
-    /* Until the first half second is counted, the frame time stands in. */
-    double fps = t->fps > 0.0 ? t->fps : t->frame_ms > 0.0 ? 1000.0 / t->frame_ms : 0.0;
     return (stats_values_t){
         .headless = app->headless,
-        .fps = fps,
-        .frame_ms = t->frame_ms,
-        .physics_ms = t->physics_ms,
-        .render_ms = t->render_ms,
+        .fps = shown->fps,
+        .frame_ms = shown->frame_ms,
+        .busy_ms = shown->busy_ms,
+        .physics_ms = shown->physics_ms,
+        .render_ms = shown->render_ms,
         .steps = t->steps,
         .bodies = totals.bodies,
         .sleeping = totals.sleeping,

@@ -36,11 +36,12 @@ static void timing_lines(const stats_values_t *v, char lines[STATS_LINES][STATS_
     }
     NUMBER(fps, v->fps, 1, 6);
     NUMBER(frame, v->frame_ms, 2, 6);
+    NUMBER(busy, v->busy_ms, 2, 6);
     NUMBER(physics, v->physics_ms, 3, 7);
-    NUMBER(render, v->render_ms, 2, 7);
+    NUMBER(render, v->render_ms, 2, 6);
     put(lines[0], "%s FPS  frame %s ms", fps, frame);
     put(lines[1], "physics %s ms x %d steps", physics, v->steps);
-    put(lines[2], "drawing %s ms", render);
+    put(lines[2], "draw %s ms  busy %s ms", render, busy);
 }
 
 void stats_text(const stats_values_t *v, char lines[STATS_LINES][STATS_LINE_SIZE]) {

@@ -14,7 +14,8 @@
 
 typedef struct {
     bool headless;       /* no clock: timings are not shown (they would differ each run) */
-    double fps, frame_ms, physics_ms, render_ms;
+    /* From one window of frames (core/frame_meter.h): fps x frame_ms = 1000. */
+    double fps, frame_ms, busy_ms, physics_ms, render_ms;
     int steps;           /* physics steps in the last frame */
     size_t bodies, collisions, near;
     size_t sleeping;     /* bodies asleep */

@@ -4,6 +4,8 @@
 #include "panels/end_screen.h"
 #include "panels/help.h"
 #include "panels/ui_section.h"
+#include <math.h>
+#include "draw/layer.h"
 
 /* The side bar, top to bottom. A new panel goes here. */
 static const ui_section_t *const SECTIONS[] = {
@@ -20,7 +22,7 @@ typedef struct {
 } placed_t;
 
 static placed_t place(const app_t *app, size_t index) {
-    layout_rect_t bar = app->layout.sidebar;
+    layout_rect_t bar = app->layout.panels;
     int y = bar.y + LAYOUT_PAD;
     placed_t placed = {{0, 0, 0, 0}, {0, 0, 0, 0}};
     for (size_t i = 0; i <= index; i++) {
@@ -46,7 +48,14 @@ bool ui_rect_contains(SDL_Rect r, vector_t p, int grow) {
            p.y < r.y + r.h + grow;
 }
 
-drag_t ui_press(app_t *app, vector_t pixel) {
+vector_t ui_to_panels(const app_t *app, vector_t pixel) {
+    vector_t p;
+    layout_to_panels(&app->layout, pixel.x, pixel.y, &p.x, &p.y);
+    return p;
+}
+
+drag_t ui_press(app_t *app, vector_t window_pixel) {
+    vector_t pixel = ui_to_panels(app, window_pixel);
     for (size_t i = 0; i < SECTION_COUNT; i++) {
         placed_t placed = place(app, i);
         if (SECTIONS[i]->press != NULL && ui_rect_contains(placed.whole, pixel, 0)) {
@@ -57,7 +66,7 @@ drag_t ui_press(app_t *app, vector_t pixel) {
 }
 
 static void draw_sidebar(SDL_Renderer *renderer, app_t *app, body_t *hovered) {
-    layout_rect_t bar = app->layout.sidebar;
+    layout_rect_t bar = app->layout.panels;
     if (bar.w <= 0) return;
     draw_panel(renderer, bar.x, bar.y, bar.w, bar.h, PALETTE_PANEL, 255);
     vlineRGBA(renderer, draw_coord(bar.x), draw_coord(bar.y), draw_coord(bar.y + bar.h - 1),
@@ -78,8 +87,37 @@ static void draw_sidebar(SDL_Renderer *renderer, app_t *app, body_t *hovered) {
     }
 }
 
-void ui_draw(SDL_Renderer *renderer, app_t *app, body_t *hovered) {
-    draw_sidebar(renderer, app, hovered);
+/* The side bar and the help, each at the UI's scale: straight into the
+ * frame at scale 1, else drawn at scale 1 into a layer and enlarged. */
+static layer_t sidebar_layer, help_layer;
+
+static SDL_Rect rect_of(layout_rect_t r) {
+    return (SDL_Rect){r.x, r.y, r.w, r.h};
+}
+
+void ui_draw(SDL_Renderer *renderer, SDL_Surface *canvas, app_t *app, body_t *hovered) {
+    const layout_t *layout = &app->layout;
+    SDL_Renderer *target = renderer;
+    if (layout->scale != 1.0) target = layer_begin(&sidebar_layer, layout->panels.w, layout->panels.h);
+    if (target != NULL) {
+        draw_sidebar(target, app, hovered);
+        if (target != renderer) layer_end(&sidebar_layer, renderer, canvas, rect_of(layout->sidebar));
+    }
     end_screen_draw(renderer, app);
-    if (app->show_help) help_draw(renderer, app);
+    if (!app->show_help) return;
+    if (layout->scale == 1.0) {
+        help_draw(renderer, app, layout->view);
+        return;
+    }
+    layout_rect_t page = {0, 0, (int)lround(layout->view.w / layout->scale),
+                          (int)lround(layout->view.h / layout->scale)};
+    target = layer_begin(&help_layer, page.w, page.h);
+    if (target == NULL) return;
+    help_draw(target, app, page);
+    layer_end(&help_layer, renderer, canvas, rect_of(layout->view));
+}
+
+void ui_free(void) {
+    layer_free(&sidebar_layer);
+    layer_free(&help_layer);
 }

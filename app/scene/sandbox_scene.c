@@ -291,47 +291,56 @@ list_t *sandbox_make_shape(sandbox_t *sandbox, shape_choice_t shape, const char 
     return vertices;
 }
 
-/* The static body containing point, or NULL. */
-static body_t *static_at(sandbox_t *sandbox, vector_t point) {
-    for (size_t i = 0; i < scene_bodies(sandbox->scene); i++) {
-        body_t *body = scene_get_body(sandbox->scene, i);
-        if (sandbox_is_static(body) && !body_is_removed(body) &&
-            body_contains_point(body, point)) {
-            return body;
-        }
-    }
-    return NULL;
-}
-
 static bool inside(aabb_t box, vector_t point) {
     return point.x > box.min.x && point.x < box.max.x && point.y > box.min.y &&
            point.y < box.max.y;
 }
 
-/* "the left wall" for a body tagged left_wall; "a static body" untagged. */
-static void name_of(body_t *body, char *out, size_t size) {
-    const char *tag = body_get_info(body);
-    if (tag == NULL || tag[0] == '\0') {
-        snprintf(out, size, "a static body");
+void sandbox_body_words(sandbox_t *sandbox, body_t *body, char *out, size_t size) {
+    const char *name = scene_file_body_name(sandbox->file, body);
+    if (name == NULL || name[0] == '\0') name = body_get_info(body);
+    if (name == NULL || name[0] == '\0') {
+        snprintf(out, size, "a body");
         return;
     }
-    snprintf(out, size, "the %s", tag);
+    snprintf(out, size, "the %s", name);
     for (char *c = out; *c != '\0'; c++) {
         if (*c == '_') *c = ' ';
     }
 }
 
+/* The topmost body (the last added) containing point, static or not. */
+static body_t *any_body_at(sandbox_t *sandbox, vector_t point) {
+    for (size_t i = scene_bodies(sandbox->scene); i-- > 0;) {
+        body_t *body = scene_get_body(sandbox->scene, i);
+        if (!body_is_removed(body) && body_contains_point(body, point)) return body;
+    }
+    return NULL;
+}
+
+double sandbox_world_floor(const sandbox_t *sandbox) {
+    return sandbox->container.min.y - SANDBOX_KILL_DEPTH;
+}
+
 const char *sandbox_place(sandbox_t *sandbox, list_t *vertices, vector_t at, vector_t *placed) {
     *placed = at;
     if (!vec_is_finite(at)) return "not a finite position";
-    body_t *wall = static_at(sandbox, at);
-    if (wall != NULL) {
+    body_t *body = any_body_at(sandbox, at);
+    if (body != NULL) {
         char name[SCENE_FILE_NAME_MAX + 8];
-        name_of(wall, name, sizeof(name));
+        sandbox_body_words(sandbox, body, name, sizeof(name));
         snprintf(sandbox->refusal, sizeof(sandbox->refusal), "inside %s", name);
         return sandbox->refusal;
     }
-    if (!inside(sandbox->container, at)) return "outside the container";
+    if (at.y < sandbox_world_floor(sandbox)) {
+        snprintf(sandbox->refusal, sizeof(sandbox->refusal),
+                 "outside the world: bodies below y = %.3g m are removed",
+                 sandbox_world_floor(sandbox));
+        return sandbox->refusal;
+    }
+    /* The default scene's container has walls: a shape clicked near them
+     * or the floor is set against them rather than into them. */
+    if (!sandbox->is_default || !inside(sandbox->container, at)) return NULL;
     /* The shape's extent around its centroid, where the drop puts `at`. */
     vector_t centroid = polygon_centroid(vertices);
     vector_t low = {INFINITY, INFINITY}, high = {-INFINITY, -INFINITY};
@@ -470,6 +479,31 @@ static bool in_scene(scene_t *scene, body_t *body) {
     return false;
 }
 
+/* Removes the bodies that left the world: below its floor, or farther
+ * than SANDBOX_WORLD_RADIUS from the view (on their way to numbers the
+ * engine would stop the program over), and says which went last. */
+static void remove_escaped(sandbox_t *sandbox) {
+    scene_t *scene = sandbox->scene;
+    double floor_y = sandbox_world_floor(sandbox);
+    vector_t middle = vec_multiply(0.5, vec_add(sandbox->home.min, sandbox->home.max));
+    for (size_t i = 0; i < scene_bodies(scene); i++) {
+        body_t *body = scene_get_body(scene, i);
+        if (body_is_removed(body)) continue;
+        vector_t at = body_get_centroid(body);
+        const char *why = NULL;
+        if (at.y < floor_y) {
+            why = "it fell out of the world";
+        } else if (vec_get_length(vec_subtract(at, middle)) > SANDBOX_WORLD_RADIUS) {
+            why = "it flew out of the world";
+        }
+        if (why == NULL) continue;
+        sandbox_body_words(sandbox, body, sandbox->removed.last, sizeof(sandbox->removed.last));
+        sandbox->removed.why = why;
+        sandbox->removed.count++;
+        sandbox_delete(sandbox, body);
+    }
+}
+
 void sandbox_step(sandbox_t *sandbox) {
     scene_t *scene = sandbox->scene;
     scene_tick(scene, sandbox->step);
@@ -482,13 +516,7 @@ void sandbox_step(sandbox_t *sandbox) {
     /* The game reads the step's record, then applies the input for the next
      * step (game.h). */
     game_update(sandbox->game, sandbox->input, sandbox->step);
-    double kill_y = sandbox->container.min.y - SANDBOX_KILL_DEPTH;
-    for (size_t i = 0; i < scene_bodies(scene); i++) {
-        body_t *body = scene_get_body(scene, i);
-        if (!body_is_removed(body) && body_get_centroid(body).y < kill_y) {
-            sandbox_delete(sandbox, body);
-        }
-    }
+    remove_escaped(sandbox);
     if (sandbox->grab.body != NULL && body_is_removed(sandbox->grab.body)) {
         sandbox->grab.body = NULL; /* the game removed it */
     }
@@ -526,7 +554,11 @@ sandbox_totals_t sandbox_totals(sandbox_t *sandbox) {
     vector_t gravity = scene_get_gravity(sandbox->scene);
     for (size_t i = 0; i < scene_bodies(sandbox->scene); i++) {
         body_t *body = scene_get_body(sandbox->scene, i);
-        if (body_is_removed(body) || sandbox_is_static(body)) continue;
+        if (body_is_removed(body)) continue;
+        if (sandbox_is_static(body)) {
+            totals.statics++;
+            continue;
+        }
         double mass = body_get_mass(body);
         totals.bodies++;
         totals.sleeping += body_is_sleeping(body);

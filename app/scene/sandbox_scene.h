@@ -24,10 +24,13 @@
 /* Threads a step runs on (scene_set_workers): the two cores of the machines
  * it is measured on; the bodies move the same with any count. */
 #define SANDBOX_WORKERS 2
-/* A body whose centroid falls this far below the bottom of the container
- * (the default scene's floor top, a file's view) is removed: y = -40 in the
- * default scene. */
+/* The world: a body whose centroid falls this far below the bottom of the
+ * container (the default scene's floor top, a file's view) is removed (y =
+ * -40 in the default scene), and so is one farther than the radius from
+ * the middle of the default view; a drop below the world's floor is
+ * refused. */
 #define SANDBOX_KILL_DEPTH 40.0
+#define SANDBOX_WORLD_RADIUS 1e6
 /* The default scene, as a scene file (docs/sandbox.md shows it). */
 extern const char SANDBOX_DEFAULT_SCENE[];
 /* Its name on screen and in messages. */
@@ -77,13 +80,22 @@ typedef struct {
     double step;         /* the file's timestep (s): every physics step is this long */
     /* The open box the bodies play in: in the default scene between the
      * walls' inner faces, from the floor's top to the walls' top; in a file,
-     * its view. Drops outside it are refused. */
+     * its view. The world's floor is SANDBOX_KILL_DEPTH below it; spawned
+     * grids fill it. */
     aabb_t container;
     /* What the default view shows: the file's view (the default scene's is
      * its container with the floor and walls, and half a metre around). */
     aabb_t home;
     grab_t grab;
-    char refusal[96]; /* sandbox_place's last reason */
+    char refusal[128]; /* sandbox_place's last reason */
+    /* The bodies the sandbox removed for leaving the world (sandbox_step):
+     * how many since the start, the last one in words ("the weight", "a
+     * body") and why ("it fell out of the world"). */
+    struct {
+        unsigned long count;
+        char last[SCENE_FILE_NAME_MAX + 8];
+        const char *why;
+    } removed;
     bool gravity_on;
     vector_t gravity;    /* what G turns on: the file's gravity, else (0, -10) */
     /* The player's controls for the next steps (a game's only). */
@@ -156,14 +168,23 @@ body_t *sandbox_drop(sandbox_t *sandbox, list_t *vertices, vector_t at, vector_t
 
 /*
  * Where a shape (vertices as sandbox_make_shape gives them) dropped with its
- * centroid at `at` goes. A drop at a point inside a static body or outside
- * the container is refused: the result is why ("inside the floor", "inside
- * the brick", "outside the container"). Otherwise the result is NULL and
- * *placed is `at`, moved just enough that the shape's bounding box clears the
- * container's bottom and sides (a click near the floor sets the shape on it
- * rather than into it).
+ * centroid at `at` goes. A drop at a point inside a body, static or not, or
+ * below the world's floor is refused: the result is why ("inside the
+ * floor", "inside the brick", "inside a body", "outside the world: bodies
+ * below y = -40 m are removed"). Otherwise the result is NULL and *placed
+ * is `at`; in the default scene, a click inside the container is moved just
+ * enough that the shape's bounding box clears the container's bottom and
+ * sides (a click near the floor sets the shape on it rather than into it).
  */
 const char *sandbox_place(sandbox_t *sandbox, list_t *vertices, vector_t at, vector_t *placed);
+
+/* The body in words for messages: "the " and the name the file gave it,
+ * else its tag, underscores as spaces ("the left wall"); "a body" when it
+ * has neither. */
+void sandbox_body_words(sandbox_t *sandbox, body_t *body, char *out, size_t size);
+
+/* The world's floor (y, m): bodies below it are removed, drops refused. */
+double sandbox_world_floor(const sandbox_t *sandbox);
 
 /* The bounding box of every dynamic body; false when there is none. */
 bool sandbox_bodies_bounds(sandbox_t *sandbox, aabb_t *bounds);
@@ -201,13 +222,16 @@ void sandbox_set_integrator(sandbox_t *sandbox, integrator_t integrator);
 void sandbox_set_sleeping(sandbox_t *sandbox, bool on);
 
 /* One physics step of sandbox->step seconds, then the game's rules with
- * sandbox->input; then removes the bodies that fell out. */
+ * sandbox->input; then removes the bodies that left the world (counted in
+ * sandbox->removed). */
 void sandbox_step(sandbox_t *sandbox);
 
-/* Totals over the bodies of finite mass that are not removed, in one pass,
- * and the potential energy of the file's springs and Newtonian gravity. */
+/* Totals over the bodies of finite mass that are not removed, in one pass
+ * (and the static ones counted), and the potential energy of the file's
+ * springs and Newtonian gravity. */
 typedef struct {
-    size_t bodies;      /* dynamic bodies */
+    size_t bodies;      /* dynamic bodies: every count the sandbox shows is of these */
+    size_t statics;     /* bodies of infinite mass (floor, walls, bricks), counted apart */
     size_t sleeping;    /* of which asleep (body_is_sleeping) */
     double kinetic;     /* J */
     /* J: m g h with h the centroid's height above y = 0 (the default

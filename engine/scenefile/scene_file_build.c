@@ -481,6 +481,15 @@ void sf_collect(scene_file_t *file) {
     file->freed_records = 0;
 }
 
+const char *scene_file_body_name(scene_file_t *file, body_t *body) {
+    if (file == NULL || body == NULL) return NULL;
+    for (size_t i = 0; i < file->record_count; i++) {
+        const sf_record_t *record = file->records[i];
+        if (record->body == body) return file->doc.bodies[record->spec].name.text;
+    }
+    return NULL;
+}
+
 body_t *scene_file_find_body(scene_file_t *file, const char *name) {
     if (file == NULL || name == NULL) return NULL;
     sf_name_entry_t *entry = sf_names_find(&file->doc.names, name);

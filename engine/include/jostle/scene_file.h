@@ -105,6 +105,13 @@ const char *scene_file_get_game(const scene_file_t *file);
  * yet freed is returned (body_is_removed tells). */
 body_t *scene_file_find_body(scene_file_t *file, const char *name);
 
+/* The name the file gave `body`: its block's (`body NAME { ... }`, repeated
+ * or not) or, for a spawned body, its template's; "" for an anonymous body;
+ * NULL when the file did not make it (a body the caller added) or an
+ * argument is NULL. Valid while the file lives. Looks through the file's
+ * bodies: for messages, not for every step. */
+const char *scene_file_body_name(scene_file_t *file, body_t *body);
+
 /*
  * Makes a body from the template `template_name` (`template NAME { ... }`)
  * with its centroid at `position` and velocity `velocity`, and adds it to the
