@@ -73,7 +73,7 @@ endif
 # SDL.
 APP_UNIT_SRC := tests/app_units.c app/panels/text.c app/panels/stats_text.c app/core/step_clock.c \
                 app/core/layout.c app/core/energy_drift.c app/scene/integrator_choice.c \
-                app/scene/presets.c app/panels/scene_text.c app/scene/sandbox_scene.c app/draw/batch.c \
+                app/scene/samples.c app/panels/scene_text.c app/scene/sandbox_scene.c app/draw/batch.c \
                 app/core/frame_meter.c app/draw/focus.c
 build/tests/app_units: $(APP_UNIT_SRC) tests/app_expect.h $(APP_HDR) app/app.mk \
                        build/libjostle-san.a $(GAMES_SAN_OBJ)
@@ -85,9 +85,9 @@ build/tests/app_units: $(APP_UNIT_SRC) tests/app_expect.h $(APP_HDR) app/app.mk 
 # link no SDL, but the sanitized engine, to load the scene files the sandbox
 # saves (scene_file_load), and the list of presets.
 APP_SMOKE_SRC := tests/app_smoke.c tests/app_smoke_edges.c tests/app_run.c tests/app_image.c \
-                 app/core/layout.c app/scene/presets.c
+                 app/core/layout.c app/scene/samples.c
 build/tests/app_smoke: $(APP_SMOKE_SRC) tests/app_run.h tests/app_image.h tests/app_expect.h app/draw/palette.h \
-                       app/core/layout.h app/scene/presets.h app/app.mk build/libjostle-san.a $(APP_SMOKE_DEPS)
+                       app/core/layout.h app/scene/samples.h app/app.mk build/libjostle-san.a $(APP_SMOKE_DEPS)
 	@mkdir -p $(dir $@)
 	$(CC) $(CSTD) $(WARN) -O1 -g $(SAN) $(APP_SMOKE_DEFS) -Iapp -Itests -Iengine/include \
 	    $(APP_SMOKE_SRC) build/libjostle-san.a $(APP_SMOKE_LIBS) -pthread -lm -o $@

@@ -20,6 +20,7 @@
 #include "input/script.h"
 #include "core/stepper.h"
 #include "panels/ui.h"
+#include "tools/tools.h"
 #include "draw/video.h"
 
 typedef struct {
@@ -55,7 +56,7 @@ static void usage(FILE *out) {
             "game runs: Breakout and Space Invaders are played with Left/Right or\n"
             "A/D and Space (Enter pauses). Without it the default scene opens: an\n"
             "empty container. PageDown and PageUp go through the default scene and\n"
-            "the presets (assets/scenes/*.scene); Ctrl+S saves the scene as it is to\n"
+            "the samples (assets/scenes/*.scene); Ctrl+S saves the scene as it is to\n"
             "a new saved-N.scene. A file that is refused is named with its line and\n"
             "column (FILE:LINE:COLUMN: expected ..., found ...) and the exit status\n"
             "is 2.\n"
@@ -268,10 +269,10 @@ static bool is_dir(const char *path) {
     return stat(path, &info) == 0 && S_ISDIR(info.st_mode);
 }
 
-/* The presets' directory: assets/scenes here; else beside the program (run
+/* The samples' directory: assets/scenes here; else beside the program (run
  * from elsewhere, or through a link); else where make install puts them,
  * PREFIX/share/jostle/scenes beside PREFIX/bin. NULL when there is none. */
-static char *presets_dir(void) {
+static char *samples_dir(void) {
     static const char HERE[] = "assets/scenes";
     static const char *const BESIDE[] = {"assets/scenes", "../share/jostle/scenes"};
     if (is_dir(HERE)) return SDL_strdup(HERE);
@@ -386,9 +387,9 @@ int main(int argc, char **argv) {
     int width = video.width, height = video.height;
 
     static app_t app; /* large (the impulse trail): not on the stack */
-    char *presets = presets_dir();
-    app_init(&app, width, height, o.seed, presets);
-    SDL_free(presets);
+    char *samples = samples_dir();
+    app_init(&app, width, height, o.seed, samples);
+    SDL_free(samples);
     if (o.save_dir != NULL) snprintf(app.save_dir, sizeof(app.save_dir), "%s", o.save_dir);
     app.headless = o.headless;
     app_set_elasticity(&app, o.elasticity);
@@ -460,6 +461,7 @@ int main(int argc, char **argv) {
         }
         double physics_s = stepper_finish(stepper);
         app_frame_done(&app, steps);
+        tools_frame(&app, frame_dt, steps * app.sandbox.tick);
 
         Uint64 render_start = SDL_GetPerformanceCounter();
         body_t *hovered = input_hovered_body(&app);

@@ -302,10 +302,3 @@ bool scene_name(const image_t *image, char *name, size_t max) {
     image_read_text(image, x, y + LAYOUT_LINE_H + 3 + 2, accent, name, max);
     return name[0] != '\0';
 }
-
-void preset_name(const char *path, char *name, size_t size) {
-    const char *base = strrchr(path, '/');
-    snprintf(name, size, "%s", base != NULL ? base + 1 : path);
-    char *dot = strstr(name, ".scene");
-    if (dot != NULL) *dot = '\0';
-}

@@ -111,7 +111,4 @@ bool find_in_panel(const image_t *image, const char *title, const char *text, in
 /* The name the SCENE panel shows (in the accent colour, below its title). */
 bool scene_name(const image_t *image, char *name, size_t max);
 
-/* A preset's name: its file name without the directory and ".scene". */
-void preset_name(const char *path, char *name, size_t size);
-
 #endif

@@ -26,7 +26,7 @@
 #include <time.h>
 #include <unistd.h>
 #include "app_run.h"
-#include "scene/presets.h"
+#include "scene/samples.h"
 #include "jostle/scene_file.h"
 
 #ifndef APP_SMOKE_HAVE_SDL
@@ -208,8 +208,8 @@ static void test_default_view_shows_the_container_and_every_panel(void) {
     check_layout("1280x720", 1280, 720);
 }
 
-/* Clicks all over the side bar act on its panels only, even with the
- * container panned behind it; clicks inside the floor and the walls are
+/* Clicks all over the side bar (its PLAY page) act on its panels only,
+ * even with the container panned behind it; clicks inside the floor and the walls are
  * refused with a message: no body anywhere, the side bar counts none. */
 static void test_panel_and_wall_clicks_drop_nothing(void) {
     layout_t layout = layout_800();
@@ -220,8 +220,9 @@ static void test_panel_and_wall_clicks_drop_nothing(void) {
     const int columns[3] = {layout.sidebar.x + 3, layout.sidebar.x + 130, WIDTH - 4};
     for (int y = 3; y < HEIGHT; y += 12) {
         for (int c = 0; c < 3; c++) {
-            used += (size_t)snprintf(script + used, sizeof script - used, "click px %d %d\n",
-                                     columns[c], y);
+            /* A click on a tab shows its page: back to PLAY's panels. */
+            used += (size_t)snprintf(script + used, sizeof script - used,
+                                     "click px %d %d\nkey f2\n", columns[c], y);
         }
     }
     used += (size_t)snprintf(script + used, sizeof script - used,
@@ -906,7 +907,7 @@ static void test_sleeping_bodies_drawn_dimmer(void) {
     }
 }
 
-/* ---- scene files, presets, saving and games ---- */
+/* ---- scene files, samples, saving and games ---- */
 
 /* Whether the file names a game that the player controls (the pegs board
  * takes no input: its keys stay the sandbox's). */
@@ -927,55 +928,56 @@ static bool is_drawn(const unsigned char *p) {
     return !is_background_or_grid(p);
 }
 
-/* Every preset opens from the command line, headless, and draws: its name
- * and place in the SCENE panel, its bodies in the view; a game the player
- * controls says its keys. */
-static void test_presets_open_from_the_command_line(void) {
-    static presets_t presets;
-    presets_load(&presets, "assets/scenes");
-    EXPECT(presets.count >= 11, "only %zu presets in assets/scenes", presets.count);
-    for (size_t i = 0; i < presets.count; i++) {
-        char name[64], shot_name[80], shot[256];
-        preset_name(presets.paths[i], name, sizeof name);
-        snprintf(shot_name, sizeof shot_name, "preset_%s", name);
+/* Every sample file opens from the command line, headless, and draws: its
+ * name and place in the SCENE panel, its bodies in the view; a game the
+ * player controls says its keys. */
+static void test_samples_open_from_the_command_line(void) {
+    static samples_t samples;
+    samples_load(&samples, "assets/scenes", "sandbox", NULL);
+    EXPECT(samples.count >= 12, "only %zu samples with assets/scenes", samples.count);
+    for (size_t i = 1; i < samples.count; i++) {
+        const char *path = samples.items[i].path, *name = samples.items[i].name;
+        char shot_name[80], shot[256];
+        snprintf(shot_name, sizeof shot_name, "sample_%s", name);
         snprintf(shot, sizeof shot, "%s", tmp_path(shot_name, ".bmp"));
         remove(shot);
         const char *args[] = {"--headless", "--size", SIZE_FLAG, "--frames", "30",
-                              presets.paths[i], "--screenshot", shot, NULL};
+                              path, "--screenshot", shot, NULL};
         run_t run;
         run_sandbox(&run, 60, args);
         if (run.status != 0) {
-            app_fail("%s: exit status %d:\n%s", presets.paths[i], run.status, run.output);
+            app_fail("%s: exit status %d:\n%s", path, run.status, run.output);
             continue;
         }
         image_t image;
         if (!load_shot(shot_name, &image)) continue;
         char shown[40];
         EXPECT(scene_name(&image, shown, 30) && strcmp(shown, name) == 0,
-               "%s: the SCENE panel names '%s'", presets.paths[i], shown);
+               "%s: the SCENE panel names '%s'", path, shown);
         char position[32];
-        snprintf(position, sizeof position, "%zu of %zu", i + 2, presets.count + 1);
+        snprintf(position, sizeof position, "%zu of %zu", i + 1, samples.count);
         EXPECT(find_in_panel(&image, "SCENE (", position, NULL, NULL, NULL),
-               "%s: the SCENE panel does not say '%s'", presets.paths[i], position);
+               "%s: the SCENE panel does not say '%s'", path, position);
         long drawn = image_count(&image, is_drawn, 0, 0, layout_800().view.w, HEIGHT);
-        EXPECT(drawn > 300, "%s: %ld pixels drawn in the view", presets.paths[i], drawn);
-        bool game = is_scene_game(presets.paths[i]);
+        EXPECT(drawn > 300, "%s: %ld pixels drawn in the view", path, drawn);
+        bool game = is_scene_game(path);
         EXPECT(game == shows(&image, "GAME KEYS: Left/Right, A/D move", false),
-               "%s: %s game, and the side bar %s its keys", presets.paths[i],
+               "%s: %s game, and the side bar %s its keys", path,
                game ? "a" : "no", game ? "does not show" : "shows");
         expect_text_inside(&image, name);
         image_free(&image);
     }
-    presets_free(&presets);
+    samples_free(&samples);
 }
 
-/* PageDown goes through the default scene and every preset in order, and
- * round to the default scene; PageUp goes back, round to the last preset.
- * Each opens with its name in the SCENE panel and on the status line. */
-static void test_scene_keys_cycle_through_the_presets(void) {
-    static presets_t presets;
-    presets_load(&presets, "assets/scenes");
-    size_t count = presets.count + 1;
+/* PageDown goes through the default scene and every sample in the browser's
+ * order, and round to the default scene; PageUp goes back, round to the
+ * last sample. Each opens with its name in the SCENE panel and on the
+ * status line. */
+static void test_scene_keys_cycle_through_the_samples(void) {
+    static samples_t samples;
+    samples_load(&samples, "assets/scenes", "sandbox", NULL);
+    size_t count = samples.count;
     char script[8192] = "move px 5 5\nscreenshot " TMP_DIR "/cycle_0.bmp\n";
     size_t used = strlen(script);
     for (size_t k = 1; k <= count; k++) {
@@ -986,7 +988,7 @@ static void test_scene_keys_cycle_through_the_presets(void) {
     used += (size_t)snprintf(script + used, sizeof script - used, "key pageup\nwait 1\n");
     run_t run;
     if (!run_script("cycle", script, NULL, &run)) {
-        presets_free(&presets);
+        samples_free(&samples);
         return;
     }
     for (size_t k = 0; k <= count + 1; k++) {
@@ -995,8 +997,7 @@ static void test_scene_keys_cycle_through_the_presets(void) {
         else snprintf(shot_name, sizeof shot_name, "cycle");
         /* k presses of PageDown (the last: PageDown round, then PageUp). */
         size_t index = k <= count ? k % count : count - 1;
-        char expected[64] = "sandbox";
-        if (index > 0) preset_name(presets.paths[index - 1], expected, sizeof expected);
+        const char *expected = samples.items[index].name;
         image_t image;
         if (!load_shot(shot_name, &image)) continue;
         char shown[40];
@@ -1008,7 +1009,7 @@ static void test_scene_keys_cycle_through_the_presets(void) {
                opened);
         image_free(&image);
     }
-    presets_free(&presets);
+    samples_free(&samples);
 }
 
 /* A refused file on the command line: its FILE:LINE:COLUMN message and
@@ -1477,9 +1478,9 @@ static const app_test_t TESTS[] = {
     {"app_smoke.energy_drift_chart_tells_the_schemes_apart",
      test_energy_drift_chart_tells_the_schemes_apart},
     {"app_smoke.sleeping_bodies_drawn_dimmer", test_sleeping_bodies_drawn_dimmer},
-    {"app_smoke.presets_open_from_the_command_line", test_presets_open_from_the_command_line},
-    {"app_smoke.scene_keys_cycle_through_the_presets",
-     test_scene_keys_cycle_through_the_presets},
+    {"app_smoke.samples_open_from_the_command_line", test_samples_open_from_the_command_line},
+    {"app_smoke.scene_keys_cycle_through_the_samples",
+     test_scene_keys_cycle_through_the_samples},
     {"app_smoke.bad_scene_files_are_refused", test_bad_scene_files_are_refused},
     {"app_smoke.save_writes_scenes_that_load_back", test_save_writes_scenes_that_load_back},
     {"app_smoke.games_respond_to_their_keys", test_games_respond_to_their_keys},

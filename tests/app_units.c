@@ -4,7 +4,7 @@
  * (app/step_clock.c), the layout (app/layout.c), the energy drift of the
  * INTEGRATOR panel (app/energy_drift.c), the integrators by name
  * (app/integrator_choice.c, against the engine), the list of scenes
- * PageDown and PageUp go through (app/presets.c), the SCENE panel's words
+ * PageDown and PageUp go through (app/scene/samples.c), the SCENE panel's words
  * (app/scene_text.c), and the sandbox's scenes from scene files
  * (app/sandbox_scene.c with the game rules, against the sanitized engine),
  * and the geometry batch the renderer draws in one call (app/batch.c).
@@ -23,7 +23,8 @@
 #include "scene/integrator_choice.h"
 #include "core/layout.h"
 #include "draw/palette.h"
-#include "scene/presets.h"
+#include "scene/samples.h"
+#include "scene/sample_categories.h"
 #include "scene/sandbox_scene.h"
 #include "panels/scene_text.h"
 #include "panels/stats_text.h"
@@ -579,35 +580,49 @@ static void test_integrators_by_name(void) {
 
 /* ---- scenes ---- */
 
-/* The presets' directory lists its *.scene files by name after the default
- * scene; a scene is found by its path however it is written; PageDown and
- * PageUp go round. */
-static void test_presets_list_the_scene_files(void) {
-    static presets_t presets;
-    presets_load(&presets, "assets/scenes");
-    EXPECT(presets.count >= 11, "%zu presets in assets/scenes", presets.count);
-    EXPECT(presets_scene_count(&presets) == presets.count + 1 && presets_path(&presets, 0) == NULL,
+/* The samples: the default scene first, then the *.scene files ordered
+ * by category (sample_categories.h) and by name within one, each with a
+ * known category and a one-line note; a scene is found by its path however
+ * it is written; PageDown and PageUp go round. */
+static void test_samples_list_by_category(void) {
+    static samples_t samples;
+    samples_load(&samples, "assets/scenes", SANDBOX_DEFAULT_NAME, SANDBOX_DEFAULT_SCENE);
+    EXPECT(samples.count >= 12, "%zu samples with assets/scenes", samples.count);
+    EXPECT(samples_count(&samples) == samples.count && samples_path(&samples, 0) == NULL &&
+               strcmp(samples.items[0].name, SANDBOX_DEFAULT_NAME) == 0,
            "the default scene is not first");
-    for (size_t i = 1; i < presets.count; i++) {
-        EXPECT(strcmp(presets.paths[i - 1], presets.paths[i]) < 0, "%s before %s",
-               presets.paths[i - 1], presets.paths[i]);
+    for (size_t i = 0; i < samples.count; i++) {
+        const sample_t *s = &samples.items[i];
+        EXPECT(s->category >= 0 && s->category < SAMPLE_CATEGORY_COUNT,
+               "%s: category %d is none of the browser's", s->name, s->category);
+        EXPECT(s->note[0] != '\0' && strlen(s->note) <= SCENE_FILE_NOTE_MAX, "%s: no note",
+               s->name);
+        if (i < 2) continue;
+        const sample_t *before = &samples.items[i - 1];
+        EXPECT(before->category < s->category ||
+                   (before->category == s->category && strcmp(before->name, s->name) < 0),
+               "%s before %s", before->name, s->name);
     }
-    int pegs = presets_find(&presets, "./assets/scenes/../scenes/pegs.scene");
-    EXPECT(pegs > 0 && strstr(presets_path(&presets, (size_t)pegs), "pegs.scene") != NULL,
+    EXPECT(strcmp(samples_category_name(&samples, 0), "Basics") == 0, "the default scene in %s",
+           samples_category_name(&samples, 0));
+    int pegs = samples_find(&samples, "./assets/scenes/../scenes/pegs.scene");
+    EXPECT(pegs > 0 && strstr(samples_path(&samples, (size_t)pegs), "pegs.scene") != NULL,
            "pegs.scene found at %d", pegs);
-    EXPECT(presets_find(&presets, NULL) == 0, "the default scene is not at 0");
-    EXPECT(presets_find(&presets, "app/app.c") == -1 && presets_find(&presets, "no/such") == -1,
-           "a file that is not a preset is found in the list");
-    size_t last = presets_scene_count(&presets) - 1;
-    EXPECT(presets_next(&presets, (int)last, 1) == 0 && presets_next(&presets, 0, -1) == last &&
-               presets_next(&presets, 2, 1) == 3 && presets_next(&presets, -1, 1) == 0 &&
-               presets_next(&presets, -1, -1) == last,
+    EXPECT(pegs > 0 && strcmp(samples_category_name(&samples, (size_t)pegs), "Games") == 0,
+           "pegs is not in Games");
+    EXPECT(samples_find(&samples, NULL) == 0, "the default scene is not at 0");
+    EXPECT(samples_find(&samples, "app/app.c") == -1 && samples_find(&samples, "no/such") == -1,
+           "a file that is not a sample is found in the list");
+    size_t last = samples_count(&samples) - 1;
+    EXPECT(samples_next(&samples, (int)last, 1) == 0 && samples_next(&samples, 0, -1) == last &&
+               samples_next(&samples, 2, 1) == 3 && samples_next(&samples, -1, 1) == 0 &&
+               samples_next(&samples, -1, -1) == last,
            "PageDown and PageUp do not go round the list");
-    presets_free(&presets);
-    presets_load(&presets, "no/such/directory");
-    EXPECT(presets.count == 0 && presets_scene_count(&presets) == 1,
-           "a missing directory lists %zu presets", presets.count);
-    presets_free(&presets);
+    samples_free(&samples);
+    samples_load(&samples, "no/such/directory", SANDBOX_DEFAULT_NAME, NULL);
+    EXPECT(samples.count == 1 && samples_count(&samples) == 1 && samples.items[0].category == 0,
+           "a missing directory lists %zu samples", samples.count);
+    samples_free(&samples);
 }
 
 /* The SCENE panel's lines fit the side bar and say what they should. */
@@ -707,17 +722,17 @@ static void test_default_scene_is_a_scene_file(void) {
            "docs/sandbox.md does not show SANDBOX_DEFAULT_SCENE word for word");
 }
 
-/* Every preset opens: its view, timestep and integrator are the file's, its
+/* Every sample opens: its view, timestep and integrator are the file's, its
  * game starts; a refused file leaves the open scene as it was; R reads the
  * file again, keeping the integrator the user chose. */
 static void test_scene_files_open_and_refusals_keep_the_scene(void) {
     static sandbox_t sandbox;
-    static presets_t presets;
+    static samples_t samples;
     char error[600];
     sandbox_init(&sandbox, 1);
-    presets_load(&presets, "assets/scenes");
-    for (size_t i = 0; i < presets.count; i++) {
-        const char *path = presets.paths[i];
+    samples_load(&samples, "assets/scenes", SANDBOX_DEFAULT_NAME, NULL);
+    for (size_t i = 1; i < samples.count; i++) {
+        const char *path = samples.items[i].path;
         if (!sandbox_open(&sandbox, path, error, sizeof(error))) {
             app_fail("%s is refused: %s", path, error);
             continue;
@@ -773,7 +788,7 @@ static void test_scene_files_open_and_refusals_keep_the_scene(void) {
     EXPECT(sandbox_open(&sandbox, NULL, error, sizeof(error)) && sandbox.is_default &&
                sandbox.integrator == INTEGRATOR_SEED && scene_bodies(sandbox.scene) == 3,
            "the default scene does not open again");
-    presets_free(&presets);
+    samples_free(&samples);
     sandbox_free(&sandbox);
 }
 
@@ -989,7 +1004,7 @@ static const app_test_t TESTS[] = {
     {"app_units.integrators_by_name", test_integrators_by_name},
     {"app_units.clock_follows_the_scene_timestep", test_clock_follows_the_scene_timestep},
     {"app_units.energy_drift_columns_follow_the_step", test_energy_drift_columns_follow_the_step},
-    {"app_units.presets_list_the_scene_files", test_presets_list_the_scene_files},
+    {"app_units.samples_list_by_category", test_samples_list_by_category},
     {"app_units.scene_panel_words", test_scene_panel_words},
     {"app_units.default_scene_is_a_scene_file", test_default_scene_is_a_scene_file},
     {"app_units.scene_files_open_and_refusals_keep_the_scene",

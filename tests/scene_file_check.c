@@ -33,6 +33,17 @@ static bool same_settings(scene_file_t *a, scene_file_t *b, char *why, size_t si
         return differ(why, size, "view differs");
     if (strcmp(scene_file_get_game(a), scene_file_get_game(b)) != 0)
         return differ(why, size, "game differs");
+    if (scene_file_get_stepping(a) != scene_file_get_stepping(b))
+        return differ(why, size, "stepping differs");
+    if (scene_get_workers(scene_file_get_scene(a)) != scene_get_workers(scene_file_get_scene(b)))
+        return differ(why, size, "workers differ");
+    size_t av, ap, bv, bp;
+    scene_file_get_iterations(a, &av, &ap);
+    scene_file_get_iterations(b, &bv, &bp);
+    if (av != bv || ap != bp) return differ(why, size, "iterations differ");
+    if (strcmp(scene_file_get_category(a), scene_file_get_category(b)) != 0 ||
+        strcmp(scene_file_get_note(a), scene_file_get_note(b)) != 0)
+        return differ(why, size, "category or note differs");
     if (scene_get_sleeping(x) != scene_get_sleeping(y))
         return differ(why, size, "sleeping differs");
     if (scene_get_sleep_phase(x) != scene_get_sleep_phase(y))

@@ -116,7 +116,7 @@ static void scene_shown(app_t *app, bool another) {
     app->in_game = game;
     app->game_status = sandbox->game != NULL ? game_status(sandbox->game) : (game_status_t){0};
     app->totals = sandbox_totals(&app->sandbox);
-    app->scene_index = presets_find(&app->presets, sandbox->is_default ? NULL : sandbox->path);
+    app->scene_index = samples_find(&app->samples, sandbox->is_default ? NULL : sandbox->path);
     if (app->scene_index >= 0) app->scene_cursor = app->scene_index;
     /* Another scene has another scale: its shapes start at a size that shows. */
     if (another) {
@@ -125,10 +125,10 @@ static void scene_shown(app_t *app, bool another) {
     }
 }
 
-void app_init(app_t *app, int width, int height, uint64_t seed, const char *presets_dir) {
+void app_init(app_t *app, int width, int height, uint64_t seed, const char *samples_dir) {
     memset(app, 0, sizeof(*app));
     sandbox_init(&app->sandbox, seed);
-    presets_load(&app->presets, presets_dir);
+    samples_load(&app->samples, samples_dir, SANDBOX_DEFAULT_NAME, SANDBOX_DEFAULT_SCENE);
     snprintf(app->save_dir, sizeof(app->save_dir), ".");
     app->layout = layout_of(width, height);
     app->shape = (shape_choice_t){SHAPE_REGULAR, 6, 0.5};
@@ -199,10 +199,14 @@ bool app_open(app_t *app, const char *path) {
     return true;
 }
 
-void app_cycle_scene(app_t *app, int step) {
-    size_t index = presets_next(&app->presets, app->scene_cursor, step);
+void app_open_sample(app_t *app, size_t index) {
+    if (index >= samples_count(&app->samples)) return;
     app->scene_cursor = (int)index;
-    app_open(app, presets_path(&app->presets, index));
+    app_open(app, samples_path(&app->samples, index));
+}
+
+void app_cycle_scene(app_t *app, int step) {
+    app_open_sample(app, samples_next(&app->samples, app->scene_cursor, step));
 }
 
 void app_reset_scene(app_t *app) {
@@ -287,7 +291,7 @@ bool app_in_view(const app_t *app, vector_t pixel) {
 
 void app_free(app_t *app) {
     sandbox_free(&app->sandbox);
-    presets_free(&app->presets);
+    samples_free(&app->samples);
     if (app->next_vertices != NULL) list_free(app->next_vertices);
     app->next_vertices = NULL;
 }
@@ -322,21 +326,37 @@ static void plan_input(app_t *app, int steps) {
     }
 }
 
+/* Frame stepping: one step as long as the frame's simulated time, within
+ * what a frame of fixed steps may run. */
+static int plan_frame_step(app_t *app, double simulated) {
+    double most = STEP_CLOCK_MAX_STEPS * STEP_CLOCK_STEP;
+    double tick = fmin(simulated, most);
+    if (!(tick > 0.0)) return 0;
+    app->sandbox.tick = tick;
+    app->clock.simulated += tick;
+    energy_drift_set_step(&app->drift, tick);
+    return 1;
+}
+
 int app_plan_steps(app_t *app, double frame_dt) {
     int steps = 0;
     double step = app->sandbox.step;
+    bool frame = app->sandbox.stepping == SCENE_FILE_STEP_FRAME;
+    app->sandbox.tick = step;
+    energy_drift_set_step(&app->drift, step);
     if (!app->paused) {
         impulse_trail_age(&app->trail, frame_dt);
         app->requested_time += frame_dt * app->time_scale;
-        steps = step_clock_advance_within(&app->clock, frame_dt * app->time_scale,
-                                          app->step_budget);
+        steps = frame ? plan_frame_step(app, frame_dt * app->time_scale)
+                      : step_clock_advance_within(&app->clock, frame_dt * app->time_scale,
+                                                  app->step_budget);
     }
-    if (app->step_once) {
-        app->step_once = false;
+    if (app->step_once && steps == 0) {
         impulse_trail_age(&app->trail, step);
         app->clock.simulated += step;
         steps++;
     }
+    app->step_once = false;
     plan_input(app, steps);
     return steps;
 }
@@ -397,6 +417,11 @@ void app_set_integrator(app_t *app, integrator_t integrator) {
     app_status(app, "integrator: %s (%s)", integrator_get_name(integrator), stability);
 }
 
+void app_step_changed(app_t *app) {
+    step_clock_set_step(&app->clock, app->sandbox.step);
+    energy_drift_set_step(&app->drift, app->sandbox.step);
+}
+
 void app_set_gravity(app_t *app, bool on) {
     sandbox_set_gravity(&app->sandbox, on);
     energy_drift_rereference(&app->drift);
@@ -408,14 +433,14 @@ void app_run_steps(app_t *app, int steps) {
 }
 
 vector_t app_throw_velocity(const app_t *app) {
-    if (app->sample_count < 2) return VEC_ZERO;
-    const motion_sample_t *newest = &app->samples[(app->sample_count - 1) % APP_MOTION_SAMPLES];
+    if (app->motion_count < 2) return VEC_ZERO;
+    const motion_sample_t *newest = &app->motion[(app->motion_count - 1) % APP_MOTION_SAMPLES];
     if (app->now - newest->time > THROW_WINDOW) return VEC_ZERO; /* held still */
     const motion_sample_t *oldest = newest;
-    size_t available = app->sample_count < APP_MOTION_SAMPLES ? app->sample_count
+    size_t available = app->motion_count < APP_MOTION_SAMPLES ? app->motion_count
                                                               : APP_MOTION_SAMPLES;
     for (size_t back = 1; back < available; back++) {
-        const motion_sample_t *s = &app->samples[(app->sample_count - 1 - back) % APP_MOTION_SAMPLES];
+        const motion_sample_t *s = &app->motion[(app->motion_count - 1 - back) % APP_MOTION_SAMPLES];
         if (newest->time - s->time > THROW_WINDOW) break;
         oldest = s;
     }

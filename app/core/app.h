@@ -12,9 +12,10 @@
 #include "core/camera.h"
 #include "core/energy_drift.h"
 #include "core/frame_meter.h"
+#include "core/plot.h"
 #include "core/impulse_trail.h"
 #include "core/layout.h"
-#include "scene/presets.h"
+#include "scene/samples.h"
 #include "scene/sandbox_scene.h"
 #include "core/step_clock.h"
 
@@ -33,6 +34,23 @@ typedef enum {
     OVERLAY_SLEEPING, /* not drawn over the bodies: sleeping bodies drawn dimmer */
     OVERLAY_COUNT
 } overlay_t;
+
+/* The pages of the side bar (F2 to F5, or a click on a tab). */
+typedef enum {
+    UI_PAGE_PLAY = 0, /* the simulation, the shape, overlays, integrator, scene */
+    UI_PAGE_SAMPLES,  /* the samples by category, with their notes */
+    UI_PAGE_SOLVER,   /* the solver's settings, live */
+    UI_PAGE_TOOLS,    /* the tools, the body inspector, a plot */
+    UI_PAGE_COUNT
+} ui_page_t;
+
+/* What a left click in the view does (K, L, or a click in the TOOLS page). */
+typedef enum {
+    TOOL_DROP = 0, /* drop the shape (Shift: throw it) */
+    TOOL_EXPLODE,  /* an explosion at the cursor (tools/explosion.h) */
+    TOOL_INSPECT,  /* choose the body the inspector shows */
+    TOOL_COUNT
+} tool_t;
 
 typedef enum {
     DRAG_NONE = 0,
@@ -75,10 +93,11 @@ typedef struct {
 
 typedef struct {
     sandbox_t sandbox;
-    /* The scenes PageDown and PageUp go through, the open scene's place in
-     * that list (-1: a file from elsewhere) and the place they go on from
-     * (the last one tried, even when it was refused). */
-    presets_t presets;
+    /* The samples (the SAMPLES panel; PageDown and PageUp go through them),
+     * the open scene's place in that list (-1: a file from elsewhere) and
+     * the place they go on from (the last one tried, even when it was
+     * refused). */
+    samples_t samples;
     int scene_index;
     int scene_cursor;
     char save_dir[SANDBOX_PATH_MAX]; /* where Ctrl+S writes saved-N.scene */
@@ -105,6 +124,16 @@ typedef struct {
     bool paused;
     bool step_once;  /* run one step at the next frame (while paused) */
     bool show_help;
+    ui_page_t page;  /* the side bar's page */
+    tool_t tool;     /* what a left click in the view does */
+    /* The last explosion, drawn as a ring for a moment: its centre and
+     * radius (m) and its age (s of display time). */
+    struct {
+        vector_t centre;
+        double radius, age;
+        bool shown;
+    } blast;
+    plot_t plot;     /* the TOOLS page's plot of one quantity */
     bool quit;
     int resize_width, resize_height; /* a size the script asked for; 0: none */
     double time_scale; /* simulated seconds per displayed second, 0.1 to 1 */
@@ -117,8 +146,8 @@ typedef struct {
     uint16_t mods;       /* keyboard modifiers (SDL KMOD_*) as of the last key event */
     drag_t drag;
     vector_t drag_last;  /* pixels, for panning */
-    motion_sample_t samples[APP_MOTION_SAMPLES];
-    size_t sample_count; /* ring: the newest is samples[(sample_count - 1) % N] */
+    motion_sample_t motion[APP_MOTION_SAMPLES];
+    size_t motion_count; /* ring: the newest is motion[(motion_count - 1) % N] */
 
     impulse_trail_t trail;
     /* The bodies' totals as of the last frame's steps (app_frame_done), read
@@ -141,8 +170,9 @@ typedef struct {
 #define APP_STATUS_SECONDS 2.5
 
 /* The default scene and settings for a window of width x height pixels;
- * the presets are the *.scene files of presets_dir (NULL: none). */
-void app_init(app_t *app, int width, int height, uint64_t seed, const char *presets_dir);
+ * the samples are the default scene and the *.scene files of samples_dir
+ * (NULL: none). */
+void app_init(app_t *app, int width, int height, uint64_t seed, const char *samples_dir);
 void app_free(app_t *app);
 
 /* The window is now width x height pixels: the layout and the view follow. */
@@ -171,6 +201,9 @@ void app_frame_done(app_t *app, int steps);
  * new reference. */
 void app_set_integrator(app_t *app, integrator_t integrator);
 
+/* The open scene's timestep changed: the clock and the drift chart follow. */
+void app_step_changed(app_t *app);
+
 /* Gravity on or off, said on the status line; the energy drift takes a new
  * reference (the potential energy changes meaning). */
 void app_set_gravity(app_t *app, bool on);
@@ -185,8 +218,11 @@ void app_show(app_t *app, sandbox_loaded_t *loaded);
  * Returns whether it opened. */
 bool app_open(app_t *app, const char *path);
 
-/* PageDown (+1) and PageUp (-1): the next or previous scene of the list. */
+/* PageDown (+1) and PageUp (-1): the next or previous sample. */
 void app_cycle_scene(app_t *app, int step);
+
+/* Opens sample `index` of the list (a click in the SAMPLES panel). */
+void app_open_sample(app_t *app, size_t index);
 
 /* R: the open scene as it started (its file read again). */
 void app_reset_scene(app_t *app);

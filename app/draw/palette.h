@@ -58,6 +58,8 @@ static const palette_rgb_t PALETTE_SPRING = {200, 200, 210};
 static const palette_rgb_t PALETTE_OFF = {96, 101, 114};      /* an overlay that is off */
 static const palette_rgb_t PALETTE_RULE = {44, 48, 58};       /* lines between panels */
 static const palette_rgb_t PALETTE_GRAB = {255, 255, 255};
+/* The explosion tool's reach and a blast's ring. */
+static const palette_rgb_t PALETTE_BLAST = {255, 150, 40};
 /* The ring round the cursor inside which every axis and impulse is drawn. */
 static const palette_rgb_t PALETTE_FOCUS = {120, 126, 140};
 /* The INTEGRATOR panel's strip chart: the drift, its zero line, the marks

@@ -6,6 +6,8 @@
 #include "draw/draw.h"
 #include "draw/edge_markers.h"
 #include "draw/focus.h"
+#include "tools/explosion.h"
+#include "tools/tools.h"
 #include "draw/raster.h"
 
 #define MAX_VERTICES BATCH_MAX_POLYGON
@@ -71,8 +73,10 @@ static void draw_bodies(SDL_Renderer *renderer, SDL_Surface *canvas, app_t *app,
         if (!batch_polygon_visible(pixels, n, camera->width, camera->height)) continue;
         palette_rgb_t fill = rgb_of(body_get_color(body));
         if (dim_sleeping && body_is_sleeping(body)) fill = palette_sleeping(fill);
-        batch_outlined(&body_batch, pixels, n, fill,
-                       body == hovered ? PALETTE_GRAB : lighter(fill, 0.45));
+        palette_rgb_t outline = body == hovered              ? PALETTE_GRAB
+                                : body == app->sandbox.inspected ? PALETTE_ACCENT
+                                                                 : lighter(fill, 0.45);
+        batch_outlined(&body_batch, pixels, n, fill, outline);
     }
     raster_begin(renderer, canvas);
     raster_batch(&body_batch);
@@ -137,7 +141,7 @@ static void draw_throw(SDL_Renderer *renderer, vector_t from, vector_t velocity)
  * None in a game. */
 static void draw_preview(SDL_Renderer *renderer, app_t *app) {
     /* A player wants the field, not a shape hanging at the cursor. */
-    if (app->sandbox.game != NULL) return;
+    if (app->sandbox.game != NULL || app->tool != TOOL_DROP) return;
     if (!app->mouse_inside || app->next_vertices == NULL) return;
     if (app->drag != DRAG_NONE && app->drag != DRAG_THROW) return;
     if (!app_in_view(app, app->mouse)) return;
@@ -165,6 +169,27 @@ static void draw_preview(SDL_Renderer *renderer, app_t *app) {
     polygonRGBA(renderer, xs, ys, (int)n, c.r, c.g, c.b, 200);
     if (app->drag == DRAG_THROW) {
         draw_throw(renderer, camera_to_pixel(&app->camera, at), app_throw_velocity(app));
+    }
+}
+
+/* The explosion tool's reach round the cursor, and the last blast's ring
+ * growing from its centre to its radius as it fades. */
+static void draw_blast(SDL_Renderer *renderer, app_t *app) {
+    palette_rgb_t c = PALETTE_BLAST;
+    vector_t cursor = app->mouse;
+    if (app->tool == TOOL_EXPLODE && app->mouse_inside && app_in_view(app, cursor)) {
+        Sint16 r = draw_coord(EXPLOSION_RADIUS_PIXELS);
+        aacircleRGBA(renderer, draw_coord(cursor.x), draw_coord(cursor.y), r, c.r, c.g, c.b, 160);
+        aacircleRGBA(renderer, draw_coord(cursor.x), draw_coord(cursor.y), 3, c.r, c.g, c.b, 255);
+    }
+    if (!app->blast.shown) return;
+    double t = app->blast.age / TOOLS_BLAST_SECONDS;
+    vector_t at = camera_to_pixel(&app->camera, app->blast.centre);
+    double radius = camera_length_to_pixels(&app->camera, app->blast.radius) * (0.3 + 0.7 * t);
+    Uint8 alpha = (Uint8)lround(255.0 * fmax(0.0, 1.0 - t));
+    for (int k = 0; k < 3; k++) {
+        aacircleRGBA(renderer, draw_coord(at.x), draw_coord(at.y), draw_coord(radius - k), c.r,
+                     c.g, c.b, alpha);
     }
 }
 
@@ -400,6 +425,7 @@ double render_world(SDL_Renderer *renderer, SDL_Surface *canvas, app_t *app, bod
     double overlays_s = (double)(SDL_GetPerformanceCounter() - overlays_start) /
                         (double)SDL_GetPerformanceFrequency();
     draw_grab(renderer, app);
+    draw_blast(renderer, app);
     draw_preview(renderer, app);
     edge_markers_draw(renderer, canvas, app);
     return overlays_s;

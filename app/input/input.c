@@ -2,6 +2,7 @@
 #include <math.h>
 #include "scene/integrator_choice.h"
 #include "panels/ui.h"
+#include "tools/tools.h"
 
 static const double ELASTICITY_STEP = 0.05;
 static const double SIZE_FACTOR = 1.1;
@@ -36,13 +37,16 @@ const input_control_t INPUT_CONTROLS[] = {
     {"G", "gravity on / off"},
     {"N / Shift + N", "next / previous integrator (energy drift chart)"},
     {"C / R", "clear the bodies / reset the scene (read its file again)"},
-    {"PageDown / PageUp", "next / previous scene: the sandbox, then the presets"},
+    {"PageDown / PageUp", "next / previous sample (the SAMPLES page's order)"},
     {"Ctrl + S", "save the scene to a new ./saved-N.scene"},
     {"A .scene file dropped on the window", "open it"},
     {"Game: Left / Right, A / D", "move (instead of panning, the A and D keys)"},
     {"Game: Space", "fire (instead of pausing: pause with Enter)"},
     {"Ctrl + wheel, + / -", "zoom about the cursor"},
     {"Left / Right, Ctrl + arrows", "pan the view (in a game Ctrl + Left / Right)"},
+    {"K", "tool: explosion at a click (again: back to dropping)"},
+    {"L", "tool: inspect the body clicked (TOOLS page)"},
+    {"F2 F3 F4 F5", "side bar: PLAY, SAMPLES, SOLVER, TOOLS"},
     {"F", "frame every body"},
     {"0, Home", "the default view: the whole container or the file's view"},
     {"H, F1", "this help (a click closes it too)"},
@@ -61,9 +65,9 @@ body_t *input_hovered_body(app_t *app) {
 }
 
 static void add_sample(app_t *app) {
-    app->samples[app->sample_count % APP_MOTION_SAMPLES] =
+    app->motion[app->motion_count % APP_MOTION_SAMPLES] =
         (motion_sample_t){app->now, camera_to_world(&app->camera, app->mouse)};
-    app->sample_count++;
+    app->motion_count++;
 }
 
 /* Drops the next shape at `at` (moved clear of the floor and walls), or
@@ -390,6 +394,18 @@ static void on_key(app_t *app, const SDL_KeyboardEvent *key) {
     case SDLK_F1:
         app->show_help = !app->show_help;
         break;
+    case SDLK_F2:
+    case SDLK_F3:
+    case SDLK_F4:
+    case SDLK_F5:
+        app->page = (ui_page_t)(UI_PAGE_PLAY + (int)(sym - SDLK_F2));
+        break;
+    case SDLK_k:
+        tools_choose(app, TOOL_EXPLODE);
+        break;
+    case SDLK_l:
+        tools_choose(app, TOOL_INSPECT);
+        break;
     case SDLK_ESCAPE:
         if (app->show_help) app->show_help = false;
         else app->quit = true;
@@ -420,6 +436,8 @@ static void on_button_down(app_t *app, const SDL_MouseButtonEvent *button) {
     if (button->button == SDL_BUTTON_LEFT) {
         if (app->mods & KMOD_CTRL) {
             delete_hovered(app);
+        } else if (app->tool != TOOL_DROP) {
+            tools_click(app, world);
         } else if (app->mods & KMOD_SHIFT) {
             app->drag = DRAG_THROW;
             add_sample(app);

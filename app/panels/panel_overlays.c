@@ -10,7 +10,7 @@
 #include "panels/text.h"
 #include "panels/ui_section.h"
 
-#define ROW_H (DRAW_LINE_H + 1)
+#define ROW_H DRAW_LINE_H
 
 static palette_rgb_t overlay_color(overlay_t overlay) {
     switch (overlay) {

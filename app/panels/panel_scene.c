@@ -11,7 +11,7 @@ static void draw_scene(SDL_Renderer *renderer, app_t *app, body_t *hovered, SDL_
     const sandbox_t *sandbox = &app->sandbox;
     int y = r.y + 2;
     char position[SCENE_TEXT_SIZE];
-    scene_text_position(app->scene_index, presets_scene_count(&app->presets), position);
+    scene_text_position(app->scene_index, samples_count(&app->samples), position);
     int position_x = r.x + r.w - (int)strlen(position) * DRAW_CHAR_W;
     char name[SANDBOX_NAME_MAX];
     memcpy(name, sandbox->name, sizeof(name));

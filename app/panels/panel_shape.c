@@ -5,7 +5,7 @@
 #include "draw/draw.h"
 #include "panels/ui_section.h"
 
-#define ICON_RADIUS 15
+#define ICON_RADIUS 10
 
 static void draw_icon(SDL_Renderer *renderer, app_t *app, int cx, int cy, int radius) {
     list_t *vertices = app->next_vertices;

@@ -7,38 +7,67 @@
 #include <math.h>
 #include "draw/layer.h"
 
-/* The side bar, top to bottom. A new panel goes here. */
-static const ui_section_t *const SECTIONS[] = {
-    &UI_STATUS, &UI_STATS, &UI_SHAPE, &UI_ELASTICITY, &UI_OVERLAYS, &UI_INTEGRATOR, &UI_SCENE,
-};
-#define SECTION_COUNT (sizeof(SECTIONS) / sizeof(SECTIONS[0]))
+/* The side bar, top to bottom: the status line and the tabs, then the
+ * panels of the page shown (F2 to F5, or a click on its tab). A new panel
+ * goes in a page's list. */
+static const ui_section_t *const TOP[] = {&UI_STATUS, &UI_TABS};
+static const ui_section_t *const PLAY[] = {&UI_STATS,     &UI_SHAPE,      &UI_ELASTICITY,
+                                           &UI_OVERLAYS,  &UI_INTEGRATOR, &UI_SCENE};
+static const ui_section_t *const SAMPLES[] = {&UI_SAMPLES};
+static const ui_section_t *const SOLVER[] = {&UI_SOLVER, &UI_WORLD};
+static const ui_section_t *const TOOLS[] = {&UI_TOOLS, &UI_INSPECTOR, &UI_PLOT};
+
+typedef struct {
+    const ui_section_t *const *sections;
+    size_t count;
+} page_list_t;
+
+#define LIST(a) {a, sizeof(a) / sizeof(a[0])}
+static const page_list_t PAGES[UI_PAGE_COUNT] = {LIST(PLAY), LIST(SAMPLES), LIST(SOLVER),
+                                                 LIST(TOOLS)};
+#define TOP_COUNT (sizeof(TOP) / sizeof(TOP[0]))
+#define MAX_SECTIONS 16
 
 #define GAP 7     /* between panels, a rule at its middle */
 #define TITLE_H (DRAW_LINE_H + 3)
+
+/* The sections shown now, top to bottom. */
+static size_t shown(const app_t *app, const ui_section_t *out[MAX_SECTIONS]) {
+    size_t n = 0;
+    for (size_t i = 0; i < TOP_COUNT; i++) out[n++] = TOP[i];
+    const page_list_t *page = &PAGES[app->page < UI_PAGE_COUNT ? app->page : 0];
+    for (size_t i = 0; i < page->count && n < MAX_SECTIONS; i++) out[n++] = page->sections[i];
+    return n;
+}
 
 /* A panel's whole area (title and content) and its content, stacked. */
 typedef struct {
     SDL_Rect whole, content;
 } placed_t;
 
-static placed_t place(const app_t *app, size_t index) {
+static placed_t place(const app_t *app, const ui_section_t *const *sections, size_t index) {
     layout_rect_t bar = app->layout.panels;
     int y = bar.y + LAYOUT_PAD;
     placed_t placed = {{0, 0, 0, 0}, {0, 0, 0, 0}};
     for (size_t i = 0; i <= index; i++) {
-        const ui_section_t *s = SECTIONS[i];
+        const ui_section_t *s = sections[i];
         int title = s->title != NULL ? TITLE_H : 0;
-        placed.whole = (SDL_Rect){bar.x, y - GAP / 2, bar.w, title + s->height + GAP};
+        /* Height 0: the rest of the side bar. */
+        int height = s->height > 0 ? s->height : bar.y + bar.h - LAYOUT_PAD - y - title;
+        if (height < 0) height = 0;
+        placed.whole = (SDL_Rect){bar.x, y - GAP / 2, bar.w, title + height + GAP};
         placed.content = (SDL_Rect){bar.x + LAYOUT_PAD, y + title, bar.w - 2 * LAYOUT_PAD,
-                                    s->height};
-        y += title + s->height + GAP;
+                                    height};
+        y += title + height + GAP;
     }
     return placed;
 }
 
 SDL_Rect ui_section_content(const app_t *app, const ui_section_t *section) {
-    for (size_t i = 0; i < SECTION_COUNT; i++) {
-        if (SECTIONS[i] == section) return place(app, i).content;
+    const ui_section_t *sections[MAX_SECTIONS];
+    size_t n = shown(app, sections);
+    for (size_t i = 0; i < n; i++) {
+        if (sections[i] == section) return place(app, sections, i).content;
     }
     return (SDL_Rect){0, 0, 0, 0};
 }
@@ -56,10 +85,12 @@ vector_t ui_to_panels(const app_t *app, vector_t pixel) {
 
 drag_t ui_press(app_t *app, vector_t window_pixel) {
     vector_t pixel = ui_to_panels(app, window_pixel);
-    for (size_t i = 0; i < SECTION_COUNT; i++) {
-        placed_t placed = place(app, i);
-        if (SECTIONS[i]->press != NULL && ui_rect_contains(placed.whole, pixel, 0)) {
-            return SECTIONS[i]->press(app, placed.content, pixel);
+    const ui_section_t *sections[MAX_SECTIONS];
+    size_t n = shown(app, sections);
+    for (size_t i = 0; i < n; i++) {
+        placed_t placed = place(app, sections, i);
+        if (sections[i]->press != NULL && ui_rect_contains(placed.whole, pixel, 0)) {
+            return sections[i]->press(app, placed.content, pixel);
         }
     }
     return DRAG_NONE;
@@ -71,9 +102,11 @@ static void draw_sidebar(SDL_Renderer *renderer, app_t *app, body_t *hovered) {
     draw_panel(renderer, bar.x, bar.y, bar.w, bar.h, PALETTE_PANEL, 255);
     vlineRGBA(renderer, draw_coord(bar.x), draw_coord(bar.y), draw_coord(bar.y + bar.h - 1),
               PALETTE_RULE.r, PALETTE_RULE.g, PALETTE_RULE.b, 255);
-    for (size_t i = 0; i < SECTION_COUNT; i++) {
-        const ui_section_t *s = SECTIONS[i];
-        placed_t placed = place(app, i);
+    const ui_section_t *sections[MAX_SECTIONS];
+    size_t n = shown(app, sections);
+    for (size_t i = 0; i < n; i++) {
+        const ui_section_t *s = sections[i];
+        placed_t placed = place(app, sections, i);
         if (i > 0) {
             hlineRGBA(renderer, draw_coord(bar.x + LAYOUT_PAD),
                       draw_coord(bar.x + bar.w - 1 - LAYOUT_PAD), draw_coord(placed.whole.y),

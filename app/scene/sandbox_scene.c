@@ -56,6 +56,9 @@ static void grab_force(void *aux) {
  * drop inside the left wall"). */
 const char SANDBOX_DEFAULT_SCENE[] =
     "# The sandbox's default scene: an open container, a floor and two walls.\n"
+    "category Basics\n"
+    "note an empty box: click to drop shapes, Shift-drag to throw them, right-drag to "
+    "pull one\n"
     "gravity 0 -10\n"
     "contacts on\n"
     "timestep 1/120\n"
@@ -140,6 +143,9 @@ void sandbox_show(sandbox_t *sandbox, sandbox_loaded_t *loaded, bool keep_integr
 
     scene_t *scene = sandbox->scene;
     sandbox->step = scene_file_get_timestep(sandbox->file);
+    sandbox->file_step = sandbox->step;
+    sandbox->tick = sandbox->step;
+    sandbox->stepping = scene_file_get_stepping(sandbox->file);
     scene_file_view_t view = scene_file_get_view(sandbox->file);
     if (view.has_view) {
         vector_t half = {0.5 * view.width, 0.5 * view.height};
@@ -157,13 +163,13 @@ void sandbox_show(sandbox_t *sandbox, sandbox_loaded_t *loaded, bool keep_integr
     sandbox->grab = (grab_t){0};
     sandbox->grab.gravity = gravity;
     sandbox->input = (game_input_t){0};
-    if (!keep_integrator) {
-        sandbox->integrator = sandbox->is_default ? sandbox->default_integrator
-                                                  : scene_get_integrator(scene);
-    }
+    sandbox->file_integrator = sandbox->is_default ? sandbox->default_integrator
+                                                   : scene_get_integrator(scene);
+    if (!keep_integrator) sandbox->integrator = sandbox->file_integrator;
     scene_set_integrator(scene, sandbox->integrator);
     scene_set_sleeping(scene, sandbox->sleeping_on);
-    scene_set_workers(scene, SANDBOX_WORKERS);
+    size_t workers = scene_file_get_workers(sandbox->file);
+    scene_set_workers(scene, workers != 0 ? workers : SANDBOX_WORKERS);
     sandbox->rng = sandbox->seed * 2654435769ULL + 0x9E3779B97F4A7C15ULL;
     if (sandbox->rng == 0) sandbox->rng = 1;
     sandbox->next_color = 0;
@@ -203,6 +209,7 @@ void sandbox_free(sandbox_t *sandbox) {
     sandbox->file = NULL;
     sandbox->scene = NULL;
     sandbox->grab.body = NULL;
+    sandbox->inspected = NULL;
 }
 
 bool sandbox_reset(sandbox_t *sandbox, char *error, size_t error_size) {
@@ -309,8 +316,7 @@ void sandbox_body_words(sandbox_t *sandbox, body_t *body, char *out, size_t size
     }
 }
 
-/* The topmost body (the last added) containing point, static or not. */
-static body_t *any_body_at(sandbox_t *sandbox, vector_t point) {
+body_t *sandbox_any_body_at(sandbox_t *sandbox, vector_t point) {
     for (size_t i = scene_bodies(sandbox->scene); i-- > 0;) {
         body_t *body = scene_get_body(sandbox->scene, i);
         if (!body_is_removed(body) && body_contains_point(body, point)) return body;
@@ -325,7 +331,7 @@ double sandbox_world_floor(const sandbox_t *sandbox) {
 const char *sandbox_place(sandbox_t *sandbox, list_t *vertices, vector_t at, vector_t *placed) {
     *placed = at;
     if (!vec_is_finite(at)) return "not a finite position";
-    body_t *body = any_body_at(sandbox, at);
+    body_t *body = sandbox_any_body_at(sandbox, at);
     if (body != NULL) {
         char name[SCENE_FILE_NAME_MAX + 8];
         sandbox_body_words(sandbox, body, name, sizeof(name));
@@ -430,6 +436,7 @@ body_t *sandbox_body_at(sandbox_t *sandbox, vector_t point) {
 void sandbox_delete(sandbox_t *sandbox, body_t *body) {
     if (body == NULL || sandbox_is_static(body)) return;
     if (sandbox->grab.body == body) sandbox->grab.body = NULL;
+    if (sandbox->inspected == body) sandbox->inspected = NULL;
     if (!body_is_removed(body)) sandbox->changes++;
     body_remove(body);
 }
@@ -471,6 +478,29 @@ void sandbox_set_sleeping(sandbox_t *sandbox, bool on) {
     scene_set_sleeping(sandbox->scene, on);
 }
 
+bool sandbox_set_iterations(sandbox_t *sandbox, size_t velocity, size_t position) {
+    return scene_file_set_iterations(sandbox->file, velocity, position);
+}
+
+bool sandbox_set_workers(sandbox_t *sandbox, size_t workers) {
+    if (workers < 1 || workers > SCENE_MAX_WORKERS) return false;
+    scene_set_workers(sandbox->scene, workers);
+    return true;
+}
+
+bool sandbox_set_timestep(sandbox_t *sandbox, double step) {
+    if (!scene_file_set_timestep(sandbox->file, step)) return false;
+    sandbox->step = step;
+    sandbox->tick = step;
+    return true;
+}
+
+void sandbox_set_stepping(sandbox_t *sandbox, scene_file_stepping_t stepping) {
+    scene_file_set_stepping(sandbox->file, stepping);
+    sandbox->stepping = scene_file_get_stepping(sandbox->file);
+    sandbox->tick = sandbox->step;
+}
+
 /* Whether body is still in the scene (not reaped). */
 static bool in_scene(scene_t *scene, body_t *body) {
     for (size_t i = 0; i < scene_bodies(scene); i++) {
@@ -506,16 +536,19 @@ static void remove_escaped(sandbox_t *sandbox) {
 
 void sandbox_step(sandbox_t *sandbox) {
     scene_t *scene = sandbox->scene;
-    scene_tick(scene, sandbox->step);
+    scene_tick(scene, sandbox->tick);
     /* A collision may have removed the grabbed body in this tick, which then
      * reaped it (a destructive collision): let go of it before anything
      * else can be added where it was. */
     if (sandbox->grab.body != NULL && !in_scene(scene, sandbox->grab.body)) {
         sandbox->grab.body = NULL;
     }
+    if (sandbox->inspected != NULL && !in_scene(scene, sandbox->inspected)) {
+        sandbox->inspected = NULL;
+    }
     /* The game reads the step's record, then applies the input for the next
      * step (game.h). */
-    game_update(sandbox->game, sandbox->input, sandbox->step);
+    game_update(sandbox->game, sandbox->input, sandbox->tick);
     remove_escaped(sandbox);
     if (sandbox->grab.body != NULL && body_is_removed(sandbox->grab.body)) {
         sandbox->grab.body = NULL; /* the game removed it */

@@ -77,7 +77,12 @@ typedef struct {
     bool is_default;     /* the built-in default scene is open */
     char path[SANDBOX_PATH_MAX]; /* the file it was read from; "" for the default */
     char name[SANDBOX_NAME_MAX]; /* "sandbox", or the file's name without .scene */
-    double step;         /* the file's timestep (s): every physics step is this long */
+    double step;         /* the file's timestep (s): every fixed step is this long */
+    double file_step;    /* the timestep the file was read with (the settings' default) */
+    /* The length of the next steps (s): `step`, or with frame stepping the
+     * frame's (set by the caller before sandbox_step). */
+    double tick;
+    scene_file_stepping_t stepping; /* fixed steps, or one step a frame (the file's, changed live) */
     /* The open box the bodies play in: in the default scene between the
      * walls' inner faces, from the floor's top to the walls' top; in a file,
      * its view. The world's floor is SANDBOX_KILL_DEPTH below it; spawned
@@ -87,6 +92,7 @@ typedef struct {
      * its container with the floor and walls, and half a metre around). */
     aabb_t home;
     grab_t grab;
+    body_t *inspected; /* the body the inspector shows, NULL for none (let go as the grab is) */
     char refusal[128]; /* sandbox_place's last reason */
     /* The bodies the sandbox removed for leaving the world (sandbox_step):
      * how many since the start, the last one in words ("the weight", "a
@@ -105,6 +111,7 @@ typedef struct {
      * the default scene opens with (--integrator, else seed). */
     integrator_t integrator;
     integrator_t default_integrator;
+    integrator_t file_integrator; /* the file's own (the default scene's: default_integrator) */
     bool sleeping_on;        /* resting bodies sleep (the engine's default: on) */
     /* Moves whenever a body is added or removed (dropped, deleted, cleared,
      * fallen out, spawned or destroyed by a game, the scene replaced): the
@@ -202,6 +209,10 @@ body_t *sandbox_body_at(sandbox_t *sandbox, vector_t point);
 /* Removes a dynamic body (letting go of it first if it is grabbed). */
 void sandbox_delete(sandbox_t *sandbox, body_t *body);
 
+/* The topmost body (the last added) that contains point, static or not,
+ * or NULL. */
+body_t *sandbox_any_body_at(sandbox_t *sandbox, vector_t point);
+
 /* Whether body is static (infinite mass: the floor, the walls, bricks). */
 bool sandbox_is_static(body_t *body);
 
@@ -221,7 +232,16 @@ void sandbox_set_integrator(sandbox_t *sandbox, integrator_t integrator);
  * later; off wakes every body. */
 void sandbox_set_sleeping(sandbox_t *sandbox, bool on);
 
-/* One physics step of sandbox->step seconds, then the game's rules with
+/* The solver's settings of the open scene, changed live and kept in its
+ * file so that saving writes them (scene_file.h): the iterations (each in
+ * [1, 1000]), the workers (1 to SCENE_MAX_WORKERS), the timestep (0 to 10
+ * s) and the stepping. False, nothing changed, when a value is refused. */
+bool sandbox_set_iterations(sandbox_t *sandbox, size_t velocity, size_t position);
+bool sandbox_set_workers(sandbox_t *sandbox, size_t workers);
+bool sandbox_set_timestep(sandbox_t *sandbox, double step);
+void sandbox_set_stepping(sandbox_t *sandbox, scene_file_stepping_t stepping);
+
+/* One physics step of sandbox->tick seconds, then the game's rules with
  * sandbox->input; then removes the bodies that left the world (counted in
  * sandbox->removed). */
 void sandbox_step(sandbox_t *sandbox);

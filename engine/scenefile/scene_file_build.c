@@ -434,6 +434,7 @@ static void apply_settings(scene_file_t *file) {
     scene_set_integrator(file->scene, s->integrator);
     scene_set_solver_iterations(file->scene, s->velocity_iterations, s->position_iterations);
     scene_set_sleeping(file->scene, s->sleeping);
+    if (s->workers != 0) scene_set_workers(file->scene, s->workers);
 }
 
 bool sf_build(scene_file_t *file, sf_lexer_t *lexer) {

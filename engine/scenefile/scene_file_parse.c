@@ -295,8 +295,54 @@ static bool first_time(parser_t *p, sf_where_t *seen, const char *keyword, sf_wh
     return true;
 }
 
+/* Words up to the end of the statement, joined by one space, at most max
+ * bytes: a category or a note. */
+static bool read_text(parser_t *p, const char *what, size_t max, char *out) {
+    size_t length = 0;
+    if (p->token.kind != TOKEN_WORD) return expected(p, what);
+    while (p->token.kind == TOKEN_WORD) {
+        size_t add = p->token.length + (length > 0);
+        if (length + add > max) {
+            return sf_fail(p->lexer, p->token.where,
+                           "expected %s of at most %zu characters, found more", what, max);
+        }
+        if (length > 0) out[length++] = ' ';
+        memcpy(out + length, p->token.text, p->token.length);
+        length += p->token.length;
+        next(p);
+    }
+    out[length] = '\0';
+    return true;
+}
+
 static bool parse_setting(parser_t *p, const char *keyword, sf_where_t here) {
     sf_settings_t *s = &p->doc->settings;
+    if (strcmp(keyword, "workers") == 0) {
+        uint64_t workers = 0;
+        if (!first_time(p, &s->workers_where, keyword, here) ||
+            !read_count(p, "the workers", 1, SCENE_MAX_WORKERS, &workers))
+            return false;
+        s->workers = (size_t)workers;
+        return true;
+    }
+    if (strcmp(keyword, "stepping") == 0) {
+        if (!first_time(p, &s->stepping_where, keyword, here)) return false;
+        if (sf_token_is(&p->token, "fixed") || sf_token_is(&p->token, "frame")) {
+            s->stepping = sf_token_is(&p->token, "frame") ? SCENE_FILE_STEP_FRAME
+                                                          : SCENE_FILE_STEP_FIXED;
+            next(p);
+            return true;
+        }
+        return expected(p, "fixed or frame (the stepping)");
+    }
+    if (strcmp(keyword, "category") == 0) {
+        return first_time(p, &s->category_where, keyword, here) &&
+               read_text(p, "the category's name", SCENE_FILE_CATEGORY_MAX, s->category);
+    }
+    if (strcmp(keyword, "note") == 0) {
+        return first_time(p, &s->note_where, keyword, here) &&
+               read_text(p, "the note's text", SCENE_FILE_NOTE_MAX, s->note);
+    }
     if (strcmp(keyword, "gravity") == 0) {
         return first_time(p, &s->gravity_where, keyword, here) &&
                read_vector(p, &GRAVITY, &s->gravity);
@@ -1071,7 +1117,8 @@ static bool parse_contact(parser_t *p, sf_where_t here) {
 
 static const char *const SETTINGS[] = {"gravity",  "contacts", "integrator", "iterations",
                                        "timestep", "view",     "game",       "sleeping",
-                                       "sleep_phase", "step_lengths"};
+                                       "sleep_phase", "step_lengths", "workers", "stepping",
+                                       "category", "note"};
 static const char *const FORCES[] = {"spring", "newton", "drag", "collide"};
 
 static bool parse_one(parser_t *p) {
@@ -1112,7 +1159,8 @@ static bool parse_one(parser_t *p) {
     if (p->token.kind == TOKEN_BAD_BYTE) return expected(p, "text");
     return expected(p, "a statement (body, template, group, gravity, contacts, integrator, "
                        "iterations, timestep, view, game, sleeping, sleep_phase, step_lengths, "
-                       "spring, newton, drag, collide, contact)");
+                       "workers, stepping, category, note, spring, newton, drag, collide, "
+                       "contact)");
 }
 
 bool sf_parse(sf_lexer_t *lexer, sf_doc_t *doc) {

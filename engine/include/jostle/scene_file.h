@@ -100,6 +100,41 @@ scene_file_view_t scene_file_get_view(const scene_file_t *file);
  * live with the caller (the sandbox's app/games/). */
 const char *scene_file_get_game(const scene_file_t *file);
 
+/* The solver's iterations the file asks for (`iterations V P`; 8 and 4
+ * when it gives none), and a change of them: the scene's
+ * (scene_set_solver_iterations) and the file's at once, so that
+ * scene_file_write writes them. False, nothing changed, outside [1, 1000]. */
+void scene_file_get_iterations(const scene_file_t *file, size_t *velocity, size_t *position);
+bool scene_file_set_iterations(scene_file_t *file, size_t velocity, size_t position);
+
+/* A new `timestep` (s), as scene_file_get_timestep then gives it and the
+ * writer writes it; the file does not step the scene, its caller does.
+ * False, nothing changed, unless 0 < timestep <= 10. */
+bool scene_file_set_timestep(scene_file_t *file, double timestep);
+
+/* The workers the file asks for (`workers N`, 1 to SCENE_MAX_WORKERS: the
+ * scene is built with scene_set_workers(N)); 0 when it gives none. The
+ * writer writes the scene's count (scene_get_workers) when it is not 1 or
+ * the file gave one. */
+size_t scene_file_get_workers(const scene_file_t *file);
+
+/* How the program running the file is asked to step it (`stepping fixed`,
+ * the default: steps of the timestep; `stepping frame`: one step a frame,
+ * as long as the frame). The file does not step the scene; the sandbox
+ * reads this. */
+typedef enum { SCENE_FILE_STEP_FIXED = 0, SCENE_FILE_STEP_FRAME } scene_file_stepping_t;
+scene_file_stepping_t scene_file_get_stepping(const scene_file_t *file);
+void scene_file_set_stepping(scene_file_t *file, scene_file_stepping_t stepping);
+
+/* What a sample says about itself (`category WORDS`, `note WORDS`): the
+ * words up to the end of the statement, joined by one space; "" when the
+ * file gives none. The sandbox lists its samples by category with their
+ * notes. At most SCENE_FILE_CATEGORY_MAX and SCENE_FILE_NOTE_MAX bytes. */
+#define SCENE_FILE_CATEGORY_MAX 40
+#define SCENE_FILE_NOTE_MAX 200
+const char *scene_file_get_category(const scene_file_t *file);
+const char *scene_file_get_note(const scene_file_t *file);
+
 /* The body the file named `name` (a `body NAME { ... }` without repeat), NULL
  * when there is none or the scene has freed it. A body marked removed but not
  * yet freed is returned (body_is_removed tells). */
