@@ -6,6 +6,7 @@
 # make report     numerical error against run time (docs/accuracy.md)
 # make stability  stiff and extreme cases beside theory and the peers (docs/stability.md)
 # make tsan       the threaded tests (scene_set_workers) under ThreadSanitizer
+# make house      docs/house.png: the engine's files by layer, drawn from tests/check_house.sh
 
 # Every build uses all cores unless the command line says otherwise (make -j1).
 ifeq ($(filter -j%,$(MAKEFLAGS)),)
@@ -136,6 +137,37 @@ tsan: build/tsan/engine_tests
 		TSAN_OPTIONS="halt_on_error=1 exitcode=66 second_deadlock_stack=1" \
 			build/tsan/engine_tests $$suite || exit 1; \
 	done
+
+# make house: docs/house.png, the engine's house (which file uses which, by
+# layer) drawn from tests/check_house.sh --dot with Graphviz's dot; and
+# docs/pipeline.png from docs/pipeline.dot. Both need the Debian package
+# graphviz, which graphviz-deps installs quietly when it is missing.
+GRAPHVIZ_APT := graphviz
+.PHONY: house graphviz-deps
+graphviz-deps:
+	@if ! command -v dot >/dev/null 2>&1; then \
+	    if [ "$$(id -u)" = 0 ]; then \
+	        mkdir -p build; \
+	        echo "make: installing $(GRAPHVIZ_APT) (dot, which draws the docs' diagrams) with apt-get; log in build/apt.log"; \
+	        if DEBIAN_FRONTEND=noninteractive apt-get -qq update >build/apt.log 2>&1 && \
+	           DEBIAN_FRONTEND=noninteractive apt-get -qq install -y --no-install-recommends $(GRAPHVIZ_APT) >>build/apt.log 2>&1; then \
+	            echo "make: installed."; \
+	        else \
+	            tail -n 20 build/apt.log; echo "make: apt-get failed (build/apt.log has the whole log)"; exit 1; \
+	        fi; \
+	    else \
+	        echo "The diagrams need Graphviz's dot. Install it with:"; \
+	        echo "    sudo apt-get install -y $(GRAPHVIZ_APT)"; \
+	        exit 1; \
+	    fi; \
+	fi
+
+house: graphviz-deps build/libjostle.a
+	tests/check_house.sh --dot > build/house.dot
+	dot -Tpng build/house.dot -o docs/house.png
+
+docs/pipeline.png: docs/pipeline.dot | graphviz-deps
+	dot -Tpng $< -o $@
 
 # make install: the public headers (PREFIX/include/jostle/), the static and
 # shared libraries with its soname link (PREFIX/lib/), jostle.pc

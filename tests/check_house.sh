@@ -7,7 +7,8 @@
 #
 #   tests/check_house.sh [OBJDIR]         the checks (OBJDIR: build/engine)
 #   tests/check_house.sh --dot [OBJDIR]   the graph in Graphviz's dot language
-# The objects must have been built from the sources (make build/libengine.a).
+# The objects must have been built from the sources (make build/libjostle.a).
+# make house draws the graph into docs/house.png.
 objdir=build/engine
 mode=check
 [ "$1" = "--dot" ] && { mode=dot; shift; }
@@ -49,14 +50,40 @@ done >> "$tmp/edges"
 sort -u "$tmp/edges" -o "$tmp/edges"
 
 if [ "$mode" = dot ]; then
+    # Drawn top to bottom from the highest layer to base, each folder a
+    # cluster on a band of its own (invisible edges between the bands keep
+    # every file of a layer above the next one down); an arrow points from a
+    # file to what it uses, dark within a folder, lighter between folders;
+    # base/, which every layer uses, gets one faint arrow from each folder.
     echo "digraph house {"
-    echo "  rankdir=BT; node [shape=box, style=rounded, fontname=Helvetica, fontsize=10];"
+    echo "  rankdir=TB; newrank=true; ranksep=0.32; nodesep=0.12; compound=true;"
+    echo "  graph [fontname=Helvetica, fontsize=12, bgcolor=white, labelloc=t, label=\"engine/src: an arrow goes from a file to a file it uses (calls, or includes its private header); layers from engine/src/LAYERS, lowest at the bottom\"];"
+    echo "  node [shape=box, style=\"rounded,filled\", fillcolor=\"#eef3fb\", color=\"#4a6fa5\", fontname=Helvetica, fontsize=10, height=0.3];"
+    echo "  edge [arrowsize=0.6];"
     for l in $layers; do
-        echo "  subgraph cluster_$l { label=\"$l/\"; fontname=Helvetica; color=\"#9aa9c2\";"
+        echo "  subgraph cluster_$l { label=\"$l/\"; labeljust=l; labelloc=t; fontname=\"Helvetica-Bold\"; color=\"#9aa9c2\"; style=rounded;"
         awk -v l="$l" '$2 == l {printf "    \"%s\";\n", $1}' "$tmp/folders"
+        echo "    \"band_$l\" [style=invis, label=\"\", width=0, height=0];"
         echo "  }"
     done
-    awk '{printf "  \"%s\" -> \"%s\";\n", $1, $2}' "$tmp/edges"
+    # the bands, highest layer first: band_L above every file of L, each
+    # file of L above the band of the layer below
+    echo "$layers" | awk 'NF {l[++n] = $1} END {for (i = n; i > 1; i--) printf "  \"band_%s\" -> \"band_%s\" [style=invis];\n", l[i], l[i - 1]}'
+    echo "$layers" | awk 'NF {l[++n] = $1} END {for (i = 2; i <= n; i++) print l[i], l[i - 1]}' > "$tmp/below"
+    awk 'NR == FNR {below[$1] = $2; next} $2 != "." {
+            printf "  \"band_%s\" -> \"%s\" [style=invis];\n", $2, $1
+            if ($2 in below) printf "  \"%s\" -> \"band_%s\" [style=invis];\n", $1, below[$2]
+        }' "$tmp/below" "$tmp/folders"
+    # arrows between files, but into base/ one arrow per folder
+    awk 'NR == FNR {folder[$1] = $2; if (!($2 in first)) first[$2] = $1; next}
+        folder[$1] != "base" && folder[$2] == "base" {
+            if (!(folder[$1] in drawn)) printf "  \"%s\" -> \"%s\" [ltail=cluster_%s, lhead=cluster_base, color=\"#b4bccb\"];\n", first[folder[$1]], first["base"], folder[$1]
+            drawn[folder[$1]] = 1; next
+        }
+        {
+            style = folder[$1] == folder[$2] ? "color=\"#27406b\"" : "color=\"#7d98c4\""
+            printf "  \"%s\" -> \"%s\" [%s];\n", $1, $2, style
+        }' "$tmp/folders" "$tmp/edges"
     echo "}"
     exit 0
 fi

@@ -30,6 +30,9 @@ typedef enum {
     /* The orbit scene of docs/bench-scenes.md: G = 1, 1000 kg at the
      * origin, 1 kg at (10, 0) with velocity (0, 10). */
     REFERENCE_ORBIT,
+    /* REFERENCE_KEPLER at eccentricity 0.9 (pericentre 0.1, apocentre
+     * 1.9): a hundred times faster at pericentre than at apocentre. */
+    REFERENCE_KEPLER_ECCENTRIC,
     REFERENCE_COUNT,
 } reference_scene_t;
 
@@ -48,6 +51,10 @@ typedef struct {
      * elsewhere. */
     double momentum_drift;
     long steps;
+    /* Passes over the force creators over the run (scene_stats_t). */
+    long evaluations;
+    /* The centroid of the body the error is measured on, at the end. */
+    vector_t end_centroid;
     /* The state left any sane bound (energy a million times the start's,
      * or not finite): the run stopped there. */
     bool diverged;
@@ -66,6 +73,39 @@ double reference_period(reference_scene_t scene);
  * steps of h under the integrator. */
 reference_result_t reference_run(reference_scene_t scene, integrator_t integrator, double h,
                                  double periods);
+
+/*
+ * One run, for a caller that times the steps apart from the measuring
+ * (docs/accuracy.md): reference_start builds the scene at t = 0, the caller
+ * ticks reference_get_scene's scene by h, and reference_measure compares
+ * its state with the exact answer at time t. Not for the bounce, whose
+ * error is read along the run (reference_run).
+ */
+typedef struct reference_sim reference_sim_t;
+
+typedef struct {
+    /* As reference_result_t's error, at t. */
+    double error;
+    /* Position alone: the distance to the exact position over the
+     * amplitude (semi-major axis), the phase error once it is large. */
+    double position_error;
+    /* E / E0 - 1 and L / L0 - 1 (total angular momentum) at t, signed;
+     * NAN where not conserved (drag) or zero (the oscillator's L). */
+    double energy_error, momentum_error;
+} reference_state_t;
+
+reference_sim_t *reference_start(reference_scene_t scene, integrator_t integrator, double h);
+scene_t *reference_get_scene(reference_sim_t *sim);
+reference_state_t reference_measure(reference_sim_t *sim, double t);
+/* E / E0 - 1 and L / L0 - 1 now, cheaply (no exact answer); NAN as above. */
+void reference_invariants(reference_sim_t *sim, double *energy_error, double *momentum_error);
+/* The centroid of the body the error is measured on, for checking that
+ * two runs ended in the same state. */
+vector_t reference_tracked_centroid(reference_sim_t *sim);
+void reference_finish(reference_sim_t *sim);
+
+/* The steps of a run of `periods` periods at step h (not the bounce's). */
+long reference_steps(reference_scene_t scene, double h, double periods);
 
 /* Kepler's problem for the relative position r and velocity v of two
  * bodies with mu = G (m1 + m2), on an ellipse: r and v after time t. */

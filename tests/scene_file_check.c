@@ -1,5 +1,6 @@
 #include "scene_file_check.h"
 #include <stdarg.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -128,6 +129,19 @@ typedef struct {
     long body1, body2;
 } indexed_force_t;
 
+/* The scene's bodies sorted by address, to find a body's index in
+ * O(log N): a file whose rules pair every body (collide g all) lists
+ * N^2 / 2 forces, and a scan per force made checking it quadratic in that. */
+typedef struct {
+    uintptr_t address;
+    long index;
+} body_index_t;
+
+static int compare_addresses(const void *p, const void *q) {
+    const body_index_t *a = p, *b = q;
+    return (a->address > b->address) - (a->address < b->address);
+}
+
 static long index_of(scene_t *scene, body_t *body) {
     if (body == NULL) return -1;
     for (size_t i = 0; i < scene_bodies(scene); i++) {
@@ -136,15 +150,30 @@ static long index_of(scene_t *scene, body_t *body) {
     return -2;
 }
 
+static long sorted_index_of(const body_index_t *sorted, size_t count, body_t *body) {
+    if (body == NULL) return -1;
+    body_index_t key = {(uintptr_t)body, 0};
+    const body_index_t *found = bsearch(&key, sorted, count, sizeof key, compare_addresses);
+    return found != NULL ? found->index : -2;
+}
+
 static indexed_force_t *indexed_forces(scene_file_t *file, size_t *count) {
     *count = scene_file_force_count(file);
     indexed_force_t *forces = malloc((*count + 1) * sizeof *forces);
     scene_t *scene = scene_file_get_scene(file);
+    size_t bodies = scene_bodies(scene);
+    body_index_t *sorted = malloc((bodies + 1) * sizeof *sorted);
+    for (size_t i = 0; i < bodies; i++) {
+        sorted[i] = (body_index_t){(uintptr_t)scene_get_body(scene, i), (long)i};
+    }
+    qsort(sorted, bodies, sizeof *sorted, compare_addresses);
     for (size_t i = 0; i < *count; i++) {
         scene_file_force_t f = scene_file_get_force(file, i);
         forces[i] = (indexed_force_t){(int)f.kind, f.constant, f.rest_length,
-                                      index_of(scene, f.body1), index_of(scene, f.body2)};
+                                      sorted_index_of(sorted, bodies, f.body1),
+                                      sorted_index_of(sorted, bodies, f.body2)};
     }
+    free(sorted);
     return forces;
 }
 

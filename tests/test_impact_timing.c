@@ -271,7 +271,7 @@ static void check_cradle(int sides, double gap, double rate) {
  * 40-gons, at 60 Hz (every meeting within one step) and at 1 kHz (with
  * 1 mm gaps the meetings, 0.5 ms apart, fall in successive steps). Before
  * the collision pass bounced a point that its own impulses sent into the
- * surface (solver.c, late_impact), a 0.1 micrometre gap lost 18% of the
+ * surface (collision_pass.c, late_impact), a 0.1 micrometre gap lost 18% of the
  * energy and a 1 mm gap 80% (the newtons_cradle preset, 21214e3).
  */
 static void newtons_cradle_passes_the_impact_at_any_spacing(void) {

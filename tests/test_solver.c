@@ -1,7 +1,7 @@
 /* The solver's internals that the scene tests cannot see directly: the
  * colouring of the contact graph and the four-lane velocity iterations.
  * Contacts are built by hand here, with the effective masses computed from
- * their definitions, so a mistake in solver.c's preparation cannot hide
+ * their definitions, so a mistake in velocity_solve.c's preparation cannot hide
  * one in the batches. */
 #include <math.h>
 #include <stdlib.h>

@@ -5,6 +5,7 @@
  * The scene-file module's insides, shared by its four parts:
  *   scene_file_lex.c    bytes to tokens, numbers, messages with FILE:LINE:COLUMN
  *   scene_file_parse.c  tokens to a description (sf_doc_t), every value checked
+ *                       (with a file per kind of statement: scene_file_parse.h)
  *   scene_file_build.c  names resolved, limits checked, the scene made; spawn
  *   scene_file_write.c  the description and the live scene back to text
  *

@@ -484,7 +484,7 @@ char *scene_file_write(scene_file_t *file, size_t *length, scene_file_error_t *e
         if (error != NULL) {
             snprintf(error->message, sizeof error->message,
                      "cannot write the scene: integrator %d has no name in the scene-file "
-                     "table (INTEGRATORS in engine/scenefile/scene_file_parse.c)",
+                     "table (INTEGRATORS in engine/scenefile/scene_file_settings.c)",
                      (int)integrator);
         }
         return NULL;

@@ -138,7 +138,10 @@ bench-report: build/libjostle.a
 
 bench-report-run: $(BENCH_PROGRAMS)
 	@$(if $(BOX2D3_NOTE),echo "$(BOX2D3_NOTE)")
+	@tests/provenance.sh begin build/bench/report.provenance
 	BENCH_CFLAGS="$(BENCH_CFLAGS)" sh tests/bench/bench_report.sh docs/bench.md $(BENCH_PROGRAMS)
+	@CC="$(CC)" PROVENANCE_FLAGS="$(BENCH_CFLAGS)" \
+		tests/provenance.sh stamp docs/bench.md build/bench/report.provenance
 
 # make bench-stages: what a scene pays for the stages it does not use
 # (docs/leave-out.md, about a minute and a half).
@@ -147,11 +150,22 @@ $(BENCH_DIR)/bench_stages: tests/bench/bench_stages.c build/libjostle.a
 	$(CC) $(BENCH_CFLAGS) -Iengine/include $< build/libjostle.a -pthread -lm -o $@
 
 bench-stages: $(BENCH_DIR)/bench_stages
+	@tests/provenance.sh begin build/bench/stages.provenance
 	$(BENCH_DIR)/bench_stages docs/leave-out.md
+	@CC="$(CC)" PROVENANCE_FLAGS="$(BENCH_CFLAGS)" \
+		tests/provenance.sh stamp docs/leave-out.md build/bench/stages.provenance
+
+# make check: the leave-out page's figures that are not timings (what each
+# scene runs, bodies asleep) come out the same from the sources.
+CHECK_PROGRAMS += tests/bench/check_stages.sh
+check: $(BENCH_DIR)/bench_stages
 
 bench-scale: $(BENCH_DIR)/bench_scale
 	@$(MAKE) --no-print-directory bench-build
+	@tests/provenance.sh begin build/bench/scale.provenance
 	tests/bench/scale.sh docs/scale.md
+	@CC="$(CC)" PROVENANCE_FLAGS="$(BENCH_CFLAGS)" \
+		tests/provenance.sh stamp docs/scale.md build/bench/scale.provenance
 
 SEEDS_ARGS ?=
 bench-seeds: $(BENCH_DIR)/bench_engine

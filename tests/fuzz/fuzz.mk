@@ -21,7 +21,7 @@ FUZZ_RUN := -dict=tests/fuzz/scene.dict -max_len=4096 -timeout=10 -print_final_s
 
 build/fuzz/fuzz_scene_file: $(FUZZ_SRC) $(ENGINE_HDR) $(SCENEFILE_HDR) tests/scene_file_check.h tests/fuzz/fuzz.mk
 	@mkdir -p $(dir $@)
-	$(FUZZ_CC) $(CSTD) $(FUZZ_FLAGS) -Iengine/include -Itests $(FUZZ_SRC) -pthread -lm -o $@
+	$(FUZZ_CC) $(CSTD) $(FUZZ_FLAGS) $(ENGINE_INC) -Itests $(FUZZ_SRC) -pthread -lm -o $@
 
 fuzz: build/fuzz/fuzz_scene_file
 	@mkdir -p build/fuzz/corpus build/fuzz/crashes

@@ -2,10 +2,13 @@
 # tests/report/report.sh. Included by the top-level Makefile.
 
 REPORT_DIR := build/report
+REPORT_SRC := $(wildcard tests/report/*.c) tests/reference.c
+REPORT_HDR := $(wildcard tests/report/*.h) tests/reference.h
+REPORT_CFLAGS := $(CSTD) $(WARN) -O2
 
-$(REPORT_DIR)/accuracy: tests/report/accuracy.c tests/reference.c tests/reference.h build/libjostle.a
+$(REPORT_DIR)/accuracy: $(REPORT_SRC) $(REPORT_HDR) build/libjostle.a
 	@mkdir -p $(dir $@)
-	$(CC) $(CSTD) $(WARN) -O2 -Iengine/include -Itests tests/report/accuracy.c tests/reference.c \
+	$(CC) $(REPORT_CFLAGS) -Iengine/include -Itests -Itests/report $(REPORT_SRC) \
 		build/libjostle.a -pthread -lm -o $@
 
 .PHONY: report report-deps
@@ -24,4 +27,4 @@ report-deps:
 
 report: report-deps build/libjostle.a $(REPORT_DIR)/accuracy
 	@$(MAKE) --no-print-directory bench-build
-	@sh tests/report/report.sh
+	@CC="$(CC)" PROVENANCE_FLAGS="$(REPORT_CFLAGS)" sh tests/report/report.sh

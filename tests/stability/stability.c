@@ -1425,7 +1425,7 @@ static void input_section(void) {
         }
     }
     NOTE(t, "**Limit: polygons of about 100000 sides roll.** A resting edge's two ends are block-"
-            "solved while the 2x2 system's condition stays under 1e8 (engine/src/solver/solver.c, "
+            "solved while the 2x2 system's condition stays under 1e8 (engine/src/solver/velocity_solve.c, "
             "MAX_EDGE_CONDITION_NUMBER); a 1 m polygon passes that from about 90000 sides (edges "
             "of 0.035 mm; 80000 sides still rest), the ends are then solved one at a time, the first takes the whole "
             "load and the polygon rolls away, slowly gaining speed (0.4 m/s after 10 s for "

@@ -23,4 +23,7 @@ check: $(STABILITY_DIR)/stability
 stability: build/libjostle.a $(STABILITY_DIR)/stability
 	@CC="$(CC)" CXX="$(CXX)" sh tests/bench/deps.sh
 	@$(MAKE) --no-print-directory bench-build
+	@tests/provenance.sh begin $(STABILITY_DIR)/provenance.state
 	@sh tests/stability/stability.sh
+	@CC="$(CC)" PROVENANCE_FLAGS="$(CSTD) $(WARN) -O2" \
+		tests/provenance.sh stamp docs/stability.md $(STABILITY_DIR)/provenance.state

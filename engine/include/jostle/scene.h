@@ -148,13 +148,14 @@ vector_t scene_get_gravity(scene_t *scene);
  *   SYMPLECTIC_EULER  v' = v + h a, x' = x + h v'. Order 1, symplectic:
  *                     energy bounded and orbits closed for omega h < 2.
  *   VELOCITY_VERLET   half kick, drift, half kick. Order 2, symplectic,
- *                     stable for omega h < 2; forces evaluated twice a step.
+ *                     stable for omega h < 2; forces evaluated once a step
+ *                     (twice, see below).
  *   RK4               classical Runge-Kutta. Order 4, slowly damps
  *                     oscillations and orbits, stable for omega h < 2.83;
  *                     forces evaluated four times a step.
  *   SYMPLECTIC4       Yoshida's composition of three Verlet steps. Order 4,
  *                     symplectic, stable for omega h < 1.57; forces
- *                     evaluated four times a step.
+ *                     evaluated three times a step (four, see below).
  *   IMPLICIT_EULER    linearly implicit (backward) Euler: v' = v + h a(x',
  *                     v'), x' = x + h v', with the springs of create_spring
  *                     and the drag of create_drag taken at the end of the
@@ -171,6 +172,13 @@ vector_t scene_get_gravity(scene_t *scene);
  *                     Explicit for the rest: a force of your own that acts
  *                     as a spring keeps symplectic Euler's limit (omega h <
  *                     2).
+ * VELOCITY_VERLET and SYMPLECTIC4 start a step from the forces of the last
+ * step's last evaluation, which was at the pose the step ended at, when
+ * that gives the same bits: world contacts off, every force creator a
+ * spring or Newtonian gravity of forces.h, and no body added, removed or
+ * moved, no creator added or dropped and no other force or torque set on a
+ * body than the last step's. Otherwise they evaluate once more a step
+ * (scene_stats_t counts the evaluations).
  * Pick SYMPLECTIC_EULER or VELOCITY_VERLET for springs and orbits; the
  * fourth-order schemes when accuracy matters more than cost; IMPLICIT_EULER
  * when a spring or drag is too stiff for the step (it loses energy instead
@@ -327,6 +335,10 @@ typedef struct {
                                   ones included (see contact.h) */
     size_t contact_points;     /* points over all manifolds */
     size_t removed_bodies;     /* bodies reaped at the end of the tick */
+    /* Passes over the force creators (one per stage of the integrator; none
+     * without creators, and one fewer under VELOCITY_VERLET and SYMPLECTIC4
+     * when the step reused the last one's, see integrator_t). */
+    size_t force_evaluations;
 } scene_stats_t;
 
 scene_stats_t scene_get_stats(scene_t *scene);

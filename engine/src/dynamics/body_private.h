@@ -31,7 +31,7 @@ struct body {
      * the step of its world numbered contact_step (modulo 2^32), at
      * [contact_first, contact_first + contact_count) of that step's contact
      * buffer, and its pairs that were apart at [gap_first, gap_first +
-     * gap_count) of the step's gap buffer (world.c). */
+     * gap_count) of the step's gap buffer (narrowphase.c). */
     uint32_t contact_first, contact_count;
     uint32_t gap_first, gap_count;
     uint32_t contact_step;

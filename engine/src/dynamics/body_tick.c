@@ -12,7 +12,7 @@ void body_tick(body_t *body, double dt) {
     REQUIRE_NOT_NULL(body);
     REQUIRE(isfinite(dt) && dt > 0.0, "dt must be finite and > 0 (got %g)", dt);
     body_motion_t before = body_motion(body);
-    integrator_step_t step = {INTEGRATOR_SEED, dt, VEC_ZERO, NULL, NULL, NULL, 0};
+    integrator_step_t step = {INTEGRATOR_SEED, dt, VEC_ZERO, NULL, NULL, NULL, 0, 0};
     integrator_motion_t motion;
     integrator_stages_t *no_stages = NULL;
     integrator_predict(&step, &body, 1, &motion, &no_stages);

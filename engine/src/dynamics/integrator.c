@@ -1,5 +1,6 @@
 #include "dynamics/integrator.h"
 #include <math.h>
+#include <string.h>
 #include "dynamics/body_private.h"
 #include "base/check.h"
 #include "dynamics/implicit_euler.h"
@@ -128,6 +129,12 @@ typedef struct {
     dof_t a;           /* accelerations at the last evaluation */
     dof_t run;         /* Verlet's and Yoshida's velocities between kicks */
     dof_t sum_u, sum_a; /* RK4's weighted sums */
+    /* The last evaluation of the step, for the next one to reuse: where the
+     * body was, its mass and id, and the force and torque found there. */
+    vector_t last_centroid;
+    double last_mass;
+    uint32_t last_id;
+    dof_t last_force;
 } stage_row_t;
 
 struct integrator_stages {
@@ -136,6 +143,10 @@ struct integrator_stages {
     /* How many bodies integrator_begin saw; later ones had no force set
      * before the step. */
     size_t begun;
+    /* The reuse key and body count the rows' last evaluation was recorded
+     * with; key 0 when there is none. */
+    uint64_t last_key;
+    size_t last_count;
     implicit_euler_t *implicit;
 };
 
@@ -155,15 +166,76 @@ static void reserve_rows(integrator_stages_t **stages, size_t count) {
     memory_reserve((void **)&(*stages)->rows, &(*stages)->capacity, count, sizeof(stage_row_t));
 }
 
-void integrator_begin(integrator_t integrator, body_t **bodies, size_t count,
-                      integrator_stages_t **stages) {
-    if (integrator_stage_count(integrator) == 1) return;
-    reserve_rows(stages, count);
+/* Whether the schemes's last evaluation is at the pose its step ends at. */
+static bool ends_where_it_evaluates(integrator_t integrator) {
+    return integrator == INTEGRATOR_VELOCITY_VERLET || integrator == INTEGRATOR_SYMPLECTIC4;
+}
+
+static inline bool same_bits(double a, double b) {
+    return memcmp(&a, &b, sizeof a) == 0;
+}
+
+/* Whether every body is where, and as, the last evaluation found it, with
+ * the force and torque set since the same as the last step's. */
+static bool unchanged_since_last(const integrator_stages_t *stages, body_t **bodies,
+                                 size_t count) {
     for (size_t i = 0; i < count; i++) {
         const body_t *body = bodies[i];
-        (*stages)->rows[i].external = (dof_t){body->force.x, body->force.y, body->torque};
+        const stage_row_t *row = &stages->rows[i];
+        if (body->id != row->last_id || !same_bits(body->centroid.x, row->last_centroid.x) ||
+            !same_bits(body->centroid.y, row->last_centroid.y) ||
+            !same_bits(body->mass, row->last_mass) ||
+            !same_bits(body->force.x, row->external.x) ||
+            !same_bits(body->force.y, row->external.y) ||
+            !same_bits(body->torque, row->external.angle)) {
+            return false;
+        }
     }
-    (*stages)->begun = count;
+    return true;
+}
+
+bool integrator_begin(integrator_t integrator, body_t **bodies, size_t count,
+                      integrator_stages_t **stages, uint64_t reuse_key) {
+    if (integrator_stage_count(integrator) == 1) return false;
+    reserve_rows(stages, count);
+    integrator_stages_t *s = *stages;
+    bool reuse = reuse_key != 0 && s->last_key == reuse_key && s->last_count == count &&
+                 ends_where_it_evaluates(integrator) && unchanged_since_last(s, bodies, count);
+    s->last_key = 0;
+    s->begun = count;
+    if (reuse) {
+        for (size_t i = 0; i < count; i++) {
+            const dof_t *f = &s->rows[i].last_force;
+            bodies[i]->force = (vector_t){f->x, f->y};
+            bodies[i]->torque = f->angle;
+        }
+        return true;
+    }
+    for (size_t i = 0; i < count; i++) {
+        const body_t *body = bodies[i];
+        s->rows[i].external = (dof_t){body->force.x, body->force.y, body->torque};
+    }
+    return false;
+}
+
+/* After the scheme's last evaluation, with the bodies still where it put
+ * them: what the next step's integrator_begin may reuse. */
+static void record_last_evaluation(const integrator_step_t *step, integrator_stages_t *stages,
+                                   body_t **bodies, size_t count) {
+    if (step->reuse_key == 0 || step->evaluate == NULL ||
+        !ends_where_it_evaluates(step->integrator)) {
+        return;
+    }
+    for (size_t i = 0; i < count; i++) {
+        const body_t *body = bodies[i];
+        stage_row_t *row = &stages->rows[i];
+        row->last_centroid = body->centroid;
+        row->last_mass = body->mass;
+        row->last_id = body->id;
+        row->last_force = (dof_t){body->force.x, body->force.y, body->torque};
+    }
+    stages->last_key = step->reuse_key;
+    stages->last_count = count;
 }
 
 /* The accelerations of a body under a force and torque and gravity; none
@@ -379,6 +451,7 @@ void integrator_predict(const integrator_step_t *step, body_t **bodies, size_t c
     case INTEGRATOR_RK4: rk4(step, bodies, rows, count); break;
     default: engine_fail(__func__, "unknown integrator %d", (int)step->integrator);
     }
+    record_last_evaluation(step, *stages, bodies, count);
     restore_start(step, bodies, rows, count);
     double w = integrator_position_weight(step->integrator);
     for (size_t i = 0; i < count; i++) {

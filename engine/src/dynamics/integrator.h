@@ -24,15 +24,17 @@
  *                     1 + (omega h)^2 a step (no stable h).
  *   symplectic Euler  v' = v + h a, x' = x + h v'. Order 1, symplectic;
  *                     stable for omega h < 2.
- *   velocity Verlet   kick h/2, drift h, kick h/2; 2 force evaluations.
+ *   velocity Verlet   kick h/2, drift h, kick h/2; 2 force evaluations,
+ *                     1 when the first is reused (integrator_begin).
  *                     Order 2, symplectic; stable for omega h < 2.
  *   RK4               classical Runge-Kutta; 4 evaluations. Order 4, not
  *                     symplectic (damps oscillators slowly); stable for
  *                     omega h < 2 sqrt(2).
  *   symplectic4       Yoshida's composition of three Verlet steps of
  *                     h / (2 - 2^(1/3)), -2^(1/3) h / (2 - 2^(1/3)),
- *                     h / (2 - 2^(1/3)); 4 evaluations. Order 4, symplectic;
- *                     stable for omega h < 1.573.
+ *                     h / (2 - 2^(1/3)); 4 evaluations, 3 when the first
+ *                     is reused. Order 4, symplectic; stable for
+ *                     omega h < 1.573.
  *   implicit Euler    symplectic Euler with the forces whose Jacobians are
  *                     known (create_spring, create_drag) taken at the end
  *                     of the step, solved over the bodies they join
@@ -44,6 +46,7 @@
  */
 
 #include <stdbool.h>
+#include <stdint.h>
 #include "jostle/body.h"
 #include "dynamics/motion.h"
 #include "jostle/scene.h"
@@ -60,8 +63,8 @@ double integrator_position_weight(integrator_t integrator);
  * spectral radius squared): 1 where it is stable and symplectic. */
 double integrator_oscillator_growth(integrator_t integrator, double theta);
 
-/* The number of force evaluations a step of the scheme makes (inline: the
- * scene asks at every tick). */
+/* The number of force evaluations a step of the scheme makes, the first
+ * included even when it is reused (inline: the scene asks at every tick). */
 static inline int integrator_stage_count(integrator_t integrator) {
     switch (integrator) {
     case INTEGRATOR_VELOCITY_VERLET: return 2;
@@ -86,9 +89,19 @@ void integrator_stages_free(integrator_stages_t *stages);
 
 /* Before the first evaluation of a step: a multi-stage scheme keeps the
  * forces set on the bodies since their last step, which act at every
- * stage. */
-void integrator_begin(integrator_t integrator, body_t **bodies, size_t count,
-                      integrator_stages_t **stages);
+ * stage.
+ *
+ * First same as last: velocity Verlet and symplectic4 end their step with
+ * an evaluation at the pose the step moves the bodies to. When reuse_key
+ * is not 0 (the scene's promise that its force creators depend on the
+ * bodies' centroids and masses only, and a number that changes whenever a
+ * creator is added or dropped), the same key was recorded at the end of
+ * the last step, and every body is the same, at the same centroid and mass
+ * to the bit, with the same force and torque set since, the forces of that
+ * evaluation are put on the bodies and true is returned: the caller skips
+ * the first evaluation, whose result would be the same bits. */
+bool integrator_begin(integrator_t integrator, body_t **bodies, size_t count,
+                      integrator_stages_t **stages, uint64_t reuse_key);
 
 
 /*

@@ -8,6 +8,7 @@
  */
 
 #include <stddef.h>
+#include <stdint.h>
 #include "jostle/scene.h"
 #include "jostle/vector.h"
 #include "dynamics/jacobian.h"
@@ -46,6 +47,7 @@ typedef struct {
      * evaluation that have one (jacobian.h). */
     const force_jacobian_t *jacobians;
     size_t jacobian_count;
+    uint64_t reuse_key; /* integrator_begin's; 0: record nothing for the next step */
 } integrator_step_t;
 
 #endif // #ifndef MOTION_H

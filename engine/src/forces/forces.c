@@ -77,9 +77,11 @@ static bool drag_jacobian(const void *aux, force_jacobian_t *jacobian);
 static void spring(void *data);
 static void spring_with_length(void *data);
 static void drag(void *data);
+static void newtonian_gravity(void *data);
 
 /* The bodies were claimed (claim_pair); a spring also tells the scene how
- * stiff it is, for the message of a tick that overflows. */
+ * stiff it is, for the message of a tick that overflows; springs and
+ * gravity, that they read only centroids and masses. */
 static void add_pair_aux(scene_t *scene, force_creator_t forcer, pair_aux_t value) {
     pair_aux_t *aux = memory_alloc(sizeof(pair_aux_t));
     *aux = value;
@@ -94,6 +96,7 @@ static void add_pair_aux(scene_t *scene, force_creator_t forcer, pair_aux_t valu
                                  .jacobian = is_spring          ? spring_jacobian
                                              : forcer == drag ? drag_jacobian
                                                               : NULL,
+                                 .positional = is_spring || forcer == newtonian_gravity,
                              });
 }
 

@@ -23,6 +23,9 @@ struct scene {
 
     force_entry_t *forces;
     size_t force_count, force_capacity;
+    /* Changes whenever a force creator is added or dropped (integrator.h's
+     * reuse key). */
+    uint64_t forces_version;
 
     vector_t gravity;
     integrator_t integrator;
@@ -178,6 +181,7 @@ void scene_add_creator(scene_t *scene, const scene_creator_t *creator) {
     memory_reserve((void **)&scene->forces, &scene->force_capacity, scene->force_count + 1,
                    sizeof(force_entry_t));
     scene->forces[scene->force_count++] = *creator;
+    scene->forces_version++;
 }
 
 static void add_force_entry(scene_t *scene, force_creator_t forcer, void *aux, list_t *bodies,
@@ -418,6 +422,7 @@ double scene_step_dt(const scene_t *scene) {
 static void stage_forces(scene_t *scene) {
     size_t count = scene->force_count;
     scene->stage_force_count = count;
+    scene->stats.force_evaluations++;
     for (size_t i = 0; i < count; i++) scene->forces[i].forcer(scene->forces[i].aux);
 }
 
@@ -426,6 +431,7 @@ static void stage_forces(scene_t *scene) {
 static void stage_forces_again(void *context) {
     scene_t *scene = context;
     scene->stage++;
+    scene->stats.force_evaluations++;
     for (size_t i = 0; i < scene->stage_force_count; i++) {
         const force_entry_t *entry = &scene->forces[i];
         if (!entry->event) entry->forcer(entry->aux);
@@ -450,6 +456,17 @@ static void predict_chunk(void *context, size_t chunk, size_t begin, size_t end)
     integrator_predict_range(split->step, split->scene->bodies, split->scene->motions, begin, end);
 }
 
+/* The integrator's reuse key (integrator.h): the forces version while
+ * every creator's force depends on centroids and masses alone and world
+ * contacts are off (their sleeping reads the creators' pushes); else 0. */
+static uint64_t reuse_key(const scene_t *scene) {
+    if (scene->world != NULL || scene->force_count == 0) return 0;
+    for (size_t i = 0; i < scene->force_count; i++) {
+        if (!scene->forces[i].positional) return 0;
+    }
+    return scene->forces_version;
+}
+
 /* Implicit Euler's input: the Jacobians of the creators that ran at the
  * start of the step, where they have one. */
 static void gather_jacobians(scene_t *scene, integrator_step_t *step) {
@@ -472,12 +489,18 @@ static void gather_jacobians(scene_t *scene, integrator_step_t *step) {
  * solves for it over the bodies. Otherwise the integrate stage works it
  * out as it moves each body; NULL is returned. */
 static const integrator_motion_t *stage_motion(scene_t *scene, integrator_step_t *step) {
-    bool one_stage = integrator_stage_count(scene->integrator) == 1;
+    bool one_stage = integrator_stage_count(scene->integrator) == 1, reused = false;
     bool per_body = integrator_is_per_body(scene->integrator);
     if (!one_stage) {
-        integrator_begin(scene->integrator, scene->bodies, scene->body_count, &scene->stages);
+        step->reuse_key = reuse_key(scene);
+        reused = integrator_begin(scene->integrator, scene->bodies, scene->body_count,
+                                  &scene->stages, step->reuse_key);
     }
-    if (scene->force_count > 0) stage_forces(scene);
+    if (reused) {
+        scene->stage_force_count = scene->force_count;
+    } else if (scene->force_count > 0) {
+        stage_forces(scene);
+    }
     if (scene->world != NULL && scene->sleeping) {
         scene->world_ops->wake_changed(scene->world, scene->bodies, scene->body_count, step->dt,
                                        scene->gravity);
@@ -607,6 +630,7 @@ static void stage_reap(scene_t *scene) {
         if (entry.forget != NULL) entry.forget(entry.aux);
         if (depends_on_removed_body(&entry)) {
             force_entry_free(entry);
+            scene->forces_version++;
         } else {
             scene->forces[kept++] = entry;
         }
@@ -642,7 +666,7 @@ static void tick(scene_t *scene, double dt) {
         return;
     }
     scene->stage_force_count = 0;
-    integrator_step_t step = {scene->integrator, dt, scene->gravity, NULL, scene, NULL, 0};
+    integrator_step_t step = {scene->integrator, dt, scene->gravity, NULL, scene, NULL, 0, 0};
     const integrator_motion_t *motions = stage_motion(scene, &step);
     if (scene->world != NULL && scene->body_count > 0) {
         world_step_t world_step = {dt, integrator_position_weight(scene->integrator),

@@ -39,6 +39,11 @@ typedef struct {
      * Euler (jacobian.h); NULL, or false returned, and that scheme takes
      * the force explicitly. */
     bool (*jacobian)(const void *aux, force_jacobian_t *jacobian);
+    /* Its forces depend on its bodies' centroids and masses alone, and it
+     * adds nothing else (no impulse, torque or event): a multi-stage
+     * integrator may then reuse the forces it found at the end of a step
+     * (integrator_begin). */
+    bool positional;
 } scene_creator_t;
 
 void scene_add_creator(scene_t *scene, const scene_creator_t *creator);

@@ -13,8 +13,11 @@
  * It works on plain arrays (solver_bodies_t's rows, solver_contact_t
  * constraints) that world.c fills from the bodies and writes back; it knows
  * nothing of scenes or lists. The iterations run four contacts at a time in
- * colour batches (solver_wide.h); this file holds the rest, and the
- * one-at-a-time solves for contacts no colour could take.
+ * colour batches (solver_wide.h); solver.c runs the stages in order, and
+ * the one-at-a-time solves for contacts no colour could take:
+ * velocity_solve.h (preparing, warm starting, velocity iterations),
+ * collision_pass.h (restitution), position_pass.h (advance, position
+ * iterations, the cap on the correction).
  *
  * The integrator decides where a velocity puts a body: x' = x + dt ((1 - w) v
  * + w v'), with w its position weight (1/2 for the seed scheme). The solver
@@ -23,30 +26,8 @@
  */
 
 #include "solver/solver_types.h"
-
-/* The earliest time in [0, dt] at which a gap s closing as s + v t + a t^2 / 2
- * reaches 0, or a negative number when it does not: the solver's model of
- * a point's approach over the step (m, m/s, m/s^2, s). */
-double solver_time_of_impact(double s, double v, double a, double dt);
-
-/* The approach speed (m/s) from which a contact with this restitution
- * between bodies with these rows bounces: SOLVER_FREE_RESTITUTION_THRESHOLD
- * for an elastic pair that nothing accelerates, else
- * SOLVER_RESTITUTION_THRESHOLD, which for inelastic contacts also decides
- * which approaches are timed as impacts. */
-double solver_bounce_threshold(double restitution, const solver_state_t *sa,
-                               const solver_state_t *sb);
-
 #include "solver/shock.h"
 #include "solver/solver_wide.h"
-
-/* The rows of every body, body_count of each. */
-typedef struct {
-    solver_velocity_t *velocities;
-    solver_displacement_t *displacements;
-    solver_state_t *states;
-    size_t body_count;
-} solver_bodies_t;
 
 /* Everything after the narrowphase: prepare, warm start, velocity
  * iterations and position iterations (in colour batches, solver_wide.h,

@@ -106,7 +106,7 @@ typedef struct {
     int point_count;
     bool block;
     /* The two points are an incident edge's own ends (manifold_features_t),
-     * so the block solve may take a worse condition (solver.c). */
+     * so the block solve may take a worse condition (velocity_solve.c). */
     bool edge_ends;
     solver_point_t points[2];
     vector_t normal;         /* unit, from a toward b; the tangent is perp(normal) */
@@ -116,6 +116,14 @@ typedef struct {
     double k11, k12, k22;
     double m11, m12, m22;
 } solver_contact_t;
+
+/* The rows of every body, body_count of each. */
+typedef struct {
+    solver_velocity_t *velocities;
+    solver_displacement_t *displacements;
+    solver_state_t *states;
+    size_t body_count;
+} solver_bodies_t;
 
 typedef struct {
     double dt;

@@ -6,10 +6,10 @@
  * contacts at a time. Contacts of one colour (coloring.h) share no movable
  * body, so four of them are packed lane by lane into a batch,
  * structure-of-arrays, and solved with vector arithmetic: the same
- * friction, two-point block, one-point and position solves as solver.c, in
- * the same order within a contact and with the same rounding (no fused
- * multiply-add), so a contact gets the answer solver.c would give it at
- * its place in the order. The order across contacts is by colour.
+ * friction, two-point block, one-point and position solves as
+ * velocity_solve.c and position_pass.c, in the same order within a contact
+ * and with the same rounding (no fused multiply-add), so a contact gets the
+ * answer they would give it at its place in the order. The order across contacts is by colour.
  *
  * Why: the velocity iterations were half of a step in the 4000-body pile,
  * and one contact's solve is a short chain of dependent arithmetic that
@@ -75,7 +75,7 @@ void solver_wide_free(solver_wide_t *wide);
 
 /* Colours the contacts and places each colour's groups, ready to be packed
  * into batches (solver_wide_pack_all, or solver_wide_pack by ranges). The
- * contacts must be prepared (solver.c). */
+ * contacts must be prepared (velocity_solve.h). */
 void solver_wide_arrange(solver_wide_t *wide, const solver_contact_t *contacts, size_t count,
                          const solver_velocity_t *rows, size_t body_count);
 
@@ -93,13 +93,14 @@ void solver_wide_warm_start(solver_wide_t *wide, solver_velocity_t *rows);
 /* One velocity iteration over every batch, colour by colour. */
 void solver_wide_iterate(solver_wide_t *wide, solver_velocity_t *rows);
 
-/* One position iteration (solver.c's solve_position) over every batch,
- * colour by colour, from the last batch back when backward. Within a colour
- * the contacts are corrected side by side, so a one-way sweep leaves the
- * colours solved first at a disadvantage; sweeping back and forth in turn
- * restores the quality of solving in contact order (pyramid(40) top box
- * 0.086 m down against 0.093 m one-way and 0.084 m in contact order; the
- * velocity iterations, swept the same way, got worse, 0.18 m). */
+/* One position iteration (position_pass.h's solver_solve_position) over
+ * every batch, colour by colour, from the last batch back when backward.
+ * Within a colour the contacts are corrected side by side, so a one-way
+ * sweep leaves the colours solved first at a disadvantage; sweeping back
+ * and forth in turn restores the quality of solving in contact order
+ * (pyramid(40) top box 0.086 m down against 0.093 m one-way and 0.084 m in
+ * contact order; the velocity iterations, swept the same way, got worse,
+ * 0.18 m). */
 void solver_wide_correct_positions(solver_wide_t *wide, solver_displacement_t *displacements,
                                    bool backward);
 

@@ -10,7 +10,7 @@
  *
  * It keeps last step's contacts, keyed by the pair's body ids, to warm-start
  * this step's with their impulses, and the contacts of the step before, so
- * that a step of another length starts from their force instead (world.c,
+ * that a step of another length starts from their force instead (narrowphase.c,
  * warm_rescaled). All arrays are reused: a warm step allocates nothing.
  */
 

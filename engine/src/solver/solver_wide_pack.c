@@ -1,0 +1,311 @@
+/*
+ * The colour batches filled and read back (solver_wide.h): the contacts
+ * coloured, sorted by colour and kind and packed lane by lane; their
+ * impulses stored back to the contacts, or read for shock propagation.
+ */
+#include "solver/solver_wide.h"
+#include <string.h>
+#include "base/memory.h"
+#include "solver/solver_wide_private.h"
+
+/* Where a batch is packed: its index, its first point's and its block's. */
+typedef struct {
+    size_t batch, point, block;
+} pack_at_t;
+
+LANE_INLINE void pack_lane(solver_wide_t *wide, pack_at_t at, const solver_contact_t *c, uint32_t index,
+                      int l, const solver_velocity_t *rows) {
+    solver_batch_t *batch = &wide->batches[at.batch];
+    solver_position_batch_t *position = &wide->position_batches[at.batch];
+    batch->a[l] = position->a[l] = c->a;
+    batch->b[l] = position->b[l] = c->b;
+    batch->contact[l] = index;
+    batch->normal.x[l] = position->normal.x[l] = c->normal.x;
+    batch->normal.y[l] = position->normal.y[l] = c->normal.y;
+    batch->friction[l] = c->friction;
+    position->ma[l] = rows[c->a].inverse_mass;
+    position->mb[l] = rows[c->b].inverse_mass;
+    batch->ia[l] = position->ia[l] = rows[c->a].inverse_inertia;
+    batch->ib[l] = position->ib[l] = rows[c->b].inverse_inertia;
+    position->rate[l] = solver_position_rate(&rows[c->a], &rows[c->b]);
+    position->slop[l] = c->slop;
+    if (batch->kind == BATCH_BLOCK) {
+        lane_block_t *k = &wide->blocks[at.block];
+        k->k11[l] = c->k11;
+        k->k12[l] = c->k12;
+        k->k22[l] = c->k22;
+        k->m11[l] = c->m11;
+        k->m12[l] = c->m12;
+        k->m22[l] = c->m22;
+    }
+    for (int i = 0; i < c->point_count; i++) {
+        const solver_point_t *p = &c->points[i];
+        lane_point_t *lp = &wide->points[at.point + (size_t)i];
+        lp->rn.a[l] = p->rn_a;
+        lp->rn.b[l] = p->rn_b;
+        lp->rt.a[l] = p->rt_a;
+        lp->rt.b[l] = p->rt_b;
+        lp->normal_mass[l] = p->normal_mass;
+        lp->tangent_mass[l] = p->tangent_mass;
+        lp->target[l] = p->target;
+        lp->normal_impulse[l] = p->normal_impulse;
+        lp->tangent_impulse[l] = p->tangent_impulse;
+        solver_position_point_t *pp = &wide->position_points[at.point + (size_t)i];
+        pp->rn.a[l] = p->rn_a;
+        pp->rn.b[l] = p->rn_b;
+        pp->normal_mass[l] = p->normal_mass;
+        pp->separation[l] = p->separation;
+    }
+}
+
+/* How many contacts ahead of the one being packed are asked for: the
+ * colours' order scatters the packing's reads over the contact buffer,
+ * which a pile of 4000 bodies holds more of than the cache (measured:
+ * 27% of the packing's time waited on each contact's first field). */
+enum { PACK_AHEAD = 2 * LANES };
+
+/* Asks for the lines of contacts order[from .. from + LANES), as far as
+ * total. A macro: GCC deems a function of prefetches alone const and drops
+ * its calls. */
+#define PREFETCH_CONTACTS(contacts, order, from, total)                                      \
+    do {                                                                                    \
+        size_t end_ = (from) + LANES < (total) ? (from) + LANES : (total);                  \
+        for (size_t k_ = (from); k_ < end_; k_++) {                                         \
+            const char *line_ = (const char *)&(contacts)[(order)[k_]];                     \
+            for (size_t at_ = 0; at_ < sizeof(solver_contact_t); at_ += 64) {               \
+                __builtin_prefetch(line_ + at_);                                            \
+            }                                                                               \
+        }                                                                                   \
+    } while (0)
+
+/* Packs order[0 .. count) (at most LANES contacts of one kind) into the
+ * batch, points and block at `at`. */
+LANE_INLINE void load_batch(solver_wide_t *wide, pack_at_t at, const uint32_t *order, int count,
+                       batch_kind_t kind, const solver_contact_t *contacts,
+                       const solver_velocity_t *rows) {
+    int points = kind_points(kind);
+    solver_batch_t *batch = &wide->batches[at.batch];
+    solver_position_batch_t *position = &wide->position_batches[at.batch];
+    if (count < LANES) { /* a full batch has every lane written below */
+        memset(batch, 0, sizeof *batch);
+        memset(position, 0, sizeof *position);
+        memset(&wide->points[at.point], 0, (size_t)points * sizeof(lane_point_t));
+        memset(&wide->position_points[at.point], 0,
+               (size_t)points * sizeof(solver_position_point_t));
+        if (kind == BATCH_BLOCK) memset(&wide->blocks[at.block], 0, sizeof(lane_block_t));
+    }
+    batch->lanes = position->lanes = (uint8_t)count;
+    batch->kind = (uint8_t)kind;
+    position->point_count = (uint8_t)points;
+    for (int l = 0; l < count; l++) pack_lane(wide, at, &contacts[order[l]], order[l], l, rows);
+}
+
+static batch_kind_t kind_of(const solver_contact_t *c) {
+    if (c->block) return BATCH_BLOCK;
+    return c->point_count == 2 ? BATCH_PAIR : BATCH_SINGLE;
+}
+
+enum { GROUPS = BATCH_KINDS * COLORING_MAX_COLORS };
+
+_Static_assert((int)GROUPS < (int)COLORING_NONE, "a group fits where its contact's colour was");
+
+/* Orders the contacts by colour, and within a colour by kind; the
+ * uncoloured go to the loose list. Fills start (GROUPS + 1 entries) with
+ * the group boundaries in wide->order. The first pass turns each colour
+ * into its group, so that the second reads a byte per contact rather than
+ * the contact. */
+static void sort_by_color(solver_wide_t *wide, const solver_contact_t *contacts, size_t count,
+                          uint32_t *start) {
+    memset(start, 0, (GROUPS + 1) * sizeof(uint32_t));
+    wide->loose_count = 0;
+    uint8_t *group = wide->colors;
+    for (size_t i = 0; i < count; i++) {
+        if (group[i] == COLORING_NONE) {
+            wide->loose[wide->loose_count++] = (uint32_t)i;
+            continue;
+        }
+        group[i] = (uint8_t)(BATCH_KINDS * group[i] + kind_of(&contacts[i]));
+        start[group[i] + 1]++;
+    }
+    for (int g = 0; g < GROUPS; g++) start[g + 1] += start[g];
+    uint32_t next[GROUPS];
+    memcpy(next, start, sizeof next);
+    for (size_t i = 0; i < count; i++) {
+        if (group[i] == COLORING_NONE) continue;
+        wide->order[next[group[i]]++] = (uint32_t)i;
+    }
+}
+
+static void reserve(solver_wide_t *wide, size_t count) {
+    /* At most one partly filled batch per group. */
+    size_t batches = count / LANES + GROUPS;
+    memory_reserve((void **)&wide->colors, &wide->color_capacity, count, sizeof(uint8_t));
+    memory_reserve((void **)&wide->order, &wide->order_capacity, count, sizeof(uint32_t));
+    memory_reserve((void **)&wide->loose, &wide->loose_capacity, count, sizeof(uint32_t));
+    memory_reserve((void **)&wide->batches, &wide->batch_capacity, batches,
+                   sizeof(solver_batch_t));
+    memory_reserve((void **)&wide->position_batches, &wide->position_batch_capacity, batches,
+                   sizeof(solver_position_batch_t));
+    memory_reserve((void **)&wide->points, &wide->point_capacity, 2 * batches,
+                   sizeof(lane_point_t));
+    memory_reserve((void **)&wide->position_points, &wide->position_point_capacity, 2 * batches,
+                   sizeof(solver_position_point_t));
+    memory_reserve((void **)&wide->blocks, &wide->block_capacity, batches, sizeof(lane_block_t));
+}
+
+/* Where each group's batches, points and blocks begin, from where its
+ * contacts begin in wide->order (start, GROUPS + 1 entries). */
+static void place_groups(solver_wide_t *wide, const uint32_t *start) {
+    wide->group_batch[0] = wide->group_point[0] = wide->group_block[0] = 0;
+    for (int g = 0; g < GROUPS; g++) {
+        uint32_t batches = (start[g + 1] - start[g] + LANES - 1) / LANES;
+        batch_kind_t kind = (batch_kind_t)(g % BATCH_KINDS);
+        wide->group_batch[g + 1] = wide->group_batch[g] + batches;
+        wide->group_point[g + 1] = wide->group_point[g] + batches * (uint32_t)kind_points(kind);
+        wide->group_block[g + 1] = wide->group_block[g] + (kind == BATCH_BLOCK ? batches : 0);
+    }
+    wide->batch_count = wide->group_batch[GROUPS];
+    wide->point_count = wide->group_point[GROUPS];
+    wide->block_count = wide->group_block[GROUPS];
+}
+
+void solver_wide_pack(solver_wide_t *wide, const solver_contact_t *contacts,
+                      const solver_velocity_t *rows, size_t begin, size_t end) {
+    size_t g = begin < end ? group_of(wide, begin) : 0;
+    for (size_t i = begin; i < end; i++) {
+        while (wide->group_batch[g + 1] <= i) g++;
+        pack_at_t at = {i, first_point(wide, g, i), first_block(wide, g, i)};
+        uint32_t first = wide->group_start[g] + (uint32_t)(i - wide->group_batch[g]) * LANES;
+        uint32_t left = wide->group_start[g + 1] - first;
+        int n = (int)(left < LANES ? left : LANES);
+        PREFETCH_CONTACTS(contacts, wide->order, first + PACK_AHEAD, wide->group_start[GROUPS]);
+        load_batch(wide, at, wide->order + first, n, (batch_kind_t)(g % BATCH_KINDS), contacts,
+                   rows);
+    }
+}
+
+void solver_wide_arrange(solver_wide_t *wide, const solver_contact_t *contacts, size_t count,
+                         const solver_velocity_t *rows, size_t body_count) {
+    reserve(wide, count);
+    coloring_assign(&wide->coloring, contacts, count, rows, body_count, wide->colors);
+    uint32_t *start = wide->group_start;
+    sort_by_color(wide, contacts, count, start);
+    place_groups(wide, start);
+}
+
+void solver_wide_pack_all(solver_wide_t *wide, const solver_contact_t *contacts,
+                          const solver_velocity_t *rows) {
+    const uint32_t *start = wide->group_start;
+    pack_at_t at = {0, 0, 0};
+    for (int g = 0; g < GROUPS; g++) {
+        batch_kind_t kind = (batch_kind_t)(g % BATCH_KINDS);
+        for (uint32_t i = start[g]; i < start[g + 1]; i += LANES) {
+            int n = (int)(start[g + 1] - i < LANES ? start[g + 1] - i : LANES);
+            PREFETCH_CONTACTS(contacts, wide->order, i + PACK_AHEAD, start[GROUPS]);
+            load_batch(wide, at, wide->order + i, n, kind, contacts, rows);
+            at.batch++;
+            at.point += (size_t)kind_points(kind);
+            at.block += kind == BATCH_BLOCK;
+        }
+    }
+}
+
+void solver_wide_mark_fixed(solver_wide_t *wide, const solver_velocity_t *rows, size_t begin,
+                            size_t end) {
+    for (size_t i = begin; i < end; i++) {
+        solver_batch_t *batch = &wide->batches[i];
+        uint8_t fixed_a = 0, fixed_b = 0;
+        for (int l = 0; l < batch->lanes; l++) {
+            fixed_a |= (uint8_t)(solver_row_is_static(&rows[batch->a[l]]) << l);
+            fixed_b |= (uint8_t)(solver_row_is_static(&rows[batch->b[l]]) << l);
+        }
+        batch->fixed_a = wide->position_batches[i].fixed_a = fixed_a;
+        batch->fixed_b = wide->position_batches[i].fixed_b = fixed_b;
+    }
+}
+
+void solver_wide_store_range(const solver_wide_t *wide, solver_contact_t *contacts, size_t begin,
+                             size_t end) {
+    if (begin == end) return;
+    const lane_point_t *points = wide->points + first_point(wide, group_of(wide, begin), begin);
+    for (size_t i = begin; i < end; i++) {
+        const solver_batch_t *batch = &wide->batches[i];
+        for (int l = 0; l < batch->lanes; l++) {
+            solver_contact_t *c = &contacts[batch->contact[l]];
+            for (int k = 0; k < c->point_count; k++) {
+                c->points[k].normal_impulse = points[k].normal_impulse[l];
+                c->points[k].tangent_impulse = points[k].tangent_impulse[l];
+            }
+        }
+        points += kind_points((batch_kind_t)batch->kind);
+    }
+}
+
+void solver_wide_store(const solver_wide_t *wide, solver_contact_t *contacts) {
+    solver_wide_store_range(wide, contacts, 0, wide->batch_count);
+}
+
+/* Pushes both ends of contact batch->contact[l] onto its bodies' lists. */
+LANE_INLINE void link_lane(const solver_batch_t *batch, int l, uint32_t *first,
+                           solver_side_t *sides) {
+    uint32_t a = batch->a[l], b = batch->b[l], side = 2 * batch->contact[l];
+    sides[side] = (solver_side_t){first[a], b};
+    first[a] = side;
+    sides[side + 1] = (solver_side_t){first[b], a};
+    first[b] = side + 1;
+}
+
+bool solver_wide_link_loaded(const solver_wide_t *wide, uint32_t *first, solver_side_t *sides,
+                             solver_slot_t *slots) {
+    const lane_point_t *points = wide->points;
+    solver_slot_t slot = 0; /* LANES times the index of the batch's first point */
+    bool any = false;
+    for (size_t i = 0; i < wide->batch_count; i++) {
+        const solver_batch_t *batch = &wide->batches[i];
+        const lane_t *first_impulse = &points[0].normal_impulse;
+        if (batch->kind == BATCH_SINGLE) {
+            /* No slot: only a two-point contact's impulses are asked for. */
+            for (int l = 0; l < batch->lanes; l++) {
+                if (!((*first_impulse)[l] > 0.0)) continue;
+                link_lane(batch, l, first, sides);
+                any = true;
+            }
+            points += 1;
+            slot += LANES;
+            continue;
+        }
+        const lane_t *second_impulse = &points[1].normal_impulse;
+        for (int l = 0; l < batch->lanes; l++) {
+            if (!((*first_impulse)[l] > 0.0 || (*second_impulse)[l] > 0.0)) continue;
+            link_lane(batch, l, first, sides);
+            slots[batch->contact[l]] = slot + (solver_slot_t)l;
+            any = true;
+        }
+        points += 2;
+        slot += 2 * LANES;
+    }
+    return any;
+}
+
+void solver_wide_impulses(const solver_wide_t *wide, solver_slot_t slot, int point_count,
+                          double normal[2], double tangent[2]) {
+    const lane_point_t *p = &wide->points[slot / LANES];
+    int l = (int)(slot % LANES);
+    for (int k = 0; k < point_count; k++) {
+        normal[k] = p[k].normal_impulse[l];
+        tangent[k] = p[k].tangent_impulse[l];
+    }
+}
+
+void solver_wide_free(solver_wide_t *wide) {
+    coloring_free(&wide->coloring);
+    memory_free(wide->colors);
+    memory_free(wide->order);
+    memory_free(wide->batches);
+    memory_free(wide->position_batches);
+    memory_free(wide->points);
+    memory_free(wide->position_points);
+    memory_free(wide->blocks);
+    memory_free(wide->loose);
+    memset(wide, 0, sizeof *wide);
+}

@@ -1,0 +1,200 @@
+#ifndef WORLD_TYPES_H
+#define WORLD_TYPES_H
+
+/*
+ * The world's data, shared by the parts of its step: the pipeline
+ * (world.c), the narrowphase's contacts (narrowphase.c), impacts taken at
+ * their moment (impacts.c) and the state kept between steps
+ * (world_state.c). Not world_private.h, and world.h is not included:
+ * tests/check_house.sh counts both as world.c's, which calls the files
+ * that include this one.
+ */
+
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+#include "dynamics/body_private.h"
+#include "dynamics/integrator.h"
+#include "collision/broadphase.h"
+#include "collision/manifold.h"
+#include "collision/seams.h"
+#include "collision/time_of_impact.h"
+#include "solver/solver.h"
+#include "world/sleep.h"
+#include "base/workers.h"
+
+typedef struct world world_t;
+
+/* For the per-pair and per-body functions that one thread's loops and the
+ * workers' chunks share, and what they call: inlined into each, as the
+ * one-thread loops had them (called, pile(1000) ran 3% more instructions). */
+#if defined(__GNUC__)
+#define WORLD_INLINE static inline __attribute__((always_inline))
+#else
+#define WORLD_INLINE static inline
+#endif
+
+/* Where b is as seen from a: b's centroid in a's frame and the angle
+ * between them. */
+typedef struct {
+    vector_t position;
+    double angle;
+} relative_pose_t;
+
+/* A pair whose boxes overlapped while a face of one polygon kept the other
+ * more than the margin away: that face's separation (m, a lower bound on
+ * the distance between the polygons) at the relative pose it was found at.
+ * While the bodies have since moved against each other by less than the
+ * separation less the step's margin, the pair is still that far apart, and
+ * its separating-axis search is skipped. */
+typedef struct {
+    uint64_t key;
+    relative_pose_t pose;
+    double separation;
+} pair_gap_t;
+
+/* What a contact needs beyond the solver's constraint: who, where, the key
+ * that finds it again next step, its features with the pose they were
+ * found at, and where the pair's contact of the step before lies
+ * (NO_CONTACT: it had none). */
+typedef struct {
+    uint64_t key;
+    body_t *body_a, *body_b;
+    vector_t points[2];
+    manifold_features_t features;
+    relative_pose_t pose;
+    uint32_t previous;
+} contact_source_t;
+static const uint32_t NO_CONTACT = UINT32_MAX;
+
+/* What the narrowphase finds for one pair: its manifold and features,
+ * the pose they were found at, and last step's contact (SIZE_MAX: none);
+ * or, when a face kept the polygons apart, the gap (apart true). */
+typedef struct {
+    manifold_t manifold;
+    manifold_features_t features;
+    relative_pose_t pose;
+    size_t old;
+    bool apart;
+    pair_gap_t gap;
+} pair_result_t;
+
+struct world {
+    broadphase_t *broadphase;
+    broadphase_proxy_t *proxies;
+    size_t proxy_capacity;
+    solver_velocity_t *velocities;
+    size_t velocity_capacity;
+    solver_state_t *states;
+    size_t state_capacity;
+    solver_displacement_t *displacements;
+    size_t displacement_capacity;
+    double *margins;
+    size_t margin_capacity;
+
+    /* This step's contacts, with their sources in parallel, grouped by
+     * body a (the broadphase hands over its pairs sorted by a). */
+    solver_contact_t *contacts;
+    solver_anchor_t *anchors;
+    contact_source_t *sources;
+    size_t contact_count, contact_capacity, anchor_capacity, source_capacity;
+
+    /* Last step's contacts and sources: the buffers swap each step, so
+     * warm starting and feature reuse read last step's results where the
+     * solver left them, with nothing copied. Each body knows where its
+     * group starts (body_private.h). */
+    solver_contact_t *old_contacts;
+    contact_source_t *old_sources;
+    size_t old_count, old_contact_capacity, old_source_capacity;
+    /* The contacts of the step before last, read only when the step's
+     * length changes (warm_rescaled). */
+    solver_contact_t *older_contacts;
+    size_t older_contact_capacity;
+    /* The lengths of the last step and of the one before it (s, 0 before
+     * there was one); this step's over last step's, and over their sum. */
+    double last_dt, older_dt, warm_ratio, warm_share;
+
+    /* This step's and last step's pairs that were apart (pair_gap_t),
+     * grouped by body a as the contacts are. */
+    pair_gap_t *gaps, *old_gaps;
+    size_t gap_count, old_gap_count, gap_capacity, old_gap_capacity;
+
+    /* Steps taken, to tell a body's contact group of the last step from an
+     * older one. */
+    uint64_t step_number;
+
+    /* Which static bodies lie flush (seams.h), found again when a static
+     * body changes; with workers, each chunk of the loading says whether it
+     * saw one change. */
+    seams_t seams;
+    bool seams_changed[WORKERS_MAX_CHUNKS];
+
+    solver_wide_t wide;
+    shock_t shock;
+    int velocity_iterations, position_iterations;
+
+    /* Sleeping: the awake bodies of the step, their motions and where
+     * those came from; the touching contacts that join islands. */
+    sleep_t sleep;
+    body_t **active;
+    integrator_motion_t *active_motions;
+    size_t *active_index;
+    size_t active_capacity, active_motion_capacity, active_index_capacity;
+    sleep_link_t *links;
+    size_t link_capacity;
+
+    /* The threads of scene_set_workers (NULL: the caller's alone), and the
+     * threaded narrowphase's results, one per pair, and contacts per chunk
+     * (narrowphase_split). */
+    workers_t *workers;
+    pair_result_t *results;
+    size_t result_capacity;
+    size_t chunk_first[WORKERS_MAX_CHUNKS + 1];
+    size_t chunk_gap_first[WORKERS_MAX_CHUNKS + 1];
+
+    /* Room for time_of_impact's posed polygons. */
+    toi_scratch_t toi_scratch;
+};
+
+static inline uint64_t pair_key(const body_t *a, const body_t *b) {
+    return (uint64_t)a->id << 32 | b->id;
+}
+
+/* The contact of the pair with this key among the contacts body a had as
+ * body a in step `step`, whose buffer is sources[0 .. count); SIZE_MAX when
+ * the pair had none. A group left from another step (or an older world) is
+ * skipped, and the key check rejects whatever else lies at its indices. */
+static inline size_t find_in_step(const contact_source_t *sources, size_t count,
+                                  uint64_t step, const body_t *a, uint64_t key) {
+    if (a->contact_step != (uint32_t)step) return SIZE_MAX;
+    size_t end = (size_t)a->contact_first + a->contact_count;
+    if (end > count) return SIZE_MAX;
+    for (size_t i = a->contact_first; i < end; i++) {
+        if (sources[i].key == key) return i;
+    }
+    return SIZE_MAX;
+}
+
+/* Copies the impulses of `from`'s points to those of contact that are the
+ * same features. */
+WORLD_INLINE void impulses_by_feature(solver_contact_t *contact, const solver_contact_t *from) {
+    for (int i = 0; i < contact->point_count; i++) {
+        for (int j = 0; j < from->point_count; j++) {
+            if (contact->points[i].id != from->points[j].id) continue;
+            contact->points[i].normal_impulse = from->points[j].normal_impulse;
+            contact->points[i].tangent_impulse = from->points[j].tangent_impulse;
+        }
+    }
+}
+
+/* Tells body a where its groups of this step's contacts and gaps lie. */
+WORLD_INLINE void place_group(const world_t *world, body_t *a, size_t first, size_t end,
+                              size_t gap_first, size_t gap_end) {
+    a->contact_first = (uint32_t)first;
+    a->contact_count = (uint32_t)(end - first);
+    a->gap_first = (uint32_t)gap_first;
+    a->gap_count = (uint32_t)(gap_end - gap_first);
+    a->contact_step = (uint32_t)world->step_number;
+}
+
+#endif // #ifndef WORLD_TYPES_H
