@@ -15,6 +15,7 @@
 #include "forces.h"
 #include "list.h"
 #include "polygon.h"
+#include "query.h"
 #include "scene.h"
 #include "scene_state.h"
 #include "vector.h"

@@ -287,6 +287,46 @@ bool scene_get_sleeping(scene_t *scene);
  * 0.09 m with 4). */
 void scene_set_solver_iterations(scene_t *scene, size_t velocity_iterations,
                                  size_t position_iterations);
+void scene_get_solver_iterations(const scene_t *scene, size_t *velocity_iterations,
+                                 size_t *position_iterations);
+
+/* Warm starting (default on): each contact starts the step's solve from
+ * the impulses its same features had at the last step, so stacks hold with
+ * few iterations. Off, every contact starts from zero impulse (stacks sag
+ * and jitter more at the same iterations). */
+void scene_set_warm_starting(scene_t *scene, bool enabled);
+bool scene_get_warm_starting(const scene_t *scene);
+
+/* The restitution threshold (m/s, default 1, in [0, 100]): contacts
+ * approaching slower than this do not bounce, whatever their elasticity,
+ * so a resting body does not bounce on the speed gravity gives it in one
+ * step; an approach faster than it is also timed as an impact within the
+ * step. An elastic pair that nothing accelerates (no gravity, no force)
+ * bounces at any speed above 1 mm/s whatever this is (docs/api.md). */
+void scene_set_restitution_threshold(scene_t *scene, double threshold);
+double scene_get_restitution_threshold(const scene_t *scene);
+
+/* Sleep tolerances (scene_set_sleeping): a body counts as slow while its
+ * speed plus its rim's speed from turning (radius |angular velocity|) stays
+ * under `linear` (m/s, default 0.01, in (0, 10]; five times that for a body
+ * that gravity or a force presses on others, less for bodies under half a
+ * metre across, docs/api.md "Sleeping") and while |angular velocity| stays
+ * under `angular` (rad/s, default INFINITY: no bound of its own, the turn
+ * counting through the rim's speed; else in (0, 100]). A NULL pointer skips
+ * its part. */
+void scene_set_sleep_tolerance(scene_t *scene, double linear, double angular);
+void scene_get_sleep_tolerance(const scene_t *scene, double *linear, double *angular);
+
+/* How long (s, default 0.5, in (0, 1000]) every body of an island must have
+ * been slow before the island sleeps. */
+void scene_set_sleep_time(scene_t *scene, double seconds);
+double scene_get_sleep_time(const scene_t *scene);
+
+/* Restores the solver's settings to their defaults: iterations (8, 4),
+ * warm starting on, restitution threshold 1 m/s, sleep tolerances (0.01
+ * m/s, INFINITY) and sleep time 0.5 s. Not gravity, the integrator,
+ * sleeping on/off, world contacts or workers. */
+void scene_reset_solver_settings(scene_t *scene);
 
 /*
  * Workers (default 1): the threads a step of world contacts runs on, the
@@ -342,6 +382,74 @@ typedef struct {
 } scene_stats_t;
 
 scene_stats_t scene_get_stats(scene_t *scene);
+
+/*
+ * The step's stages, in the order scene_tick runs them (docs/design.md):
+ *   FORCES       the force creators and each body's free motion (stage 1);
+ *   BROADPHASE   loading the bodies' rows and boxes, and the pairs whose
+ *                boxes overlap;
+ *   NARROWPHASE  the pairs' contact manifolds and impacts timed within the
+ *                step;
+ *   SOLVER       preparing the contacts, restitution, warm starting and the
+ *                velocity iterations, handing results back;
+ *   SHOCK        shock propagation (before the last velocity iteration);
+ *   POSITION     advancing the bodies and the position iterations;
+ *   INTEGRATE    moving every body by its motion (stage 3);
+ *   SLEEP        waking islands a change reached, sleep timers, islands
+ *                put to sleep;
+ *   REMOVAL      reaping the bodies marked removed (stage 4).
+ * BROADPHASE to POSITION run only with world contacts (and bodies), SLEEP
+ * only with world contacts and sleeping on, REMOVAL only when some body was
+ * marked removed, FORCES only when there are force creators or something
+ * (world contacts, a multi-stage or implicit integrator) needs the free
+ * motions first.
+ */
+typedef enum {
+    SCENE_STAGE_FORCES,
+    SCENE_STAGE_BROADPHASE,
+    SCENE_STAGE_NARROWPHASE,
+    SCENE_STAGE_SOLVER,
+    SCENE_STAGE_SHOCK,
+    SCENE_STAGE_POSITION,
+    SCENE_STAGE_INTEGRATE,
+    SCENE_STAGE_SLEEP,
+    SCENE_STAGE_REMOVAL,
+    SCENE_STAGE_COUNT
+} scene_stage_t;
+
+/* The stage's name in lower case ("forces", "broadphase", ...); stops the
+ * program for a value outside [0, SCENE_STAGE_COUNT). */
+const char *scene_stage_name(scene_stage_t stage);
+
+/* The last scene_tick by stage: seconds is the wall time (CLOCK_MONOTONIC,
+ * on the calling thread, whatever the workers) each stage took, ran
+ * whether it ran at all (a stage that did not run has 0 s); all zero before
+ * the first tick. The counts are of the scene as it is when called:
+ * islands, the groups of bodies of finite mass joined by touching world
+ * contacts (a sleeping island counts as one; 0 while world contacts are
+ * off); awake_bodies, those of finite mass or inertia not asleep;
+ * sleeping_bodies, those asleep; static_bodies, those of infinite mass and
+ * inertia. Bodies marked removed are not counted. Counting islands costs
+ * O(bodies + contacts log bodies) and allocates; the rest is free. */
+typedef struct {
+    double seconds[SCENE_STAGE_COUNT];
+    bool ran[SCENE_STAGE_COUNT];
+    size_t islands, awake_bodies, sleeping_bodies, static_bodies;
+} scene_profile_t;
+
+scene_profile_t scene_get_profile(const scene_t *scene);
+
+/* For a body inspector. The body must be the scene's (stops otherwise).
+ * scene_body_contact_count: the entries of the step's record that name the
+ * body and touch (contact_t.touching), world contacts and seed collisions
+ * alike (0 for a sleeping body, whose contacts are not in the record);
+ * O(contacts). scene_body_island: the island of the body (as
+ * scene_profile_t counts them) named by the smallest scene index among its
+ * bodies, or SIZE_MAX for none (a body of infinite mass, one marked
+ * removed, or world contacts off); O(bodies + contacts log bodies), and
+ * allocates. */
+size_t scene_body_contact_count(scene_t *scene, body_t *body);
+size_t scene_body_island(scene_t *scene, body_t *body);
 
 JOSTLE_API_END
 

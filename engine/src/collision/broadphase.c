@@ -1,46 +1,10 @@
 #include "collision/broadphase.h"
+#include "collision/broadphase_private.h"
 #include <math.h>
 #include <string.h>
 #include "base/memory.h"
 #include "base/scalar.h"
 #include "base/workers.h"
-
-/* A proxy in one cell, with its box and the cell of its box's lower-left
- * corner: the pair search then reads the entries of a cell straight
- * through instead of looking each box up. */
-typedef struct {
-    aabb_t box;
-    int32_t ix, iy;     /* this cell (adjacent: cell_key reads them as one) */
-    int32_t min_x, min_y; /* the cell of box.min */
-    uint32_t proxy;
-    uint32_t bucket;    /* hash of (ix, iy), set by sort_entries; in what was padding */
-} cell_entry_t;
-
-struct broadphase {
-    cell_entry_t *entries, *sorted;
-    size_t entry_capacity, sorted_capacity;
-    uint32_t *bucket_start; /* size bucket_count + 1 */
-    size_t bucket_capacity;
-    uint32_t *large;
-    size_t large_capacity;
-    broadphase_pair_t *pairs, *pairs_by_a;
-    size_t pair_count, pair_capacity, pairs_by_a_capacity;
-    uint32_t *pair_start; /* size proxy count + 1 */
-    size_t pair_start_capacity;
-    size_t tests;
-    /* With workers: each chunk of buckets' pairs and tests, joined in chunk
-     * order (pairs_in_buckets_split). */
-    workers_t *workers;
-    broadphase_pair_t *chunk_pairs[WORKERS_MAX_CHUNKS];
-    size_t chunk_count[WORKERS_MAX_CHUNKS], chunk_capacity[WORKERS_MAX_CHUNKS];
-    size_t chunk_tests[WORKERS_MAX_CHUNKS];
-    /* With workers, the grid is filled by parts of the proxies (fill_split):
-     * each part's entry and large counts, where its large proxies go, and
-     * parts x buckets counts that become each part's next place per bucket. */
-    size_t part_entries[WORKERS_MAX_CHUNKS], part_large[WORKERS_MAX_CHUNKS];
-    uint32_t *part_place;
-    size_t part_place_capacity;
-};
 
 broadphase_t *broadphase_init(void) {
     return memory_calloc(1, sizeof(broadphase_t));
@@ -55,6 +19,7 @@ void broadphase_free(broadphase_t *broadphase) {
     memory_free(broadphase->pairs_by_a);
     memory_free(broadphase->pair_start);
     memory_free(broadphase->part_place);
+    memory_free(broadphase->stamps);
     for (size_t k = 0; k < WORKERS_MAX_CHUNKS; k++) memory_free(broadphase->chunk_pairs[k]);
     memory_free(broadphase);
 }
@@ -97,38 +62,6 @@ static double choose_cell_size(const broadphase_proxy_t *proxies, size_t count) 
     /* An infinite size (a box swept by a dt v that overflows, or extents
      * summing past the largest double) would make every cell index NaN. */
     return size > 1e-6 ? min_of(size, 1e300) : 1e-6;
-}
-
-static uint32_t hash_cell(int32_t ix, int32_t iy, uint32_t mask) {
-    uint32_t h = (uint32_t)ix * 73856093u ^ (uint32_t)iy * 19349663u;
-    return (h ^ (h >> 15)) & mask;
-}
-
-/* floor(coordinate / size), by truncation: floor() is a library call on
- * baseline x86-64, and this runs for every box corner every step. */
-static int32_t cell_index(double coordinate, double inverse_size) {
-    double cell = coordinate * inverse_size;
-    /* Keep far-away bodies (and a NaN, which compares false) from
-     * overflowing the cell coordinates. */
-    if (cell > 1e9) cell = 1e9;
-    if (!(cell >= -1e9)) cell = -1e9;
-    int32_t truncated = (int32_t)cell;
-    return truncated - (cell < (double)truncated);
-}
-
-/* The cells a box covers, corners included. */
-typedef struct {
-    int32_t x0, y0, x1, y1;
-} cell_range_t;
-
-static inline cell_range_t cell_range(const aabb_t *box, double inverse_size) {
-    return (cell_range_t){cell_index(box->min.x, inverse_size), cell_index(box->min.y, inverse_size),
-                          cell_index(box->max.x, inverse_size), cell_index(box->max.y, inverse_size)};
-}
-
-/* In double: a huge box's count overflows any integer. */
-static inline double range_cells(cell_range_t r) {
-    return ((double)r.x1 - r.x0 + 1.0) * ((double)r.y1 - r.y0 + 1.0);
 }
 
 /* Writes the (cell, proxy) entries; proxies covering too many cells go to
@@ -367,13 +300,6 @@ static inline bool boxes_overlap(box_lanes_t a, const aabb_t *b) {
 }
 #endif
 
-/* An entry's cell (ix, iy) as one number. */
-static inline uint64_t cell_key(const cell_entry_t *entry) {
-    uint64_t key;
-    memcpy(&key, &entry->ix, sizeof key);
-    return key;
-}
-
 /*
  * Pairs that share a cell; a pair sharing several cells is reported only in
  * the cell holding the lower-left corner of the boxes' intersection.
@@ -516,4 +442,20 @@ size_t broadphase_find_pairs(broadphase_t *broadphase, const broadphase_proxy_t 
     *pairs = sort_pairs(broadphase, count);
     *tests += broadphase->tests + n;
     return broadphase->pair_count;
+}
+
+void broadphase_build(broadphase_t *broadphase, const broadphase_proxy_t *proxies, size_t count) {
+    broadphase->inverse_size = 1.0 / choose_cell_size(proxies, count);
+    size_t n = fill_entries(broadphase, proxies, count, broadphase->inverse_size,
+                            &broadphase->large_count);
+    broadphase->bucket_count = sort_entries(broadphase, n);
+    broadphase->proxy_count = count;
+    broadphase->proxies = proxies;
+    aabb_t bounds = {{INFINITY, INFINITY}, {-INFINITY, -INFINITY}};
+    for (size_t i = 0; i < count; i++) bounds = aabb_union(bounds, proxies[i].box);
+    broadphase->bounds = bounds;
+    memory_reserve((void **)&broadphase->stamps, &broadphase->stamp_capacity, count,
+                   sizeof(uint32_t));
+    if (count > 0) memset(broadphase->stamps, 0, count * sizeof(uint32_t));
+    broadphase->query_number = 0;
 }

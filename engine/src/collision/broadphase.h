@@ -52,6 +52,24 @@ size_t broadphase_find_pairs(broadphase_t *broadphase, const broadphase_proxy_t 
 typedef struct workers workers_t;
 void broadphase_set_workers(broadphase_t *broadphase, workers_t *workers);
 
+/*
+ * Queries (jostle/query.h, broadphase_query.c) on a grid of boxes alone:
+ * broadphase_build files the proxies' boxes (finding no pairs, ignoring
+ * filters; one thread), and the queries read that grid until the next
+ * build or broadphase_find_pairs, the proxies staying where they were
+ * (the caller's array, unchanged). Each visits a proxy at most once per
+ * query; visit returns false to stop a box query, and a ray's visit
+ * returns the fraction the ray is clipped to from then on (the nearest
+ * hit so far), so cells beyond it are not read.
+ */
+void broadphase_build(broadphase_t *broadphase, const broadphase_proxy_t *proxies, size_t count);
+typedef bool (*broadphase_visit_t)(void *context, uint32_t proxy);
+void broadphase_query_box(const broadphase_t *broadphase, aabb_t box, broadphase_visit_t visit,
+                          void *context);
+typedef double (*broadphase_ray_visit_t)(void *context, uint32_t proxy);
+void broadphase_query_ray(broadphase_t *broadphase, vector_t from, vector_t to, double max_fraction,
+                          broadphase_ray_visit_t visit, void *context);
+
 /* Whether the filters of two proxies allow them to touch. */
 bool broadphase_filters_allow(const broadphase_proxy_t *a, const broadphase_proxy_t *b);
 

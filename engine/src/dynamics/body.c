@@ -253,6 +253,7 @@ void body_set_centroid(body_t *body, vector_t x) {
     body_mark_changed(body); /* before: its box there is needed */
     body->centroid = x;
     body->world_valid = false;
+    body_note_move(body);
 }
 
 void body_set_velocity(body_t *body, vector_t v) {
@@ -268,6 +269,7 @@ void body_set_rotation(body_t *body, double angle) {
     body_mark_changed(body);
     body->angle = angle;
     body->world_valid = false;
+    body_note_move(body);
 }
 
 void body_set_color(body_t *body, rgb_color_t color) {

@@ -88,6 +88,9 @@ struct body {
      * it is added); NULL for neither. A force creator of one scene must not
      * read a body that another scene frees. */
     struct scene *scene;
+    /* The owning scene's count of moves (scene_private.h, scene_moves),
+     * which a pose set here advances; NULL outside a scene. */
+    uint64_t *moves;
 
     /* What the last search for seams found of a listed body (seams.h; the
      * world owns it). */
@@ -100,6 +103,11 @@ struct body {
      * local ones. */
     vector_t shape[];
 };
+
+/* Tells the body's scene that it moved (its queries' grid is stale). */
+static inline void body_note_move(body_t *body) {
+    if (body->moves != NULL) (*body->moves)++;
+}
 
 /* Wakes the body and every body of its sleeping island. */
 void body_wake(body_t *body);

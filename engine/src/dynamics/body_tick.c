@@ -17,6 +17,7 @@ void body_tick(body_t *body, double dt) {
     integrator_stages_t *no_stages = NULL;
     integrator_predict(&step, &body, 1, &motion, &no_stages);
     integrator_apply(body, &motion);
+    body_note_move(body);
     if (!body_motion_is_finite(body)) {
         char message[512];
         body_explain_non_finite(body, &before, dt, message, sizeof message);

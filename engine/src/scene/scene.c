@@ -2,11 +2,13 @@
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
+#include <string.h>
 #include "dynamics/body_private.h"
 #include "base/check.h"
 #include "dynamics/integrator.h"
 #include "base/memory.h"
 #include "scene/scene_private.h"
+#include "base/stage_clock.h"
 #include "base/workers.h"
 #include "world/world.h"
 
@@ -55,6 +57,10 @@ struct scene {
     const world_ops_t *world_ops;
     size_t velocity_iterations, position_iterations;
     size_t workers;
+    /* The solver's other settings (scene.h), handed to the world each step. */
+    bool warm_starting;
+    double restitution_threshold;
+    double sleep_linear, sleep_angular, sleep_time;
 
     /* Seed collisions are recorded as they happen; world contacts are
      * appended the first time the record is read after a tick. */
@@ -62,15 +68,22 @@ struct scene {
     size_t record_count, record_capacity;
     bool record_needs_world;
     scene_stats_t stats;
+    /* The stage times of the last tick and the clock that laps them. */
+    scene_profile_t profile;
+    stage_clock_t clock;
+    /* Changes whenever the bodies may have moved, been added or removed
+     * (scene_query.c keeps its grid while it stays the same). */
+    uint64_t moves;
+    void *queries;
+    void (*free_queries)(void *queries);
 };
 
 scene_t *scene_init(void) {
     scene_t *scene = memory_calloc(1, sizeof(scene_t));
     scene->integrator = INTEGRATOR_SEED;
     scene->sleeping = true;
-    scene->velocity_iterations = 8;
-    scene->position_iterations = 4;
     scene->workers = 1;
+    scene_reset_solver_settings(scene);
     return scene;
 }
 
@@ -118,6 +131,7 @@ void scene_require_idle(const scene_t *scene, const char *function, const char *
  * is still a scene's). */
 static void free_owned_body(body_t *body) {
     body->scene = NULL;
+    body->moves = NULL;
     body->in_scene = false;
     body_free(body);
 }
@@ -136,6 +150,7 @@ void scene_free(scene_t *scene) {
     memory_free(scene->motions);
     memory_free(scene->jacobians);
     integrator_stages_free(scene->stages);
+    if (scene->queries != NULL) scene->free_queries(scene->queries);
     memory_free(scene);
 }
 
@@ -162,6 +177,8 @@ void scene_add_body(scene_t *scene, body_t *body) {
             scene->stage, integrator_get_name(scene->integrator));
     body->in_scene = true;
     body->scene = scene;
+    body->moves = &scene->moves;
+    scene->moves++;
     memory_reserve((void **)&scene->bodies, &scene->body_capacity, scene->body_count + 1,
                    sizeof(body_t *));
     body->id = scene->next_body_id++;
@@ -232,6 +249,15 @@ void scene_claim_body(scene_t *scene, body_t *body, const char *name, const char
     if (belongs_elsewhere(scene, body)) engine_fail(function, "%s belongs to another scene", name);
     body->scene = scene;
 }
+
+/* The solver's defaults (scene_reset_solver_settings). Contacts approaching
+ * slower than 1 m/s do not bounce: a resting body must not bounce on the
+ * speed gravity gives it in one step. Box2D v2's sleep tolerance and time
+ * for a body in free motion (0.01 m/s, half a second); no angular
+ * tolerance of its own, the turn counting through the rim's speed. */
+static const double SCENE_DEFAULT_RESTITUTION_THRESHOLD = 1.0;
+static const double SCENE_DEFAULT_SLEEP_LINEAR = 0.01;
+static const double SCENE_DEFAULT_SLEEP_TIME = 0.5;
 
 /* What scene_require_idle says for the settings a tick is running with. */
 static const char *const SETTING_ADVICE = "change the setting between ticks";
@@ -331,6 +357,77 @@ void scene_set_solver_iterations(scene_t *scene, size_t velocity_iterations,
     }
 }
 
+void scene_get_solver_iterations(const scene_t *scene, size_t *velocity_iterations,
+                                 size_t *position_iterations) {
+    REQUIRE_NOT_NULL(scene);
+    if (velocity_iterations != NULL) *velocity_iterations = scene->velocity_iterations;
+    if (position_iterations != NULL) *position_iterations = scene->position_iterations;
+}
+
+void scene_set_warm_starting(scene_t *scene, bool enabled) {
+    REQUIRE_NOT_NULL(scene);
+    scene_require_idle(scene, __func__, SETTING_ADVICE);
+    scene->warm_starting = enabled;
+}
+
+bool scene_get_warm_starting(const scene_t *scene) {
+    REQUIRE_NOT_NULL(scene);
+    return scene->warm_starting;
+}
+
+void scene_set_restitution_threshold(scene_t *scene, double threshold) {
+    REQUIRE_NOT_NULL(scene);
+    scene_require_idle(scene, __func__, SETTING_ADVICE);
+    REQUIRE(threshold >= 0.0 && threshold <= 100.0,
+            "threshold must be in [0, 100] m/s (got %g)", threshold);
+    scene->restitution_threshold = threshold;
+}
+
+double scene_get_restitution_threshold(const scene_t *scene) {
+    REQUIRE_NOT_NULL(scene);
+    return scene->restitution_threshold;
+}
+
+void scene_set_sleep_tolerance(scene_t *scene, double linear, double angular) {
+    REQUIRE_NOT_NULL(scene);
+    scene_require_idle(scene, __func__, SETTING_ADVICE);
+    REQUIRE(linear > 0.0 && linear <= 10.0, "linear must be in (0, 10] m/s (got %g)", linear);
+    REQUIRE(angular == INFINITY || (angular > 0.0 && angular <= 100.0),
+            "angular must be in (0, 100] rad/s or INFINITY (got %g)", angular);
+    scene->sleep_linear = linear;
+    scene->sleep_angular = angular;
+}
+
+void scene_get_sleep_tolerance(const scene_t *scene, double *linear, double *angular) {
+    REQUIRE_NOT_NULL(scene);
+    if (linear != NULL) *linear = scene->sleep_linear;
+    if (angular != NULL) *angular = scene->sleep_angular;
+}
+
+void scene_set_sleep_time(scene_t *scene, double seconds) {
+    REQUIRE_NOT_NULL(scene);
+    scene_require_idle(scene, __func__, SETTING_ADVICE);
+    REQUIRE(seconds > 0.0 && seconds <= 1000.0, "seconds must be in (0, 1000] (got %g)",
+            seconds);
+    scene->sleep_time = seconds;
+}
+
+double scene_get_sleep_time(const scene_t *scene) {
+    REQUIRE_NOT_NULL(scene);
+    return scene->sleep_time;
+}
+
+void scene_reset_solver_settings(scene_t *scene) {
+    REQUIRE_NOT_NULL(scene);
+    scene_require_idle(scene, __func__, SETTING_ADVICE);
+    scene_set_solver_iterations(scene, 8, 4);
+    scene->warm_starting = true;
+    scene->restitution_threshold = SCENE_DEFAULT_RESTITUTION_THRESHOLD;
+    scene->sleep_linear = SCENE_DEFAULT_SLEEP_LINEAR;
+    scene->sleep_angular = INFINITY;
+    scene->sleep_time = SCENE_DEFAULT_SLEEP_TIME;
+}
+
 void scene_set_workers(scene_t *scene, size_t workers) {
     REQUIRE_NOT_NULL(scene);
     scene_require_idle(scene, __func__, SETTING_ADVICE);
@@ -416,6 +513,22 @@ double scene_step_dt(const scene_t *scene) {
     return scene->dt;
 }
 
+void *scene_query_state(scene_t *scene, void *(*init)(void), void (*freer)(void *queries)) {
+    if (scene->queries == NULL) {
+        scene->queries = init();
+        scene->free_queries = freer;
+    }
+    return scene->queries;
+}
+
+uint64_t scene_moves(const scene_t *scene) {
+    return scene->moves;
+}
+
+scene_profile_t scene_stage_times(const scene_t *scene) {
+    return scene->profile;
+}
+
 /* Stage 1 at the start of the step. A force creator may add force creators
  * (they run from the next tick on, since the count is read once) and may
  * remove bodies. */
@@ -431,6 +544,7 @@ static void stage_forces(scene_t *scene) {
 static void stage_forces_again(void *context) {
     scene_t *scene = context;
     scene->stage++;
+    scene->moves++; /* the bodies stand at the stage's trial poses */
     scene->stats.force_evaluations++;
     for (size_t i = 0; i < scene->stage_force_count; i++) {
         const force_entry_t *entry = &scene->forces[i];
@@ -501,9 +615,11 @@ static const integrator_motion_t *stage_motion(scene_t *scene, integrator_step_t
     } else if (scene->force_count > 0) {
         stage_forces(scene);
     }
+    if (!one_stage || scene->force_count > 0) stage_clock_lap(&scene->clock, SCENE_STAGE_FORCES);
     if (scene->world != NULL && scene->sleeping) {
         scene->world_ops->wake_changed(scene->world, scene->bodies, scene->body_count, step->dt,
                                        scene->gravity);
+        stage_clock_lap(&scene->clock, SCENE_STAGE_SLEEP);
     }
     if (per_body && scene->world == NULL) return NULL;
     memory_reserve((void **)&scene->motions, &scene->motion_capacity, scene->body_count,
@@ -517,6 +633,7 @@ static const integrator_motion_t *stage_motion(scene_t *scene, integrator_step_t
         integrator_predict(step, scene->bodies, scene->body_count, scene->motions, &scene->stages);
     }
     scene->stage = 0;
+    stage_clock_lap(&scene->clock, SCENE_STAGE_FORCES);
     return scene->motions;
 }
 
@@ -649,6 +766,7 @@ static void stage_reap(scene_t *scene) {
         }
     }
     scene->body_count = kept;
+    if (scene->stats.removed_bodies > 0) stage_clock_lap(&scene->clock, SCENE_STAGE_REMOVAL);
 }
 
 static void tick(scene_t *scene, double dt) {
@@ -656,6 +774,10 @@ static void tick(scene_t *scene, double dt) {
     scene->record_needs_world = false;
     scene->stats = (scene_stats_t){0};
     scene->dt = dt;
+    memset(&scene->profile, 0, sizeof scene->profile);
+    scene->clock.profile = &scene->profile;
+    stage_clock_start(&scene->clock);
+    scene->moves++;
     if (dt == 0.0) {
         /* No time passes, so nothing may move or collide; the caller only
          * wants the pending removals applied (a paused game). The world
@@ -669,14 +791,24 @@ static void tick(scene_t *scene, double dt) {
     integrator_step_t step = {scene->integrator, dt, scene->gravity, NULL, scene, NULL, 0, 0};
     const integrator_motion_t *motions = stage_motion(scene, &step);
     if (scene->world != NULL && scene->body_count > 0) {
-        world_step_t world_step = {dt, integrator_position_weight(scene->integrator),
-                                   scene->sleeping, scene->largest_polygon};
+        world_step_t world_step = {dt,
+                                   integrator_position_weight(scene->integrator),
+                                   scene->sleeping,
+                                   scene->largest_polygon,
+                                   scene->warm_starting,
+                                   scene->restitution_threshold,
+                                   scene->sleep_linear,
+                                   scene->sleep_angular,
+                                   scene->sleep_time,
+                                   &scene->clock};
         scene->world_ops->step(scene->world, scene->bodies, scene->motions, scene->body_count,
                                &world_step, &scene->stats);
         scene->record_needs_world = true;
         integrator_respond(&step, scene->bodies, scene->motions, scene->stages);
     }
-    if (stage_integrate(scene, &step, motions)) stage_reap(scene);
+    bool removed = stage_integrate(scene, &step, motions);
+    stage_clock_lap(&scene->clock, SCENE_STAGE_INTEGRATE);
+    if (removed) stage_reap(scene);
 }
 
 void scene_tick(scene_t *scene, double dt) {
@@ -686,4 +818,5 @@ void scene_tick(scene_t *scene, double dt) {
     scene->running = __func__;
     tick(scene, dt);
     scene->running = NULL;
+    scene->moves++;
 }

@@ -127,4 +127,17 @@ bool scene_world_pair_contact(const scene_t *scene, body_t *body1, body_t *body2
 size_t scene_body_index(const scene_t *scene, const body_t *body);
 double scene_step_dt(const scene_t *scene);
 
+/* The queries' state (scene_query.c): made by init at the first query and
+ * freed by freer with the scene, so that a program that asks none links no
+ * grid (the scene's world pipeline is kept out the same way). */
+void *scene_query_state(scene_t *scene, void *(*init)(void), void (*freer)(void *queries));
+
+/* A number that changes whenever the scene's bodies may have moved or been
+ * added or removed: a tick, a stage of one, a body added, a pose set on one
+ * of its bodies (body_private.h's moves). */
+uint64_t scene_moves(const scene_t *scene);
+
+/* The last tick's stage times and ran flags (the counts left 0). */
+scene_profile_t scene_stage_times(const scene_t *scene);
+
 #endif // #ifndef SCENE_PRIVATE_H

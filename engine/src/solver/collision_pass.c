@@ -112,9 +112,11 @@ static bool late_impact(const solver_contact_t *c, solver_point_t *p, double vn,
  * whether it applied an impulse.
  */
 static bool bounce_contact(solver_contact_t *c, solver_velocity_t *velocities,
-                           const solver_state_t *states, double dt, bool *impacts) {
+                           const solver_state_t *states, double dt, double restitution_threshold,
+                           bool *impacts) {
     solver_velocity_t a = velocities[c->a], b = velocities[c->b];
-    double threshold = bounce_threshold(c->restitution, &states[c->a], &states[c->b]);
+    double threshold =
+        bounce_threshold(c->restitution, &states[c->a], &states[c->b], restitution_threshold);
     double approach[2] = {NAN, NAN};
     bool wanted = false;
     for (int i = 0; i < c->point_count; i++) {
@@ -167,13 +169,15 @@ static bool bounce_contact(solver_contact_t *c, solver_velocity_t *velocities,
  * off). Contacts without elasticity skip it.
  */
 bool solver_collision_pass(solver_contact_t *contacts, size_t count, solver_velocity_t *velocities,
-                           const solver_state_t *states, double dt, int passes) {
+                           const solver_state_t *states, double dt, double threshold,
+                           int passes) {
     bool impacts = false;
     for (int pass = 0; pass < passes; pass++) {
         bool applied = false;
         for (size_t i = 0; i < count; i++) {
             if (contacts[i].restitution > 0.0) {
-                applied |= bounce_contact(&contacts[i], velocities, states, dt, &impacts);
+                applied |= bounce_contact(&contacts[i], velocities, states, dt, threshold,
+                                          &impacts);
             }
         }
         if (!applied) break;

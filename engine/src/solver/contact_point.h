@@ -43,14 +43,14 @@ static inline void apply_along(solver_velocity_t *a, solver_velocity_t *b, vecto
 /* The approach speed (m/s) from which an elastic contact bounces: lower for
  * a pair that nothing accelerates (solver_types.h). Inelastic contacts keep the
  * ordinary threshold, which also decides which of their approaches are
- * timed as impacts. */
+ * timed as impacts; `threshold` is that one (solver_settings_t). */
 static inline double bounce_threshold(double restitution, const solver_state_t *sa,
-                                      const solver_state_t *sb) {
+                                      const solver_state_t *sb, double threshold) {
     if (restitution > 0.0 && sa->acceleration.x == 0.0 && sa->acceleration.y == 0.0 &&
         sb->acceleration.x == 0.0 && sb->acceleration.y == 0.0) {
         return SOLVER_FREE_RESTITUTION_THRESHOLD;
     }
-    return SOLVER_RESTITUTION_THRESHOLD;
+    return threshold;
 }
 
 /* Two impacts of one contact within this fraction of the step of each

@@ -60,11 +60,23 @@ static void for_bodies(workers_t *workers, solve_split_t *split, workers_fn_t fn
     workers_for(workers, count, fn, split);
 }
 
+/* Warm starting off: every contact starts from zero impulse instead of the
+ * impulses the narrowphase carried over from its features' last step. */
+static void forget_impulses(solver_contact_t *contacts, size_t contact_count) {
+    for (size_t i = 0; i < contact_count; i++) {
+        for (int j = 0; j < contacts[i].point_count; j++) {
+            contacts[i].points[j].normal_impulse = 0.0;
+            contacts[i].points[j].tangent_impulse = 0.0;
+        }
+    }
+}
+
 void solver_solve(solver_wide_t *wide, shock_t *shock, solver_contact_t *contacts,
                   const solver_anchor_t *anchors, size_t contact_count,
                   const solver_bodies_t *bodies, const solver_settings_t *settings) {
     solver_velocity_t *velocities = bodies->velocities;
     solve_split_t split = {contacts, anchors, bodies, settings, {{false, false}}};
+    if (!settings->warm_starting) forget_impulses(contacts, contact_count);
     /* A step pays for the collision pass only with an elastic contact, and
      * for timing impacts only with an impact. */
     prepared_t found = prepare_all(wide->workers, &split, contact_count);
@@ -74,7 +86,8 @@ void solver_solve(solver_wide_t *wide, shock_t *shock, solver_contact_t *contact
      * impact made, and bouncing those kept a pile at e = 0.5 boiling. */
     if (any_elastic) {
         any_impact |= solver_collision_pass(contacts, contact_count, velocities, bodies->states,
-                                            settings->dt, settings->velocity_iterations);
+                                            settings->dt, settings->restitution_threshold,
+                                            settings->velocity_iterations);
     }
     solver_split_load(wide, contacts, contact_count, velocities, bodies->body_count);
     solver_split_warm_start(wide, velocities);
@@ -90,11 +103,14 @@ void solver_solve(solver_wide_t *wide, shock_t *shock, solver_contact_t *contact
             solver_solve_velocity(&contacts[wide->loose[i]], velocities);
         }
         if (iteration == shock_after) {
+            stage_clock_lap(settings->clock, SCENE_STAGE_SOLVER);
             shock_propagate(shock, wide, contacts, contact_count, velocities, bodies->body_count);
+            stage_clock_lap(settings->clock, SCENE_STAGE_SHOCK);
         }
     }
     solver_split_store(wide, contacts);
     if (any_impact) solver_mark_impacts(contacts, contact_count, velocities, bodies->states);
+    stage_clock_lap(settings->clock, SCENE_STAGE_SOLVER);
     for_bodies(wide->workers, &split, advance_chunk);
     for (int iteration = 0; iteration < settings->position_iterations; iteration++) {
         solver_split_correct_positions(wide, bodies->displacements, iteration % 2 == 1);
@@ -103,4 +119,5 @@ void solver_solve(solver_wide_t *wide, shock_t *shock, solver_contact_t *contact
         }
     }
     for_bodies(wide->workers, &split, limit_chunk);
+    stage_clock_lap(settings->clock, SCENE_STAGE_POSITION);
 }

@@ -1,7 +1,6 @@
 /* The values of the constants solver_types.h declares and explains. */
 #include "solver/solver_types.h"
 
-const double SOLVER_RESTITUTION_THRESHOLD = 1.0;
 const double SOLVER_FREE_RESTITUTION_THRESHOLD = 1e-3;
 const double SOLVER_LINEAR_SLOP = 0.001;
 const double SOLVER_SLOP_FRACTION = 0.01;

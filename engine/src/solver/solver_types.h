@@ -13,6 +13,7 @@
 #include <stddef.h>
 #include <stdint.h>
 #include "jostle/vector.h"
+#include "base/stage_clock.h"
 
 /* What the velocity iterations touch, kept small so that thousands of
  * bodies stay in cache: one row per body. */
@@ -130,14 +131,18 @@ typedef struct {
     double position_weight;
     int velocity_iterations;
     int position_iterations;
+    /* scene_set_warm_starting, scene_set_restitution_threshold (m/s) */
+    bool warm_starting;
+    double restitution_threshold;
+    /* The step's stage times (NULL: not timed). */
+    stage_clock_t *clock;
 } solver_settings_t;
 
-/* Below this approach speed (m/s) contacts are inelastic: a resting body
- * must not bounce on the speed gravity gives it in one step. */
-extern const double SOLVER_RESTITUTION_THRESHOLD;
-/* The same for an elastic pair of bodies that nothing accelerates (no
- * gravity, no force on either): nothing presses them together, so no
- * contact of theirs rests, and a slow meeting is an impact like a fast one.
+/* Below solver_settings_t's restitution_threshold (m/s) contacts are
+ * inelastic (scene_set_restitution_threshold). This one replaces it for an
+ * elastic pair of bodies that nothing accelerates (no gravity, no force on
+ * either): nothing presses them together, so no contact of theirs rests,
+ * and a slow meeting is an impact like a fast one.
  * With the ordinary threshold a gas of 20 elastic polygons in a closed box
  * without gravity kept 0.05% of its energy after 10^4 steps (every impact
  * slower than 1 m/s stopped dead); this one only keeps the collision pass

@@ -91,7 +91,7 @@ static bool set_target(solver_point_t *p, vector_t r_a, vector_t r_b, vector_t n
      * impact, timed, does. */
     double closing =
         w > 0.0 ? min_of((-p->separation / dt - vec_dot(normal, drift)) / w, 0.0) : -INFINITY;
-    if (tau >= 0.0 && vi < -bounce_threshold(restitution, sa, sb)) {
+    if (tau >= 0.0 && vi < -bounce_threshold(restitution, sa, sb, settings->restitution_threshold)) {
         p->impact_time = tau;
         double after = an * (dt - tau);
         if (restitution > 0.0 && -restitution * vi + after >= 0.0) {
@@ -114,8 +114,8 @@ double solver_time_of_impact(double s, double v, double a, double dt) {
 }
 
 double solver_bounce_threshold(double restitution, const solver_state_t *sa,
-                               const solver_state_t *sb) {
-    return bounce_threshold(restitution, sa, sb);
+                               const solver_state_t *sb, double threshold) {
+    return bounce_threshold(restitution, sa, sb, threshold);
 }
 
 /* Two points of one manifold that hit at the same moment bounce together

@@ -23,10 +23,10 @@ double solver_time_of_impact(double s, double v, double a, double dt);
 /* The approach speed (m/s) from which a contact with this restitution
  * between bodies with these rows bounces: SOLVER_FREE_RESTITUTION_THRESHOLD
  * for an elastic pair that nothing accelerates, else
- * SOLVER_RESTITUTION_THRESHOLD, which for inelastic contacts also decides
- * which approaches are timed as impacts. */
+ * `threshold` (solver_settings_t's), which for inelastic contacts also
+ * decides which approaches are timed as impacts. */
 double solver_bounce_threshold(double restitution, const solver_state_t *sa,
-                               const solver_state_t *sb);
+                               const solver_state_t *sb, double threshold);
 
 /* What preparing contacts found: an impact within the step, an elastic
  * contact. */

@@ -25,9 +25,10 @@ static vector_t start_approach(const solver_state_t *sa, vector_t r_a, const sol
  * the bounce threshold, at the start velocities and accelerations, in the
  * geometry of the start (velocity_solve.c, set_target). */
 static bool impact_in_step(const solver_contact_t *c, const solver_anchor_t *anchor,
-                           const solver_state_t *sa, const solver_state_t *sb, double dt) {
+                           const solver_state_t *sa, const solver_state_t *sb, double dt,
+                           double restitution_threshold) {
     double pull = vec_dot(c->normal, vec_subtract(sb->acceleration, sa->acceleration));
-    double threshold = solver_bounce_threshold(c->restitution, sa, sb);
+    double threshold = solver_bounce_threshold(c->restitution, sa, sb, restitution_threshold);
     bool impact = false;
     for (int i = 0; i < c->point_count; i++) {
         double gap = c->points[i].separation;
@@ -92,10 +93,11 @@ static void take_at(world_t *world, size_t n, const toi_contact_t *hit) {
 /* Contact n taken at the moment of its impact, if the solver will time one
  * (impacts_take). Not inlined: a scene without elastic contacts pays only
  * for the loop that looks for them. */
-static __attribute__((noinline)) void take_impact(world_t *world, size_t n, double dt) {
+static __attribute__((noinline)) void take_impact(world_t *world, size_t n, double dt,
+                                                   double threshold) {
     const solver_contact_t *c = &world->contacts[n];
     const solver_state_t *sa = &world->states[c->a], *sb = &world->states[c->b];
-    if (!impact_in_step(c, &world->anchors[n], sa, sb, dt)) return;
+    if (!impact_in_step(c, &world->anchors[n], sa, sb, dt, threshold)) return;
     body_t *a = world->sources[n].body_a, *b = world->sources[n].body_b;
     toi_motion_t ma = impact_motion(sa), mb = impact_motion(sb);
     double margin = world->margins[c->a] + world->margins[c->b];
@@ -114,9 +116,9 @@ static __attribute__((noinline)) void take_impact(world_t *world, size_t n, doub
  * not bounced along a normal of the start (docs/design.md, "Impacts within
  * the step").
  */
-void impacts_take(world_t *world, double dt, size_t largest_polygon) {
+void impacts_take(world_t *world, double dt, size_t largest_polygon, double threshold) {
     toi_scratch_reserve(&world->toi_scratch, largest_polygon);
     for (size_t n = 0; n < world->contact_count; n++) {
-        if (world->contacts[n].restitution != 0.0) take_impact(world, n, dt);
+        if (world->contacts[n].restitution != 0.0) take_impact(world, n, dt, threshold);
     }
 }

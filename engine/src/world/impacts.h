@@ -12,6 +12,6 @@
 #include <stddef.h>
 #include "world/world_types.h"
 
-void impacts_take(world_t *world, double dt, size_t largest_polygon);
+void impacts_take(world_t *world, double dt, size_t largest_polygon, double threshold);
 
 #endif // #ifndef IMPACTS_H

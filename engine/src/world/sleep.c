@@ -5,13 +5,10 @@
 #include "collision/broadphase.h"
 #include "base/memory.h"
 
-/* Box2D v2's tolerance and time for a body in free motion (0.01 m/s, half a
- * second); a body that gravity or a force pulls, and that can rest only
- * pressed on others, gets five times more, Box2D v3's 0.05 m/s: a pile's
- * bodies creep by millimetres a second long after it has come to rest
- * (docs/design.md, Sleeping). */
-const double SLEEP_LINEAR_SPEED = 0.01;
-const double SLEEP_TIME = 0.5;
+/* A body that gravity or a force pulls, and that can rest only pressed on
+ * others, gets five times the tolerance (the default's five times is Box2D
+ * v3's 0.05 m/s): a pile's bodies creep by millimetres a second long after
+ * it has come to rest (docs/design.md, Sleeping). */
 static const double SLEEP_PRESSED_FACTOR = 5.0;
 /* But it may rise against that pull (an overlapping stack being pushed
  * apart) at only half the free tolerance. */
@@ -54,7 +51,7 @@ static void anchor_at(body_t *body) {
     body->sleep_window = 0.0;
 }
 
-/* Slow: over each SLEEP_TIME the body has moved no farther than the
+/* Slow: over each sleep time the body has moved no farther than the
  * tolerance speed covers in that time (its rim's motion counted with its
  * centroid's), and no higher against its pull than SLEEP_RISE_SHARE of the
  * free tolerance; its velocities stay within the tolerance plus what one
@@ -62,28 +59,31 @@ static void anchor_at(body_t *body) {
  * velocity of that order that the next step takes back (Chipmunk's idle
  * speed is the same dt |g|), so what counts is how far the body goes. The
  * tolerance shrinks for small bodies (a centimetre box at 1 cm/s is still
- * settling). */
-static bool is_slow(const solver_velocity_t *row, const solver_displacement_t *moved,
-                    const solver_state_t *state, double dt, body_t *body) {
-    double linear = fmin(SLEEP_LINEAR_SPEED, SLEEP_SIZE_RATE * body->radius);
+ * settling). Nor may it turn faster than the angular tolerance. */
+static bool is_slow(const sleep_step_t *step, const solver_velocity_t *row,
+                    const solver_displacement_t *moved, const solver_state_t *state,
+                    body_t *body) {
+    double dt = step->dt, sleep_time = step->time;
+    double linear = fmin(step->linear_tolerance, SLEEP_SIZE_RATE * body->radius);
     double jitter = dt * vec_get_length(state->acceleration);
     double tolerance = jitter > 0.0 ? SLEEP_PRESSED_FACTOR * linear : linear;
-    if (vec_get_length(row->v) + body->radius * fabs(row->w) > tolerance + jitter) {
+    if (vec_get_length(row->v) + body->radius * fabs(row->w) > tolerance + jitter ||
+        fabs(row->w) > step->angular_tolerance) {
         body->sleep_time = 0.0;
         return false;
     }
-    if (body->sleep_time == 0.0 || body->sleep_window >= SLEEP_TIME) anchor_at(body);
+    if (body->sleep_time == 0.0 || body->sleep_window >= sleep_time) anchor_at(body);
     vector_t drift = vec_subtract(vec_add(body->centroid, moved->dx), body->sleep_anchor);
     double turn = body->angle + moved->dtheta - body->sleep_anchor_angle;
     double moved_by = vec_get_length(drift) + body->radius * fabs(turn);
     double rise = jitter > 0.0 ? -vec_dot(drift, state->acceleration) * dt / jitter : 0.0;
-    if (moved_by > tolerance * SLEEP_TIME || rise > SLEEP_RISE_SHARE * linear * SLEEP_TIME) {
+    if (moved_by > tolerance * sleep_time || rise > SLEEP_RISE_SHARE * linear * sleep_time) {
         anchor_at(body);
         body->sleep_time = 0.0;
     }
     body->sleep_window += dt;
     body->sleep_time += dt;
-    return body->sleep_time >= SLEEP_TIME;
+    return body->sleep_time >= sleep_time;
 }
 
 size_t sleep_time_bodies(const sleep_step_t *step, size_t begin, size_t end) {
@@ -91,7 +91,7 @@ size_t sleep_time_bodies(const sleep_step_t *step, size_t begin, size_t end) {
     for (size_t i = begin; i < end; i++) {
         body_t *body = step->bodies[i];
         if (!body_is_movable(body) || body->removed) continue;
-        ready += is_slow(&step->velocities[i], &step->displacements[i], &step->states[i], step->dt,
+        ready += is_slow(step, &step->velocities[i], &step->displacements[i], &step->states[i],
                          body);
     }
     return ready;
@@ -104,7 +104,7 @@ bool sleep_is_check_step(sleep_t *sleep) {
 }
 
 /* Joins the rows into islands over the touching links; an island is ready
- * when every body has been slow for SLEEP_TIME. */
+ * when every body has been slow for the step's sleep time. */
 static void build_islands(sleep_t *sleep, const sleep_step_t *step, const sleep_link_t *links,
                           size_t link_count) {
     memory_reserve((void **)&sleep->parent, &sleep->parent_capacity, step->count,
@@ -136,7 +136,7 @@ static void build_islands(sleep_t *sleep, const sleep_step_t *step, const sleep_
         body_t *body = step->bodies[i];
         struct sleep_island *island = &sleep->islands[find_root(sleep->parent, (uint32_t)i)];
         if (!body_is_movable(body)) continue;
-        if (body->removed || body->sleep_time < SLEEP_TIME) island->ready = false;
+        if (body->removed || body->sleep_time < step->time) island->ready = false;
         vector_t a = step->states[i].acceleration;
         if (a.x != 0.0 || a.y != 0.0) island->pushed = true;
     }

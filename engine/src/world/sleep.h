@@ -3,7 +3,7 @@
 
 /*
  * Sleeping: islands of touching bodies that have stayed slow for
- * SLEEP_TIME are taken out of the step, and woken when a moving body comes
+ * the sleep time (sleep_step_t) are taken out of the step, and woken when a moving body comes
  * within a step of them (body.c wakes them when the user sets a pose,
  * velocity, force or impulse, or removes a body of the island), or when a
  * body they touch, static ones included, changed between steps
@@ -27,11 +27,6 @@
 #include "jostle/body.h"
 #include "collision/broadphase.h"
 #include "solver/solver.h"
-
-/* Moving slower than this (m/s at its rim, less for bodies under half a
- * metre, five times more for a body gravity or a force pulls) for SLEEP_TIME (s)
- * a body may sleep. */
-extern const double SLEEP_LINEAR_SPEED, SLEEP_TIME;
 
 typedef struct {
     struct sleep_entry *entries;
@@ -68,6 +63,11 @@ typedef struct {
     size_t count;
     double dt;
     double margin;
+    /* scene_set_sleep_tolerance (m/s at its rim, less for bodies under half
+     * a metre, five times more for a body gravity or a force pulls; rad/s)
+     * and scene_set_sleep_time (s): slower than these for that long, a
+     * body may sleep. */
+    double linear_tolerance, angular_tolerance, time;
 } sleep_step_t;
 
 /* Two rows whose contact touches this step. */
@@ -76,7 +76,7 @@ typedef struct {
 } sleep_link_t;
 
 /* Advances the sleep timer of each movable body of rows [begin, end);
- * returns how many of them have been slow for SLEEP_TIME. When none of all
+ * returns how many of them have been slow for the step's sleep time. When none of all
  * the rows has, no island can sleep: the caller need not list its contacts
  * for sleep_islands. Each row writes only its own body, so ranges may run
  * on different threads. */

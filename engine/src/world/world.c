@@ -250,11 +250,12 @@ static size_t time_bodies(world_t *world, const sleep_step_t *step) {
  * islands joined only when some body has been slow long enough for its
  * island to sleep, and then every SLEEP_CHECK_STEPS steps (a pile whose
  * bottom rests and top creeps would pay for islands at every step). */
-static void update_sleep(world_t *world, body_t **bodies, size_t count, double dt,
+static void update_sleep(world_t *world, body_t **bodies, size_t count, const world_step_t *ws,
                          body_t **all_bodies, size_t all_count) {
     sleep_step_t step = {bodies,          world->velocities, world->displacements,
                          world->states,   world->proxies,    count,
-                         dt,              CONTACT_MARGIN};
+                         ws->dt,          CONTACT_MARGIN,    ws->sleep_linear,
+                         ws->sleep_angular, ws->sleep_time};
     if (time_bodies(world, &step) > 0 && sleep_is_check_step(&world->sleep)) {
         memory_reserve((void **)&world->links, &world->link_capacity, world->contact_count,
                        sizeof(sleep_link_t));
@@ -284,14 +285,24 @@ static void run_pipeline(world_t *world, body_t **bodies, integrator_motion_t *m
     const broadphase_pair_t *pairs;
     size_t pair_count = broadphase_find_pairs(world->broadphase, world->proxies, count, &pairs,
                                               &stats->broadphase_tests);
+    stage_clock_lap(step->clock, SCENE_STAGE_BROADPHASE);
     narrowphase_find_contacts(world, bodies, pairs, pair_count);
-    impacts_take(world, step->dt, step->largest_polygon);
-    solver_settings_t settings = {step->dt, step->position_weight, world->velocity_iterations,
-                                  world->position_iterations};
+    impacts_take(world, step->dt, step->largest_polygon, step->restitution_threshold);
+    stage_clock_lap(step->clock, SCENE_STAGE_NARROWPHASE);
+    solver_settings_t settings = {step->dt,
+                                  step->position_weight,
+                                  world->velocity_iterations,
+                                  world->position_iterations,
+                                  step->warm_starting,
+                                  step->restitution_threshold,
+                                  step->clock};
     solver_bodies_t rows = {world->velocities, world->displacements, world->states, count};
     solver_solve(&world->wide, &world->shock, world->contacts, world->anchors,
                  world->contact_count, &rows, &settings);
-    if (step->sleeping) update_sleep(world, bodies, count, step->dt, all_bodies, all_count);
+    if (step->sleeping) {
+        update_sleep(world, bodies, count, step, all_bodies, all_count);
+        stage_clock_lap(step->clock, SCENE_STAGE_SLEEP);
+    }
     write_back(world, motions, count);
 
     stats->broadphase_pairs += pair_count;
@@ -299,6 +310,7 @@ static void run_pipeline(world_t *world, body_t **bodies, integrator_motion_t *m
     for (size_t i = 0; i < world->contact_count; i++) {
         stats->contact_points += (size_t)world->contacts[i].point_count;
     }
+    stage_clock_lap(step->clock, SCENE_STAGE_SOLVER);
 }
 
 /* The awake bodies and copies of their motions; returns how many. */
@@ -352,8 +364,10 @@ void world_step(world_t *world, body_t **bodies, integrator_motion_t *motions, s
         return;
     }
     size_t active = gather_awake(world, bodies, motions, count);
+    stage_clock_lap(step->clock, SCENE_STAGE_SLEEP);
     run_pipeline(world, world->active, world->active_motions, active, step, stats, bodies, count);
     for (size_t k = 0; k < active; k++) motions[world->active_index[k]] = world->active_motions[k];
+    stage_clock_lap(step->clock, SCENE_STAGE_SLEEP);
 }
 
 bool world_pair_collides(const body_t *body1, const body_t *body2) {

@@ -20,6 +20,7 @@
 #include "dynamics/integrator.h"
 #include "jostle/scene.h"
 #include "jostle/scene_state.h"
+#include "base/stage_clock.h"
 #include "base/workers.h"
 
 typedef struct world world_t;
@@ -47,6 +48,14 @@ typedef struct {
     /* At least the vertex count of the largest polygon in the step: scratch
      * room is sized by it once, so a new pair never allocates. */
     size_t largest_polygon;
+    /* The scene's solver settings (scene.h): warm starting, restitution
+     * threshold (m/s), sleep tolerances (m/s, rad/s) and sleep time (s). */
+    bool warm_starting;
+    double restitution_threshold;
+    double sleep_linear, sleep_angular, sleep_time;
+    /* The stage times of the tick (NULL: not timed); the world laps its
+     * stages from the moment it is called. */
+    stage_clock_t *clock;
 } world_step_t;
 
 /* Wakes the sleeping islands that a body of bodies[0 .. count) changed
