@@ -39,9 +39,16 @@ static bool same_settings(scene_file_t *a, scene_file_t *b, char *why, size_t si
     if (scene_get_workers(scene_file_get_scene(a)) != scene_get_workers(scene_file_get_scene(b)))
         return differ(why, size, "workers differ");
     size_t av, ap, bv, bp;
-    scene_file_get_iterations(a, &av, &ap);
-    scene_file_get_iterations(b, &bv, &bp);
+    scene_get_solver_iterations(x, &av, &ap);
+    scene_get_solver_iterations(y, &bv, &bp);
     if (av != bv || ap != bp) return differ(why, size, "iterations differ");
+    double al, aa, bl, ba;
+    scene_get_sleep_tolerance(x, &al, &aa);
+    scene_get_sleep_tolerance(y, &bl, &ba);
+    if (scene_get_warm_starting(x) != scene_get_warm_starting(y) ||
+        scene_get_restitution_threshold(x) != scene_get_restitution_threshold(y) || al != bl ||
+        aa != ba || scene_get_sleep_time(x) != scene_get_sleep_time(y))
+        return differ(why, size, "solver settings differ");
     if (strcmp(scene_file_get_category(a), scene_file_get_category(b)) != 0 ||
         strcmp(scene_file_get_note(a), scene_file_get_note(b)) != 0)
         return differ(why, size, "category or note differs");

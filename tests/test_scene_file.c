@@ -379,13 +379,19 @@ static void category_and_note_are_kept(void) {
  * solver panel) reach the scene and are written. */
 static void settings_changed_live_are_written(void) {
     scene_file_t *file = parse("body a { box 1 1 }\n");
-    size_t v, p;
-    scene_file_get_iterations(file, &v, &p);
-    CHECK(v == 8 && p == 4);
+    scene_t *scene = scene_file_get_scene(file);
     CHECK(scene_file_get_workers(file) == 0 &&
           scene_file_get_stepping(file) == SCENE_FILE_STEP_FIXED);
-    CHECK(scene_file_set_iterations(file, 12, 6));
-    CHECK(!scene_file_set_iterations(file, 0, 6) && !scene_file_set_iterations(file, 3, 1001));
+    char *plain = scene_file_write(file, NULL, NULL);
+    CHECK(plain != NULL && strstr(plain, "\niterations 8 4\n") != NULL &&
+          strstr(plain, "warm_starting") == NULL && strstr(plain, "restitution_threshold") == NULL &&
+          strstr(plain, "sleep_tolerance") == NULL && strstr(plain, "sleep_time") == NULL);
+    free(plain);
+    scene_set_solver_iterations(scene, 12, 6);
+    scene_set_warm_starting(scene, false);
+    scene_set_restitution_threshold(scene, 0.25);
+    scene_set_sleep_tolerance(scene, 0.03, 0.5);
+    scene_set_sleep_time(scene, 2);
     CHECK(scene_file_set_timestep(file, 1.0 / 240));
     CHECK(!scene_file_set_timestep(file, 0) && !scene_file_set_timestep(file, NAN) &&
           !scene_file_set_timestep(file, 11));
@@ -394,13 +400,20 @@ static void settings_changed_live_are_written(void) {
     char *text = scene_file_write(file, NULL, NULL);
     CHECK(text != NULL && strstr(text, "\niterations 12 6\n") != NULL &&
           strstr(text, "\ntimestep 0.004166666666666667\n") != NULL &&
-          strstr(text, "\nworkers 3\n") != NULL && strstr(text, "\nstepping frame\n") != NULL);
+          strstr(text, "\nworkers 3\n") != NULL && strstr(text, "\nstepping frame\n") != NULL &&
+          strstr(text, "\nwarm_starting off\n") != NULL &&
+          strstr(text, "\nrestitution_threshold 0.25\n") != NULL &&
+          strstr(text, "\nsleep_tolerance 0.03 0.5\n") != NULL &&
+          strstr(text, "\nsleep_time 2\n") != NULL);
     scene_file_t *again = parse(text);
     char why[128] = "";
     CHECK(again != NULL && scene_file_same(file, again, why, sizeof why));
     CHECK(again != NULL && scene_file_get_workers(again) == 3 &&
           scene_get_workers(scene_file_get_scene(again)) == 3 &&
           scene_file_get_timestep(again) == 1.0 / 240);
+    double linear = 0, angular = 0;
+    if (again != NULL) scene_get_sleep_tolerance(scene_file_get_scene(again), &linear, &angular);
+    CHECK(linear == 0.03 && angular == 0.5);
     free(text);
     scene_file_free(again);
     scene_file_free(file);
@@ -583,7 +596,8 @@ static const bad_file_t BAD_FILES[] = {
     {"bdoy x { box 1 1 }",
      "t.scene:1:1: expected a statement (body, template, group, gravity, contacts, integrator, "
      "iterations, timestep, view, game, sleeping, sleep_phase, step_lengths, workers, stepping, "
-     "category, note, spring, newton, drag, collide, contact), found \"bdoy\""},
+     "category, note, warm_starting, restitution_threshold, sleep_tolerance, sleep_time, spring, "
+     "newton, drag, collide, contact), found \"bdoy\""},
     {"gravity 0 abc",
      "t.scene:1:11: expected a gravity component (m/s^2), a number, found \"abc\""},
     {"gravity 0 1e999",
@@ -795,6 +809,16 @@ static const bad_file_t BAD_FILES[] = {
     {"category", "t.scene:1:9: expected the category's name, found the end of the file"},
     {"note ; body a { box 1 1 }",
      "t.scene:1:6: expected the note's text, found ';'"},
+    {"warm_starting maybe", "t.scene:1:15: expected on or off (warm starting), found \"maybe\""},
+    {"restitution_threshold -1",
+     "t.scene:1:23: expected the restitution threshold (m/s), a number >= 0 and <= 100, found "
+     "\"-1\""},
+    {"sleep_tolerance 0", "t.scene:1:17: expected the sleep tolerance's speed (m/s), a number > 0 "
+                          "and <= 10, found \"0\""},
+    {"sleep_tolerance 0.01 0.5 1",
+     "t.scene:1:26: expected the end of the statement (a new line or ';'), found \"1\""},
+    {"sleep_time 2000",
+     "t.scene:1:12: expected the sleep time (s), a number > 0 and <= 1000, found \"2000\""},
     {"category Stacking\ncategory Stacking",
      "t.scene:2:1: expected one category statement per file, found a second (the first at line "
      "1)"},

@@ -26,7 +26,7 @@ static size_t next_iterations(size_t now, int direction) {
 }
 
 static void iterations(const app_t *app, size_t *velocity, size_t *position) {
-    scene_file_get_iterations(app->sandbox.file, velocity, position);
+    scene_get_solver_iterations(app->sandbox.scene, velocity, position);
 }
 
 static void velocity_value(const app_t *app, char *out, size_t size) {

@@ -479,7 +479,9 @@ void sandbox_set_sleeping(sandbox_t *sandbox, bool on) {
 }
 
 bool sandbox_set_iterations(sandbox_t *sandbox, size_t velocity, size_t position) {
-    return scene_file_set_iterations(sandbox->file, velocity, position);
+    if (velocity < 1 || velocity > 1000 || position < 1 || position > 1000) return false;
+    scene_set_solver_iterations(sandbox->scene, velocity, position);
+    return true;
 }
 
 bool sandbox_set_workers(sandbox_t *sandbox, size_t workers) {

@@ -92,19 +92,6 @@ const char *scene_file_get_game(const scene_file_t *file) {
     return file->doc.settings.game.text;
 }
 
-void scene_file_get_iterations(const scene_file_t *file, size_t *velocity, size_t *position) {
-    *velocity = file->doc.settings.velocity_iterations;
-    *position = file->doc.settings.position_iterations;
-}
-
-bool scene_file_set_iterations(scene_file_t *file, size_t velocity, size_t position) {
-    if (velocity < 1 || velocity > 1000 || position < 1 || position > 1000) return false;
-    file->doc.settings.velocity_iterations = velocity;
-    file->doc.settings.position_iterations = position;
-    scene_set_solver_iterations(file->scene, velocity, position);
-    return true;
-}
-
 bool scene_file_set_timestep(scene_file_t *file, double timestep) {
     if (!(timestep > 0.0 && timestep <= 10.0)) return false;
     file->doc.settings.timestep = timestep;

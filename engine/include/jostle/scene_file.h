@@ -100,12 +100,9 @@ scene_file_view_t scene_file_get_view(const scene_file_t *file);
  * live with the caller (the sandbox's app/games/). */
 const char *scene_file_get_game(const scene_file_t *file);
 
-/* The solver's iterations the file asks for (`iterations V P`; 8 and 4
- * when it gives none), and a change of them: the scene's
- * (scene_set_solver_iterations) and the file's at once, so that
- * scene_file_write writes them. False, nothing changed, outside [1, 1000]. */
-void scene_file_get_iterations(const scene_file_t *file, size_t *velocity, size_t *position);
-bool scene_file_set_iterations(scene_file_t *file, size_t velocity, size_t position);
+/* The solver's settings (iterations, warm starting, restitution threshold,
+ * sleep tolerance and time) are the scene's: a program changes them on
+ * the scene (jostle/scene.h) and scene_file_write writes them as they are. */
 
 /* A new `timestep` (s), as scene_file_get_timestep then gives it and the
  * writer writes it; the file does not step the scene, its caller does.
