@@ -74,7 +74,7 @@ endif
 APP_UNIT_SRC := tests/app_units.c app/panels/text.c app/panels/stats_text.c app/core/step_clock.c \
                 app/core/layout.c app/core/energy_drift.c app/scene/integrator_choice.c \
                 app/scene/samples.c app/panels/scene_text.c app/scene/sandbox_scene.c app/draw/batch.c \
-                app/core/frame_meter.c app/draw/focus.c
+                app/core/frame_meter.c app/draw/focus.c app/core/stage_chart.c app/core/plot.c
 build/tests/app_units: $(APP_UNIT_SRC) tests/app_expect.h $(APP_HDR) app/app.mk \
                        build/libjostle-san.a $(GAMES_SAN_OBJ)
 	@mkdir -p $(dir $@)

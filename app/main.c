@@ -462,6 +462,11 @@ int main(int argc, char **argv) {
         double physics_s = stepper_finish(stepper);
         app_frame_done(&app, steps);
         tools_frame(&app, frame_dt, steps * app.sandbox.tick);
+        /* The profile counts islands (O(n log n)): only while it is shown. */
+        if (steps > 0 && app.page == UI_PAGE_SOLVER) {
+            scene_profile_t profile = scene_get_profile(app.sandbox.scene);
+            stage_chart_add(&app.stages, &profile);
+        }
 
         Uint64 render_start = SDL_GetPerformanceCounter();
         body_t *hovered = input_hovered_body(&app);

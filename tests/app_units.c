@@ -25,6 +25,8 @@
 #include "draw/palette.h"
 #include "scene/samples.h"
 #include "scene/sample_categories.h"
+#include "core/stage_chart.h"
+#include "core/plot.h"
 #include "scene/sandbox_scene.h"
 #include "panels/scene_text.h"
 #include "panels/stats_text.h"
@@ -625,6 +627,65 @@ static void test_samples_list_by_category(void) {
     samples_free(&samples);
 }
 
+/* The stage chart keeps a column per frame in a ring, each stage's time
+ * only when the stage ran; its peak is the longest column. */
+static void test_stage_chart_keeps_the_frames(void) {
+    static stage_chart_t chart;
+    stage_chart_init(&chart);
+    EXPECT(stage_chart_peak(&chart) == 0.0 && !stage_chart_column(&chart, 0)->filled,
+           "a new chart is not empty");
+    scene_profile_t p = {{0}, {false}, 0, 0, 0, 0};
+    p.seconds[SCENE_STAGE_FORCES] = 1e-3;
+    p.ran[SCENE_STAGE_FORCES] = true;
+    p.seconds[SCENE_STAGE_SOLVER] = 5e-3; /* not run: not drawn */
+    p.awake_bodies = 7;
+    stage_chart_add(&chart, &p);
+    p.ran[SCENE_STAGE_SOLVER] = true;
+    stage_chart_add(&chart, &p);
+    const stage_column_t *newest = stage_chart_column(&chart, 0), *older = stage_chart_column(&chart, 1);
+    EXPECT(newest->filled && older->filled && older->seconds[SCENE_STAGE_SOLVER] == 0.0f &&
+               newest->seconds[SCENE_STAGE_SOLVER] == 5e-3f && chart.last.awake_bodies == 7 &&
+               chart.has_last,
+           "columns: %g then %g s of solver", older->seconds[SCENE_STAGE_SOLVER],
+           newest->seconds[SCENE_STAGE_SOLVER]);
+    EXPECT(fabs(stage_chart_peak(&chart) - 6e-3) < 1e-9, "peak %g s", stage_chart_peak(&chart));
+    for (int i = 0; i < STAGE_CHART_COLUMNS; i++) {
+        p.seconds[SCENE_STAGE_SOLVER] = 1e-4;
+        stage_chart_add(&chart, &p);
+    }
+    EXPECT(fabs(stage_chart_peak(&chart) - 1.1e-3) < 1e-9, "after a full turn, peak %g s",
+           stage_chart_peak(&chart));
+}
+
+/* The plot keeps the lowest and highest value of each column of simulated
+ * time; a frame without a value (no body inspected) leaves columns empty;
+ * a constant is widened to show. */
+static void test_plot_columns_hold_low_and_high(void) {
+    static plot_t plot;
+    plot_init(&plot, PLOT_HEIGHT);
+    double low = 0, high = 0;
+    EXPECT(!plot_range(&plot, &low, &high), "an empty plot has a range");
+    double column = PLOT_SECONDS / PLOT_COLUMNS;
+    plot_sample(&plot, 0.25 * column, true, 2.0);
+    plot_sample(&plot, 0.25 * column, true, -1.0);
+    plot_sample(&plot, 0.0, true, 9.0); /* paused: nothing added */
+    const plot_column_t *c = plot_column(&plot, 0);
+    EXPECT(c->filled && c->low == -1.0f && c->high == 2.0f && plot.latest == 9.0,
+           "column %g to %g, latest %g", c->low, c->high, plot.latest);
+    plot_sample(&plot, 3.0 * column, false, 0.0);
+    EXPECT(!plot_column(&plot, 0)->filled && plot_column(&plot, 3)->filled && !plot.has_latest,
+           "a frame without a value filled a column");
+    EXPECT(plot_range(&plot, &low, &high) && low == -1.0 && high == 2.0, "range %g to %g", low,
+           high);
+    plot_init(&plot, PLOT_ENERGY);
+    plot_sample(&plot, column, true, 5.0);
+    EXPECT(plot_range(&plot, &low, &high) && low < 5.0 && high > 5.0 && high - low < 0.2,
+           "a constant's range %g to %g", low, high);
+    EXPECT(plot_needs_body(PLOT_SPEED) && !plot_needs_body(PLOT_MOMENTUM) &&
+               strcmp(plot_quantity_name(PLOT_KINETIC), "kinetic energy (J)") == 0,
+           "quantities");
+}
+
 /* The SCENE panel's lines fit the side bar and say what they should. */
 static void test_scene_panel_words(void) {
     char line[SCENE_TEXT_SIZE];
@@ -1005,6 +1066,8 @@ static const app_test_t TESTS[] = {
     {"app_units.clock_follows_the_scene_timestep", test_clock_follows_the_scene_timestep},
     {"app_units.energy_drift_columns_follow_the_step", test_energy_drift_columns_follow_the_step},
     {"app_units.samples_list_by_category", test_samples_list_by_category},
+    {"app_units.stage_chart_keeps_the_frames", test_stage_chart_keeps_the_frames},
+    {"app_units.plot_columns_hold_low_and_high", test_plot_columns_hold_low_and_high},
     {"app_units.scene_panel_words", test_scene_panel_words},
     {"app_units.default_scene_is_a_scene_file", test_default_scene_is_a_scene_file},
     {"app_units.scene_files_open_and_refusals_keep_the_scene",

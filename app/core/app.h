@@ -13,6 +13,7 @@
 #include "core/energy_drift.h"
 #include "core/frame_meter.h"
 #include "core/plot.h"
+#include "core/stage_chart.h"
 #include "core/impulse_trail.h"
 #include "core/layout.h"
 #include "scene/samples.h"
@@ -134,6 +135,7 @@ typedef struct {
         bool shown;
     } blast;
     plot_t plot;     /* the TOOLS page's plot of one quantity */
+    stage_chart_t stages; /* the SOLVER page's chart of the step's stages */
     bool quit;
     int resize_width, resize_height; /* a size the script asked for; 0: none */
     double time_scale; /* simulated seconds per displayed second, 0.1 to 1 */

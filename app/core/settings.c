@@ -83,6 +83,96 @@ static void change_workers(app_t *app, int direction) {
     }
 }
 
+static void warm_value(const app_t *app, char *out, size_t size) {
+    snprintf(out, size, "%s", scene_get_warm_starting(app->sandbox.scene) ? "on" : "off");
+}
+
+static void change_warm(app_t *app, int direction) {
+    (void)direction;
+    bool on = !scene_get_warm_starting(app->sandbox.scene);
+    scene_set_warm_starting(app->sandbox.scene, on);
+    app_status(app, on ? "warm starting on: contacts start from their last impulses"
+                       : "warm starting off: every contact starts from zero");
+}
+
+/* The next value of a list after `now` (+1) or before it (-1); `now` when
+ * there is none that way. A value not in the list (from a file) goes to
+ * its neighbour. */
+static double next_of(const double *values, size_t count, double now, int direction) {
+    if (direction > 0) {
+        for (size_t i = 0; i < count; i++) {
+            if (values[i] > now * (1 + 1e-9)) return values[i];
+        }
+        return now;
+    }
+    for (size_t i = count; i-- > 0;) {
+        if (values[i] < now * (1 - 1e-9)) return values[i];
+    }
+    return now;
+}
+
+static const double THRESHOLDS[] = {0.0, 0.1, 0.25, 0.5, 1.0, 2.0, 5.0};
+static const double SLEEP_SPEEDS[] = {0.001, 0.003, 0.01, 0.03, 0.1, 0.3};
+/* INFINITY last: no bound on the turn (the engine's default). */
+static const double SLEEP_TURNS[] = {0.01, 0.03, 0.1, 0.3, 1.0, INFINITY};
+static const double SLEEP_TIMES[] = {0.1, 0.25, 0.5, 1.0, 2.0, 5.0};
+#define COUNT_OF(a) (sizeof(a) / sizeof((a)[0]))
+
+static void threshold_value(const app_t *app, char *out, size_t size) {
+    snprintf(out, size, "%.3g m/s", scene_get_restitution_threshold(app->sandbox.scene));
+}
+
+static void change_threshold(app_t *app, int direction) {
+    scene_t *scene = app->sandbox.scene;
+    double v = next_of(THRESHOLDS, COUNT_OF(THRESHOLDS), scene_get_restitution_threshold(scene),
+                       direction);
+    scene_set_restitution_threshold(scene, v);
+    app_status(app, "restitution threshold %.3g m/s: slower approaches do not bounce", v);
+}
+
+static void sleep_speed_value(const app_t *app, char *out, size_t size) {
+    double linear, angular;
+    scene_get_sleep_tolerance(app->sandbox.scene, &linear, &angular);
+    snprintf(out, size, "%.3g m/s", linear);
+}
+
+static void change_sleep_speed(app_t *app, int direction) {
+    double linear, angular;
+    scene_get_sleep_tolerance(app->sandbox.scene, &linear, &angular);
+    linear = next_of(SLEEP_SPEEDS, COUNT_OF(SLEEP_SPEEDS), linear, direction);
+    scene_set_sleep_tolerance(app->sandbox.scene, linear, angular);
+    app_status(app, "sleep tolerance: slow under %.3g m/s", linear);
+}
+
+static void sleep_turn_value(const app_t *app, char *out, size_t size) {
+    double linear, angular;
+    scene_get_sleep_tolerance(app->sandbox.scene, &linear, &angular);
+    if (isinf(angular)) snprintf(out, size, "no bound");
+    else snprintf(out, size, "%.3g rad/s", angular);
+}
+
+static void change_sleep_turn(app_t *app, int direction) {
+    double linear, angular;
+    scene_get_sleep_tolerance(app->sandbox.scene, &linear, &angular);
+    angular = isinf(angular) && direction < 0
+                  ? SLEEP_TURNS[COUNT_OF(SLEEP_TURNS) - 2]
+                  : next_of(SLEEP_TURNS, COUNT_OF(SLEEP_TURNS), angular, direction);
+    scene_set_sleep_tolerance(app->sandbox.scene, linear, angular);
+    if (isinf(angular)) app_status(app, "sleep tolerance: no bound on the turn");
+    else app_status(app, "sleep tolerance: slow under %.3g rad/s", angular);
+}
+
+static void sleep_time_value(const app_t *app, char *out, size_t size) {
+    snprintf(out, size, "%.3g s", scene_get_sleep_time(app->sandbox.scene));
+}
+
+static void change_sleep_time(app_t *app, int direction) {
+    scene_t *scene = app->sandbox.scene;
+    double v = next_of(SLEEP_TIMES, COUNT_OF(SLEEP_TIMES), scene_get_sleep_time(scene), direction);
+    scene_set_sleep_time(scene, v);
+    app_status(app, "sleep time %.3g s: an island slow that long sleeps", v);
+}
+
 static void integrator_value(const app_t *app, char *out, size_t size) {
     snprintf(out, size, "%s", integrator_get_name(app->sandbox.integrator));
 }
@@ -144,7 +234,12 @@ static void change_timestep(app_t *app, int direction) {
 const setting_t SETTINGS[SETTING_COUNT] = {
     {"velocity iterations", velocity_value, change_velocity, false},
     {"position iterations", position_value, change_position, false},
+    {"warm starting", warm_value, change_warm, true},
+    {"restitution threshold", threshold_value, change_threshold, false},
     {"sleeping", sleeping_value, change_sleeping, true},
+    {"sleep speed", sleep_speed_value, change_sleep_speed, false},
+    {"sleep turn", sleep_turn_value, change_sleep_turn, false},
+    {"sleep time", sleep_time_value, change_sleep_time, false},
     {"workers", workers_value, change_workers, false},
     {"integrator", integrator_value, change_integrator, false},
     {"stepping", stepping_value, change_stepping, true},
@@ -153,7 +248,7 @@ const setting_t SETTINGS[SETTING_COUNT] = {
 
 void settings_reset(app_t *app) {
     sandbox_t *sandbox = &app->sandbox;
-    sandbox_set_iterations(sandbox, 8, 4);
+    scene_reset_solver_settings(sandbox->scene);
     if (!sandbox->sleeping_on) sandbox_set_sleeping(sandbox, true);
     sandbox_set_workers(sandbox, SANDBOX_WORKERS);
     sandbox_set_stepping(sandbox, SCENE_FILE_STEP_FIXED);
@@ -167,6 +262,6 @@ void settings_reset(app_t *app) {
     }
     char words[32];
     step_words(sandbox->step, words, sizeof words);
-    app_status(app, "solver reset: 8 and 4 iterations, sleeping on, %d workers, %s, fixed %s",
+    app_status(app, "solver reset: engine defaults, sleeping on, %d workers, %s, fixed %s",
                SANDBOX_WORKERS, integrator_get_name(sandbox->integrator), words);
 }

@@ -6,9 +6,10 @@
  * in words and a change to the previous or next value (or on / off), said
  * on the status line and kept in the scene file so that Ctrl+S saves it
  * (scene/sandbox_scene.h). A setting the engine gains is a row of the
- * table in settings.c. Reset: the engine's defaults (8 velocity and 4
- * position iterations, sleeping on), the sandbox's 2 workers, fixed steps,
- * and the scene file's own integrator and timestep.
+ * table in settings.c. Reset: the engine's defaults
+ * (scene_reset_solver_settings: 8 and 4 iterations, warm starting, 1 m/s,
+ * 0.01 m/s with no bound on the turn, 0.5 s), sleeping on, the sandbox's
+ * workers, fixed steps, and the scene file's own integrator and timestep.
  */
 
 #include <stdbool.h>
@@ -26,7 +27,7 @@ typedef struct {
 } setting_t;
 
 /* The rows, in the SOLVER page's order. */
-#define SETTING_COUNT 7
+#define SETTING_COUNT 12
 extern const setting_t SETTINGS[SETTING_COUNT];
 
 /* Every setting back to its default, said on the status line. */

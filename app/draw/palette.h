@@ -58,6 +58,13 @@ static const palette_rgb_t PALETTE_SPRING = {200, 200, 210};
 static const palette_rgb_t PALETTE_OFF = {96, 101, 114};      /* an overlay that is off */
 static const palette_rgb_t PALETTE_RULE = {44, 48, 58};       /* lines between panels */
 static const palette_rgb_t PALETTE_GRAB = {255, 255, 255};
+/* The step's stages in the STEP panel's chart, in scene_stage_t's order:
+ * forces, broadphase, narrowphase, solver, shock, position, integrate,
+ * sleep, removal. */
+static const palette_rgb_t PALETTE_STAGES[9] = {
+    {120, 200, 70}, {66, 135, 245}, {38, 190, 160}, {242, 140, 40}, {225, 75, 75},
+    {150, 110, 230}, {235, 210, 90}, {160, 170, 240}, {175, 175, 180},
+};
 /* The explosion tool's reach and a blast's ring. */
 static const palette_rgb_t PALETTE_BLAST = {255, 150, 40};
 /* The ring round the cursor inside which every axis and impulse is drawn. */
