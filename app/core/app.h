@@ -45,11 +45,14 @@ typedef enum {
     UI_PAGE_COUNT
 } ui_page_t;
 
-/* What a left click in the view does (K, L, or a click in the TOOLS page). */
+/* What a left click in the view does (J, U, K, L, or a click in the TOOLS
+ * page; tools/tools.h). */
 typedef enum {
     TOOL_DROP = 0, /* drop the shape (Shift: throw it) */
-    TOOL_EXPLODE,  /* an explosion at the cursor (tools/explosion.h) */
-    TOOL_INSPECT,  /* choose the body the inspector shows */
+    TOOL_RAY,      /* drag a ray: its first hit (scene_ray_cast) */
+    TOOL_BOX,      /* drag a box: the bodies overlapping it (scene_query_box) */
+    TOOL_EXPLODE,  /* an explosion at the cursor (scene_explode) */
+    TOOL_INSPECT,  /* choose the body the inspector shows (scene_body_at) */
     TOOL_COUNT
 } tool_t;
 
@@ -59,6 +62,7 @@ typedef enum {
     DRAG_GRAB,   /* right on a body: the grab spring pulls it to the cursor */
     DRAG_PAN,    /* middle anywhere, or right on empty space: moves the view */
     DRAG_SLIDER, /* left on the elasticity slider */
+    DRAG_PROBE,  /* left with the ray or box tool: drawing the ray or the box */
 } drag_t;
 
 #define APP_MOTION_SAMPLES 16
@@ -134,6 +138,13 @@ typedef struct {
         double radius, age;
         bool shown;
     } blast;
+    /* The ray or box drawn with the ray or box tool (world points), asked
+     * again every frame while shown: the bodies move under it. */
+    struct {
+        vector_t from, to;
+        tool_t tool; /* TOOL_RAY or TOOL_BOX */
+        bool shown;
+    } probe;
     plot_t plot;     /* the TOOLS page's plot of one quantity */
     stage_chart_t stages; /* the SOLVER page's chart of the step's stages */
     bool quit;

@@ -6,7 +6,6 @@
 #include "draw/draw.h"
 #include "draw/edge_markers.h"
 #include "draw/focus.h"
-#include "tools/explosion.h"
 #include "tools/tools.h"
 #include "draw/raster.h"
 
@@ -178,7 +177,7 @@ static void draw_blast(SDL_Renderer *renderer, app_t *app) {
     palette_rgb_t c = PALETTE_BLAST;
     vector_t cursor = app->mouse;
     if (app->tool == TOOL_EXPLODE && app->mouse_inside && app_in_view(app, cursor)) {
-        Sint16 r = draw_coord(EXPLOSION_RADIUS_PIXELS);
+        Sint16 r = draw_coord(TOOLS_BLAST_RADIUS_PIXELS);
         aacircleRGBA(renderer, draw_coord(cursor.x), draw_coord(cursor.y), r, c.r, c.g, c.b, 160);
         aacircleRGBA(renderer, draw_coord(cursor.x), draw_coord(cursor.y), 3, c.r, c.g, c.b, 255);
     }
@@ -191,6 +190,60 @@ static void draw_blast(SDL_Renderer *renderer, app_t *app) {
         aacircleRGBA(renderer, draw_coord(at.x), draw_coord(at.y), draw_coord(radius - k), c.r,
                      c.g, c.b, alpha);
     }
+}
+
+/* A body's outline, thick, in colour c: what the box tool found. */
+static void outline_body(SDL_Renderer *renderer, const camera_t *camera, body_t *body,
+                         palette_rgb_t c) {
+    polygon_t polygon = body_get_polygon(body);
+    size_t n = polygon.count;
+    for (size_t k = 0; k < n; k++) {
+        vector_t a = camera_to_pixel(camera, polygon.vertices[k]);
+        vector_t b = camera_to_pixel(camera, polygon.vertices[(k + 1) % n]);
+        thickLineRGBA(renderer, draw_coord(a.x), draw_coord(a.y), draw_coord(b.x),
+                      draw_coord(b.y), 3, c.r, c.g, c.b, 255);
+    }
+}
+
+/* The ray tool's ray: to its first hit in the accent colour, a dot at the
+ * point, the normal as a short arrow, the fraction beside it; beyond the
+ * hit, dim. The box tool's box, and every body overlapping it outlined. */
+static void draw_probe(SDL_Renderer *renderer, app_t *app) {
+    if (!app->probe.shown) return;
+    const camera_t *camera = &app->camera;
+    vector_t from = camera_to_pixel(camera, app->probe.from);
+    vector_t to = camera_to_pixel(camera, app->probe.to);
+    palette_rgb_t a = PALETTE_ACCENT, dim = PALETTE_TEXT_DIM;
+    if (app->probe.tool == TOOL_BOX) {
+        static body_t *found[TOOLS_BOX_MAX];
+        size_t n = tools_box_bodies(app, found, TOOLS_BOX_MAX);
+        for (size_t i = 0; i < n && i < TOOLS_BOX_MAX; i++) outline_body(renderer, camera, found[i], a);
+        rectangleRGBA(renderer, draw_coord(fmin(from.x, to.x)), draw_coord(fmin(from.y, to.y)),
+                      draw_coord(fmax(from.x, to.x)), draw_coord(fmax(from.y, to.y)), a.r, a.g,
+                      a.b, 255);
+        draw_text(renderer, draw_coord(fmax(from.x, to.x) + 4), draw_coord(fmin(from.y, to.y)),
+                  PALETTE_ACCENT, "%zu", n);
+        return;
+    }
+    ray_hit_t hit;
+    if (!tools_ray_hit(app, &hit)) {
+        aalineRGBA(renderer, draw_coord(from.x), draw_coord(from.y), draw_coord(to.x),
+                   draw_coord(to.y), a.r, a.g, a.b, 255);
+        return;
+    }
+    vector_t at = camera_to_pixel(camera, hit.point);
+    aalineRGBA(renderer, draw_coord(at.x), draw_coord(at.y), draw_coord(to.x), draw_coord(to.y),
+               dim.r, dim.g, dim.b, 160);
+    thickLineRGBA(renderer, draw_coord(from.x), draw_coord(from.y), draw_coord(at.x),
+                  draw_coord(at.y), 2, a.r, a.g, a.b, 255);
+    filledCircleRGBA(renderer, draw_coord(at.x), draw_coord(at.y), 4, a.r, a.g, a.b, 255);
+    vector_t tip = {at.x + 40.0 * hit.normal.x, at.y - 40.0 * hit.normal.y};
+    palette_rgb_t n = PALETTE_POINT;
+    thickLineRGBA(renderer, draw_coord(at.x), draw_coord(at.y), draw_coord(tip.x),
+                  draw_coord(tip.y), 2, n.r, n.g, n.b, 255);
+    filledCircleRGBA(renderer, draw_coord(tip.x), draw_coord(tip.y), 3, n.r, n.g, n.b, 255);
+    draw_text(renderer, draw_coord(at.x + 8), draw_coord(at.y + 6), PALETTE_ACCENT, "%.3f",
+              hit.fraction);
 }
 
 static void draw_grab(SDL_Renderer *renderer, app_t *app) {
@@ -426,6 +479,7 @@ double render_world(SDL_Renderer *renderer, SDL_Surface *canvas, app_t *app, bod
                         (double)SDL_GetPerformanceFrequency();
     draw_grab(renderer, app);
     draw_blast(renderer, app);
+    draw_probe(renderer, app);
     draw_preview(renderer, app);
     edge_markers_draw(renderer, canvas, app);
     return overlays_s;

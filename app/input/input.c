@@ -44,8 +44,8 @@ const input_control_t INPUT_CONTROLS[] = {
     {"Game: Space", "fire (instead of pausing: pause with Enter)"},
     {"Ctrl + wheel, + / -", "zoom about the cursor"},
     {"Left / Right, Ctrl + arrows", "pan the view (in a game Ctrl + Left / Right)"},
-    {"K", "tool: explosion at a click (again: back to dropping)"},
-    {"L", "tool: inspect the body clicked (TOOLS page)"},
+    {"J / U", "tool: ray cast / box query, drawn by dragging (again: dropping)"},
+    {"K / L", "tool: explosion at a click / inspect the body clicked"},
     {"F2 F3 F4 F5", "side bar: PLAY, SAMPLES, SOLVER, TOOLS"},
     {"F", "frame every body"},
     {"0, Home", "the default view: the whole container or the file's view"},
@@ -400,6 +400,12 @@ static void on_key(app_t *app, const SDL_KeyboardEvent *key) {
     case SDLK_F5:
         app->page = (ui_page_t)(UI_PAGE_PLAY + (int)(sym - SDLK_F2));
         break;
+    case SDLK_j:
+        tools_choose(app, TOOL_RAY);
+        break;
+    case SDLK_u:
+        tools_choose(app, TOOL_BOX);
+        break;
     case SDLK_k:
         tools_choose(app, TOOL_EXPLODE);
         break;
@@ -437,7 +443,7 @@ static void on_button_down(app_t *app, const SDL_MouseButtonEvent *button) {
         if (app->mods & KMOD_CTRL) {
             delete_hovered(app);
         } else if (app->tool != TOOL_DROP) {
-            tools_click(app, world);
+            app->drag = tools_press(app, world);
         } else if (app->mods & KMOD_SHIFT) {
             app->drag = DRAG_THROW;
             add_sample(app);
@@ -472,6 +478,12 @@ static void on_button_up(app_t *app, const SDL_MouseButtonEvent *button) {
     case DRAG_SLIDER:
         if (button->button == SDL_BUTTON_LEFT) app->drag = DRAG_NONE;
         break;
+    case DRAG_PROBE:
+        if (button->button == SDL_BUTTON_LEFT) {
+            tools_probe_release(app, input_cursor_world(app));
+            app->drag = DRAG_NONE;
+        }
+        break;
     case DRAG_GRAB:
         if (button->button == SDL_BUTTON_RIGHT) {
             sandbox_release(&app->sandbox);
@@ -497,6 +509,9 @@ static void on_motion(app_t *app, const SDL_MouseMotionEvent *motion) {
     switch (app->drag) {
     case DRAG_THROW:
         add_sample(app);
+        break;
+    case DRAG_PROBE:
+        tools_probe_move(app, input_cursor_world(app));
         break;
     case DRAG_SLIDER:
         app_set_elasticity(app, ui_slider_value_at(app, app->mouse));

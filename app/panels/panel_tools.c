@@ -14,7 +14,7 @@
 
 #define ROW_H (DRAW_LINE_H + 1)
 
-static const char *const WHAT[TOOL_COUNT] = {"drops a shape", "a blast", "picks a body"};
+#define PROBE_LINES TOOLS_PROBE_LINES
 
 static void draw_tools(SDL_Renderer *renderer, app_t *app, body_t *hovered, SDL_Rect r) {
     (void)hovered;
@@ -24,9 +24,17 @@ static void draw_tools(SDL_Renderer *renderer, app_t *app, body_t *hovered, SDL_
         palette_rgb_t c = on ? PALETTE_ACCENT : PALETTE_TEXT_DIM;
         draw_text(renderer, r.x, y, c, "%s %-8s", on ? ">" : " ", tools_name((tool_t)i));
         draw_text(renderer, r.x + 11 * DRAW_CHAR_W, y, on ? PALETTE_TEXT : PALETTE_OFF, "%s",
-                  WHAT[i]);
+                  tools_what((tool_t)i));
         const char *key = tools_key((tool_t)i);
         draw_text(renderer, r.x + r.w - (int)strlen(key) * DRAW_CHAR_W, y, c, "%s", key);
+    }
+    /* What the ray or the box finds now. */
+    char lines[PROBE_LINES][64];
+    int n = tools_probe_words(app, lines, LAYOUT_LINE_CHARS);
+    int y = r.y + 4 + TOOL_COUNT * ROW_H;
+    for (int i = 0; i < n; i++) {
+        draw_text(renderer, r.x, y + i * DRAW_LINE_H, i == 0 ? PALETTE_ACCENT : PALETTE_TEXT, "%s",
+                  lines[i]);
     }
 }
 
@@ -38,33 +46,13 @@ static drag_t press_tools(app_t *app, SDL_Rect r, vector_t pixel) {
     return DRAG_NONE;
 }
 
-const ui_section_t UI_TOOLS = {"TOOLS (K explode, L inspect)", TOOL_COUNT * ROW_H + 2, draw_tools,
+const ui_section_t UI_TOOLS = {"TOOLS (click, or the key)",
+                               TOOL_COUNT * ROW_H + 4 + PROBE_LINES * DRAW_LINE_H, draw_tools,
                                press_tools};
 
 /* ---- INSPECTOR ---- */
 
 #define INSPECTOR_LINES 8
-
-/* The touching contacts of the last step the body is in. */
-static size_t contacts_of(scene_t *scene, body_t *body) {
-    size_t count = 0;
-    for (size_t i = 0; i < scene_contact_count(scene); i++) {
-        const contact_t *c = scene_get_contact(scene, i);
-        count += c->touching && (c->body1 == body || c->body2 == body);
-    }
-    return count;
-}
-
-/* The bodies of its sleeping island (0 when it is awake). */
-static size_t island_of(body_t *body) {
-    if (body_get_island_next(body) == NULL) return 0;
-    size_t n = 1;
-    for (body_t *b = body_get_island_next(body); b != body && n < 1000000;
-         b = body_get_island_next(b)) {
-        n++;
-    }
-    return n;
-}
 
 static void inspector_lines(app_t *app, body_t *body, char lines[][LAYOUT_LINE_CHARS + 1]) {
     char words[SCENE_FILE_NAME_MAX + 8];
@@ -91,15 +79,18 @@ static void inspector_lines(app_t *app, body_t *body, char lines[][LAYOUT_LINE_C
     text_number(a, sizeof a, body_get_angular_velocity(body), 2, 7);
     text_number(b, sizeof b, body_get_kinetic_energy(body), 2, 8);
     snprintf(text[4], sizeof text[4], "w %s rad/s  KE %s J", a, b);
-    snprintf(text[5], sizeof text[5], "contacts %zu (touching)",
-             contacts_of(app->sandbox.scene, body));
-    size_t island = island_of(body);
-    if (island > 0) {
-        snprintf(text[6], sizeof text[6], "asleep, island of %zu", island);
+    scene_t *scene = app->sandbox.scene;
+    size_t island = scene_body_island(scene, body);
+    if (island == SIZE_MAX) {
+        snprintf(text[5], sizeof text[5], "contacts %zu, no island",
+                 scene_body_contact_count(scene, body));
     } else {
-        text_number(a, sizeof a, body_get_sleep_timer(body).slow_time, 2, 6);
-        snprintf(text[6], sizeof text[6], "awake, slow for %s s", a);
+        snprintf(text[5], sizeof text[5], "contacts %zu, island %zu",
+                 scene_body_contact_count(scene, body), island);
     }
+    text_number(a, sizeof a, body_get_sleep_timer(body).slow_time, 2, 6);
+    if (body_is_sleeping(body)) snprintf(text[6], sizeof text[6], "asleep");
+    else snprintf(text[6], sizeof text[6], "awake, slow for %s s", a);
     text_number(a, sizeof a, body_get_elasticity(body), 2, 5);
     text_number(b, sizeof b, body_get_friction(body), 2, 5);
     snprintf(text[7], sizeof text[7], "elasticity %s  friction %s", a, b);
