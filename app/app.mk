@@ -84,7 +84,8 @@ build/tests/app_units: $(APP_UNIT_SRC) tests/app_expect.h $(APP_HDR) app/app.mk 
 # The smoke tests drive ./sandbox from outside and read its screenshots; they
 # link no SDL, but the sanitized engine, to load the scene files the sandbox
 # saves (scene_file_load), and the list of presets.
-APP_SMOKE_SRC := tests/app_smoke.c tests/app_smoke_edges.c tests/app_run.c tests/app_image.c \
+APP_SMOKE_SRC := tests/app_smoke.c tests/app_smoke_edges.c tests/app_smoke_learn.c tests/app_run.c \
+                 tests/app_image.c \
                  app/core/layout.c app/scene/samples.c
 build/tests/app_smoke: $(APP_SMOKE_SRC) tests/app_run.h tests/app_image.h tests/app_expect.h app/draw/palette.h \
                        app/core/layout.h app/scene/samples.h app/app.mk build/libjostle-san.a $(APP_SMOKE_DEPS)

@@ -1494,9 +1494,12 @@ static const app_test_t TESTS[] = {
 };
 #define TEST_COUNT (sizeof TESTS / sizeof TESTS[0])
 
-/* The rough edges (tests/app_smoke_edges.c). */
+/* The rough edges (tests/app_smoke_edges.c), the browser, settings, stage
+ * chart and tools (tests/app_smoke_learn.c). */
 extern const app_test_t APP_EDGE_TESTS[];
 extern const size_t APP_EDGE_TEST_COUNT;
+extern const app_test_t APP_LEARN_TESTS[];
+extern const size_t APP_LEARN_TEST_COUNT;
 
 /* Every test: this file's, then the other files'. */
 static app_test_t all_tests[128];
@@ -1519,6 +1522,7 @@ int main(int argc, char **argv) {
     if (override != NULL && override[0] != '\0') sandbox_path = override;
     gather(TESTS, TEST_COUNT);
     gather(APP_EDGE_TESTS, APP_EDGE_TEST_COUNT);
+    gather(APP_LEARN_TESTS, APP_LEARN_TEST_COUNT);
     if (!APP_SMOKE_HAVE_SDL) {
         skip_all("SDL2, SDL2_gfx or SDL2_image development files were not found by pkg-config "
                  "when this was built, so ./sandbox was not built (install: apt-get install -y "
