@@ -88,8 +88,9 @@ static void draw_chart(SDL_Renderer *renderer, const stage_chart_t *chart, SDL_R
         draw_text(renderer, left + 6, top + CHART_H / 2 - 4, PALETTE_OFF, "no step yet");
         return;
     }
-    if (peak < 1e-3) draw_text(renderer, r.x, top, PALETTE_TEXT_DIM, "%.2g us", 1e6 * peak);
-    else draw_text(renderer, r.x, top, PALETTE_TEXT_DIM, "%.2g ms", 1e3 * peak);
+    if (peak < 1e-4) draw_text(renderer, r.x, top, PALETTE_TEXT_DIM, "%.2g us", 1e6 * peak);
+    else if (peak < 1e-3) draw_text(renderer, r.x, top, PALETTE_TEXT_DIM, "%.0f us", 1e6 * peak);
+    else draw_text(renderer, r.x, top, PALETTE_TEXT_DIM, "%.1f ms", 1e3 * peak);
     draw_text(renderer, r.x, bottom - 7, PALETTE_TEXT_DIM, "0");
     SDL_SetRenderDrawBlendMode(renderer, SDL_BLENDMODE_NONE);
     static SDL_Rect rects[SCENE_STAGE_COUNT][STAGE_CHART_COLUMNS];
