@@ -38,22 +38,27 @@ static bool same_settings(scene_file_t *a, scene_file_t *b, char *why, size_t si
         return differ(why, size, "stepping differs");
     if (scene_get_workers(scene_file_get_scene(a)) != scene_get_workers(scene_file_get_scene(b)))
         return differ(why, size, "workers differ");
-    size_t av, ap, bv, bp;
-    scene_get_solver_iterations(x, &av, &ap);
-    scene_get_solver_iterations(y, &bv, &bp);
-    if (av != bv || ap != bp) return differ(why, size, "iterations differ");
-    double al, aa, bl, ba;
-    scene_get_sleep_tolerance(x, &al, &aa);
-    scene_get_sleep_tolerance(y, &bl, &ba);
-    if (scene_get_warm_starting(x) != scene_get_warm_starting(y) ||
-        scene_get_restitution_threshold(x) != scene_get_restitution_threshold(y) || al != bl ||
-        aa != ba || scene_get_sleep_time(x) != scene_get_sleep_time(y))
-        return differ(why, size, "solver settings differ");
     if (strcmp(scene_file_get_category(a), scene_file_get_category(b)) != 0 ||
         strcmp(scene_file_get_note(a), scene_file_get_note(b)) != 0)
         return differ(why, size, "category or note differs");
     if (scene_get_sleeping(x) != scene_get_sleeping(y))
         return differ(why, size, "sleeping differs");
+    size_t iterations[2][2];
+    scene_get_solver_iterations(x, &iterations[0][0], &iterations[0][1]);
+    scene_get_solver_iterations(y, &iterations[1][0], &iterations[1][1]);
+    if (iterations[0][0] != iterations[1][0] || iterations[0][1] != iterations[1][1])
+        return differ(why, size, "iterations differ");
+    if (scene_get_warm_starting(x) != scene_get_warm_starting(y))
+        return differ(why, size, "warm starting differs");
+    if (scene_get_restitution_threshold(x) != scene_get_restitution_threshold(y))
+        return differ(why, size, "restitution threshold differs");
+    double tolerance[2][2];
+    scene_get_sleep_tolerance(x, &tolerance[0][0], &tolerance[0][1]);
+    scene_get_sleep_tolerance(y, &tolerance[1][0], &tolerance[1][1]);
+    if (tolerance[0][0] != tolerance[1][0] || tolerance[0][1] != tolerance[1][1])
+        return differ(why, size, "sleep tolerance differs");
+    if (scene_get_sleep_time(x) != scene_get_sleep_time(y))
+        return differ(why, size, "sleep time differs");
     if (scene_get_sleep_phase(x) != scene_get_sleep_phase(y))
         return differ(why, size, "sleep phase differs");
     double last[2], before[2];

@@ -433,8 +433,6 @@ static void apply_settings(scene_file_t *file) {
     scene_set_contacts_enabled(file->scene, s->contacts);
     scene_set_integrator(file->scene, s->integrator);
     scene_set_solver_iterations(file->scene, s->velocity_iterations, s->position_iterations);
-    scene_set_sleeping(file->scene, s->sleeping);
-    if (s->workers != 0) scene_set_workers(file->scene, s->workers);
     if (s->warm_starting_where.line != 0) scene_set_warm_starting(file->scene, s->warm_starting);
     if (s->restitution_threshold_where.line != 0) {
         scene_set_restitution_threshold(file->scene, s->restitution_threshold);
@@ -443,6 +441,8 @@ static void apply_settings(scene_file_t *file) {
         scene_set_sleep_tolerance(file->scene, s->sleep_linear, s->sleep_angular);
     }
     if (s->sleep_time_where.line != 0) scene_set_sleep_time(file->scene, s->sleep_time);
+    scene_set_sleeping(file->scene, s->sleeping);
+    if (s->workers != 0) scene_set_workers(file->scene, s->workers);
 }
 
 bool sf_build(scene_file_t *file, sf_lexer_t *lexer) {

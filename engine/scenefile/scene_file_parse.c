@@ -215,16 +215,17 @@ bool sf_first_time(parser_t *p, sf_where_t *seen, const char *keyword, sf_where_
 
 /* ---- The file ------------------------------------------------------------- */
 
-static const char *const SETTINGS[] = {"gravity",  "contacts", "integrator", "iterations",
-                                       "timestep", "view",     "game",       "sleeping",
-                                       "sleep_phase", "step_lengths", "workers", "stepping",
-                                       "category", "note", "warm_starting",
-                                       "restitution_threshold", "sleep_tolerance", "sleep_time"};
+static const char *const SETTINGS[] = {
+    "gravity",     "contacts",     "integrator",    "iterations",
+    "timestep",    "view",         "game",          "sleeping",
+    "sleep_phase", "step_lengths", "warm_starting", "restitution_threshold",
+    "sleep_tolerance", "sleep_time", "workers",     "stepping",
+    "category",    "note"};
 static const char *const FORCES[] = {"spring", "newton", "drag", "collide"};
 
 static bool parse_one(parser_t *p) {
     sf_where_t here = p->token.where;
-    char keyword[24] = "";
+    char keyword[32] = "";
     if (p->token.kind == TOKEN_WORD && p->token.length < sizeof keyword) {
         memcpy(keyword, p->token.text, p->token.length);
         keyword[p->token.length] = '\0';
@@ -259,10 +260,10 @@ static bool parse_one(parser_t *p) {
     }
     if (p->token.kind == TOKEN_BAD_BYTE) return sf_expected(p, "text");
     return sf_expected(p, "a statement (body, template, group, gravity, contacts, integrator, "
-                          "iterations, timestep, view, game, sleeping, sleep_phase, step_lengths, "
-                          "workers, stepping, category, note, warm_starting, "
-                          "restitution_threshold, sleep_tolerance, sleep_time, spring, newton, "
-                          "drag, collide, contact)");
+                          "iterations, warm_starting, restitution_threshold, sleep_tolerance, "
+                          "sleep_time, timestep, view, game, sleeping, sleep_phase, step_lengths, "
+                          "workers, stepping, category, note, spring, newton, drag, collide, "
+                          "contact)");
 }
 
 bool sf_parse(sf_lexer_t *lexer, sf_doc_t *doc) {

@@ -64,6 +64,14 @@ static const quantity_t SPIN = {"the spin (rad/s, or deg/s with the suffix deg)"
 static const quantity_t GRAVITY = {"a gravity component (m/s^2)", -SF_MAX_MOTION, SF_MAX_MOTION,
                                    false, false};
 static const quantity_t TIMESTEP = {"the timestep (s)", 0.0, 10.0, true, false};
+/* The ranges of scene_set_restitution_threshold, _sleep_tolerance and
+ * _sleep_time. */
+static const quantity_t RESTITUTION_THRESHOLD = {"the restitution threshold (m/s)", 0.0, 100.0,
+                                                 false, false};
+static const quantity_t SLEEP_LINEAR = {"the linear sleep tolerance (m/s)", 0.0, 10.0, true, false};
+static const quantity_t SLEEP_ANGULAR = {"the angular sleep tolerance (rad/s)", 0.0, 100.0, true,
+                                         false};
+static const quantity_t SLEEP_TIME = {"the sleep time (s)", 0.0, 1000.0, true, false};
 static const quantity_t VIEW_SIZE = {"a view size (m)", 0.0, 2.0 * SF_MAX_LENGTH, true, false};
 static const quantity_t SPRING_K = {"the spring constant k (N/m)", 0.0, SF_MAX_CONSTANT, false,
                                     false};

@@ -199,6 +199,16 @@ typedef struct {
     sf_where_t integrator_where;
     size_t velocity_iterations, position_iterations;
     sf_where_t iterations_where;
+    /* The solver's settings below are applied only when written (the
+     * scene's defaults stand otherwise). */
+    bool warm_starting;
+    sf_where_t warm_starting_where;
+    double restitution_threshold;
+    sf_where_t restitution_threshold_where;
+    double sleep_linear, sleep_angular; /* sleep_tolerance; angular INFINITY when absent */
+    sf_where_t sleep_tolerance_where;
+    double sleep_time;
+    sf_where_t sleep_time_where;
     double timestep;
     sf_where_t timestep_where;
     scene_file_view_t view;
@@ -219,16 +229,6 @@ typedef struct {
     sf_where_t category_where;
     char note[SCENE_FILE_NOTE_MAX + 1];
     sf_where_t note_where;
-    /* The solver's settings beyond the iterations (jostle/scene.h), set on
-     * the scene only when the file gives them (their _where line is not 0). */
-    bool warm_starting;
-    sf_where_t warm_starting_where;
-    double restitution_threshold; /* m/s */
-    sf_where_t restitution_threshold_where;
-    double sleep_linear, sleep_angular; /* m/s, rad/s (INFINITY: no bound) */
-    sf_where_t sleep_tolerance_where;
-    double sleep_time; /* s */
-    sf_where_t sleep_time_where;
 } sf_settings_t;
 
 /* A `contact A B { ... }` block: the world's contact memory of one pair

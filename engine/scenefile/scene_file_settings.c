@@ -1,8 +1,8 @@
 /*
  * The settings (scene_file_parse.h): gravity, contacts, integrator,
- * iterations, timestep, view, sleeping, sleep_phase, step_lengths, workers,
- * stepping, category, note, warm_starting, restitution_threshold,
- * sleep_tolerance, sleep_time and game, each written at most once.
+ * iterations, warm_starting, restitution_threshold, sleep_tolerance,
+ * sleep_time, timestep, view, sleeping, sleep_phase, step_lengths, workers,
+ * stepping, category, note and game, each written at most once.
  */
 #include <math.h>
 #include <string.h>
@@ -83,49 +83,8 @@ static bool parse_run_setting(parser_t *p, const char *keyword, sf_where_t here)
            read_text(p, "the note's text", SCENE_FILE_NOTE_MAX, s->note);
 }
 
-/* The solver's settings of jostle/scene.h beyond the iterations, in the
- * ranges its setters take. */
-static const quantity_t THRESHOLD = {"the restitution threshold (m/s)", 0.0, 100.0, false, false};
-static const quantity_t SLEEP_LINEAR = {"the sleep tolerance's speed (m/s)", 0.0, 10.0, true,
-                                        false};
-static const quantity_t SLEEP_ANGULAR = {"the sleep tolerance's turn (rad/s)", 0.0, 100.0, true,
-                                         false};
-static const quantity_t SLEEP_TIME = {"the sleep time (s)", 0.0, 1000.0, true, false};
-
-static bool parse_solver_setting(parser_t *p, const char *keyword, sf_where_t here) {
-    sf_settings_t *s = &p->doc->settings;
-    if (strcmp(keyword, "warm_starting") == 0) {
-        if (!sf_first_time(p, &s->warm_starting_where, keyword, here)) return false;
-        if (sf_token_is(&p->token, "on") || sf_token_is(&p->token, "off")) {
-            s->warm_starting = sf_token_is(&p->token, "on");
-            next(p);
-            return true;
-        }
-        return sf_expected(p, "on or off (warm starting)");
-    }
-    if (strcmp(keyword, "restitution_threshold") == 0) {
-        return sf_first_time(p, &s->restitution_threshold_where, keyword, here) &&
-               sf_read_quantity(p, &THRESHOLD, &s->restitution_threshold);
-    }
-    if (strcmp(keyword, "sleep_time") == 0) {
-        return sf_first_time(p, &s->sleep_time_where, keyword, here) &&
-               sf_read_quantity(p, &SLEEP_TIME, &s->sleep_time);
-    }
-    /* sleep_tolerance LINEAR [ANGULAR]: without ANGULAR, no bound on the turn. */
-    s->sleep_angular = INFINITY;
-    if (!sf_first_time(p, &s->sleep_tolerance_where, keyword, here) ||
-        !sf_read_quantity(p, &SLEEP_LINEAR, &s->sleep_linear))
-        return false;
-    if (at_separator(p) || p->token.kind == TOKEN_END) return true;
-    return sf_read_quantity(p, &SLEEP_ANGULAR, &s->sleep_angular);
-}
-
 bool sf_parse_setting(parser_t *p, const char *keyword, sf_where_t here) {
     sf_settings_t *s = &p->doc->settings;
-    if (strcmp(keyword, "warm_starting") == 0 || strcmp(keyword, "restitution_threshold") == 0 ||
-        strcmp(keyword, "sleep_tolerance") == 0 || strcmp(keyword, "sleep_time") == 0) {
-        return parse_solver_setting(p, keyword, here);
-    }
     if (strcmp(keyword, "workers") == 0 || strcmp(keyword, "stepping") == 0 ||
         strcmp(keyword, "category") == 0 || strcmp(keyword, "note") == 0) {
         return parse_run_setting(p, keyword, here);
@@ -204,6 +163,32 @@ bool sf_parse_setting(parser_t *p, const char *keyword, sf_where_t here) {
         return sf_first_time(p, &s->step_lengths_where, keyword, here) &&
                sf_read_quantity(p, &last, &s->last_step) &&
                sf_read_quantity(p, &before, &s->step_before);
+    }
+    if (strcmp(keyword, "warm_starting") == 0) {
+        if (!sf_first_time(p, &s->warm_starting_where, keyword, here)) return false;
+        if (sf_token_is(&p->token, "on") || sf_token_is(&p->token, "off")) {
+            s->warm_starting = sf_token_is(&p->token, "on");
+            next(p);
+            return true;
+        }
+        return sf_expected(p, "on or off (warm starting)");
+    }
+    if (strcmp(keyword, "restitution_threshold") == 0) {
+        return sf_first_time(p, &s->restitution_threshold_where, keyword, here) &&
+               sf_read_quantity(p, &RESTITUTION_THRESHOLD, &s->restitution_threshold);
+    }
+    if (strcmp(keyword, "sleep_tolerance") == 0) {
+        s->sleep_angular = INFINITY;
+        if (!sf_first_time(p, &s->sleep_tolerance_where, keyword, here) ||
+            !sf_read_quantity(p, &SLEEP_LINEAR, &s->sleep_linear))
+            return false;
+        /* The angular tolerance is optional: none of its own when absent. */
+        if (p->token.kind != TOKEN_WORD) return true;
+        return sf_read_quantity(p, &SLEEP_ANGULAR, &s->sleep_angular);
+    }
+    if (strcmp(keyword, "sleep_time") == 0) {
+        return sf_first_time(p, &s->sleep_time_where, keyword, here) &&
+               sf_read_quantity(p, &SLEEP_TIME, &s->sleep_time);
     }
     /* game */
     return sf_first_time(p, &s->game_where, keyword, here) &&

@@ -58,30 +58,38 @@ static bool is_zero(vector_t v) {
     return v.x == 0.0 && v.y == 0.0;
 }
 
-/* The solver's settings that differ from their defaults (jostle/scene.h:
- * warm starting on, 1 m/s, 0.01 m/s with no bound on the turn, 0.5 s). */
-static void put_solver(out_t *out, scene_t *scene) {
-    if (!scene_get_warm_starting(scene)) put(out, "warm_starting off\n");
+/* The solver's settings as the scene has them now; all but the iterations
+ * only when they differ from a new scene's. */
+static void put_solver_settings(out_t *out, const scene_t *scene) {
+    size_t velocity, position;
+    scene_get_solver_iterations(scene, &velocity, &position);
+    put(out, "iterations %zu %zu\n", velocity, position);
+    scene_t *defaults = scene_init();
+    if (scene_get_warm_starting(scene) != scene_get_warm_starting(defaults)) {
+        put(out, "warm_starting %s\n", scene_get_warm_starting(scene) ? "on" : "off");
+    }
     double threshold = scene_get_restitution_threshold(scene);
-    if (threshold != 1.0) {
+    if (threshold != scene_get_restitution_threshold(defaults)) {
         put(out, "restitution_threshold");
         put_number(out, threshold);
         put(out, "\n");
     }
-    double linear, angular;
+    double linear, angular, default_linear, default_angular;
     scene_get_sleep_tolerance(scene, &linear, &angular);
-    if (linear != 0.01 || angular != INFINITY) {
+    scene_get_sleep_tolerance(defaults, &default_linear, &default_angular);
+    if (linear != default_linear || angular != default_angular) {
         put(out, "sleep_tolerance");
         put_number(out, linear);
-        if (angular != INFINITY) put_number(out, angular);
+        if (isfinite(angular)) put_number(out, angular);
         put(out, "\n");
     }
     double time = scene_get_sleep_time(scene);
-    if (time != 0.5) {
+    if (time != scene_get_sleep_time(defaults)) {
         put(out, "sleep_time");
         put_number(out, time);
         put(out, "\n");
     }
+    scene_free(defaults);
 }
 
 static void put_settings(out_t *out, scene_file_t *file, const char *integrator) {
@@ -90,9 +98,7 @@ static void put_settings(out_t *out, scene_file_t *file, const char *integrator)
     put_vector(out, scene_get_gravity(file->scene));
     put(out, "\ncontacts %s\n", scene_get_contacts_enabled(file->scene) ? "on" : "off");
     put(out, "integrator %s\n", integrator);
-    size_t velocity, position;
-    scene_get_solver_iterations(file->scene, &velocity, &position);
-    put(out, "iterations %zu %zu\n", velocity, position);
+    put_solver_settings(out, file->scene);
     put(out, "timestep");
     put_number(out, s->timestep);
     put(out, "\n");
@@ -109,7 +115,6 @@ static void put_settings(out_t *out, scene_file_t *file, const char *integrator)
     if (s->stepping == SCENE_FILE_STEP_FRAME) put(out, "stepping frame\n");
     if (s->category[0] != '\0') put(out, "category %s\n", s->category);
     if (s->note[0] != '\0') put(out, "note %s\n", s->note);
-    put_solver(out, file->scene);
     put(out, "sleeping %s\n", scene_get_sleeping(file->scene) ? "on" : "off");
     unsigned phase = scene_get_sleep_phase(file->scene);
     if (phase != 0) put(out, "sleep_phase %u\n", phase);

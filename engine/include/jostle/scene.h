@@ -398,7 +398,8 @@ scene_stats_t scene_get_stats(scene_t *scene);
  *   SLEEP        waking islands a change reached, sleep timers, islands
  *                put to sleep;
  *   REMOVAL      reaping the bodies marked removed (stage 4).
- * BROADPHASE to POSITION run only with world contacts (and bodies), SLEEP
+ * BROADPHASE to POSITION run only with world contacts and bodies not
+ * asleep (static bodies never sleep: they keep these stages running), SLEEP
  * only with world contacts and sleeping on, REMOVAL only when some body was
  * marked removed, FORCES only when there are force creators or something
  * (world contacts, a multi-stage or implicit integrator) needs the free

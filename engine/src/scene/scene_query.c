@@ -159,7 +159,9 @@ static queries_t *find_in_box(scene_t *scene, aabb_t box) {
     queries->found_count = 0;
     box_search_t search = {queries, scene_body_array(scene), box};
     broadphase_query_box(queries->grid, box, box_visit, &search);
-    qsort(queries->found, queries->found_count, sizeof(uint32_t), compare_indices);
+    if (queries->found_count > 1) {
+        qsort(queries->found, queries->found_count, sizeof(uint32_t), compare_indices);
+    }
     return queries;
 }
 

@@ -278,6 +278,9 @@ static void run_pipeline(world_t *world, body_t **bodies, integrator_motion_t *m
                          body_t **all_bodies, size_t all_count) {
     /* A new world searches before loading, whose checks would read what an
      * older world (since freed) left in the bodies. */
+    /* With every body asleep nothing runs but sleeping's bookkeeping,
+     * which the sleep stage's time takes. */
+    stage_clock_t *clock = count > 0 ? step->clock : NULL;
     if (!world->seams.found) seams_find(&world->seams, bodies, count);
     if (load_bodies(world, bodies, motions, count, step)) {
         seams_find(&world->seams, bodies, count);
@@ -285,17 +288,17 @@ static void run_pipeline(world_t *world, body_t **bodies, integrator_motion_t *m
     const broadphase_pair_t *pairs;
     size_t pair_count = broadphase_find_pairs(world->broadphase, world->proxies, count, &pairs,
                                               &stats->broadphase_tests);
-    stage_clock_lap(step->clock, SCENE_STAGE_BROADPHASE);
+    stage_clock_lap(clock, SCENE_STAGE_BROADPHASE);
     narrowphase_find_contacts(world, bodies, pairs, pair_count);
     impacts_take(world, step->dt, step->largest_polygon, step->restitution_threshold);
-    stage_clock_lap(step->clock, SCENE_STAGE_NARROWPHASE);
+    stage_clock_lap(clock, SCENE_STAGE_NARROWPHASE);
     solver_settings_t settings = {step->dt,
                                   step->position_weight,
                                   world->velocity_iterations,
                                   world->position_iterations,
                                   step->warm_starting,
                                   step->restitution_threshold,
-                                  step->clock};
+                                  clock};
     solver_bodies_t rows = {world->velocities, world->displacements, world->states, count};
     solver_solve(&world->wide, &world->shock, world->contacts, world->anchors,
                  world->contact_count, &rows, &settings);
@@ -310,7 +313,7 @@ static void run_pipeline(world_t *world, body_t **bodies, integrator_motion_t *m
     for (size_t i = 0; i < world->contact_count; i++) {
         stats->contact_points += (size_t)world->contacts[i].point_count;
     }
-    stage_clock_lap(step->clock, SCENE_STAGE_SOLVER);
+    stage_clock_lap(clock, SCENE_STAGE_SOLVER);
 }
 
 /* The awake bodies and copies of their motions; returns how many. */
