@@ -655,6 +655,13 @@ static void test_stage_chart_keeps_the_frames(void) {
     }
     EXPECT(fabs(stage_chart_peak(&chart) - 1.1e-3) < 1e-9, "after a full turn, peak %g s",
            stage_chart_peak(&chart));
+    EXPECT(fabs(stage_chart_scale(&chart) - 1.1e-3) < 1e-9, "scale %g s", stage_chart_scale(&chart));
+    p.seconds[SCENE_STAGE_SOLVER] = 0.1; /* one slow step: the scale stays at 4 medians */
+    stage_chart_add(&chart, &p);
+    EXPECT(fabs(stage_chart_peak(&chart) - 0.101) < 1e-6 &&
+               fabs(stage_chart_scale(&chart) - 4.4e-3) < 1e-9,
+           "one slow step: peak %g s, scale %g s", stage_chart_peak(&chart),
+           stage_chart_scale(&chart));
 }
 
 /* The plot keeps the lowest and highest value of each column of simulated

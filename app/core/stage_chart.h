@@ -38,4 +38,10 @@ const stage_column_t *stage_chart_column(const stage_chart_t *chart, size_t age)
 /* The longest step on the chart (s), 0 when it is empty. */
 double stage_chart_peak(const stage_chart_t *chart);
 
+/* The chart's full height (s): the longest step, but at most four times
+ * the median step, so that one slow step (the first after a scene opens,
+ * a page shown) does not flatten the rest; taller columns are cut at the
+ * top. 0 when the chart is empty. */
+double stage_chart_scale(const stage_chart_t *chart);
+
 #endif

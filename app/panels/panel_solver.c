@@ -75,7 +75,8 @@ static const char *const SHORT[SCENE_STAGE_COUNT] = {
 #define LEFT_OUT_LINES 2
 
 /* The chart: a column per frame (its last step), the stages stacked
- * bottom up in their colours, scaled to the longest step shown. */
+ * bottom up in their colours, scaled by stage_chart_scale (a taller
+ * column is cut at the top). */
 static void draw_chart(SDL_Renderer *renderer, const stage_chart_t *chart, SDL_Rect r, int top) {
     int label_w = 8 * DRAW_CHAR_W;
     int width = r.w - label_w < STAGE_CHART_COLUMNS ? r.w - label_w : STAGE_CHART_COLUMNS;
@@ -83,7 +84,7 @@ static void draw_chart(SDL_Renderer *renderer, const stage_chart_t *chart, SDL_R
     palette_rgb_t frame = PALETTE_RULE;
     rectangleRGBA(renderer, draw_coord(left - 1), draw_coord(top - 1), draw_coord(left + width),
                   draw_coord(bottom + 1), frame.r, frame.g, frame.b, 255);
-    double peak = stage_chart_peak(chart);
+    double peak = stage_chart_scale(chart);
     if (!(peak > 0.0)) {
         draw_text(renderer, left + 6, top + CHART_H / 2 - 4, PALETTE_OFF, "no step yet");
         return;
@@ -101,9 +102,9 @@ static void draw_chart(SDL_Renderer *renderer, const stage_chart_t *chart, SDL_R
         double below = 0.0;
         for (int s = 0; s < SCENE_STAGE_COUNT; s++) {
             if (!(c->seconds[s] > 0.0f)) continue;
-            int y0 = bottom - (int)lround(below / peak * (CHART_H - 1));
+            int y0 = bottom - (int)lround(fmin(below / peak, 1.0) * (CHART_H - 1));
             below += c->seconds[s];
-            int y1 = bottom - (int)lround(below / peak * (CHART_H - 1));
+            int y1 = bottom - (int)lround(fmin(below / peak, 1.0) * (CHART_H - 1));
             if (y1 == y0) continue; /* under half a pixel */
             rects[s][counts[s]++] = (SDL_Rect){left + width - 1 - age, y1 + 1, 1, y0 - y1};
         }
@@ -167,7 +168,7 @@ static void draw_step(SDL_Renderer *renderer, app_t *app, body_t *hovered, SDL_R
     }
 }
 
-const ui_section_t UI_WORLD = {"STEP (the last step by stage)",
+const ui_section_t UI_STEP = {"STEP (the last step by stage)",
                                COUNT_LINES * DRAW_LINE_H + 6 + CHART_H + 5 +
                                    LEGEND_ROWS * DRAW_LINE_H + 3 + LEFT_OUT_LINES * DRAW_LINE_H,
                                draw_step, NULL};

@@ -14,7 +14,7 @@ static const ui_section_t *const TOP[] = {&UI_STATUS, &UI_TABS};
 static const ui_section_t *const PLAY[] = {&UI_STATS,     &UI_SHAPE,      &UI_ELASTICITY,
                                            &UI_OVERLAYS,  &UI_INTEGRATOR, &UI_SCENE};
 static const ui_section_t *const SAMPLES[] = {&UI_SAMPLES};
-static const ui_section_t *const SOLVER[] = {&UI_SOLVER, &UI_WORLD};
+static const ui_section_t *const SOLVER[] = {&UI_SOLVER, &UI_STEP};
 static const ui_section_t *const TOOLS[] = {&UI_TOOLS, &UI_INSPECTOR, &UI_PLOT};
 
 typedef struct {

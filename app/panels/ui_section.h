@@ -31,7 +31,7 @@ extern const ui_section_t UI_SCENE;      /* panel_scene.c */
 extern const ui_section_t UI_TABS;       /* panel_tabs.c */
 extern const ui_section_t UI_SAMPLES;    /* panel_samples.c */
 extern const ui_section_t UI_SOLVER;     /* panel_solver.c */
-extern const ui_section_t UI_WORLD;      /* panel_solver.c */
+extern const ui_section_t UI_STEP;      /* panel_solver.c */
 extern const ui_section_t UI_TOOLS;      /* panel_tools.c */
 extern const ui_section_t UI_INSPECTOR;  /* panel_tools.c */
 extern const ui_section_t UI_PLOT;       /* panel_tools.c */

@@ -4,9 +4,8 @@
 /*
  * The categories of the samples, in the order the browser lists them. A
  * scene file names its own (`category WORDS`, docs/scenes.md); the samples
- * browser (app/scene/samples.c) and the test of every sample's promise
- * (tests/test_presets.c) both read this list, so a file whose category is
- * not here fails that test. Header only, plain C.
+ * browser (app/scene/samples.c) lists a category not here under "Other",
+ * and tests/app_units.c fails on it. Header only, plain C.
  */
 
 static const char *const SAMPLE_CATEGORIES[] = {
