@@ -1017,6 +1017,19 @@ static void fast_body_with_drag(void *unused) {
     scene_tick(scene, 1.0 / 60.0);
 }
 
+/* gamma dt / m = 1.6: stable under Euler's schemes (factor -0.6 a step),
+ * past symplectic4's drag limit (1.372), where the velocity grows until the
+ * force overflows. */
+static void symplectic4_drag_past_its_limit(void *unused) {
+    (void)unused;
+    scene_t *scene = scene_init();
+    scene_set_integrator(scene, INTEGRATOR_SYMPLECTIC4);
+    body_t *body = added(scene, square(VEC_ZERO, 0.5, 1.0));
+    body_set_velocity(body, (vector_t){1.0, 0.0});
+    create_drag(scene, 1.6 * 60.0, body);
+    for (int i = 0; i < 100000; i++) scene_tick(scene, 1.0 / 60.0);
+}
+
 static void heavy_bodies_too_close(void *unused) {
     (void)unused;
     scene_t *scene = scene_init();
@@ -1062,6 +1075,11 @@ static void unstable_forces_abort_naming_the_force_and_the_cause(void) {
     CHECK_DIES(fast_body_with_drag, NULL, "engine error in scene_tick:", "force stage",
                "drag on body 1", "gamma = 1e+10 kg/s", "force is not finite",
                "dt < 2 m / gamma = 2e-10 s", "INTEGRATOR_IMPLICIT_EULER is stable for it");
+    /* The limit named is the scheme's own (integrator_get_drag_limit). */
+    CHECK_DIES(symplectic4_drag_past_its_limit, NULL, "engine error in scene_tick:",
+               "drag on body 0", "the drag is unstable at dt = 0.0166667 s",
+               "symplectic4", "dt < 1.37192 m / gamma = 0.0142909 s",
+               "INTEGRATOR_IMPLICIT_EULER is stable for it");
     CHECK_DIES(heavy_bodies_too_close, NULL, "engine error in scene_tick:", "force stage",
                "newtonian gravity between body 0 and body 1", "force is not finite",
                "too close");

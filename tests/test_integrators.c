@@ -146,6 +146,40 @@ static void stability_limits_hold_in_theory_and_in_runs(void) {
     CHECK_NEAR(integrator_oscillator_growth(INTEGRATOR_SEED, 0.5), 1.125, 1e-15);
 }
 
+/* A 1 kg body under create_drag at z = gamma dt / m for 200 steps: its
+ * speed over the start's. */
+static double drag_speed_after(integrator_t integrator, double z) {
+    scene_t *scene = scene_init();
+    scene_set_integrator(scene, integrator);
+    body_t *body = added_square(scene, VEC_ZERO, 0.5, 1.0);
+    body_set_velocity(body, (vector_t){1.0, 0.0});
+    const double dt = 0.01;
+    create_drag(scene, z / dt, body);
+    for (int i = 0; i < 200; i++) scene_tick(scene, dt);
+    double speed = fabs(body_get_velocity(body).x);
+    scene_free(scene);
+    return speed;
+}
+
+/* Each scheme's largest stable gamma dt / m on drag, against runs on both
+ * sides of it; 2.785 and 1.372 are the real roots of |factor| = 1 of RK4's
+ * quartic and of symplectic4's three Verlet steps (tests/stability). */
+static void drag_limits_hold_in_runs(void) {
+    const double expected[INTEGRATOR_COUNT] = {2.0, 2.0, 2.0, 2.0, 2.785293563405282,
+                                               1.3719235554837272, INFINITY};
+    for (int i = 0; i < INTEGRATOR_COUNT; i++) {
+        double limit = integrator_get_drag_limit(ALL[i]);
+        if (isinf(expected[i])) {
+            CHECK(isinf(limit));
+            CHECK(drag_speed_after(ALL[i], 1e6) < 1e-12);
+            continue;
+        }
+        CHECK_RELATIVE(limit, expected[i], 1e-12);
+        CHECK(drag_speed_after(ALL[i], 0.99 * limit) < 1.0);
+        CHECK(drag_speed_after(ALL[i], 1.01 * limit) > 1.0);
+    }
+}
+
 /* Velocity Verlet, RK4 and symplectic4 follow a constant force exactly,
  * impulses acting at the start of the step and forces set between ticks
  * at every stage. */
@@ -278,6 +312,7 @@ TEST_SUITE(integrators, TEST_CASE(oscillator_errors_fall_at_each_schemes_order),
            TEST_CASE(symplectic_schemes_keep_the_orbit),
            TEST_CASE(explicit_euler_oscillator_energy_grows_by_the_formula),
            TEST_CASE(stability_limits_hold_in_theory_and_in_runs),
+           TEST_CASE(drag_limits_hold_in_runs),
            TEST_CASE(multi_stage_schemes_are_exact_for_constant_forces),
            TEST_CASE(force_creators_run_at_every_stage),
            TEST_CASE(collisions_run_at_the_first_stage_only),

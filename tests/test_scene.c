@@ -612,6 +612,7 @@ BAD_CALL(gravity_nan, scene_set_gravity(scene_init(), (vector_t){0, NAN}))
 BAD_CALL(gravity_null, scene_set_gravity(NULL, VEC_ZERO))
 BAD_CALL(get_gravity_null, scene_get_gravity(NULL))
 BAD_CALL(integrator_unknown, scene_set_integrator(scene_init(), (integrator_t)7))
+BAD_CALL(drag_limit_unknown, integrator_get_drag_limit((integrator_t)7))
 BAD_CALL(integrator_null, scene_set_integrator(NULL, INTEGRATOR_SEED))
 BAD_CALL(get_integrator_null, scene_get_integrator(NULL))
 BAD_CALL(contact_count_null, scene_contact_count(NULL))
@@ -750,6 +751,8 @@ static void bad_input_aborts_with_message(void) {
     CHECK_DIES(gravity_null, NULL, "engine error in scene_set_gravity:", "NULL");
     CHECK_DIES(get_gravity_null, NULL, "engine error in scene_get_gravity:", "NULL");
     CHECK_DIES(integrator_unknown, NULL, "engine error in scene_set_integrator:",
+               "unknown integrator 7");
+    CHECK_DIES(drag_limit_unknown, NULL, "engine error in integrator_get_drag_limit:",
                "unknown integrator 7");
     CHECK_DIES(integrator_null, NULL, "engine error in scene_set_integrator:", "NULL");
     CHECK_DIES(get_integrator_null, NULL, "engine error in scene_get_integrator:", "NULL");

@@ -140,6 +140,7 @@ BAD_CALL(threshold_nan, scene_set_restitution_threshold(scene_init(), NAN))
 BAD_CALL(linear_zero, scene_set_sleep_tolerance(scene_init(), 0.0, 1.0))
 BAD_CALL(angular_negative, scene_set_sleep_tolerance(scene_init(), 0.01, -1.0))
 BAD_CALL(time_zero, scene_set_sleep_time(scene_init(), 0.0))
+BAD_CALL(profiling_null, scene_set_profiling(NULL, true))
 BAD_CALL(stage_unknown, scene_stage_name(SCENE_STAGE_COUNT))
 
 static void bad_settings_stop_with_the_function_named(void) {
@@ -149,6 +150,7 @@ static void bad_settings_stop_with_the_function_named(void) {
     CHECK_DIES(linear_zero, NULL, "engine error in scene_set_sleep_tolerance:", "linear");
     CHECK_DIES(angular_negative, NULL, "engine error in scene_set_sleep_tolerance:", "angular");
     CHECK_DIES(time_zero, NULL, "engine error in scene_set_sleep_time:", "(0, 1000]");
+    CHECK_DIES(profiling_null, NULL, "engine error in scene_set_profiling:", "NULL");
     CHECK_DIES(stage_unknown, NULL, "engine error in scene_stage_name:", "unknown stage");
 }
 
@@ -214,10 +216,49 @@ static void profile_of_a_pile_and_the_inspector_counts(void) {
     scene_free(scene);
 }
 
+/* A stack stepped twice, profiling on in one: the same bits; seconds only
+ * where profiling is on and the stage ran. */
+static void profiling_times_the_stages_only_when_on(void) {
+    scene_t *scenes[2];
+    body_t *tops[2];
+    for (int s = 0; s < 2; s++) {
+        scenes[s] = scene_init();
+        scene_set_contacts_enabled(scenes[s], true);
+        scene_set_gravity(scenes[s], (vector_t){0, -9.81});
+        add_floor(scenes[s]);
+        add_box(scenes[s], (vector_t){0, 0.5}, 0.5, 1.0);
+        tops[s] = add_box(scenes[s], (vector_t){0.1, 1.6}, 0.5, 1.0);
+    }
+    CHECK(!scene_get_profiling(scenes[0]));
+    scene_set_profiling(scenes[1], true);
+    CHECK(scene_get_profiling(scenes[1]));
+    for (int i = 0; i < 60; i++) {
+        scene_tick(scenes[0], 1.0 / 60.0);
+        scene_tick(scenes[1], 1.0 / 60.0);
+    }
+    vector_t a = body_get_centroid(tops[0]), b = body_get_centroid(tops[1]);
+    CHECK(a.x == b.x && a.y == b.y);
+    scene_profile_t off = scene_get_profile(scenes[0]), on = scene_get_profile(scenes[1]);
+    double total = 0.0;
+    for (int k = 0; k < SCENE_STAGE_COUNT; k++) {
+        CHECK(off.ran[k] == on.ran[k]);
+        CHECK(off.seconds[k] == 0.0);
+        CHECK(on.ran[k] ? on.seconds[k] >= 0.0 : on.seconds[k] == 0.0);
+        total += on.seconds[k];
+    }
+    CHECK(on.ran[SCENE_STAGE_SOLVER] && total > 0.0);
+    scene_set_profiling(scenes[1], false);
+    scene_tick(scenes[1], 1.0 / 60.0);
+    CHECK(scene_get_profile(scenes[1]).seconds[SCENE_STAGE_SOLVER] == 0.0);
+    scene_free(scenes[0]);
+    scene_free(scenes[1]);
+}
+
 TEST_SUITE(settings, TEST_CASE(defaults_and_reset),
            TEST_CASE(warm_starting_off_changes_results_on_restores_bits),
            TEST_CASE(restitution_threshold_decides_which_landings_bounce),
            TEST_CASE(sleep_tolerances_and_time_decide_who_sleeps),
            TEST_CASE(bad_settings_stop_with_the_function_named),
            TEST_CASE(profile_of_orbits_runs_no_contact_stage),
-           TEST_CASE(profile_of_a_pile_and_the_inspector_counts));
+           TEST_CASE(profile_of_a_pile_and_the_inspector_counts),
+           TEST_CASE(profiling_times_the_stages_only_when_on));

@@ -231,6 +231,12 @@ const char *integrator_get_name(integrator_t integrator);
  * energy at every h, INFINITY for one stable at every h (implicit Euler). */
 double integrator_get_stability_limit(integrator_t integrator);
 
+/* The stability limit of gamma h / m on a body under create_drag: 2 for the
+ * one-stage explicit schemes and velocity Verlet, 2.785 for RK4, 1.372 for
+ * symplectic4 (its negative middle step turns drag into a push), INFINITY
+ * for implicit Euler. Past it the body's speed grows every step. */
+double integrator_get_drag_limit(integrator_t integrator);
+
 void scene_set_integrator(scene_t *scene, integrator_t integrator);
 integrator_t scene_get_integrator(scene_t *scene);
 
@@ -422,10 +428,10 @@ typedef enum {
  * program for a value outside [0, SCENE_STAGE_COUNT). */
 const char *scene_stage_name(scene_stage_t stage);
 
-/* The last scene_tick by stage: seconds is the wall time (CLOCK_MONOTONIC,
- * on the calling thread, whatever the workers) each stage took, ran
- * whether it ran at all (a stage that did not run has 0 s); all zero before
- * the first tick. The counts are of the scene as it is when called:
+/* The last scene_tick by stage: ran says whether the stage ran at all;
+ * seconds is the wall time (CLOCK_MONOTONIC, on the calling thread,
+ * whatever the workers) each stage took when profiling is on, 0 otherwise
+ * and for a stage that did not run; all zero before the first tick. The counts are of the scene as it is when called:
  * islands, the groups of bodies of finite mass joined by touching world
  * contacts (a sleeping island counts as one; 0 while world contacts are
  * off); awake_bodies, those of finite mass or inertia not asleep;
@@ -439,6 +445,13 @@ typedef struct {
 } scene_profile_t;
 
 scene_profile_t scene_get_profile(const scene_t *scene);
+
+/* Profiling (default off): time each stage of every tick for
+ * scene_get_profile. It reads the clock once per stage that runs, about
+ * 40 ns each: a two-body orbit's step takes 2.4 times as long with it on,
+ * a pile of 1000 bodies 0.01% longer. Results are the same either way. */
+void scene_set_profiling(scene_t *scene, bool enabled);
+bool scene_get_profiling(const scene_t *scene);
 
 /* For a body inspector. The body must be the scene's (stops otherwise).
  * scene_body_contact_count: the entries of the step's record that name the

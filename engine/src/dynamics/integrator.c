@@ -49,6 +49,21 @@ double integrator_get_stability_limit(integrator_t integrator) {
     engine_fail(__func__, "unknown integrator %d", (int)integrator);
 }
 
+double integrator_get_drag_limit(integrator_t integrator) {
+    switch (integrator) {
+    case INTEGRATOR_SEED:
+    case INTEGRATOR_EXPLICIT_EULER:
+    case INTEGRATOR_SYMPLECTIC_EULER:
+    case INTEGRATOR_VELOCITY_VERLET: return 2.0;
+    /* Where the quartic Taylor polynomial of e^-z reaches 1 (bisection). */
+    case INTEGRATOR_RK4: return 2.785293563405282;
+    /* Where three Verlet steps of c z multiply v by -1 (bisection). */
+    case INTEGRATOR_SYMPLECTIC4: return 1.3719235554837272;
+    case INTEGRATOR_IMPLICIT_EULER: return INFINITY;
+    }
+    engine_fail(__func__, "unknown integrator %d", (int)integrator);
+}
+
 /* A 2x2 matrix acting on (x, v / omega) of an undamped oscillator. */
 typedef struct {
     double a, b, c, d;

@@ -305,17 +305,16 @@ __attribute__((noreturn, cold))
 static void fail_drag(const pair_aux_t *aux) {
     const body_t *body = aux->body1;
     double dt = scene_step_dt(aux->scene);
-    double factor = 1.0 - aux->constant * dt / body->mass;
-    char cause[256];
-    /* The velocity update is explicit in every integrator but implicit
-     * Euler: v' = v (1 - gamma dt / m). */
-    bool explicit = scene_get_integrator(aux->scene) != INTEGRATOR_IMPLICIT_EULER;
-    if (explicit && factor < -1.0) {
+    integrator_t integrator = scene_get_integrator(aux->scene);
+    double z = aux->constant * dt / body->mass, limit = integrator_get_drag_limit(integrator);
+    char cause[320];
+    if (z > limit) {
         snprintf(cause, sizeof cause,
-                 "the drag is unstable at dt = %g s: each step multiplies the velocity by "
-                 "1 - gamma dt / m = %g, which needs dt < 2 m / gamma = %g s (m = %g kg); "
+                 "the drag is unstable at dt = %g s: gamma dt / m = %g is above the %s "
+                 "integrator's limit, which needs dt < %g m / gamma = %g s (m = %g kg); "
                  "INTEGRATOR_IMPLICIT_EULER is stable for it at any dt",
-                 dt, factor, 2.0 * body->mass / aux->constant, body->mass);
+                 dt, z, integrator_get_name(integrator), limit,
+                 limit * body->mass / aux->constant, body->mass);
     } else {
         snprintf(cause, sizeof cause, "the velocity is too large for gamma");
     }

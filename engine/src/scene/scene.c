@@ -364,6 +364,17 @@ void scene_get_solver_iterations(const scene_t *scene, size_t *velocity_iteratio
     if (position_iterations != NULL) *position_iterations = scene->position_iterations;
 }
 
+void scene_set_profiling(scene_t *scene, bool enabled) {
+    REQUIRE_NOT_NULL(scene);
+    scene_require_idle(scene, __func__, SETTING_ADVICE);
+    scene->clock.timing = enabled;
+}
+
+bool scene_get_profiling(const scene_t *scene) {
+    REQUIRE_NOT_NULL(scene);
+    return scene->clock.timing;
+}
+
 void scene_set_warm_starting(scene_t *scene, bool enabled) {
     REQUIRE_NOT_NULL(scene);
     scene_require_idle(scene, __func__, SETTING_ADVICE);
@@ -526,7 +537,9 @@ uint64_t scene_moves(const scene_t *scene) {
 }
 
 scene_profile_t scene_stage_times(const scene_t *scene) {
-    return scene->profile;
+    scene_profile_t profile = scene->profile;
+    if (!scene->clock.timing) memset(profile.seconds, 0, sizeof profile.seconds);
+    return profile;
 }
 
 /* Stage 1 at the start of the step. A force creator may add force creators
@@ -774,7 +787,9 @@ static void tick(scene_t *scene, double dt) {
     scene->record_needs_world = false;
     scene->stats = (scene_stats_t){0};
     scene->dt = dt;
-    memset(&scene->profile, 0, sizeof scene->profile);
+    /* The seconds are read only while timing (scene_stage_times). */
+    memset(scene->profile.ran, 0, sizeof scene->profile.ran);
+    if (scene->clock.timing) memset(scene->profile.seconds, 0, sizeof scene->profile.seconds);
     scene->clock.profile = &scene->profile;
     stage_clock_start(&scene->clock);
     scene->moves++;
