@@ -127,6 +127,36 @@ static void test_ray_and_box_tools_answer_exactly(void) {
     }
 }
 
+/* The inspector on the elastic box of bounce.scene (1 kg, a 0.6 m square:
+ * I = m (w^2 + h^2) / 12 = 0.060 kg m^2; elasticity 1, friction 0) and the
+ * plot of its height, which bounces between 0.3 and 4.3 m; then an
+ * explosion, said on the status line, and the plot of the scene's kinetic
+ * energy. */
+static void test_inspector_plot_and_explosion(void) {
+    run_t run;
+    image_t image;
+    const char *script = "open assets/scenes/bounce.scene\nkey l\nclick 4 4.3\nwait 3s\n"
+                         "move px 795 595\nscreenshot " TMP_DIR "/inspect.bmp\n"
+                         "key k\nclick 0 0.5\nwait 1\nmove px 795 595\n";
+    if (!run_script("explode", script, NULL, &run)) return;
+    if (load_shot("inspect", &image)) {
+        EXPECT(shows(&image, "the e100", false), "the inspector does not name the e100");
+        EXPECT(shows(&image, "m 1.000 kg  I 0.060 kg m2", false),
+               "the inspector's mass and inertia are not 1 kg and 0.060 kg m2");
+        EXPECT(shows(&image, "elasticity 1.00  friction 0.00", false),
+               "the inspector's material is not elasticity 1, friction 0");
+        EXPECT(shows(&image, "height (m)", false) && shows(&image, "4.30", false) &&
+                   shows(&image, "0.30", false),
+               "the plot of the height does not span 0.30 to 4.30 m");
+        image_free(&image);
+    }
+    if (load_shot("explode", &image)) {
+        EXPECT(shows(&image, "explosion:", false) && shows(&image, "N s at the", false),
+               "no status line for the explosion");
+        image_free(&image);
+    }
+}
+
 const app_test_t APP_LEARN_TESTS[] = {
     {"app_smoke.samples_browser_opens_a_sample_by_click",
      test_samples_browser_opens_a_sample_by_click},
@@ -135,5 +165,6 @@ const app_test_t APP_LEARN_TESTS[] = {
     {"app_smoke.stage_chart_names_the_stages_left_out",
      test_stage_chart_names_the_stages_left_out},
     {"app_smoke.ray_and_box_tools_answer_exactly", test_ray_and_box_tools_answer_exactly},
+    {"app_smoke.inspector_plot_and_explosion", test_inspector_plot_and_explosion},
 };
 const size_t APP_LEARN_TEST_COUNT = sizeof APP_LEARN_TESTS / sizeof APP_LEARN_TESTS[0];
