@@ -88,6 +88,37 @@ static void test_solver_settings_change_live_and_are_saved(void) {
     free(saved);
 }
 
+/* A click on the stepping row runs one step a frame, as long as the frame
+ * (headless: 1/60 s), where fixed steps of 1/120 s ran two. */
+static void test_frame_stepping_runs_one_step_a_frame(void) {
+    run_t run;
+    image_t image;
+    if (!run_script("stepping", "key f4\nmove px 5 5\nwait 2\n", NULL, &run) ||
+        !load_shot("stepping", &image)) {
+        return;
+    }
+    int x = 0, y = 0;
+    int x0 = layout_of(image.width, image.height).sidebar.x;
+    bool found = image_find_text(&image, "stepping", x0, 0, image.width, image.height, &x, &y,
+                                 NULL);
+    EXPECT(found, "no 'stepping' row on the SOLVER page");
+    image_free(&image);
+    if (!found) return;
+    char script[256];
+    snprintf(script, sizeof script,
+             "key f2\nwait 2\nscreenshot " TMP_DIR "/stepping_fixed.bmp\nkey f4\n"
+             "click px %d %d\nkey f2\nwait 2\nmove px 5 5\n", x + 4, y + 3);
+    if (!run_script("stepping_frame", script, NULL, &run)) return;
+    if (load_shot("stepping_fixed", &image)) {
+        EXPECT(shows(&image, "physics 2 steps a frame", false), "fixed steps: not 2 a frame");
+        image_free(&image);
+    }
+    if (load_shot("stepping_frame", &image)) {
+        EXPECT(shows(&image, "physics 1 step a frame", false), "frame stepping: not 1 a frame");
+        image_free(&image);
+    }
+}
+
 /* The STEP panel (SOLVER page) under orbits.scene, which has no world
  * contacts: forces and integrate run, every contact stage is left out. */
 static void test_stage_chart_names_the_stages_left_out(void) {
@@ -166,5 +197,6 @@ const app_test_t APP_LEARN_TESTS[] = {
      test_stage_chart_names_the_stages_left_out},
     {"app_smoke.ray_and_box_tools_answer_exactly", test_ray_and_box_tools_answer_exactly},
     {"app_smoke.inspector_plot_and_explosion", test_inspector_plot_and_explosion},
+    {"app_smoke.frame_stepping_runs_one_step_a_frame", test_frame_stepping_runs_one_step_a_frame},
 };
 const size_t APP_LEARN_TEST_COUNT = sizeof APP_LEARN_TESTS / sizeof APP_LEARN_TESTS[0];

@@ -30,7 +30,7 @@ static void timing_lines(const stats_values_t *v, char lines[STATS_LINES][STATS_
     if (v->headless) {
         /* Wall-clock timings would make each run's pictures differ. */
         put(lines[0], "headless: 1/60 s a frame");
-        put(lines[1], "physics %d steps a frame", v->steps);
+        put(lines[1], "physics %d step%s a frame", v->steps, v->steps == 1 ? "" : "s");
         put(lines[2], "(timings: --stats)");
         return;
     }
