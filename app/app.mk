@@ -8,8 +8,11 @@ SANDBOX_PKGS := sdl2 SDL2_gfx SDL2_image
 SANDBOX_APT := libsdl2-dev libsdl2-gfx-dev libsdl2-image-dev pkg-config
 SANDBOX_HAVE_SDL := $(shell pkg-config --exists $(SANDBOX_PKGS) 2>/dev/null && echo yes)
 
-APP_SRC := $(wildcard app/*.c)
-APP_HDR := $(wildcard app/*.h) $(GAMES_HDR)
+# app/main.c and the folders of app/ (app/README.md says what each owns);
+# sources include each other's headers as "FOLDER/X.h" from app/.
+APP_DIRS := scene core draw input panels tools
+APP_SRC := app/main.c $(foreach d,$(APP_DIRS),$(wildcard app/$(d)/*.c))
+APP_HDR := $(foreach d,$(APP_DIRS),$(wildcard app/$(d)/*.h)) $(GAMES_HDR)
 APP_OBJ := $(patsubst app/%.c,build/app/%.o,$(APP_SRC))
 # The game rules (app/games/, no SDL), which the tests link too.
 APP_GAMES_OBJ := $(patsubst app/games/%.c,build/app/games/%.o,$(GAMES_SRC))
@@ -29,7 +32,7 @@ build/app/games/%.o: app/games/%.c $(GAMES_HDR) $(wildcard engine/include/jostle
 
 build/app/%.o: app/%.c $(APP_HDR) $(wildcard engine/include/jostle/*.h) app/app.mk
 	@mkdir -p $(dir $@)
-	$(CC) $(CSTD) $(WARN) $(OPT) -Iengine/include -Iapp/games $(SANDBOX_CFLAGS) -c $< -o $@
+	$(CC) $(CSTD) $(WARN) $(OPT) -Iengine/include -Iapp -Iapp/games $(SANDBOX_CFLAGS) -c $< -o $@
 
 sandbox: $(APP_OBJ) $(APP_GAMES_OBJ) build/libjostle.a
 	$(CC) $(APP_OBJ) $(APP_GAMES_OBJ) build/libjostle.a $(SANDBOX_LIBS) -pthread -lm -o $@
@@ -39,9 +42,9 @@ INSTALL_SANDBOX := sandbox
 
 # The scan converter's two threads against one (tests/app_raster.c): SDL2
 # only, no window.
-APP_RASTER_SRC := tests/app_raster.c app/raster.c app/batch.c app/job_thread.c
-build/tests/app_raster: $(APP_RASTER_SRC) tests/app_expect.h app/raster.h app/batch.h app/job_thread.h \
-                        app/palette.h app/app.mk
+APP_RASTER_SRC := tests/app_raster.c app/draw/raster.c app/draw/batch.c app/core/job_thread.c
+build/tests/app_raster: $(APP_RASTER_SRC) tests/app_expect.h app/draw/raster.h app/draw/batch.h \
+                        app/core/job_thread.h app/draw/palette.h app/app.mk
 	@mkdir -p $(dir $@)
 	$(CC) $(CSTD) $(WARN) -O1 -g $(SAN) -Iapp -Iengine/include $(SANDBOX_CFLAGS) \
 	    $(APP_RASTER_SRC) $(SANDBOX_LIBS) -pthread -lm -o $@
@@ -68,10 +71,12 @@ endif
 # the geometry batch, the state a script logs),
 # tested directly against the sanitized engine; they build and run without
 # SDL.
-APP_UNIT_SRC := tests/app_units.c app/text.c app/stats_text.c app/step_clock.c app/layout.c \
-                app/energy_drift.c app/integrator_choice.c app/presets.c app/scene_text.c \
-                app/sandbox_scene.c app/batch.c app/state_log.c
-build/tests/app_units: $(APP_UNIT_SRC) tests/app_expect.h $(wildcard app/*.h) $(GAMES_HDR) app/app.mk \
+APP_UNIT_SRC := tests/app_units.c app/panels/text.c app/panels/stats_text.c app/core/step_clock.c \
+                app/core/layout.c app/core/energy_drift.c app/scene/integrator_choice.c \
+                app/scene/samples.c app/panels/scene_text.c app/scene/sandbox_scene.c app/draw/batch.c \
+                app/core/frame_meter.c app/draw/focus.c app/core/stage_chart.c app/core/plot.c \
+                app/scene/state_log.c
+build/tests/app_units: $(APP_UNIT_SRC) tests/app_expect.h $(APP_HDR) app/app.mk \
                        build/libjostle-san.a $(GAMES_SAN_OBJ)
 	@mkdir -p $(dir $@)
 	$(CC) $(CSTD) $(WARN) -O1 -g $(SAN) -Iapp -Iapp/games -Iengine/include $(APP_UNIT_SRC) \
@@ -80,9 +85,11 @@ build/tests/app_units: $(APP_UNIT_SRC) tests/app_expect.h $(wildcard app/*.h) $(
 # The smoke tests drive ./sandbox from outside and read its screenshots; they
 # link no SDL, but the sanitized engine, to load the scene files the sandbox
 # saves (scene_file_load), and the list of presets.
-APP_SMOKE_SRC := tests/app_smoke.c tests/app_image.c app/layout.c app/presets.c
-build/tests/app_smoke: $(APP_SMOKE_SRC) tests/app_image.h tests/app_expect.h app/palette.h app/layout.h \
-                       app/presets.h app/app.mk build/libjostle-san.a $(APP_SMOKE_DEPS)
+APP_SMOKE_SRC := tests/app_smoke.c tests/app_smoke_edges.c tests/app_smoke_learn.c tests/app_run.c \
+                 tests/app_image.c \
+                 app/core/layout.c app/scene/samples.c
+build/tests/app_smoke: $(APP_SMOKE_SRC) tests/app_run.h tests/app_image.h tests/app_expect.h app/draw/palette.h \
+                       app/core/layout.h app/scene/samples.h app/app.mk build/libjostle-san.a $(APP_SMOKE_DEPS)
 	@mkdir -p $(dir $@)
 	$(CC) $(CSTD) $(WARN) -O1 -g $(SAN) $(APP_SMOKE_DEFS) -Iapp -Itests -Iengine/include \
 	    $(APP_SMOKE_SRC) build/libjostle-san.a $(APP_SMOKE_LIBS) -pthread -lm -o $@

@@ -11,16 +11,17 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
-#include "app.h"
-#include "draw.h"
-#include "input.h"
-#include "integrator_choice.h"
-#include "layout.h"
-#include "render.h"
-#include "script.h"
-#include "stepper.h"
-#include "ui.h"
-#include "video.h"
+#include "core/app.h"
+#include "draw/draw.h"
+#include "input/input.h"
+#include "scene/integrator_choice.h"
+#include "core/layout.h"
+#include "draw/render.h"
+#include "input/script.h"
+#include "core/stepper.h"
+#include "panels/ui.h"
+#include "tools/tools.h"
+#include "draw/video.h"
 #ifdef __EMSCRIPTEN__
 #include "web/web.h"
 #endif
@@ -58,7 +59,7 @@ static void usage(FILE *out) {
             "game runs: Breakout and Space Invaders are played with Left/Right or\n"
             "A/D and Space (Enter pauses). Without it the default scene opens: an\n"
             "empty container. PageDown and PageUp go through the default scene and\n"
-            "the presets (assets/scenes/*.scene); Ctrl+S saves the scene as it is to\n"
+            "the samples (assets/scenes/*.scene); Ctrl+S saves the scene as it is to\n"
             "a new saved-N.scene. A file that is refused is named with its line and\n"
             "column (FILE:LINE:COLUMN: expected ..., found ...) and the exit status\n"
             "is 2.\n"
@@ -271,10 +272,10 @@ static bool is_dir(const char *path) {
     return stat(path, &info) == 0 && S_ISDIR(info.st_mode);
 }
 
-/* The presets' directory: assets/scenes here; else beside the program (run
+/* The samples' directory: assets/scenes here; else beside the program (run
  * from elsewhere, or through a link); else where make install puts them,
  * PREFIX/share/jostle/scenes beside PREFIX/bin. NULL when there is none. */
-static char *presets_dir(void) {
+static char *samples_dir(void) {
     static const char HERE[] = "assets/scenes";
     static const char *const BESIDE[] = {"assets/scenes", "../share/jostle/scenes"};
     if (is_dir(HERE)) return SDL_strdup(HERE);
@@ -299,7 +300,7 @@ static double seconds_since(Uint64 start) {
     return (double)(SDL_GetPerformanceCounter() - start) / (double)SDL_GetPerformanceFrequency();
 }
 
-/* Exponential smoothing for the HUD's numbers. */
+/* Exponential smoothing for the frame budget's drawing time. */
 static double smooth(double old, double value) {
     return old == 0.0 ? value : 0.9 * old + 0.1 * value;
 }
@@ -314,7 +315,8 @@ static void print_stats(app_t *app, double wall_s) {
            t->total_frame_s > 0 ? frames / t->total_frame_s : 0.0);
     printf("physics %8.3f ms per frame  (%.3f ms per step)\n",
            1000.0 * t->total_physics_s / frames, 1000.0 * t->total_physics_s / steps);
-    printf("render  %8.3f ms per frame\n", 1000.0 * t->total_render_s / frames);
+    printf("render  %8.3f ms per frame  (overlays %.3f ms)\n", 1000.0 * t->total_render_s / frames,
+           1000.0 * t->total_overlays_s / frames);
     printf("present %8.3f ms per frame\n", 1000.0 * t->total_present_s / frames);
     printf("wall    %8.3f ms per frame  (%.1f frames per second shown, waits included)\n",
            1000.0 * wall_s / frames, wall_s > 0 ? frames / wall_s : 0.0);
@@ -397,9 +399,9 @@ int main(int argc, char **argv) {
     int width = video.width, height = video.height;
 
     static app_t app; /* large (the impulse trail): not on the stack */
-    char *presets = presets_dir();
-    app_init(&app, width, height, o.seed, presets);
-    SDL_free(presets);
+    char *samples = samples_dir();
+    app_init(&app, width, height, o.seed, samples);
+    SDL_free(samples);
     if (o.save_dir != NULL) snprintf(app.save_dir, sizeof(app.save_dir), "%s", o.save_dir);
     app.headless = o.headless;
     app_set_elasticity(&app, o.elasticity);
@@ -417,8 +419,6 @@ int main(int argc, char **argv) {
 
     Uint64 previous = SDL_GetPerformanceCounter();
     Uint64 loop_start = previous;
-    Uint64 fps_start = previous;
-    int fps_frames = 0;
     bool drawn = false; /* a frame is drawn and not yet shown */
     stepper_t *stepper = stepper_start(&app);
     if (stepper == NULL) {
@@ -432,9 +432,8 @@ int main(int argc, char **argv) {
     status = 0;
     while (!app.quit) {
         Uint64 frame_start = SDL_GetPerformanceCounter();
-        double frame_dt = o.headless ? APP_HEADLESS_FRAME
-                                     : (double)(frame_start - previous) /
-                                           (double)SDL_GetPerformanceFrequency();
+        double wall_dt = (double)(frame_start - previous) / (double)SDL_GetPerformanceFrequency();
+        double frame_dt = o.headless ? APP_HEADLESS_FRAME : wall_dt;
         previous = frame_start;
         if (frame_dt > 0.25) frame_dt = 0.25; /* a stall (a dragged window, a debugger) */
         if (app.timing.frames == 0 && !o.headless) frame_dt = 1.0 / 60.0;
@@ -442,7 +441,12 @@ int main(int argc, char **argv) {
 
         SDL_Event event;
         while (SDL_PollEvent(&event)) input_handle_event(&app, &event);
-        bool resized = video_sync_size(&video);
+        bool resized = false;
+        if (app.resize_width > 0) {
+            resized = video_request_size(&video, app.resize_width, app.resize_height);
+            app.resize_width = app.resize_height = 0;
+        }
+        resized = video_sync_size(&video) || resized;
         if (resized) app_resize(&app, video.width, video.height);
         SDL_Renderer *renderer = video.renderer;
         const char *shot = NULL;
@@ -460,6 +464,9 @@ int main(int argc, char **argv) {
                                                          app.timing.render_ms / 1000.0,
                                                          app.timing.planned_step_s);
         int steps = app_plan_steps(&app, frame_dt);
+        /* The stages are timed only while their chart is shown: reading the
+         * clock at every stage slows a small scene's step. */
+        scene_set_profiling(app.sandbox.scene, app.page == UI_PAGE_SOLVER);
         stepper_begin(stepper, steps);
         double present_s = 0.0;
         if (drawn && !resized) {
@@ -469,12 +476,18 @@ int main(int argc, char **argv) {
         }
         double physics_s = stepper_finish(stepper);
         app_frame_done(&app, steps);
+        tools_frame(&app, frame_dt, steps * app.sandbox.tick);
+        /* The profile counts islands (O(n log n)): only while it is shown. */
+        if (steps > 0 && app.page == UI_PAGE_SOLVER) {
+            scene_profile_t profile = scene_get_profile(app.sandbox.scene);
+            stage_chart_add(&app.stages, &profile);
+        }
 
         Uint64 render_start = SDL_GetPerformanceCounter();
         body_t *hovered = input_hovered_body(&app);
         draw_set_canvas(renderer, video.canvas);
-        render_world(renderer, video.canvas, &app, hovered);
-        ui_draw(renderer, &app, hovered);
+        double overlays_s = render_world(renderer, video.canvas, &app, hovered);
+        ui_draw(renderer, video.canvas, &app, hovered);
         SDL_RenderFlush(renderer);
         double render_s = seconds_since(render_start);
         drawn = true;
@@ -488,22 +501,22 @@ int main(int argc, char **argv) {
         app_timing_t *t = &app.timing;
         double frame_s = seconds_since(frame_start);
         t->steps = steps;
-        if (steps > 0) t->physics_ms = smooth(t->physics_ms, 1000.0 * physics_s / steps);
         t->planned_step_s = step_clock_step_cost(t->planned_step_s, physics_s, steps);
         t->render_ms = smooth(t->render_ms, 1000.0 * render_s);
-        t->frame_ms = smooth(t->frame_ms, 1000.0 * frame_s);
+        /* The side bar's figures, from the same window of frames: this
+         * frame's wall time is counted at the next one's start. */
+        if (t->frames > 1) frame_meter_add(&t->meter, wall_dt, t->last_busy_s, t->last_physics_s,
+                                           t->last_steps, t->last_render_s);
+        t->last_busy_s = frame_s;
+        t->last_physics_s = physics_s;
+        t->last_render_s = render_s;
+        t->last_steps = steps;
         t->total_steps += (uint64_t)steps;
         t->total_frame_s += frame_s;
         t->total_physics_s += physics_s;
         t->total_render_s += render_s;
+        t->total_overlays_s += overlays_s;
         t->total_present_s += present_s;
-        fps_frames++;
-        double fps_window = seconds_since(fps_start);
-        if (fps_window >= 0.5) {
-            t->fps = fps_frames / fps_window;
-            fps_frames = 0;
-            fps_start = SDL_GetPerformanceCounter();
-        }
         if (last || status != 0) break;
 #ifdef __EMSCRIPTEN__
         /* A page shows a frame only when it hands it to the browser. */
@@ -530,6 +543,7 @@ int main(int argc, char **argv) {
 #endif
     stepper_stop(stepper);
     render_free();
+    ui_free();
     app_free(&app);
     script_free(script);
     video_close(&video);

@@ -11,12 +11,18 @@
 #include <stdio.h>
 #include <string.h>
 
+/* A program of several files defines APP_EXPECT_SHARED before including
+ * this, in every file, and `int app_failures;` in one. */
+#ifdef APP_EXPECT_SHARED
+extern int app_failures;
+#else
 static int app_failures;
+#endif
 
 #if defined(__GNUC__)
 __attribute__((format(printf, 1, 2)))
 #endif
-static void app_fail(const char *format, ...) {
+static inline void app_fail(const char *format, ...) {
     va_list args;
     va_start(args, format);
     printf("    ");
@@ -39,7 +45,7 @@ typedef struct {
 /* Runs the tests whose names contain filter (all when NULL), a PASS or
  * FAIL line each, then the "N passed, N failed" line; returns the exit
  * status (1 when any failed). */
-static int app_run_tests(const app_test_t *tests, size_t count, const char *filter) {
+static inline int app_run_tests(const app_test_t *tests, size_t count, const char *filter) {
     size_t passed = 0, failed = 0;
     for (size_t i = 0; i < count; i++) {
         if (filter != NULL && strstr(tests[i].name, filter) == NULL) continue;

@@ -12,8 +12,8 @@
 #include <stdio.h>
 #include <string.h>
 #include "app_expect.h"
-#include "batch.h"
-#include "raster.h"
+#include "draw/batch.h"
+#include "draw/raster.h"
 
 enum { WIDTH = 640, HEIGHT = 480 };
 

@@ -4,11 +4,11 @@
  * (app/step_clock.c), the layout (app/layout.c), the energy drift of the
  * INTEGRATOR panel (app/energy_drift.c), the integrators by name
  * (app/integrator_choice.c, against the engine), the list of scenes
- * PageDown and PageUp go through (app/presets.c), the SCENE panel's words
+ * PageDown and PageUp go through (app/scene/samples.c), the SCENE panel's words
  * (app/scene_text.c), and the sandbox's scenes from scene files
  * (app/sandbox_scene.c with the game rules, against the sanitized engine),
  * the geometry batch the renderer draws in one call (app/batch.c), and the
- * state a script's `log` prints (app/state_log.c).
+ * state a script's `log` prints (app/scene/state_log.c).
  * Ends with "N passed, N failed" like every test program make check runs.
  * Run from the repository root (it reads assets/scenes/).
  */
@@ -17,18 +17,23 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "batch.h"
-#include "energy_drift.h"
-#include "integrator_choice.h"
-#include "layout.h"
-#include "palette.h"
-#include "presets.h"
-#include "sandbox_scene.h"
-#include "scene_text.h"
-#include "state_log.h"
-#include "stats_text.h"
-#include "step_clock.h"
-#include "text.h"
+#include "draw/batch.h"
+#include "core/energy_drift.h"
+#include "core/frame_meter.h"
+#include "draw/focus.h"
+#include "scene/integrator_choice.h"
+#include "core/layout.h"
+#include "draw/palette.h"
+#include "scene/samples.h"
+#include "scene/sample_categories.h"
+#include "core/stage_chart.h"
+#include "core/plot.h"
+#include "scene/sandbox_scene.h"
+#include "scene/state_log.h"
+#include "panels/scene_text.h"
+#include "panels/stats_text.h"
+#include "core/step_clock.h"
+#include "panels/text.h"
 
 #include "app_expect.h"
 
@@ -116,7 +121,8 @@ static void test_stats_lines_fit_the_side_bar(void) {
     stats_text(&resting, lines);
     EXPECT(strcmp(lines[3], "bodies 3  sleeping off") == 0, "bodies line with sleeping off: "
            "\"%s\"", lines[3]);
-    stats_values_t pile = {.fps = 1149.6, .frame_ms = 249.99, .physics_ms = 123.456,
+    stats_values_t pile = {.fps = 1149.6, .frame_ms = 249.99, .busy_ms = 999.99,
+                           .physics_ms = 123.456,
                            .render_ms = 999.99, .steps = 4, .bodies = 20000,
                            .sleeping = 19999, .sleeping_on = true,
                            .collisions = 36130, .near = 11440, .energy = -123456789.0,
@@ -128,6 +134,85 @@ static void test_stats_lines_fit_the_side_bar(void) {
     stats_text(&pile, lines);
     EXPECT(strstr(lines[4], "36130") && strstr(lines[4], "11440"), "collisions line: \"%s\"",
            lines[4]);
+}
+
+/* The frame rate and the frame time come from the same window of frames:
+ * FPS x ms a frame = 1000 in every window, whatever the frames' busy times
+ * (the panel used to show a half-second frame rate beside an exponentially
+ * smoothed busy time: "51.1 FPS, frame 27.29 ms"). */
+static void test_frame_times_from_one_window(void) {
+    frame_meter_t meter = {0};
+    /* 20 ms frames, 12 ms of them busy, a late one of 70 ms each 0.5 s. */
+    for (int i = 0; i < 300; i++) {
+        bool late = i % 25 == 24;
+        frame_meter_add(&meter, late ? 0.070 : 0.020, late ? 0.062 : 0.012, 0.006, 2, 0.004);
+        const frame_times_t *t = &meter.shown;
+        EXPECT(fabs(t->fps * t->frame_ms - 1000.0) < 1e-9,
+               "frame %d: %.3f FPS and %.3f ms a frame", i, t->fps, t->frame_ms);
+    }
+    /* The windows of 25 frames: 24 x 20 ms + 70 ms = 0.55 s. */
+    EXPECT(fabs(meter.shown.fps - 25.0 / 0.55) < 1e-9, "%.4f FPS over a window", meter.shown.fps);
+    EXPECT(fabs(meter.shown.busy_ms - (24 * 12.0 + 62.0) / 25.0) < 1e-9, "busy %.4f ms",
+           meter.shown.busy_ms);
+    EXPECT(fabs(meter.shown.physics_ms - 3.0) < 1e-9 && fabs(meter.shown.render_ms - 4.0) < 1e-9,
+           "physics %.4f ms a step, drawing %.4f ms", meter.shown.physics_ms,
+           meter.shown.render_ms);
+    /* Before the first window is full, the frames so far. */
+    frame_meter_t fresh = {0};
+    frame_meter_add(&fresh, 0.010, 0.005, 0.0, 0, 0.002);
+    EXPECT(fabs(fresh.shown.fps - 100.0) < 1e-9 && fabs(fresh.shown.frame_ms - 10.0) < 1e-9,
+           "one frame: %.3f FPS, %.3f ms", fresh.shown.fps, fresh.shown.frame_ms);
+}
+
+/* The focus keeps the k strongest of any number offered, and the nearest
+ * to the cursor within its radius; asked in increasing index order. */
+static void test_overlays_focus_on_the_strongest_and_nearest(void) {
+    focus_top_t top;
+    focus_top_init(&top, FOCUS_STRONG);
+    uint64_t x = 12345;
+    double weights[5000];
+    for (size_t i = 0; i < 5000; i++) {
+        x = x * 6364136223846793005ULL + 1442695040888963407ULL;
+        weights[i] = (double)(x >> 11) / 9007199254740992.0;
+        focus_top_offer(&top, i, weights[i]);
+    }
+    /* The FOCUS_STRONG-th largest weight: every kept one is at least it. */
+    double sorted[5000];
+    memcpy(sorted, weights, sizeof sorted);
+    for (size_t i = 0; i < FOCUS_STRONG; i++) {
+        for (size_t j = i + 1; j < 5000; j++) {
+            if (sorted[j] > sorted[i]) {
+                double t = sorted[i];
+                sorted[i] = sorted[j];
+                sorted[j] = t;
+            }
+        }
+    }
+    double threshold = sorted[FOCUS_STRONG - 1];
+    focus_top_sort(&top);
+    size_t kept = 0;
+    for (size_t i = 0; i < 5000; i++) {
+        bool has = focus_top_has(&top, i);
+        kept += has;
+        EXPECT(has == (weights[i] >= threshold), "item %zu (weight %.6f) kept: %d", i,
+               weights[i], has);
+    }
+    EXPECT(kept == FOCUS_STRONG, "%zu kept of 5000", kept);
+    /* Near: within the radius only, the nearest first. */
+    focus_top_t near;
+    focus_top_init(&near, 3);
+    vector_t cursor = {100, 100};
+    const vector_t points[] = {{100, 150}, {100, 210}, {100, 101}, {300, 100}, {130, 100},
+                               {100, 60}};
+    for (size_t i = 0; i < 6; i++) focus_near_offer(&near, i, points[i], true, cursor);
+    focus_top_sort(&near);
+    bool expected[6] = {false, false, true, false, true, true};
+    for (size_t i = 0; i < 6; i++) {
+        EXPECT(focus_top_has(&near, i) == expected[i], "point %zu near: %d", i, !expected[i]);
+    }
+    focus_top_init(&near, 3);
+    focus_near_offer(&near, 0, cursor, false, cursor);
+    EXPECT(near.count == 0, "kept a point with no cursor over the view");
 }
 
 /* 11 minutes at 60 frames per second where one frame a second is late
@@ -262,6 +347,31 @@ static void test_layout_leaves_the_view_free(void) {
                l.view.w, l.sidebar.x, l.sidebar.w);
         EXPECT(!layout_contains(l.view, l.sidebar.x, 10) && layout_contains(l.view, 0, 0),
                "%dx%d: the view and the side bar overlap", sizes[i][0], sizes[i][1]);
+    }
+}
+
+/* The UI grows with the window past 1280x720, in quarters: the side bar's
+ * panels keep their size in UI units and a window pixel maps into them. */
+static void test_layout_scales_the_ui_with_the_window(void) {
+    const struct {
+        int w, h;
+        double scale;
+    } cases[] = {{800, 600, 1.0},   {1280, 720, 1.0},  {1279, 2000, 1.0}, {1920, 1080, 1.5},
+                 {2560, 1440, 2.0}, {2560, 1000, 1.25}, {8192, 8192, 6.25}};
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        layout_t l = layout_of(cases[i].w, cases[i].h);
+        EXPECT(l.scale == cases[i].scale, "%dx%d: scale %g, not %g", cases[i].w, cases[i].h,
+               l.scale, cases[i].scale);
+        EXPECT(l.sidebar.w == (int)lround(LAYOUT_SIDEBAR_W * l.scale) &&
+                   l.panels.w == LAYOUT_SIDEBAR_W && l.view.w + l.sidebar.w == cases[i].w,
+               "%dx%d: side bar %d wide (%d in UI units), view %d", cases[i].w, cases[i].h,
+               l.sidebar.w, l.panels.w, l.view.w);
+        double ux, uy;
+        layout_to_panels(&l, l.sidebar.x + l.sidebar.w - 1, cases[i].h - 1, &ux, &uy);
+        EXPECT(ux >= l.panels.x + l.panels.w - 1 && ux < l.panels.x + l.panels.w &&
+                   uy < l.panels.y + l.panels.h + 1,
+               "%dx%d: the side bar's last pixel maps to (%g, %g) of %dx%d", cases[i].w,
+               cases[i].h, ux, uy, l.panels.w, l.panels.h);
     }
 }
 
@@ -474,35 +584,115 @@ static void test_integrators_by_name(void) {
 
 /* ---- scenes ---- */
 
-/* The presets' directory lists its *.scene files by name after the default
- * scene; a scene is found by its path however it is written; PageDown and
- * PageUp go round. */
-static void test_presets_list_the_scene_files(void) {
-    static presets_t presets;
-    presets_load(&presets, "assets/scenes");
-    EXPECT(presets.count >= 11, "%zu presets in assets/scenes", presets.count);
-    EXPECT(presets_scene_count(&presets) == presets.count + 1 && presets_path(&presets, 0) == NULL,
+/* The samples: the default scene first, then the *.scene files ordered
+ * by category (sample_categories.h) and by name within one, each with a
+ * known category and a one-line note; a scene is found by its path however
+ * it is written; PageDown and PageUp go round. */
+static void test_samples_list_by_category(void) {
+    static samples_t samples;
+    samples_load(&samples, "assets/scenes", SANDBOX_DEFAULT_NAME, SANDBOX_DEFAULT_SCENE);
+    EXPECT(samples.count >= 12, "%zu samples with assets/scenes", samples.count);
+    EXPECT(samples_count(&samples) == samples.count && samples_path(&samples, 0) == NULL &&
+               strcmp(samples.items[0].name, SANDBOX_DEFAULT_NAME) == 0,
            "the default scene is not first");
-    for (size_t i = 1; i < presets.count; i++) {
-        EXPECT(strcmp(presets.paths[i - 1], presets.paths[i]) < 0, "%s before %s",
-               presets.paths[i - 1], presets.paths[i]);
+    for (size_t i = 0; i < samples.count; i++) {
+        const sample_t *s = &samples.items[i];
+        EXPECT(s->category >= 0 && s->category < SAMPLE_CATEGORY_COUNT,
+               "%s: category %d is none of the browser's", s->name, s->category);
+        EXPECT(s->note[0] != '\0' && strlen(s->note) <= SCENE_FILE_NOTE_MAX, "%s: no note",
+               s->name);
+        if (i < 2) continue;
+        const sample_t *before = &samples.items[i - 1];
+        EXPECT(before->category < s->category ||
+                   (before->category == s->category && strcmp(before->name, s->name) < 0),
+               "%s before %s", before->name, s->name);
     }
-    int pegs = presets_find(&presets, "./assets/scenes/../scenes/pegs.scene");
-    EXPECT(pegs > 0 && strstr(presets_path(&presets, (size_t)pegs), "pegs.scene") != NULL,
+    EXPECT(strcmp(samples_category_name(&samples, 0), "Basics") == 0, "the default scene in %s",
+           samples_category_name(&samples, 0));
+    int pegs = samples_find(&samples, "./assets/scenes/../scenes/pegs.scene");
+    EXPECT(pegs > 0 && strstr(samples_path(&samples, (size_t)pegs), "pegs.scene") != NULL,
            "pegs.scene found at %d", pegs);
-    EXPECT(presets_find(&presets, NULL) == 0, "the default scene is not at 0");
-    EXPECT(presets_find(&presets, "app/app.c") == -1 && presets_find(&presets, "no/such") == -1,
-           "a file that is not a preset is found in the list");
-    size_t last = presets_scene_count(&presets) - 1;
-    EXPECT(presets_next(&presets, (int)last, 1) == 0 && presets_next(&presets, 0, -1) == last &&
-               presets_next(&presets, 2, 1) == 3 && presets_next(&presets, -1, 1) == 0 &&
-               presets_next(&presets, -1, -1) == last,
+    EXPECT(pegs > 0 && strcmp(samples_category_name(&samples, (size_t)pegs), "Games") == 0,
+           "pegs is not in Games");
+    EXPECT(samples_find(&samples, NULL) == 0, "the default scene is not at 0");
+    EXPECT(samples_find(&samples, "app/app.c") == -1 && samples_find(&samples, "no/such") == -1,
+           "a file that is not a sample is found in the list");
+    size_t last = samples_count(&samples) - 1;
+    EXPECT(samples_next(&samples, (int)last, 1) == 0 && samples_next(&samples, 0, -1) == last &&
+               samples_next(&samples, 2, 1) == 3 && samples_next(&samples, -1, 1) == 0 &&
+               samples_next(&samples, -1, -1) == last,
            "PageDown and PageUp do not go round the list");
-    presets_free(&presets);
-    presets_load(&presets, "no/such/directory");
-    EXPECT(presets.count == 0 && presets_scene_count(&presets) == 1,
-           "a missing directory lists %zu presets", presets.count);
-    presets_free(&presets);
+    samples_free(&samples);
+    samples_load(&samples, "no/such/directory", SANDBOX_DEFAULT_NAME, NULL);
+    EXPECT(samples.count == 1 && samples_count(&samples) == 1 && samples.items[0].category == 0,
+           "a missing directory lists %zu samples", samples.count);
+    samples_free(&samples);
+}
+
+/* The stage chart keeps a column per frame in a ring, each stage's time
+ * only when the stage ran; its peak is the longest column. */
+static void test_stage_chart_keeps_the_frames(void) {
+    static stage_chart_t chart;
+    stage_chart_init(&chart);
+    EXPECT(stage_chart_peak(&chart) == 0.0 && !stage_chart_column(&chart, 0)->filled,
+           "a new chart is not empty");
+    scene_profile_t p = {{0}, {false}, 0, 0, 0, 0};
+    p.seconds[SCENE_STAGE_FORCES] = 1e-3;
+    p.ran[SCENE_STAGE_FORCES] = true;
+    p.seconds[SCENE_STAGE_SOLVER] = 5e-3; /* not run: not drawn */
+    p.awake_bodies = 7;
+    stage_chart_add(&chart, &p);
+    p.ran[SCENE_STAGE_SOLVER] = true;
+    stage_chart_add(&chart, &p);
+    const stage_column_t *newest = stage_chart_column(&chart, 0), *older = stage_chart_column(&chart, 1);
+    EXPECT(newest->filled && older->filled && older->seconds[SCENE_STAGE_SOLVER] == 0.0f &&
+               newest->seconds[SCENE_STAGE_SOLVER] == 5e-3f && chart.last.awake_bodies == 7 &&
+               chart.has_last,
+           "columns: %g then %g s of solver", older->seconds[SCENE_STAGE_SOLVER],
+           newest->seconds[SCENE_STAGE_SOLVER]);
+    EXPECT(fabs(stage_chart_peak(&chart) - 6e-3) < 1e-9, "peak %g s", stage_chart_peak(&chart));
+    for (int i = 0; i < STAGE_CHART_COLUMNS; i++) {
+        p.seconds[SCENE_STAGE_SOLVER] = 1e-4;
+        stage_chart_add(&chart, &p);
+    }
+    EXPECT(fabs(stage_chart_peak(&chart) - 1.1e-3) < 1e-9, "after a full turn, peak %g s",
+           stage_chart_peak(&chart));
+    EXPECT(fabs(stage_chart_scale(&chart) - 1.1e-3) < 1e-9, "scale %g s", stage_chart_scale(&chart));
+    p.seconds[SCENE_STAGE_SOLVER] = 0.1; /* one slow step: the scale stays at 4 medians */
+    stage_chart_add(&chart, &p);
+    EXPECT(fabs(stage_chart_peak(&chart) - 0.101) < 1e-6 &&
+               fabs(stage_chart_scale(&chart) - 4.4e-3) < 1e-9,
+           "one slow step: peak %g s, scale %g s", stage_chart_peak(&chart),
+           stage_chart_scale(&chart));
+}
+
+/* The plot keeps the lowest and highest value of each column of simulated
+ * time; a frame without a value (no body inspected) leaves columns empty;
+ * a constant is widened to show. */
+static void test_plot_columns_hold_low_and_high(void) {
+    static plot_t plot;
+    plot_init(&plot, PLOT_HEIGHT);
+    double low = 0, high = 0;
+    EXPECT(!plot_range(&plot, &low, &high), "an empty plot has a range");
+    double column = PLOT_SECONDS / PLOT_COLUMNS;
+    plot_sample(&plot, 0.25 * column, true, 2.0);
+    plot_sample(&plot, 0.25 * column, true, -1.0);
+    plot_sample(&plot, 0.0, true, 9.0); /* paused: nothing added */
+    const plot_column_t *c = plot_column(&plot, 0);
+    EXPECT(c->filled && c->low == -1.0f && c->high == 2.0f && plot.latest == 9.0,
+           "column %g to %g, latest %g", c->low, c->high, plot.latest);
+    plot_sample(&plot, 3.0 * column, false, 0.0);
+    EXPECT(!plot_column(&plot, 0)->filled && plot_column(&plot, 3)->filled && !plot.has_latest,
+           "a frame without a value filled a column");
+    EXPECT(plot_range(&plot, &low, &high) && low == -1.0 && high == 2.0, "range %g to %g", low,
+           high);
+    plot_init(&plot, PLOT_ENERGY);
+    plot_sample(&plot, column, true, 5.0);
+    EXPECT(plot_range(&plot, &low, &high) && low < 5.0 && high > 5.0 && high - low < 0.2,
+           "a constant's range %g to %g", low, high);
+    EXPECT(plot_needs_body(PLOT_SPEED) && !plot_needs_body(PLOT_MOMENTUM) &&
+               strcmp(plot_quantity_name(PLOT_KINETIC), "kinetic energy (J)") == 0,
+           "quantities");
 }
 
 /* The SCENE panel's lines fit the side bar and say what they should. */
@@ -572,7 +762,16 @@ static void test_default_scene_is_a_scene_file(void) {
     EXPECT(why != NULL && strcmp(why, "inside the left wall") == 0, "a drop in the left wall: %s",
            why != NULL ? why : "accepted");
     why = sandbox_place(&sandbox, shape, (vector_t){0.0, -1.4}, &placed);
-    EXPECT(why != NULL && strcmp(why, "outside the container") == 0, "a drop below the floor: %s",
+    EXPECT(why == NULL && placed.y == -1.4, "a drop just below the floor: %s at y = %g",
+           why != NULL ? why : "accepted", placed.y);
+    why = sandbox_place(&sandbox, shape, (vector_t){0.0, -40.01}, &placed);
+    EXPECT(why != NULL &&
+               strcmp(why, "outside the world: bodies below y = -40 m are removed") == 0,
+           "a drop below the world's floor: %s", why != NULL ? why : "accepted");
+    list_t *box = sandbox_make_shape(&sandbox, (shape_choice_t){SHAPE_BOX, 0, 0.5}, &problem);
+    sandbox_drop(&sandbox, box, (vector_t){5.0, 5.0}, VEC_ZERO, 0.5, &problem);
+    why = sandbox_place(&sandbox, shape, (vector_t){5.1, 5.1}, &placed);
+    EXPECT(why != NULL && strcmp(why, "inside a body") == 0, "a drop inside a dropped box: %s",
            why != NULL ? why : "accepted");
     why = sandbox_place(&sandbox, shape, (vector_t){0.0, 0.1}, &placed);
     EXPECT(why == NULL && fabs(placed.y - 0.3) < 1e-12, "a drop on the floor goes to y = %g",
@@ -593,17 +792,17 @@ static void test_default_scene_is_a_scene_file(void) {
            "docs/sandbox.md does not show SANDBOX_DEFAULT_SCENE word for word");
 }
 
-/* Every preset opens: its view, timestep and integrator are the file's, its
+/* Every sample opens: its view, timestep and integrator are the file's, its
  * game starts; a refused file leaves the open scene as it was; R reads the
  * file again, keeping the integrator the user chose. */
 static void test_scene_files_open_and_refusals_keep_the_scene(void) {
     static sandbox_t sandbox;
-    static presets_t presets;
+    static samples_t samples;
     char error[600];
     sandbox_init(&sandbox, 1);
-    presets_load(&presets, "assets/scenes");
-    for (size_t i = 0; i < presets.count; i++) {
-        const char *path = presets.paths[i];
+    samples_load(&samples, "assets/scenes", SANDBOX_DEFAULT_NAME, NULL);
+    for (size_t i = 1; i < samples.count; i++) {
+        const char *path = samples.items[i].path;
         if (!sandbox_open(&sandbox, path, error, sizeof(error))) {
             app_fail("%s is refused: %s", path, error);
             continue;
@@ -659,7 +858,7 @@ static void test_scene_files_open_and_refusals_keep_the_scene(void) {
     EXPECT(sandbox_open(&sandbox, NULL, error, sizeof(error)) && sandbox.is_default &&
                sandbox.integrator == INTEGRATOR_SEED && scene_bodies(sandbox.scene) == 3,
            "the default scene does not open again");
-    presets_free(&presets);
+    samples_free(&samples);
     sandbox_free(&sandbox);
 }
 
@@ -923,6 +1122,9 @@ static const app_test_t TESTS[] = {
     {"app_units.large_numbers_shorten_to_fit", test_large_numbers_shorten_to_fit},
     {"app_units.fit_and_wrap", test_fit_and_wrap},
     {"app_units.stats_lines_fit_the_side_bar", test_stats_lines_fit_the_side_bar},
+    {"app_units.frame_times_from_one_window", test_frame_times_from_one_window},
+    {"app_units.overlays_focus_on_the_strongest_and_nearest",
+     test_overlays_focus_on_the_strongest_and_nearest},
     {"app_units.clock_keeps_real_time_through_late_frames",
      test_clock_keeps_real_time_through_late_frames},
     {"app_units.clock_forgives_a_stall", test_clock_forgives_a_stall},
@@ -930,13 +1132,16 @@ static const app_test_t TESTS[] = {
     {"app_units.step_cost_is_planned_from_frames_of_two_steps",
      test_step_cost_is_planned_from_frames_of_two_steps},
     {"app_units.layout_leaves_the_view_free", test_layout_leaves_the_view_free},
+    {"app_units.layout_scales_the_ui_with_the_window", test_layout_scales_the_ui_with_the_window},
     {"app_units.energy_drift_from_its_reference", test_energy_drift_from_its_reference},
     {"app_units.energy_drift_chart_window_and_scale", test_energy_drift_chart_window_and_scale},
     {"app_units.energy_drift_text_fits", test_energy_drift_text_fits},
     {"app_units.integrators_by_name", test_integrators_by_name},
     {"app_units.clock_follows_the_scene_timestep", test_clock_follows_the_scene_timestep},
     {"app_units.energy_drift_columns_follow_the_step", test_energy_drift_columns_follow_the_step},
-    {"app_units.presets_list_the_scene_files", test_presets_list_the_scene_files},
+    {"app_units.samples_list_by_category", test_samples_list_by_category},
+    {"app_units.stage_chart_keeps_the_frames", test_stage_chart_keeps_the_frames},
+    {"app_units.plot_columns_hold_low_and_high", test_plot_columns_hold_low_and_high},
     {"app_units.scene_panel_words", test_scene_panel_words},
     {"app_units.default_scene_is_a_scene_file", test_default_scene_is_a_scene_file},
     {"app_units.scene_files_open_and_refusals_keep_the_scene",

@@ -34,6 +34,13 @@ static bool same_settings(scene_file_t *a, scene_file_t *b, char *why, size_t si
         return differ(why, size, "view differs");
     if (strcmp(scene_file_get_game(a), scene_file_get_game(b)) != 0)
         return differ(why, size, "game differs");
+    if (scene_file_get_stepping(a) != scene_file_get_stepping(b))
+        return differ(why, size, "stepping differs");
+    if (scene_get_workers(scene_file_get_scene(a)) != scene_get_workers(scene_file_get_scene(b)))
+        return differ(why, size, "workers differ");
+    if (strcmp(scene_file_get_category(a), scene_file_get_category(b)) != 0 ||
+        strcmp(scene_file_get_note(a), scene_file_get_note(b)) != 0)
+        return differ(why, size, "category or note differs");
     if (scene_get_sleeping(x) != scene_get_sleeping(y))
         return differ(why, size, "sleeping differs");
     size_t iterations[2][2];

@@ -1,7 +1,8 @@
-/* The presets (assets/scenes/): each loads, runs headless for a few hundred
+/* The samples (assets/scenes/): each loads, runs headless for a few hundred
  * steps with every body finite, saves and loads back the same (at the start
- * and mid-run), and does what its comment says. Run from the repository root,
- * as make check does. */
+ * and mid-run), and keeps the promise its `note` makes (the note the
+ * sandbox's samples browser shows is the one checked here, word for word).
+ * Run from the repository root, as make check does. */
 #include <dirent.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -339,10 +340,67 @@ static void tunnelling_stops_every_box_and_keeps_them_in_view(scene_file_t *file
     CHECK(slow > 0.0 && slow < 50.0);
 }
 
-static void games_run_without_their_rules(scene_file_t *file) {
-    /* Breakout and Space Invaders are played in tests/test_games.c; without
-     * their rules the scenes still run. */
+/* Breakout and Space Invaders are played in tests/test_games.c; here the
+ * board the note promises starts (bricks or invaders, three lives) and the
+ * scene runs without the rules too. */
+static void game_starts_as_promised(scene_file_t *file, int remaining) {
+    char error[256];
+    game_t *game = game_start(file, error, sizeof error);
+    CHECK(game != NULL);
+    if (game == NULL) return;
+    game_status_t status = game_status(game);
+    CHECK(status.remaining == remaining && status.lives == 3 && status.score == 0 &&
+          status.outcome == GAME_PLAYING);
+    game_free(game);
     run(file, 300);
+}
+
+static void breakout_has_50_bricks(scene_file_t *file) {
+    game_starts_as_promised(file, 50);
+}
+
+static void space_invaders_has_32_invaders(scene_file_t *file) {
+    game_starts_as_promised(file, 32);
+}
+
+/* Five boxes fall 4 m (their bottoms from y = 4 to the floor's top at 0):
+ * after the first impact (0.894 s) each rises to e^2 4 m, within 1 mm, by
+ * 2.6 s (before the elastic box lands again at 2.68 s). */
+static void bounce_apexes_are_e_squared_of_the_drop(scene_file_t *file) {
+    const char *const names[] = {"e0", "e25", "e50", "e75", "e100"};
+    double apex[5] = {0, 0, 0, 0, 0}, dt = scene_file_get_timestep(file);
+    for (long step = 1; step * dt <= 2.6; step++) {
+        run(file, 1);
+        if (step * dt < 0.95) continue;
+        for (int i = 0; i < 5; i++) {
+            apex[i] = fmax(apex[i], body_get_bounds(named(file, names[i])).min.y);
+        }
+    }
+    for (int i = 0; i < 5; i++) {
+        double e = 0.25 * i;
+        CHECK_NEAR(apex[i], e * e * 4.0, 1e-3);
+        CHECK_NEAR(body_get_elasticity(named(file, names[i])), e, 0);
+    }
+}
+
+/* On a 30 degree ramp, the boxes whose friction with it is 0.3 and 0.5
+ * slide g (sin 30 - mu cos 30) t^2 / 2 in the first second (1.1769 m and
+ * 0.3282 m, within 1 mm), along the ramp without turning; the box of 0.7
+ * (above tan 30) does not move (1e-6 m). */
+static void friction_holds_above_tan_30_and_slides_below(scene_file_t *file) {
+    const char *const names[] = {"mu30", "mu50", "mu70"};
+    const double mu[] = {0.3, 0.5, 0.7}, g = 9.8, angle = M_PI / 6;
+    vector_t start[3];
+    for (int i = 0; i < 3; i++) start[i] = body_get_centroid(named(file, names[i]));
+    run(file, (int)lround(1.0 / scene_file_get_timestep(file)));
+    for (int i = 0; i < 3; i++) {
+        body_t *box = named(file, names[i]);
+        vector_t moved = vec_subtract(body_get_centroid(box), start[i]);
+        double slide = fmax(0.0, 0.5 * g * (sin(angle) - mu[i] * cos(angle)));
+        CHECK_NEAR(vec_get_length(moved), slide, i == 2 ? 1e-6 : 1e-3);
+        CHECK_NEAR(body_get_rotation(box), angle, 1e-6);
+        if (i < 2) CHECK_NEAR(atan2(-moved.y, -moved.x), angle, 1e-3);
+    }
 }
 
 /* ---- Every preset --------------------------------------------------------- */
@@ -350,20 +408,42 @@ static void games_run_without_their_rules(scene_file_t *file) {
 typedef struct {
     const char *name;
     void (*promise)(scene_file_t *file);
+    /* The file's `category` and `note`: the promise in words, which the
+     * sandbox's samples browser shows and the function above checks. */
+    const char *category, *note;
 } preset_t;
 
 static const preset_t PRESETS[] = {
-    {"pegs", pegs_keep_every_ball_on_the_board},
-    {"breakout", games_run_without_their_rules},
-    {"space_invaders", games_run_without_their_rules},
-    {"newtons_cradle", newtons_cradle_passes_the_blow_along_and_repeats},
-    {"pyramid", pyramid_stands},
-    {"card_house", card_house_stands},
-    {"orbits", orbits_stay_round},
-    {"spring_chain", spring_chain_hangs_at_its_length},
-    {"stiff_spring", stiff_spring_stays_bounded},
-    {"mass_ratio_stack", mass_ratio_stack_holds},
-    {"tunnelling", tunnelling_stops_every_box_and_keeps_them_in_view},
+    {"bounce", bounce_apexes_are_e_squared_of_the_drop, "Basics",
+     "watch the apexes: a box of elasticity e rises back to e^2 of its 4 m drop"},
+    {"friction", friction_holds_above_tan_30_and_slides_below, "Basics",
+     "three boxes on a 30 degree ramp: friction 0.7 holds, 0.5 and 0.3 slide at g (sin - mu "
+     "cos)"},
+    {"pegs", pegs_keep_every_ball_on_the_board, "Games",
+     "a ball a second falls through 11 rows of pegs and freezes where it lands, and none leaves "
+     "the board"},
+    {"breakout", breakout_has_50_bricks, "Games",
+     "Left/Right or A/D move the paddle: clear 50 bricks before the ball gets past three times"},
+    {"space_invaders", space_invaders_has_32_invaders, "Games",
+     "Left/Right move, Space fires: shoot 32 invaders before their bombs take three lives"},
+    {"newtons_cradle", newtons_cradle_passes_the_blow_along_and_repeats, "Collisions",
+     "the blow runs along the row: the last ball leaves with 99% of the striker's speed, for two "
+     "periods"},
+    {"pyramid", pyramid_stands, "Stacking",
+     "watch the top box: 55 boxes settle, the top moves less than 1 cm in 5 s"},
+    {"card_house", card_house_stands, "Stacking",
+     "14 cards held up by friction alone: each moves under 5 cm and turns under 0.05 rad in 5 s"},
+    {"orbits", orbits_stay_round, "Integrators and accuracy",
+     "four planets under symplectic Euler: radii within 10% and the energy within 0.1% for 20 s"},
+    {"spring_chain", spring_chain_hangs_at_its_length, "Springs",
+     "the chain swings down and hangs at rest within 30 s, each spring 1 + n 9.8/1000 m long"},
+    {"stiff_spring", stiff_spring_stays_bounded, "Springs",
+     "k = 10000 N/m at w dt = 0.83: bounded under symplectic Euler, while Shift+N (explicit "
+     "Euler) flings it out"},
+    {"mass_ratio_stack", mass_ratio_stack_holds, "Stability",
+     "1000 kg on 1 kg on the floor: the stack stands, every box within 1 cm"},
+    {"tunnelling", tunnelling_stops_every_box_and_keeps_them_in_view, "Collisions",
+     "boxes at 50 to 5000 m/s meet a 0.1 m wall: not one passes through"},
 };
 #define PRESET_COUNT (sizeof PRESETS / sizeof PRESETS[0])
 
@@ -406,6 +486,11 @@ static void every_preset_does_what_it_says(void) {
         scene_file_t *file = load(PRESETS[i].name);
         if (file == NULL) continue;
         int failures = test_failures;
+        if (strcmp(scene_file_get_category(file), PRESETS[i].category) != 0 ||
+            strcmp(scene_file_get_note(file), PRESETS[i].note) != 0) {
+            test_fail(__FILE__, __LINE__, "%s: category \"%s\", note \"%s\": not what is checked",
+                      PRESETS[i].name, scene_file_get_category(file), scene_file_get_note(file));
+        }
         PRESETS[i].promise(file);
         if (!all_finite(file)) test_fail(__FILE__, __LINE__, "not finite");
         if (test_failures != failures) printf("    (in %s)\n", PRESETS[i].name);

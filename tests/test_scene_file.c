@@ -392,6 +392,92 @@ static void find_body_forgets_freed_bodies(void) {
     scene_file_free(file);
 }
 
+/* A sample's category and note: the words to the end of the statement, one
+ * space between them, kept through a save. */
+static void category_and_note_are_kept(void) {
+    scene_file_t *file = parse("category   Integrators and accuracy   # a comment\n"
+                               "note watch the orbits: closed for 20 s; body a { box 1 1 }\n");
+    CHECK(strcmp(scene_file_get_category(file), "Integrators and accuracy") == 0);
+    CHECK(strcmp(scene_file_get_note(file), "watch the orbits: closed for 20 s") == 0);
+    CHECK(bodies(file) == 1);
+    char *text = scene_file_write(file, NULL, NULL);
+    CHECK(text != NULL && strstr(text, "\ncategory Integrators and accuracy\n") != NULL &&
+          strstr(text, "\nnote watch the orbits: closed for 20 s\n") != NULL);
+    scene_file_t *again = parse(text);
+    char why[128] = "";
+    CHECK(again != NULL && scene_file_same(file, again, why, sizeof why));
+    free(text);
+    scene_file_free(again);
+    scene_file_free(file);
+    file = parse("body a { box 1 1 }\n");
+    CHECK(strcmp(scene_file_get_category(file), "") == 0 &&
+          strcmp(scene_file_get_note(file), "") == 0);
+    scene_file_free(file);
+}
+
+/* The settings a program changes while the scene runs (the sandbox's
+ * solver panel) reach the scene and are written. */
+static void settings_changed_live_are_written(void) {
+    scene_file_t *file = parse("body a { box 1 1 }\n");
+    scene_t *scene = scene_file_get_scene(file);
+    CHECK(scene_file_get_workers(file) == 0 &&
+          scene_file_get_stepping(file) == SCENE_FILE_STEP_FIXED);
+    char *plain = scene_file_write(file, NULL, NULL);
+    CHECK(plain != NULL && strstr(plain, "\niterations 8 4\n") != NULL &&
+          strstr(plain, "warm_starting") == NULL && strstr(plain, "restitution_threshold") == NULL &&
+          strstr(plain, "sleep_tolerance") == NULL && strstr(plain, "sleep_time") == NULL);
+    free(plain);
+    scene_set_solver_iterations(scene, 12, 6);
+    scene_set_warm_starting(scene, false);
+    scene_set_restitution_threshold(scene, 0.25);
+    scene_set_sleep_tolerance(scene, 0.03, 0.5);
+    scene_set_sleep_time(scene, 2);
+    CHECK(scene_file_set_timestep(file, 1.0 / 240));
+    CHECK(!scene_file_set_timestep(file, 0) && !scene_file_set_timestep(file, NAN) &&
+          !scene_file_set_timestep(file, 11));
+    scene_file_set_stepping(file, SCENE_FILE_STEP_FRAME);
+    scene_set_workers(scene_file_get_scene(file), 3);
+    char *text = scene_file_write(file, NULL, NULL);
+    CHECK(text != NULL && strstr(text, "\niterations 12 6\n") != NULL &&
+          strstr(text, "\ntimestep 0.004166666666666667\n") != NULL &&
+          strstr(text, "\nworkers 3\n") != NULL && strstr(text, "\nstepping frame\n") != NULL &&
+          strstr(text, "\nwarm_starting off\n") != NULL &&
+          strstr(text, "\nrestitution_threshold 0.25\n") != NULL &&
+          strstr(text, "\nsleep_tolerance 0.03 0.5\n") != NULL &&
+          strstr(text, "\nsleep_time 2\n") != NULL);
+    scene_file_t *again = parse(text);
+    char why[128] = "";
+    CHECK(again != NULL && scene_file_same(file, again, why, sizeof why));
+    CHECK(again != NULL && scene_file_get_workers(again) == 3 &&
+          scene_get_workers(scene_file_get_scene(again)) == 3 &&
+          scene_file_get_timestep(again) == 1.0 / 240);
+    double linear = 0, angular = 0;
+    if (again != NULL) scene_get_sleep_tolerance(scene_file_get_scene(again), &linear, &angular);
+    CHECK(linear == 0.03 && angular == 0.5);
+    free(text);
+    scene_file_free(again);
+    scene_file_free(file);
+}
+
+static void body_names_are_found_from_their_bodies(void) {
+    scene_file_t *file = parse("body a { box 1 1 }\nbody { box 1 1; position 5 0 }\n"
+                               "body row { box 1 1; position 0 5; repeat 2 1 2 0 }\n"
+                               "template shot { box 0.1 0.3; mass 0.1 }\n");
+    CHECK(strcmp(scene_file_body_name(file, body_at(file, 0)), "a") == 0);
+    CHECK(strcmp(scene_file_body_name(file, body_at(file, 1)), "") == 0);
+    CHECK(strcmp(scene_file_body_name(file, body_at(file, 3)), "row") == 0);
+    body_t *shot = scene_file_spawn(file, "shot", VEC_ZERO, VEC_ZERO);
+    CHECK(strcmp(scene_file_body_name(file, shot), "shot") == 0);
+    /* A body the file did not make, and NULL arguments. */
+    list_t *shape = polygon_make_box((vector_t){0, 9}, 0.5, 0.5);
+    body_t *mine = body_init(shape, 1, (rgb_color_t){1, 1, 1});
+    scene_add_body(scene_file_get_scene(file), mine);
+    CHECK(scene_file_body_name(file, mine) == NULL);
+    CHECK(scene_file_body_name(NULL, mine) == NULL);
+    CHECK(scene_file_body_name(file, NULL) == NULL);
+    scene_file_free(file);
+}
+
 /* ---- Writing -------------------------------------------------------------- */
 
 static void written_scenes_load_back_the_same(void) {
@@ -550,8 +636,8 @@ static const bad_file_t BAD_FILES[] = {
     {"bdoy x { box 1 1 }",
      "t.scene:1:1: expected a statement (body, template, group, gravity, contacts, integrator, "
      "iterations, warm_starting, restitution_threshold, sleep_tolerance, sleep_time, timestep, "
-     "view, game, sleeping, sleep_phase, step_lengths, spring, newton, drag, collide, contact), "
-     "found \"bdoy\""},
+     "view, game, sleeping, sleep_phase, step_lengths, workers, stepping, category, note, spring, "
+     "newton, drag, collide, contact), found \"bdoy\""},
     {"warm_starting maybe", "t.scene:1:15: expected on or off (warm starting), found \"maybe\""},
     {"warm_starting on\nwarm_starting off",
      "t.scene:2:1: expected one warm_starting statement per file, found a second (the first at "
@@ -769,6 +855,19 @@ static const bad_file_t BAD_FILES[] = {
     {"contacts on\nstep_lengths 0.01 0\nstep_lengths 0.01 0",
      "t.scene:3:1: expected one step_lengths statement per file, found a second (the first at "
      "line 2)"},
+    {"workers 0", "t.scene:1:9: expected the workers, a whole number from 1 to 64, found \"0\""},
+    {"stepping sometimes",
+     "t.scene:1:10: expected fixed or frame (the stepping), found \"sometimes\""},
+    {"category", "t.scene:1:9: expected the category's name, found the end of the file"},
+    {"note ; body a { box 1 1 }",
+     "t.scene:1:6: expected the note's text, found ';'"},
+    {"sleep_tolerance 0.01 0.5 1",
+     "t.scene:1:26: expected the end of the statement (a new line or ';'), found \"1\""},
+    {"category Stacking\ncategory Stacking",
+     "t.scene:2:1: expected one category statement per file, found a second (the first at line "
+     "1)"},
+    {"category A very long category name that goes on and on",
+     "t.scene:1:49: expected the category's name of at most 40 characters, found more"},
     {"contact 0 1 { face c 0 1 0 0 }",
      "t.scene:1:20: expected a or b (the body holding the reference face), found \"c\""},
     {"contact 0 1 { normal 0 1 }\ncontact 0",
@@ -934,7 +1033,11 @@ TEST_SUITE(scene_file, TEST_CASE(settings_reach_the_scene),
            TEST_CASE(layout_is_free), TEST_CASE(names_and_groups_may_be_used_before_their_blocks),
            TEST_CASE(spawn_applies_the_rules_of_its_groups),
            TEST_CASE(many_spawns_and_destructions_leave_nothing_behind),
-           TEST_CASE(find_body_forgets_freed_bodies), TEST_CASE(written_scenes_load_back_the_same),
+           TEST_CASE(find_body_forgets_freed_bodies),
+           TEST_CASE(body_names_are_found_from_their_bodies),
+           TEST_CASE(category_and_note_are_kept),
+           TEST_CASE(settings_changed_live_are_written),
+           TEST_CASE(written_scenes_load_back_the_same),
            TEST_CASE(a_running_scene_is_written_as_it_is_now),
            TEST_CASE(step_lengths_and_previous_points_reach_the_world),
            TEST_CASE(save_and_load_through_a_path),

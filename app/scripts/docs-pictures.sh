@@ -1,13 +1,14 @@
 #!/bin/sh
 # Redraws the pictures of docs/sandbox.md (docs/sandbox.png, docs/drop.png,
-# docs/integrator.png, and the games: docs/breakout.png,
-# docs/space_invaders.png, docs/pegs.png)
+# docs/integrator.png, and docs/NAME.png for each NAME of $PAGES below: the
+# games, the samples browser, the settings, the stage chart and the tools)
 # by running the very commands it shows, so the pictures and the text agree.
 # make check's smoke test app_smoke.docs_pictures_regenerate runs the same
 # commands and compares the result with the committed pictures; run this
 # when a change to the app or the engine changes them on purpose.
 # Usage (from the repository root, after make): app/scripts/docs-pictures.sh
 set -e
+PAGES="breakout space_invaders pegs samples solver stages ray box explode inspect"
 cd "$(dirname "$0")/../.."
 root=$(pwd)
 doc=docs/sandbox.md
@@ -24,9 +25,10 @@ integrator=$(grep -E '^\./sandbox .*--script app/scripts/integrator\.txt .*--scr
 echo "$integrator"
 eval "$integrator"
 
-# The games: the lines that run app/scripts/GAME.txt on assets/scenes/GAME.scene.
-for game in breakout space_invaders pegs; do
-    line=$(grep -E "^\./sandbox .*--script app/scripts/$game\.txt .*--screenshot docs/$game\.png" "$doc")
+# The games, the samples browser, the solver's settings, the stage chart and
+# each tool: the lines that run app/scripts/NAME.txt and save docs/NAME.png.
+for name in $PAGES; do
+    line=$(grep -E "^\./sandbox .*--script app/scripts/$name\.txt .*--screenshot docs/$name\.png" "$doc")
     echo "$line"
     eval "$line"
 done
@@ -38,5 +40,4 @@ echo "$drop"
 ln -s "$root/sandbox" "$tmp/sandbox"
 (cd "$tmp" && eval "$drop")
 cp "$tmp/drop.png" docs/drop.png
-echo "redrew docs/sandbox.png, docs/drop.png, docs/integrator.png, docs/breakout.png,"
-echo "docs/space_invaders.png and docs/pegs.png"
+echo "redrew docs/sandbox.png, docs/drop.png, docs/integrator.png and docs/NAME.png for: $PAGES"

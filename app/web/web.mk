@@ -24,7 +24,7 @@ WEB_LIBS := $(WEB)/libSDL2_image.a $(WEB)/libSDL2_gfx.a $(WEB)/libSDL2.a
 
 WEB_ENGINE_OBJ := $(patsubst engine/src/%.c,$(WEB)/engine/%.o,$(ENGINE_SRC)) \
 	$(patsubst engine/scenefile/%.c,$(WEB)/scenefile/%.o,$(SCENEFILE_SRC))
-WEB_APP_SRC := $(wildcard app/*.c) $(wildcard app/web/*.c)
+WEB_APP_SRC := $(APP_SRC) $(wildcard app/web/*.c)
 WEB_APP_OBJ := $(patsubst app/%.c,$(WEB)/app/%.o,$(WEB_APP_SRC)) \
 	$(patsubst app/games/%.c,$(WEB)/app/games/%.o,$(GAMES_SRC))
 
@@ -162,9 +162,9 @@ web-bench-pages: web-check-deps $(WEB)/sandbox.html $(WEB)/bench_engine-simd.htm
 # (tests/web/web_check.c). make check runs it too, and builds the page for
 # it, when emcc, chromium and node are installed; otherwise it says it
 # skipped its tests in one line.
-WEB_CHECK_SRC := tests/web/web_check.c tests/app_image.c app/layout.c
-build/tests/web_check: $(WEB_CHECK_SRC) tests/app_image.h tests/app_expect.h app/layout.h \
-		app/palette.h app/web/web.mk
+WEB_CHECK_SRC := tests/web/web_check.c tests/app_image.c app/core/layout.c
+build/tests/web_check: $(WEB_CHECK_SRC) tests/app_image.h tests/app_expect.h app/core/layout.h \
+		app/draw/palette.h app/web/web.mk
 	@mkdir -p $(dir $@)
 	$(CC) $(CSTD) $(WARN) -O1 -g $(SAN) $(APP_SMOKE_DEFS) -Iapp -Itests $(WEB_CHECK_SRC) \
 	    $(APP_SMOKE_LIBS) -lm -o $@

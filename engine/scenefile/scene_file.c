@@ -92,6 +92,33 @@ const char *scene_file_get_game(const scene_file_t *file) {
     return file->doc.settings.game.text;
 }
 
+bool scene_file_set_timestep(scene_file_t *file, double timestep) {
+    if (!(timestep > 0.0 && timestep <= 10.0)) return false;
+    file->doc.settings.timestep = timestep;
+    return true;
+}
+
+size_t scene_file_get_workers(const scene_file_t *file) {
+    return file->doc.settings.workers;
+}
+
+scene_file_stepping_t scene_file_get_stepping(const scene_file_t *file) {
+    return file->doc.settings.stepping;
+}
+
+void scene_file_set_stepping(scene_file_t *file, scene_file_stepping_t stepping) {
+    file->doc.settings.stepping =
+        stepping == SCENE_FILE_STEP_FRAME ? SCENE_FILE_STEP_FRAME : SCENE_FILE_STEP_FIXED;
+}
+
+const char *scene_file_get_category(const scene_file_t *file) {
+    return file->doc.settings.category;
+}
+
+const char *scene_file_get_note(const scene_file_t *file) {
+    return file->doc.settings.note;
+}
+
 bool scene_file_save(scene_file_t *file, const char *path, scene_file_error_t *error) {
     size_t length = 0;
     char *text = scene_file_write(file, &length, error);

@@ -442,6 +442,7 @@ static void apply_settings(scene_file_t *file) {
     }
     if (s->sleep_time_where.line != 0) scene_set_sleep_time(file->scene, s->sleep_time);
     scene_set_sleeping(file->scene, s->sleeping);
+    if (s->workers != 0) scene_set_workers(file->scene, s->workers);
 }
 
 bool sf_build(scene_file_t *file, sf_lexer_t *lexer) {
@@ -487,6 +488,15 @@ void sf_collect(scene_file_t *file) {
     }
     file->record_count = kept;
     file->freed_records = 0;
+}
+
+const char *scene_file_body_name(scene_file_t *file, body_t *body) {
+    if (file == NULL || body == NULL) return NULL;
+    for (size_t i = 0; i < file->record_count; i++) {
+        const sf_record_t *record = file->records[i];
+        if (record->body == body) return file->doc.bodies[record->spec].name.text;
+    }
+    return NULL;
 }
 
 body_t *scene_file_find_body(scene_file_t *file, const char *name) {

@@ -219,7 +219,8 @@ static const char *const SETTINGS[] = {
     "gravity",     "contacts",     "integrator",    "iterations",
     "timestep",    "view",         "game",          "sleeping",
     "sleep_phase", "step_lengths", "warm_starting", "restitution_threshold",
-    "sleep_tolerance", "sleep_time"};
+    "sleep_tolerance", "sleep_time", "workers",     "stepping",
+    "category",    "note"};
 static const char *const FORCES[] = {"spring", "newton", "drag", "collide"};
 
 static bool parse_one(parser_t *p) {
@@ -261,7 +262,8 @@ static bool parse_one(parser_t *p) {
     return sf_expected(p, "a statement (body, template, group, gravity, contacts, integrator, "
                           "iterations, warm_starting, restitution_threshold, sleep_tolerance, "
                           "sleep_time, timestep, view, game, sleeping, sleep_phase, step_lengths, "
-                          "spring, newton, drag, collide, contact)");
+                          "workers, stepping, category, note, spring, newton, drag, collide, "
+                          "contact)");
 }
 
 bool sf_parse(sf_lexer_t *lexer, sf_doc_t *doc) {

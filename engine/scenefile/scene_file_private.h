@@ -221,6 +221,14 @@ typedef struct {
     sf_where_t sleep_phase_where;
     double last_step, step_before; /* scene_set_step_lengths */
     sf_where_t step_lengths_where;
+    size_t workers; /* 0: the file gives none */
+    sf_where_t workers_where;
+    scene_file_stepping_t stepping;
+    sf_where_t stepping_where;
+    char category[SCENE_FILE_CATEGORY_MAX + 1]; /* words joined by one space, "" when none */
+    sf_where_t category_where;
+    char note[SCENE_FILE_NOTE_MAX + 1];
+    sf_where_t note_where;
 } sf_settings_t;
 
 /* A `contact A B { ... }` block: the world's contact memory of one pair

@@ -1,8 +1,8 @@
 /*
  * The settings (scene_file_parse.h): gravity, contacts, integrator,
  * iterations, warm_starting, restitution_threshold, sleep_tolerance,
- * sleep_time, timestep, view, sleeping, sleep_phase, step_lengths and game,
- * each written at most once.
+ * sleep_time, timestep, view, sleeping, sleep_phase, step_lengths, workers,
+ * stepping, category, note and game, each written at most once.
  */
 #include <math.h>
 #include <string.h>
@@ -33,8 +33,62 @@ const char *scene_file_integrator_name(integrator_t integrator) {
 
 static const size_t MAX_ITERATIONS = 1000; /* scene_set_solver_iterations */
 
+/* Words up to the end of the statement, joined by one space, at most max
+ * bytes: a category or a note. */
+static bool read_text(parser_t *p, const char *what, size_t max, char *out) {
+    size_t length = 0;
+    if (p->token.kind != TOKEN_WORD) return sf_expected(p, what);
+    while (p->token.kind == TOKEN_WORD) {
+        size_t add = p->token.length + (length > 0);
+        if (length + add > max) {
+            return sf_fail(p->lexer, p->token.where,
+                           "expected %s of at most %zu characters, found more", what, max);
+        }
+        if (length > 0) out[length++] = ' ';
+        memcpy(out + length, p->token.text, p->token.length);
+        length += p->token.length;
+        next(p);
+    }
+    out[length] = '\0';
+    return true;
+}
+
+/* workers, stepping, category, note: how the file asks to be run and what
+ * it says about itself. */
+static bool parse_run_setting(parser_t *p, const char *keyword, sf_where_t here) {
+    sf_settings_t *s = &p->doc->settings;
+    if (strcmp(keyword, "workers") == 0) {
+        uint64_t workers = 0;
+        if (!sf_first_time(p, &s->workers_where, keyword, here) ||
+            !sf_read_count(p, "the workers", 1, SCENE_MAX_WORKERS, &workers))
+            return false;
+        s->workers = (size_t)workers;
+        return true;
+    }
+    if (strcmp(keyword, "stepping") == 0) {
+        if (!sf_first_time(p, &s->stepping_where, keyword, here)) return false;
+        if (sf_token_is(&p->token, "fixed") || sf_token_is(&p->token, "frame")) {
+            s->stepping = sf_token_is(&p->token, "frame") ? SCENE_FILE_STEP_FRAME
+                                                          : SCENE_FILE_STEP_FIXED;
+            next(p);
+            return true;
+        }
+        return sf_expected(p, "fixed or frame (the stepping)");
+    }
+    if (strcmp(keyword, "category") == 0) {
+        return sf_first_time(p, &s->category_where, keyword, here) &&
+               read_text(p, "the category's name", SCENE_FILE_CATEGORY_MAX, s->category);
+    }
+    return sf_first_time(p, &s->note_where, keyword, here) &&
+           read_text(p, "the note's text", SCENE_FILE_NOTE_MAX, s->note);
+}
+
 bool sf_parse_setting(parser_t *p, const char *keyword, sf_where_t here) {
     sf_settings_t *s = &p->doc->settings;
+    if (strcmp(keyword, "workers") == 0 || strcmp(keyword, "stepping") == 0 ||
+        strcmp(keyword, "category") == 0 || strcmp(keyword, "note") == 0) {
+        return parse_run_setting(p, keyword, here);
+    }
     if (strcmp(keyword, "gravity") == 0) {
         return sf_first_time(p, &s->gravity_where, keyword, here) &&
                sf_read_vector(p, &GRAVITY, &s->gravity);

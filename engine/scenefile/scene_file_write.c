@@ -110,6 +110,11 @@ static void put_settings(out_t *out, scene_file_t *file, const char *integrator)
         put(out, "\n");
     }
     if (s->game.text[0] != '\0') put(out, "game %s\n", s->game.text);
+    size_t workers = scene_get_workers(file->scene);
+    if (workers != 1 || s->workers != 0) put(out, "workers %zu\n", workers);
+    if (s->stepping == SCENE_FILE_STEP_FRAME) put(out, "stepping frame\n");
+    if (s->category[0] != '\0') put(out, "category %s\n", s->category);
+    if (s->note[0] != '\0') put(out, "note %s\n", s->note);
     put(out, "sleeping %s\n", scene_get_sleeping(file->scene) ? "on" : "off");
     unsigned phase = scene_get_sleep_phase(file->scene);
     if (phase != 0) put(out, "sleep_phase %u\n", phase);

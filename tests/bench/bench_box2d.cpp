@@ -272,7 +272,7 @@ const bench_ops_t box2d_ops = {
     b2_world_free,   b2_add_static_box, b2_add_body,
     b2_set_velocity, b2_add_gravity_pair, b2_step,
     b2_get_state,    b2_max_penetration, b2_pair_penetration,
-    b2_add_spring,   b2_set_angular_velocity, 1.0,
+    b2_add_spring,   b2_set_angular_velocity, 1.0, NULL,
 };
 
 const bench_ops_t box2d_nosleep_ops = {
@@ -281,7 +281,7 @@ const bench_ops_t box2d_nosleep_ops = {
     b2_world_free,     b2_add_static_box,             b2_add_body,
     b2_set_velocity,   b2_add_gravity_pair,           b2_step,
     b2_get_state,      b2_max_penetration,            b2_pair_penetration,
-    b2_add_spring,     b2_set_angular_velocity,       1.0,
+    b2_add_spring,     b2_set_angular_velocity,       1.0, NULL,
 };
 
 const bench_ops_t box2d_matched_ops = {
@@ -290,7 +290,7 @@ const bench_ops_t box2d_matched_ops = {
     b2_world_free,     b2_add_static_box,             b2_add_body,
     b2_set_velocity,   b2_add_gravity_pair,           b2_step,
     b2_get_state,      b2_max_penetration,            b2_pair_penetration,
-    b2_add_spring,     b2_set_angular_velocity,       1.0,
+    b2_add_spring,     b2_set_angular_velocity,       1.0, NULL,
 };
 
 const bench_ops_t box2d_discrete_ops = {
@@ -299,7 +299,7 @@ const bench_ops_t box2d_discrete_ops = {
     b2_world_free,    b2_add_static_box, b2_add_body,
     b2_set_velocity,  b2_add_gravity_pair, b2_step,
     b2_get_state,     b2_max_penetration, b2_pair_penetration,
-    b2_add_spring,    b2_set_angular_velocity, 1.0,
+    b2_add_spring,    b2_set_angular_velocity, 1.0, NULL,
 };
 
 } // namespace

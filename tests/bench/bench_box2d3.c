@@ -213,6 +213,13 @@ static void b3_add_gravity_pair(void *world, int body1, int body2, double G) {
     w->pair_count++;
 }
 
+static int b3_awake_bodies(void *world) {
+    b3_world_t *w = (b3_world_t *)world;
+    int awake = 0;
+    for (int i = 0; i < w->count; i++) awake += w->mass[i] > 0.0 && b2Body_IsAwake(w->bodies[i]);
+    return awake;
+}
+
 static void b3_step(void *world, double dt) {
     b3_world_t *w = (b3_world_t *)world;
     for (int i = 0; i < w->pair_count; i++) {
@@ -320,7 +327,7 @@ static void b3_add_spring(void *world, int body1, int body2, double k, double da
     b2CreateDistanceJoint(w->world, &def);
 }
 
-#define B3_OPS(name, only, describe, world_new)                                                    \
+#define B3_OPS(name, only, describe, world_new, awake)                                                  \
     {name,                                                                                         \
      only,                                                                                         \
      0,                                                                                            \
@@ -338,13 +345,14 @@ static void b3_add_spring(void *world, int body1, int body2, double k, double da
      b3_pair_penetration,                                                                          \
      b3_add_spring,                                                                                \
      b3_set_angular_velocity,                                                                      \
-     B3_SPRING_REST}
+     B3_SPRING_REST,                                                                               \
+     awake}
 
 static const bench_ops_t box2d3_ops =
-    B3_OPS("box2d3-" BENCH_BOX2D3_BUILD, NULL, b3_describe, b3_world_new);
+    B3_OPS("box2d3-" BENCH_BOX2D3_BUILD, NULL, b3_describe, b3_world_new, NULL);
 static const bench_ops_t box2d3_sleeping_ops =
     B3_OPS("box2d3-" BENCH_BOX2D3_BUILD "-sleeping", "pile", b3_describe_none,
-           b3_world_new_sleeping);
+           b3_world_new_sleeping, b3_awake_bodies);
 
 int main(int argc, char **argv) {
     const bench_ops_t *ops[2] = {&box2d3_ops, &box2d3_sleeping_ops};

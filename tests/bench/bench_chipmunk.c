@@ -328,7 +328,7 @@ static const bench_ops_t chipmunk_ops = {
     cp_add_body,         cp_set_velocity, cp_add_gravity_pair,
     cp_step,             cp_get_state,   cp_max_penetration,
     cp_pair_penetration, cp_add_spring,  cp_set_angular_velocity,
-    1.0,
+    1.0,                 NULL,
 };
 
 static const bench_ops_t chipmunk_default_ops = {
@@ -337,7 +337,7 @@ static const bench_ops_t chipmunk_default_ops = {
     cp_add_body,          cp_set_velocity, cp_add_gravity_pair,
     cp_step,              cp_get_state,   cp_max_penetration,
     cp_pair_penetration,  cp_add_spring,  cp_set_angular_velocity,
-    1.0,
+    1.0,                 NULL,
 };
 
 int main(int argc, char **argv) {

@@ -307,6 +307,9 @@ typedef struct bench_ops {
      * to at least 5 mm, and both peers' springs lose their direction when
      * the two ends meet). */
     double spring_rest;
+    /* How many movable bodies are awake; NULL for an engine whose
+     * variants all run with sleeping off. */
+    int (*awake_bodies)(void *world);
 } bench_ops_t;
 
 /* Polygon area (m^2) of a shape: mass = area at density 1. */

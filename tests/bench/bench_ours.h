@@ -182,6 +182,15 @@ static void ours_step(void *world, double dt) {
     scene_tick(((ours_world_t *)world)->scene, dt);
 }
 
+static int ours_awake_bodies(void *world) {
+    ours_world_t *w = (ours_world_t *)world;
+    int awake = 0;
+    for (int i = 0; i < w->count; i++) {
+        awake += isfinite(body_get_mass(w->bodies[i])) && !body_is_sleeping(w->bodies[i]);
+    }
+    return awake;
+}
+
 static void ours_get_state(void *world, int body, bench_state_t *out) {
     ours_world_t *w = (ours_world_t *)world;
     body_t *b = w->bodies[body];
@@ -249,6 +258,7 @@ static const bench_ops_t ours_ops = {
     ours_add_body,   ours_set_velocity, ours_add_gravity_pair,
     ours_step,       ours_get_state, ours_max_penetration,
     ours_pair_penetration, ours_add_spring, ours_set_angular_velocity, 0.0,
+    NULL,
 };
 
 static const bench_ops_t ours_seed_ops = {
@@ -257,6 +267,7 @@ static const bench_ops_t ours_seed_ops = {
     ours_add_body,       ours_set_velocity, ours_add_gravity_pair,
     ours_step,           ours_get_state,  ours_max_penetration,
     ours_pair_penetration, ours_add_spring, ours_set_angular_velocity, 0.0,
+    NULL,
 };
 
 static const bench_ops_t ours_symplectic_ops = {
@@ -265,6 +276,7 @@ static const bench_ops_t ours_symplectic_ops = {
     ours_add_body,             ours_set_velocity, ours_add_gravity_pair,
     ours_step,                 ours_get_state,  ours_max_penetration,
     ours_pair_penetration, ours_add_spring, ours_set_angular_velocity, 0.0,
+    NULL,
 };
 
 static const bench_ops_t ours_sleeping_ops = {
@@ -273,6 +285,7 @@ static const bench_ops_t ours_sleeping_ops = {
     ours_add_body,           ours_set_velocity, ours_add_gravity_pair,
     ours_step,               ours_get_state,  ours_max_penetration,
     ours_pair_penetration, ours_add_spring, ours_set_angular_velocity, 0.0,
+    ours_awake_bodies,
 };
 
 #endif // #ifndef BENCH_OURS_H

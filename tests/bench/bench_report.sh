@@ -13,7 +13,13 @@
 # the speed table), BENCH_INSTRUCTIONS (cases, default "pile:1000
 # pyramid:20"), BENCH_CFLAGS (printed as the flags), BENCH_ARGS (more
 # options for the speed table's programs, e.g. --scene pile --size 1000),
-# BENCH_SEEDS_ARGS (options of seeds.sh, e.g. --quick: a trial run only).
+# BENCH_SEEDS_ARGS (options of seeds.sh, e.g. --quick: a trial run only),
+# BENCH_SCALE_SIZES (pile sizes of the scale fit, default
+# 1000,2000,4000,10000,20000; empty leaves it out), BENCH_SLEEP_STEPS (how
+# long the sleeping piles run to find when they are all asleep, default
+# 1800 steps = 30 s). The page is rewritten whole but for a block between
+# the lines <!-- web:begin --> and <!-- web:end -->, which another program
+# writes (browser figures): it is kept as it was.
 # POSIX sh and awk only.
 output=$1
 shift
@@ -21,9 +27,19 @@ shift
 rounds=${BENCH_ROUNDS:-7}
 variants=${BENCH_VARIANTS:-ours,box2d3-sse2,box2d3-avx2,chipmunk,chipmunk-default,box2d-nosleep,box2d-matched}
 instructions=${BENCH_INSTRUCTIONS-pile:1000 pyramid:20}
+scale_sizes=${BENCH_SCALE_SIZES-1000,2000,4000,10000,20000}
+sleep_steps=${BENCH_SLEEP_STEPS:-1800}
+workers_size=${BENCH_WORKERS_SIZE:-10000}
 dir=$(dirname "$0")
 work=$(mktemp -d "${TMPDIR:-/tmp}/bench-report.XXXXXX") || exit 1
 trap 'rm -rf "$work"' EXIT INT TERM
+# The browser figures another program writes into the page.
+if [ -f "$output" ]; then
+    awk '/^<!-- web:begin -->$/ { keep = 1 } keep { print } /^<!-- web:end -->$/ { keep = 0 }' \
+        "$output" >"$work/web"
+else
+    : >"$work/web"
+fi
 
 ours="" v3="" v3name="" sleepers=""
 for p in "$@"; do
@@ -56,6 +72,27 @@ if [ -n "$sleepers" ]; then
     sh "$dir/alternate.sh" "$rounds" $sleepers -- --scene pile --size 4000 \
         --variant ours-sleeping,box2d3-sse2-sleeping,box2d3-avx2-sleeping >"$work/sleeping" || exit 1
 fi
+if [ -n "$sleepers" ]; then
+    echo "bench-report: when the sleeping piles are all asleep ($sleep_steps steps)" >&2
+    for p in $sleepers; do
+        "$p" --scene pile --size 4000 --runs 1 --steps "$sleep_steps" \
+            --variant ours-sleeping,box2d3-sse2-sleeping,box2d3-avx2-sleeping | grep '^engine='
+    done >"$work/asleep"
+fi
+echo "bench-report: two workers, pile $workers_size (unpinned)" >&2
+for round in 1 2 3; do
+    for n in 1 2; do
+        "$ours" --scene pile --size "$workers_size" --runs 1 --wall --workers "$n" --variant ours |
+            sed -n "s/^engine=/workers=$n engine=/p"
+    done
+done >"$work/workers"
+if [ -n "$scale_sizes" ]; then
+    echo "bench-report: scale, pile $scale_sizes" >&2
+    for p in "$ours" $v3; do
+        taskset -c "$(($(getconf _NPROCESSORS_ONLN) - 1))" "$p" --scene pile --size "$scale_sizes" \
+            --runs 1 --variant ours,box2d3-sse2 | grep '^engine='
+    done >"$work/scale"
+fi
 if [ -n "$instructions" ] && command -v valgrind >/dev/null 2>&1; then
     echo "bench-report: instructions ($instructions)" >&2
     targets=""
@@ -82,18 +119,23 @@ load_end=$(cut -d' ' -f1-3 /proc/loadavg 2>/dev/null || echo unknown)
     cat <<EOF
 # Benchmarks: this engine beside Box2D v3, Chipmunk2D and Box2D 2.4
 
-Written by \`make bench-report\` (tests/bench/bench_report.sh) from one run;
-regenerate it rather than editing it. The scenes are those of
-[bench-scenes.md](bench-scenes.md), built the same way for every engine by
-the programs of \`tests/bench/\` (one per engine, the scenes written once in
-\`tests/bench/bench_scenes.h\`).
+Written whole by \`make bench-report\` (tests/bench/bench_report.sh) from one
+run, but for the browser block between its markers; regenerate it rather
+than editing it. The scenes are those of [bench-scenes.md](bench-scenes.md),
+built the same way for every engine by the programs of \`tests/bench/\` (one
+per engine, the scenes written once in \`tests/bench/bench_scenes.h\`).
 
 - Commit: $commit ($state)
 - Compiler: $(${CC:-cc} --version 2>/dev/null | head -n 1); flags: ${BENCH_CFLAGS:-see tests/bench/bench.mk}
-- CPU: ${cpu:-unknown}, $cores cores; each program pinned to one core (taskset)
-- Run: $started; load average (1, 5, 15 min) $load_start at the start, $load_end at the end
+- CPU: ${cpu:-unknown}, $cores cores; each program pinned to one core (taskset) but for the two-worker runs
+- Run: $started; load average (1, 5, 15 min) $load_start at the start, $load_end at the end.
+  The machine is shared: other programs ran beside these, so times move with
+  their load (CPU time of the process leaves out the waits, not the slowdown
+  of a shared core and cache). Instruction counts do not move with the load:
+  compare those first.
 - Times: CPU time of the process spent in the step calls (CLOCK_PROCESS_CPUTIME_ID),
   $rounds rounds of one run per program, the programs alternated within each round
+- Variants timed: $variants
 
 ## Engines and their settings
 
@@ -104,11 +146,12 @@ programs print it.
 $(grep '^# [a-z_0-9-]*: ' "$work/speed" | grep -v '^# alternate\|^# load' | sed 's/^# //')
 \`\`\`
 
-## Speed: milliseconds per step
+## Speed: milliseconds per step, one core
 
 Median over the rounds, (least-largest) beside it; "settled" is the pile's
-steps 301 to 600. The second table divides this engine's time by each other
-engine's, round by round (above 1: this engine is slower).
+steps 301 to 600, the pile at rest. The second table divides this engine's
+time by each other engine's, round by round (above 1: this engine is
+slower): the figure the speed targets are stated in.
 
 \`\`\`
 $(grep -v '^#' "$work/speed")
@@ -119,8 +162,7 @@ EOF
 
 ## Instructions per step
 
-Counted by callgrind inside the step calls only, one run each; a count does
-not move with the machine's load.
+Counted by callgrind inside the step calls only, one run each.
 
 \`\`\`
 $(cat "$work/instructions")
@@ -132,12 +174,79 @@ EOF
 
 ## Sleeping on: pile(4000)
 
-Every engine with its sleeping on (ours-sleeping: scene_set_sleeping; Box2D
-v3: its default); the settled row is the steps 301 to 600.
+Every engine with its sleeping on (ours-sleeping: scene_set_sleeping at its
+defaults; Box2D v3: its default); the settled row is the steps 301 to 600.
 
 \`\`\`
 $(grep -v '^#' "$work/sleeping")
 \`\`\`
+
+When every movable body of the pile is asleep, one run of $sleep_steps steps
+each ("none": some body was still awake at the end, with how many):
+
+| engine | all asleep at (s) | bodies awake at the end |
+|---|---|---|
+$(awk '{ e = ""; t = ""; a = 0
+        for (i = 1; i <= NF; i++) { split($i, kv, "=")
+            if (kv[1] == "engine") e = kv[2]; if (kv[1] == "asleep_s") t = kv[2]
+            if (kv[1] == "awake_end") a = kv[2] }
+        printf "| %s | %s | %s |\n", e, t, a }' "$work/asleep")
+EOF
+    fi
+    cat <<EOF
+
+## Two workers: pile($workers_size)
+
+This engine with scene_set_workers(scene, 2) against 1, three alternated
+runs each, not pinned (the second worker needs the second core). Wall time
+is what a second worker can save; CPU time over wall time shows how much of
+the run the second core was free (2.0 at best). Box2D v3's program runs one
+thread only (its task system is not wired into the driver), so it has no
+figure here.
+
+| workers | CPU ms per step (median) | wall ms per step (median) | CPU / wall |
+|---|---|---|---|
+$(awk '{ n = ""; c = ""; w = ""
+        for (i = 1; i <= NF; i++) { split($i, kv, "=")
+            if (kv[1] == "workers") n = kv[2]; if (kv[1] == "median_ms") c = kv[2]
+            if (kv[1] == "wall_median_ms") w = kv[2] }
+        k = ++count[n]; cpu[n, k] = c; wall[n, k] = w }
+     function median(arr, n, k,   i, j, t, v) {
+        for (i = 1; i <= k; i++) v[i] = arr[n, i]
+        for (i = 2; i <= k; i++) for (j = i; j > 1 && v[j - 1] + 0 > v[j] + 0; j--) {
+            t = v[j]; v[j] = v[j - 1]; v[j - 1] = t }
+        return v[int((k + 1) / 2)] }
+     END { for (n = 1; n <= 2; n++) if (count[n] > 0) {
+            c = median(cpu, n, count[n]); w = median(wall, n, count[n])
+            printf "| %d | %s | %s | %.2f |\n", n, c, w, c / w
+            if (n == 1) w1 = w; else w2 = w }
+        if (w1 > 0 && w2 > 0) printf "\nTwo workers over one, wall time: %.2f.\n", w2 / w1 }' "$work/workers")
+EOF
+    if [ -s "$work/scale" ]; then
+        cat <<EOF
+
+## Scale: pile(N), one core
+
+Mean ms per step over the 600 steps, one pinned run per size; the exponent
+is the least-squares slope of log(ms per step) on log(N) over the sizes.
+
+$(awk '{ e = ""; n = 0; m = 0
+        for (i = 1; i <= NF; i++) { split($i, kv, "=")
+            if (kv[1] == "engine") e = kv[2]; if (kv[1] == "size") n = kv[2]
+            if (kv[1] == "mean_ms") m = kv[2] }
+        if (!(e in seen)) { seen[e] = 1; engines[++ne] = e }
+        if (!(n in have)) { have[n] = 1; sizes[++ns] = n }
+        ms[e, n] = m }
+     END {
+        printf "| engine |"; for (j = 1; j <= ns; j++) printf " %s |", sizes[j]; print " exponent |"
+        printf "|---|"; for (j = 1; j <= ns; j++) printf "---|"; print "---|"
+        for (i = 1; i <= ne; i++) { e = engines[i]; sx = sy = sxx = sxy = k = 0
+            printf "| %s |", e
+            for (j = 1; j <= ns; j++) { n = sizes[j]
+                if ((e, n) in ms) { printf " %s |", ms[e, n]
+                    x = log(n); y = log(ms[e, n]); sx += x; sy += y; sxx += x * x; sxy += x * y; k++ }
+                else printf " - |" }
+            printf " N^%.2f |\n", (k * sxy - sx * sy) / (k * sxx - sx * sx) } }' "$work/scale")
 EOF
     fi
     cat <<EOF
@@ -151,6 +260,10 @@ record (before the last solve), Box2D v3's on the polygons at the final
 positions.
 
 EOF
+    if [ -n "$BENCH_SEEDS_ARGS" ]; then
+        echo "Run with seeds.sh $BENCH_SEEDS_ARGS (--quick leaves out pile(10000))."
+        echo
+    fi
     if [ ! -s "$work/seeds-v3" ]; then
         echo "Box2D v3 was not built for this run (no BOX2D3_DIR and no shared archive): its column is left out."
         echo
@@ -170,5 +283,20 @@ EOF
             printf "| %s | %s | %s |\n", f, ours[f], (f in v3) ? v3[f] : "-"
         }
     }' "$work/seeds-ours" "$work/seeds-v3"
+    if [ -s "$work/web" ]; then
+        echo
+        cat "$work/web"
+    fi
+    cat <<EOF
+
+## Commands
+
+    make bench-report     # this page; BENCH_ROUNDS, BENCH_VARIANTS and the rest: tests/bench/bench_report.sh
+    make bench-compare    # the speed tables alone
+    tests/bench/alternate.sh 7 build/bench/bench_engine build/bench/bench_box2d3-sse2 -- --scene pile --size 4000
+    tests/bench/instructions.sh -s "pile:1000" build/bench/bench_engine:ours build/bench/bench_box2d3-sse2:box2d3-sse2
+    tests/bench/seeds.sh build/bench/bench_engine   # quality over the seeds; --judge OLD NEW V3 decides "no worse"
+    valgrind --tool=callgrind build/bench/bench_engine --scene pile --size 1000 --runs 1
+EOF
 } >"$output"
 echo "bench-report: wrote $output" >&2

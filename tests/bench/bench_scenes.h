@@ -196,8 +196,12 @@ static inline void pile_run(const bench_ops_t *ops, const bench_case_t *c, bench
     double total = 0.0, settled = 0.0;
     double late_ke = 0.0, late_p = 0.0, ke_end = 0.0, vmax_end = 0.0;
     int late_fast = 0, fast_end = 0;
+    int asleep_step = 0; /* the first step after which every body sleeps */
     for (int step = 1; step <= steps; step++) {
         double ms = bench_step(ops, w, BENCH_DT);
+        if (ops->awake_bodies != NULL && asleep_step == 0 && ops->awake_bodies(w) == 0) {
+            asleep_step = step;
+        }
         total += ms;
         if (step >= PILE_SETTLED_FIRST) settled += ms;
         if (steps > PILE_LATE_FIRST && step >= PILE_LATE_FIRST) {
@@ -232,6 +236,15 @@ static inline void pile_run(const bench_ops_t *ops, const bench_case_t *c, bench
     }
     int len = snprintf(out->quality, sizeof out->quality, "max_penetration=%.4g outside=%d",
                        ops->max_penetration(w), outside);
+    if (ops->awake_bodies != NULL) {
+        if (asleep_step > 0) {
+            len += snprintf(out->quality + len, sizeof out->quality - (size_t)len, " asleep_s=%.2f",
+                            asleep_step * BENCH_DT);
+        } else {
+            len += snprintf(out->quality + len, sizeof out->quality - (size_t)len,
+                            " asleep_s=none awake_end=%d", ops->awake_bodies(w));
+        }
+    }
     if (steps > PILE_LATE_FIRST) {
         snprintf(out->quality + len, sizeof out->quality - (size_t)len,
                  " steps=%d late_ke_max=%.4g late_p_max=%.4g late_fast_max=%d ke_end=%.4g "

@@ -24,8 +24,8 @@
 #include <time.h>
 #include <unistd.h>
 #include "app_image.h"
-#include "layout.h"
-#include "palette.h"
+#include "core/layout.h"
+#include "draw/palette.h"
 
 #include "app_expect.h"
 

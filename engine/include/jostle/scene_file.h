@@ -100,10 +100,49 @@ scene_file_view_t scene_file_get_view(const scene_file_t *file);
  * live with the caller (the sandbox's app/games/). */
 const char *scene_file_get_game(const scene_file_t *file);
 
+/* The solver's settings (iterations, warm starting, restitution threshold,
+ * sleep tolerance and time) are the scene's: a program changes them on
+ * the scene (jostle/scene.h) and scene_file_write writes them as they are. */
+
+/* A new `timestep` (s), as scene_file_get_timestep then gives it and the
+ * writer writes it; the file does not step the scene, its caller does.
+ * False, nothing changed, unless 0 < timestep <= 10. */
+bool scene_file_set_timestep(scene_file_t *file, double timestep);
+
+/* The workers the file asks for (`workers N`, 1 to SCENE_MAX_WORKERS: the
+ * scene is built with scene_set_workers(N)); 0 when it gives none. The
+ * writer writes the scene's count (scene_get_workers) when it is not 1 or
+ * the file gave one. */
+size_t scene_file_get_workers(const scene_file_t *file);
+
+/* How the program running the file is asked to step it (`stepping fixed`,
+ * the default: steps of the timestep; `stepping frame`: one step a frame,
+ * as long as the frame). The file does not step the scene; the sandbox
+ * reads this. */
+typedef enum { SCENE_FILE_STEP_FIXED = 0, SCENE_FILE_STEP_FRAME } scene_file_stepping_t;
+scene_file_stepping_t scene_file_get_stepping(const scene_file_t *file);
+void scene_file_set_stepping(scene_file_t *file, scene_file_stepping_t stepping);
+
+/* What a sample says about itself (`category WORDS`, `note WORDS`): the
+ * words up to the end of the statement, joined by one space; "" when the
+ * file gives none. The sandbox lists its samples by category with their
+ * notes. At most SCENE_FILE_CATEGORY_MAX and SCENE_FILE_NOTE_MAX bytes. */
+#define SCENE_FILE_CATEGORY_MAX 40
+#define SCENE_FILE_NOTE_MAX 200
+const char *scene_file_get_category(const scene_file_t *file);
+const char *scene_file_get_note(const scene_file_t *file);
+
 /* The body the file named `name` (a `body NAME { ... }` without repeat), NULL
  * when there is none or the scene has freed it. A body marked removed but not
  * yet freed is returned (body_is_removed tells). */
 body_t *scene_file_find_body(scene_file_t *file, const char *name);
+
+/* The name the file gave `body`: its block's (`body NAME { ... }`, repeated
+ * or not) or, for a spawned body, its template's; "" for an anonymous body;
+ * NULL when the file did not make it (a body the caller added) or an
+ * argument is NULL. Valid while the file lives. Looks through the file's
+ * bodies: for messages, not for every step. */
+const char *scene_file_body_name(scene_file_t *file, body_t *body);
 
 /*
  * Makes a body from the template `template_name` (`template NAME { ... }`)
