@@ -1,7 +1,8 @@
 /*
  * The SDL2 sandbox: drop polygons, set their elasticity, and watch the
  * collision axes and impulses the engine computes. This file holds the
- * command line and the frame loop; see docs/sandbox.md.
+ * command line and the frame loop; docs/sandbox.md is the user's guide,
+ * docs/sandbox-reference.md the command line.
  */
 #define SDL_MAIN_HANDLED
 #include <SDL.h>

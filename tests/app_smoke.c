@@ -5,7 +5,7 @@
  * the container's place, and the side bar's words (found glyph by glyph in
  * the app's own 8x8 font, tests/app_image.c). Also: bad flags and scripts
  * are refused with a message, the README's keys are all in the help, and
- * the documented commands of docs/sandbox.md draw the committed pictures.
+ * the documented commands of docs/sandbox-reference.md draw the committed pictures.
  * When the sandbox could not be built (SDL2, SDL2_gfx or SDL2_image missing)
  * every test is reported as skipped with the reason.
  *
@@ -1333,7 +1333,7 @@ static void test_games_end_with_a_screen_over_the_field(void) {
 
 /* ---- the documented pictures ---- */
 
-/* The line of docs/sandbox.md that runs ./sandbox with `marker`, split into
+/* The line of docs/sandbox-reference.md that runs ./sandbox with `marker`, split into
  * words (at most max, in words[], pointing into the returned copy). */
 static char *doc_command(const char *doc, const char *marker, char **words, int max, int *n) {
     for (const char *line = doc; line != NULL && *line != '\0';) {
@@ -1401,7 +1401,7 @@ static void check_doc_picture(const char *doc, const char *marker, const char *d
     int n = 0;
     char *copy = doc_command(doc, marker, words, 30, &n);
     if (copy == NULL) {
-        app_fail("docs/sandbox.md has no './sandbox ...' line with '%s'", marker);
+        app_fail("docs/sandbox-reference.md has no './sandbox ...' line with '%s'", marker);
         return;
     }
     char shot[256], diff[256];
@@ -1454,9 +1454,9 @@ static void check_doc_picture(const char *doc, const char *marker, const char *d
 }
 
 static void test_docs_pictures_regenerate(void) {
-    char *doc = read_text_file("docs/sandbox.md");
+    char *doc = read_text_file("docs/sandbox-reference.md");
     if (doc == NULL) {
-        app_fail("cannot read docs/sandbox.md");
+        app_fail("cannot read docs/sandbox-reference.md");
         return;
     }
     check_doc_picture(doc, "--script app/scripts/demo.txt", NULL, NULL, "docs/sandbox.png");
@@ -1474,7 +1474,7 @@ static void test_docs_pictures_regenerate(void) {
         check_doc_picture(doc, marker, NULL, NULL, picture);
     }
     char *drop = doc_heredoc(doc, "drop.txt");
-    EXPECT(drop != NULL, "docs/sandbox.md has no cat > drop.txt <<'EOF' example");
+    EXPECT(drop != NULL, "docs/sandbox-reference.md has no cat > drop.txt <<'EOF' example");
     if (drop != NULL) {
         char script[256];
         snprintf(script, sizeof script, "%s", tmp_path("doc_drop", ".txt"));

@@ -778,8 +778,8 @@ static void test_default_scene_is_a_scene_file(void) {
            placed.y);
     list_free(shape);
     sandbox_free(&sandbox);
-    /* docs/sandbox.md shows the default scene: the very text. */
-    FILE *doc = fopen("docs/sandbox.md", "rb");
+    /* docs/sandbox-reference.md shows the default scene: the very text. */
+    FILE *doc = fopen("docs/sandbox-reference.md", "rb");
     static char text[200000];
     size_t length = doc != NULL ? fread(text, 1, sizeof(text) - 1, doc) : 0;
     if (doc != NULL) fclose(doc);
@@ -789,7 +789,7 @@ static void test_default_scene_is_a_scene_file(void) {
     EXPECT(start != NULL && end != NULL &&
                (size_t)(end - start - 9) == strlen(SANDBOX_DEFAULT_SCENE) &&
                strncmp(start + 9, SANDBOX_DEFAULT_SCENE, strlen(SANDBOX_DEFAULT_SCENE)) == 0,
-           "docs/sandbox.md does not show SANDBOX_DEFAULT_SCENE word for word");
+           "docs/sandbox-reference.md does not show SANDBOX_DEFAULT_SCENE word for word");
 }
 
 /* Every sample opens: its view, timestep and integrator are the file's, its

@@ -57,7 +57,7 @@ int step_clock_budget(double period, double other, double per_step);
  * The cost of one step (s) that step_clock_budget plans with, after a frame
  * whose `steps` steps took `seconds`: smoothed over frames of two steps or
  * more only. A frame's first step pays alone for waking the threads and
- * for caches the drawing emptied (docs/sandbox.md has the figures), so a
+ * for caches the drawing emptied, so a
  * clock held to one step a frame, planning with those, would never see two
  * fit again. A frame of one step that is
  * cheaper than `cost` lowers it too (the scene got lighter); `cost` 0 (none

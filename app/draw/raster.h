@@ -7,8 +7,7 @@
  * software into a canvas surface (the default) and the batch is opaque, the
  * polygons are scan-converted straight into the canvas: with thousands of
  * small bodies that costs less than half of what SDL's software renderer
- * takes for the same triangles through SDL_RenderGeometry (docs/sandbox.md
- * has the numbers). A pixel is filled when its centre is inside the polygon,
+ * takes for the same triangles through SDL_RenderGeometry. A pixel is filled when its centre is inside the polygon,
  * so neighbouring polygons neither overlap nor leave gaps. Otherwise (--gpu,
  * or translucent arrows) every triangle of the batch goes to the renderer in
  * one SDL_RenderGeometryRaw call, blended when the batch is translucent.

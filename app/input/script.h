@@ -4,8 +4,9 @@
 /*
  * --script FILE: timed input replayed into the running app as SDL events, so
  * a test (or a demo) drives the real sandbox. The format is in SCRIPT_HELP
- * (shown by --help) and docs/sandbox.md. Parsing checks the whole file before
- * the app starts and names the file and line of the first problem.
+ * (shown by --help) and docs/sandbox-reference.md. Parsing checks the whole
+ * file before the app starts and names the file and line of the first
+ * problem.
  */
 
 #include <SDL.h>

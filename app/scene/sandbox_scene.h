@@ -39,7 +39,7 @@
  * refused. */
 #define SANDBOX_KILL_DEPTH 40.0
 #define SANDBOX_WORLD_RADIUS 1e6
-/* The default scene, as a scene file (docs/sandbox.md shows it). */
+/* The default scene, as a scene file (docs/sandbox-reference.md shows it). */
 extern const char SANDBOX_DEFAULT_SCENE[];
 /* Its name on screen and in messages. */
 #define SANDBOX_DEFAULT_NAME "sandbox"

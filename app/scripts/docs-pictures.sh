@@ -1,8 +1,9 @@
 #!/bin/sh
-# Redraws the pictures of docs/sandbox.md (docs/sandbox.png, docs/drop.png,
-# docs/integrator.png, and docs/NAME.png for each NAME of $PAGES below: the
-# games, the samples browser, the settings, the stage chart and the tools)
-# by running the very commands it shows, so the pictures and the text agree.
+# Redraws the pictures of docs/sandbox.md and docs/sandbox-reference.md
+# (docs/sandbox.png, docs/drop.png, docs/integrator.png, and docs/NAME.png
+# for each NAME of $PAGES below: the games, the samples browser, the
+# settings, the stage chart and the tools) by running the very commands
+# docs/sandbox-reference.md shows, so the pictures and the text agree.
 # make check's smoke test app_smoke.docs_pictures_regenerate runs the same
 # commands and compares the result with the committed pictures; run this
 # when a change to the app or the engine changes them on purpose.
@@ -11,7 +12,7 @@ set -e
 PAGES="breakout space_invaders pegs samples solver stages ray box explode inspect"
 cd "$(dirname "$0")/../.."
 root=$(pwd)
-doc=docs/sandbox.md
+doc=docs/sandbox-reference.md
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 

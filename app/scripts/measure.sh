@@ -1,5 +1,5 @@
 #!/bin/sh
-# Measures the sandbox with many bodies in software rendering (docs/sandbox.md).
+# Measures the sandbox with many bodies in software rendering (docs/sandbox-reference.md).
 # Usage: app/scripts/measure.sh [BODIES] [FRAMES]   (from the repository root)
 # 1. headless: SDL's dummy video driver and software renderer, no display;
 # 2. in a window, drawn in software, paced to the display as a person sees
