@@ -7,6 +7,7 @@
 # make stability  stiff and extreme cases beside theory and the peers (docs/stability.md)
 # make tsan       the threaded tests (scene_set_workers) under ThreadSanitizer
 # make house      docs/house.png: the engine's files by layer, drawn from tests/check_house.sh
+# make web        the sandbox as one web page, build/web/sandbox.html (docs/web.md)
 
 # Every build uses all cores unless the command line says otherwise (make -j1).
 ifeq ($(filter -j%,$(MAKEFLAGS)),)
@@ -113,6 +114,7 @@ CHECK_PROGRAMS := build/tests/engine_tests tests/check_examples.sh tests/report/
 	tests/check_house.sh tests/check_install.sh
 
 -include app/app.mk
+-include app/web/web.mk
 -include tests/bench/bench.mk
 -include tests/report/report.mk
 -include tests/fuzz/fuzz.mk

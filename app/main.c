@@ -23,6 +23,9 @@
 #include "panels/ui.h"
 #include "tools/tools.h"
 #include "draw/video.h"
+#ifdef __EMSCRIPTEN__
+#include "web/web.h"
+#endif
 
 typedef struct {
     bool headless;
@@ -354,7 +357,13 @@ int main(int argc, char **argv) {
         }
     }
 
-    if (o.headless) SDL_setenv("SDL_VIDEODRIVER", "dummy", 1);
+#ifdef __EMSCRIPTEN__
+    /* A page always shows its canvas: --headless keeps the fixed clock. */
+    bool windowless = false;
+#else
+    bool windowless = o.headless;
+#endif
+    if (windowless) SDL_setenv("SDL_VIDEODRIVER", "dummy", 1);
     SDL_SetMainReady();
     if (SDL_Init(SDL_INIT_VIDEO | SDL_INIT_EVENTS) != 0) {
         fprintf(stderr, "sandbox: cannot start SDL: %s%s\n", SDL_GetError(),
@@ -378,7 +387,10 @@ int main(int argc, char **argv) {
         return 1;
     }
     video_t video;
-    if (!video_open(&video, o.headless, o.gpu, o.vsync, o.width, o.height)) {
+#ifdef __EMSCRIPTEN__
+    web_start();
+#endif
+    if (!video_open(&video, windowless, o.gpu, o.vsync, o.width, o.height)) {
         video_close(&video);
         SDL_Quit();
         sandbox_loaded_free(&scene);
@@ -507,14 +519,29 @@ int main(int argc, char **argv) {
         t->total_overlays_s += overlays_s;
         t->total_present_s += present_s;
         if (last || status != 0) break;
+#ifdef __EMSCRIPTEN__
+        /* A page shows a frame only when it hands it to the browser. */
+        drawn = false;
+        if (web_frame_due(o.headless)) {
+            video_present(&video);
+            web_frame_done();
+        }
+#else
         /* Without a display that paces us, keep to its refresh rate rather
          * than spin (a window drawn in software has none). */
         if (!o.headless && o.vsync && !video.vsync) {
             double rest = 1.0 / video.refresh_hz - seconds_since(frame_start);
             if (rest > 0.001) SDL_Delay((Uint32)(rest * 1000.0));
         }
+#endif
     }
     if (o.stats) print_stats(&app, seconds_since(loop_start));
+#ifdef __EMSCRIPTEN__
+    /* The page keeps the last frame on show: nothing is closed. */
+    video_present(&video);
+    web_stopped(status);
+    return status;
+#endif
     stepper_stop(stepper);
     render_free();
     ui_free();

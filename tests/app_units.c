@@ -7,7 +7,8 @@
  * PageDown and PageUp go through (app/scene/samples.c), the SCENE panel's words
  * (app/scene_text.c), and the sandbox's scenes from scene files
  * (app/sandbox_scene.c with the game rules, against the sanitized engine),
- * and the geometry batch the renderer draws in one call (app/batch.c).
+ * the geometry batch the renderer draws in one call (app/batch.c), and the
+ * state a script's `log` prints (app/scene/state_log.c).
  * Ends with "N passed, N failed" like every test program make check runs.
  * Run from the repository root (it reads assets/scenes/).
  */
@@ -28,6 +29,7 @@
 #include "core/stage_chart.h"
 #include "core/plot.h"
 #include "scene/sandbox_scene.h"
+#include "scene/state_log.h"
 #include "panels/scene_text.h"
 #include "panels/stats_text.h"
 #include "core/step_clock.h"
@@ -1050,6 +1052,71 @@ static void test_batch_culls_what_is_out_of_view(void) {
     EXPECT(!batch_polygon_visible(p, 4, w, h), "a polygon with a NaN vertex was not culled");
 }
 
+/* FNV-1a over the bytes of the doubles as they lie in memory (this machine
+ * is little-endian, as the web page's is): the hash state_log_hash
+ * promises, worked out byte by byte. */
+static uint64_t fnv_of_doubles(const double *values, size_t count) {
+    uint64_t h = 14695981039346656037u;
+    const unsigned char *bytes = (const unsigned char *)values;
+    for (size_t i = 0; i < count * sizeof(double); i++) h = (h ^ bytes[i]) * 1099511628211u;
+    return h;
+}
+
+/* The log line and the hash: exactly the bodies' positions and angles, one
+ * ulp apart telling apart, removed bodies left out, a game's score added. */
+static void test_state_log_hash_and_lines(void) {
+    static sandbox_t sandbox;
+    sandbox_init(&sandbox, 1);
+    scene_t *scene = sandbox.scene;
+    /* The default scene: the floor at (0, -0.5), the walls at (-14.5, 15)
+     * and (14.5, 15), none turned. */
+    const double poses[] = {0, -0.5, 0, -14.5, 15, 0, 14.5, 15, 0};
+    uint64_t expected = fnv_of_doubles(poses, 9);
+    EXPECT(state_log_hash(scene) == expected, "hash %016llx, expected %016llx",
+           (unsigned long long)state_log_hash(scene), (unsigned long long)expected);
+
+    char *text = NULL;
+    size_t size = 0;
+    FILE *out = open_memstream(&text, &size);
+    state_log_print(out, &sandbox, 7, true);
+    fclose(out);
+    char want[256];
+    snprintf(want, sizeof want,
+             "state: frame 7  bodies 3  hash %016llx\nbody 0  0 -0.5 0\nbody 1  -14.5 15 0\n"
+             "body 2  14.5 15 0\n",
+             (unsigned long long)expected);
+    EXPECT(text != NULL && strcmp(text, want) == 0, "logged\n%s\nexpected\n%s", text, want);
+    free(text);
+
+    /* One ulp of one wall's x is another hash; the wall removed is left
+     * out of it. */
+    body_t *wall = scene_get_body(scene, 2);
+    body_set_centroid(wall, (vector_t){nextafter(14.5, 15.0), 15.0});
+    EXPECT(state_log_hash(scene) != expected, "a wall moved by one ulp keeps the hash");
+    body_remove(wall);
+    EXPECT(state_log_hash(scene) == fnv_of_doubles(poses, 6),
+           "a removed body counts in the hash");
+    sandbox_free(&sandbox);
+
+    /* In a game the line ends with its score, lives and what is left. */
+    char error[600];
+    sandbox_init(&sandbox, 1);
+    EXPECT(sandbox_open(&sandbox, "assets/scenes/breakout.scene", error, sizeof error),
+           "%s", error);
+    text = NULL;
+    out = open_memstream(&text, &size);
+    state_log_print(out, &sandbox, 0, false);
+    fclose(out);
+    game_status_t status = game_status(sandbox.game);
+    snprintf(want, sizeof want, "  score 0  lives %d  remaining %d\n", status.lives,
+             status.remaining);
+    EXPECT(text != NULL && strncmp(text, "state: frame 0  bodies ", 23) == 0 &&
+               strlen(text) > strlen(want) && strcmp(text + strlen(text) - strlen(want), want) == 0,
+           "logged \"%s\", expected it to end \"%s\"", text, want);
+    free(text);
+    sandbox_free(&sandbox);
+}
+
 static const app_test_t TESTS[] = {
     {"app_units.numbers_never_show_negative_zero", test_numbers_never_show_negative_zero},
     {"app_units.large_numbers_shorten_to_fit", test_large_numbers_shorten_to_fit},
@@ -1085,6 +1152,7 @@ static const app_test_t TESTS[] = {
     {"app_units.batch_allocates_nothing_once_warm", test_batch_allocates_nothing_once_warm},
     {"app_units.batch_arrows_and_alpha", test_batch_arrows_and_alpha},
     {"app_units.batch_culls_what_is_out_of_view", test_batch_culls_what_is_out_of_view},
+    {"app_units.state_log_hash_and_lines", test_state_log_hash_and_lines},
 };
 
 int main(void) {

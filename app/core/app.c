@@ -8,6 +8,9 @@
 #include <string.h>
 #include <unistd.h>
 #include "scene/integrator_choice.h"
+#ifdef __EMSCRIPTEN__
+#include "web/web.h"
+#endif
 
 /* Throws: the cursor's velocity over the last THROW_WINDOW seconds, at most
  * THROW_MAX_SPEED. */
@@ -275,6 +278,9 @@ void app_save_scene(app_t *app) {
         app_warn(app, "cannot save: %s/saved-1 to -100000.scene all exist", app->save_dir);
         return;
     }
+#ifdef __EMSCRIPTEN__
+    web_offer_file(path); /* a page's files live in memory: the browser downloads it */
+#endif
     sandbox_totals_t totals = sandbox_totals(&app->sandbox);
     char count[48];
     count_words(&totals, count, sizeof(count));

@@ -80,6 +80,9 @@ static void change_workers(app_t *app, int direction) {
     if (next < 1 || next > MAX_WORKERS) return;
     if (sandbox_set_workers(&app->sandbox, next)) {
         app_status(app, "%zu worker%s (the same motion on any count)", next, next == 1 ? "" : "s");
+    } else {
+        app_status(app, "at most %d worker%s here", SANDBOX_MAX_WORKERS,
+                   SANDBOX_MAX_WORKERS == 1 ? " (a web page runs on one thread)" : "s");
     }
 }
 

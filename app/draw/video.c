@@ -4,6 +4,9 @@
 #include <stdio.h>
 #include <string.h>
 #include "core/layout.h"
+#ifdef __EMSCRIPTEN__
+#include "web/web.h"
+#endif
 
 /* The canvas is the window's own surface when there is a window (no copy
  * before it is shown), else a surface of ours. */
@@ -161,6 +164,10 @@ bool video_screenshot(video_t *video, const char *path) {
     } else if (save_surface(shot, path) != 0) {
         fprintf(stderr, "sandbox: cannot save the screenshot '%s': %s\n", path, SDL_GetError());
         ok = false;
+    } else {
+#ifdef __EMSCRIPTEN__
+        web_offer_file(path); /* a page's files live in memory: the browser downloads it */
+#endif
     }
     SDL_FreeSurface(shot);
     return ok;

@@ -9,6 +9,7 @@
 #include <sys/stat.h>
 #include "input/input.h"
 #include "draw/video.h"
+#include "scene/state_log.h"
 
 const char SCRIPT_HELP[] =
     "Script files (--script FILE): one command per line; '#' starts a comment.\n"
@@ -38,6 +39,9 @@ const char SCRIPT_HELP[] =
     "  resize W H              resize the window to W x H pixels (as if dragged;\n"
     "                          never below 800x600)\n"
     "  screenshot FILE         save this frame (FILE ends in .png or .bmp)\n"
+    "  log [bodies]            print the scene's state to stdout: bodies, a hash\n"
+    "                          of their positions, a game's score (and with\n"
+    "                          bodies, each body's x, y and rotation)\n"
     "  quit                    stop the app\n";
 
 typedef enum {
@@ -52,13 +56,14 @@ typedef enum {
     ACT_SCREENSHOT,
     ACT_OPEN,
     ACT_RESIZE,
+    ACT_LOG,
     ACT_QUIT,
 } action_kind_t;
 
 typedef struct {
     action_kind_t kind;
     int line;
-    long count;          /* WAIT frames, WHEEL notches, SPAWN bodies */
+    long count;          /* WAIT frames, WHEEL notches, SPAWN bodies, LOG 1 with bodies */
     double size;         /* SPAWN */
     SDL_Keycode key;     /* KEY_* */
     Uint16 mod;          /* KEY_*: the modifier state the event reports */
@@ -437,8 +442,15 @@ static bool parse_line(parser_t *p, char **tokens, int n) {
         add(p, ACT_QUIT);
         return true;
     }
+    if (strcmp(command, "log") == 0) {
+        bool bodies = n == 2 && strcmp(tokens[1], "bodies") == 0;
+        if (n > 2 || (n == 2 && !bodies)) return fail(p, "'log' takes nothing or the word bodies");
+        add(p, ACT_LOG)->count = bodies;
+        return true;
+    }
     return fail(p, "unknown command '%s' (expected wait, key, keydown, keyup, move, click, "
-                   "press, release, drag, throw, grab, wheel, spawn, open, resize, screenshot or quit)",
+                   "press, release, drag, throw, grab, wheel, spawn, open, resize, screenshot, "
+                   "log or quit)",
                 command);
 }
 
@@ -630,6 +642,9 @@ static void run_action(const action_t *a, app_t *app, const char **screenshot) {
     case ACT_RESIZE:
         app->resize_width = (int)a->position.x;
         app->resize_height = (int)a->position.y;
+        break;
+    case ACT_LOG:
+        state_log_print(stdout, &app->sandbox, (unsigned long)app->timing.frames, a->count != 0);
         break;
     case ACT_QUIT:
         app->quit = true;

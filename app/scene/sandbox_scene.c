@@ -169,7 +169,8 @@ void sandbox_show(sandbox_t *sandbox, sandbox_loaded_t *loaded, bool keep_integr
     scene_set_integrator(scene, sandbox->integrator);
     scene_set_sleeping(scene, sandbox->sleeping_on);
     size_t workers = scene_file_get_workers(sandbox->file);
-    scene_set_workers(scene, workers != 0 ? workers : SANDBOX_WORKERS);
+    if (workers == 0) workers = SANDBOX_WORKERS;
+    scene_set_workers(scene, workers < SANDBOX_MAX_WORKERS ? workers : SANDBOX_MAX_WORKERS);
     sandbox->rng = sandbox->seed * 2654435769ULL + 0x9E3779B97F4A7C15ULL;
     if (sandbox->rng == 0) sandbox->rng = 1;
     sandbox->next_color = 0;
@@ -485,7 +486,7 @@ bool sandbox_set_iterations(sandbox_t *sandbox, size_t velocity, size_t position
 }
 
 bool sandbox_set_workers(sandbox_t *sandbox, size_t workers) {
-    if (workers < 1 || workers > SCENE_MAX_WORKERS) return false;
+    if (workers < 1 || workers > SANDBOX_MAX_WORKERS) return false;
     scene_set_workers(sandbox->scene, workers);
     return true;
 }

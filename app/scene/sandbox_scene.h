@@ -22,8 +22,16 @@
 #define SANDBOX_WALL_TOP 30.0
 #define SANDBOX_GRAVITY 10.0
 /* Threads a step runs on (scene_set_workers): the two cores of the machines
- * it is measured on; the bodies move the same with any count. */
+ * it is measured on; the bodies move the same with any count. At most
+ * SANDBOX_MAX_WORKERS, whatever a scene file or the SOLVER page asks: a web
+ * page runs on one thread (docs/web.md). */
+#ifdef __EMSCRIPTEN__
+#define SANDBOX_WORKERS 1
+#define SANDBOX_MAX_WORKERS 1
+#else
 #define SANDBOX_WORKERS 2
+#define SANDBOX_MAX_WORKERS SCENE_MAX_WORKERS
+#endif
 /* The world: a body whose centroid falls this far below the bottom of the
  * container (the default scene's floor top, a file's view) is removed (y =
  * -40 in the default scene), and so is one farther than the radius from
@@ -234,7 +242,7 @@ void sandbox_set_sleeping(sandbox_t *sandbox, bool on);
 
 /* The solver's settings of the open scene, changed live and kept in its
  * file so that saving writes them (scene_file.h): the iterations (each in
- * [1, 1000]), the workers (1 to SCENE_MAX_WORKERS), the timestep (0 to 10
+ * [1, 1000]), the workers (1 to SANDBOX_MAX_WORKERS), the timestep (0 to 10
  * s) and the stepping. False, nothing changed, when a value is refused. */
 bool sandbox_set_iterations(sandbox_t *sandbox, size_t velocity, size_t position);
 bool sandbox_set_workers(sandbox_t *sandbox, size_t workers);

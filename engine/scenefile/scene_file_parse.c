@@ -110,9 +110,9 @@ bool sf_read_new_name(parser_t *p, const char *what, sf_name_t *out, sf_where_t 
 }
 
 static size_t hash_name(const char *key) {
-    size_t h = 14695981039346656037u; /* FNV-1a */
+    uint64_t h = 14695981039346656037u; /* FNV-1a, 64-bit also where size_t is not */
     for (; *key != '\0'; key++) h = (h ^ (unsigned char)*key) * 1099511628211u;
-    return h;
+    return (size_t)h;
 }
 
 sf_name_entry_t *sf_names_find(sf_names_t *names, const char *key) {
