@@ -345,6 +345,24 @@ static void disc_rolls_down_a_slope_at_two_thirds_g_sin_theta(void) {
     scene_free(scene);
 }
 
+/* A capsule dropped flat onto a floor comes to rest on two points and
+ * sleeps; so does a ball. */
+static void resting_capsule_and_ball_sleep(void) {
+    scene_t *scene = round_scene(G);
+    add(scene, body_init(polygon_make_box((vector_t){0, -0.5}, 50, 0.5), INFINITY, GREY), 0.0,
+        0.6);
+    body_t *rod = add(scene, body_init_capsule((vector_t){-1, 0.8}, (vector_t){1, 0.8}, 0.3, 1.0,
+                                               GREY), 0.0, 0.6);
+    body_t *ball = add(scene, body_init_circle((vector_t){5, 0.8}, 0.3, 1.0, GREY), 0.0, 0.6);
+    for (int i = 0; i < 240; i++) scene_tick(scene, DT);
+    CHECK(body_is_sleeping(rod));
+    CHECK(body_is_sleeping(ball));
+    CHECK_NEAR(body_get_centroid(rod).y, 0.3, 1e-3);
+    CHECK_NEAR(body_get_rotation(rod), 0.0, 1e-9);
+    CHECK_NEAR(body_get_centroid(ball).y, 0.3, 1e-3);
+    scene_free(scene);
+}
+
 TEST_SUITE(round, TEST_CASE(circle_has_exact_mass_properties),
            TEST_CASE(capsule_has_exact_mass_properties), TEST_CASE(outline_and_point_test),
            TEST_CASE(bad_input_aborts_with_message), TEST_CASE(circle_circle_manifold),
@@ -352,4 +370,5 @@ TEST_SUITE(round, TEST_CASE(circle_has_exact_mass_properties),
            TEST_CASE(head_on_equal_circles_swap_velocities),
            TEST_CASE(dropped_ball_rebounds_to_e_squared),
            TEST_CASE(frictionless_circle_slides_without_turning),
-           TEST_CASE(disc_rolls_down_a_slope_at_two_thirds_g_sin_theta));
+           TEST_CASE(disc_rolls_down_a_slope_at_two_thirds_g_sin_theta),
+           TEST_CASE(resting_capsule_and_ball_sleep));
