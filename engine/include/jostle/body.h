@@ -78,6 +78,55 @@ body_t *body_init_with_info(list_t *shape, double mass, rgb_color_t color, void 
 body_t *body_init_centred(list_t *shape, double mass, rgb_color_t color, void *info,
                           free_func_t info_freer);
 
+/*
+ * Round bodies. A circle (centre, radius) or a capsule (the centres p1, p2
+ * of its two end circles and their radius: a rounded box), of uniform
+ * density and the given mass (kg, > 0, INFINITY allowed), at rest, rotation
+ * 0, its centroid at the circle's centre or the midpoint of p1 and p2. Area,
+ * centroid and moment of inertia are exact: a disc's m r^2 / 2; a capsule's
+ * its rectangle's plus its two half-discs' about the centroid (parallel-axis
+ * theorem). Contacts, find_collision, body_get_bounds and
+ * body_contains_point use the exact round shape.
+ *
+ * The seed's polygon functions see a round body's outline: a convex polygon
+ * with its vertices on the boundary (32 for a circle, 17 on each end of a
+ * capsule, the first of a circle at angle 0 from the centre), which
+ * body_get_shape returns (a new list, as for a polygon), body_get_polygon
+ * and body_get_local_polygon view; so do the scene's queries and the
+ * search for the moment of an impact within a step (the manifold at that
+ * moment is the exact one).
+ *
+ * A radius that is not finite or not > 0, a non-finite centre or end, and
+ * the mass errors of body_init stop the program: "engine error in
+ * body_init_circle: radius must be finite and > 0 (got 0)". Capsule ends
+ * that are equal make a circle; ends closer than 1e-9 of the radius but
+ * not equal are refused ("ends ... are closer than ..."), as is a shape
+ * whose area or moment of inertia does not fit a double.
+ */
+body_t *body_init_circle(vector_t center, double radius, double mass, rgb_color_t color);
+body_t *body_init_circle_with_info(vector_t center, double radius, double mass,
+                                   rgb_color_t color, void *info, free_func_t info_freer);
+body_t *body_init_capsule(vector_t p1, vector_t p2, double radius, double mass,
+                          rgb_color_t color);
+body_t *body_init_capsule_with_info(vector_t p1, vector_t p2, double radius, double mass,
+                                    rgb_color_t color, void *info, free_func_t info_freer);
+
+/* What a body's shape is. */
+typedef enum {
+    BODY_SHAPE_POLYGON = 0,
+    BODY_SHAPE_CIRCLE,
+    BODY_SHAPE_CAPSULE,
+} body_shape_kind_t;
+
+body_shape_kind_t body_get_shape_kind(body_t *body);
+
+/* The radius of a circle or capsule (m); 0 for a polygon. */
+double body_get_round_radius(body_t *body);
+
+/* The world centres of a round body's core: a capsule's two end centres, a
+ * circle's centre twice; a polygon's centroid twice. */
+void body_get_core(body_t *body, vector_t *p1, vector_t *p2);
+
 /* Frees the body, and its info with its info_freer when there is one. A
  * body that a scene owns, or that a force creator of a scene names, is
  * refused (the program stops): the scene frees it; body_remove it instead,

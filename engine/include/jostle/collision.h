@@ -26,7 +26,11 @@ typedef struct {
 
 /*
  * Projects both polygons onto the outward edge normals of both and stops at
- * the first axis whose projections do not overlap. Allocates nothing.
+ * the first axis whose projections do not overlap. A pair with a circle or
+ * capsule is tested on the exact shapes: the axis is the contact normal
+ * (along the line between the nearest features, or the face normal of
+ * least overlap when the cores overlap), the depth the overlap along it.
+ * Allocates nothing.
  * Neither body may be NULL.
  */
 collision_info_t find_collision(body_t *body1, body_t *body2);

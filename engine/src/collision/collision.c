@@ -3,6 +3,7 @@
 #include "dynamics/body_private.h"
 #include "base/check.h"
 #include "collision/collision_private.h"
+#include "collision/round_manifold.h"
 
 typedef struct {
     double min;
@@ -46,11 +47,26 @@ static bool overlaps_on_normals_of(const body_t *owner, const body_t *body1,
     return true;
 }
 
+/* A pair with a round body: collided when the exact shapes touch, the axis
+ * the contact normal, the depth the overlap along it. */
+static collision_info_t round_collision(const body_t *body1, const body_t *body2) {
+    collision_info_t info = {false, VEC_ZERO, 0.0};
+    manifold_features_t features;
+    double separation;
+    manifold_t manifold = round_manifold_collide(body1, body2, 0.0, &features, &separation);
+    if (separation > 0.0) return info;
+    info.collided = true;
+    info.axis = manifold.normal;
+    info.depth = -separation;
+    return info;
+}
+
 collision_info_t find_collision(body_t *body1, body_t *body2) {
     REQUIRE_NOT_NULL(body1);
     REQUIRE_NOT_NULL(body2);
     body_update_world(body1);
     body_update_world(body2);
+    if ((body1->kind | body2->kind) != BODY_SHAPE_POLYGON) return round_collision(body1, body2);
     collision_info_t info = {false, VEC_ZERO, 0.0};
     /* Bounds apart by a gap: some edge normal separates them too, so the
      * answer is the same; most pairs of a scene are far apart. */
@@ -80,5 +96,11 @@ static double gap_on_normals_of(const body_t *owner, const body_t *body1, const 
 double collision_separation(body_t *body1, body_t *body2) {
     body_update_world(body1);
     body_update_world(body2);
+    if ((body1->kind | body2->kind) != BODY_SHAPE_POLYGON) {
+        manifold_features_t features;
+        double separation;
+        round_manifold_collide(body1, body2, -INFINITY, &features, &separation);
+        return separation;
+    }
     return fmax(gap_on_normals_of(body1, body1, body2), gap_on_normals_of(body2, body1, body2));
 }

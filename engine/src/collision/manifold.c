@@ -3,6 +3,7 @@
 #include "dynamics/body_private.h"
 #include "base/scalar.h"
 #include "collision/seams.h"
+#include "collision/round_manifold.h"
 
 /* Prefer polygon a as the reference unless b's face is clearly better, so
  * the choice (and so the feature ids) does not flicker between steps when
@@ -318,6 +319,9 @@ static manifold_t collide_at_seams(const body_t *a, const body_t *b, bool flip, 
 
 manifold_t manifold_collide(body_t *a, body_t *b, double margin, manifold_features_t *features,
                             double *separation) {
+    if ((a->kind | b->kind) != BODY_SHAPE_POLYGON) {
+        return round_manifold_collide(a, b, margin, features, separation);
+    }
     manifold_t manifold = {VEC_ZERO, 0, {{VEC_ZERO, 0.0, 0}, {VEC_ZERO, 0.0, 0}}};
     face_separation_t face_a = max_face_separation(a, b, margin);
     *separation = face_a.separation;
@@ -338,6 +342,12 @@ manifold_t manifold_collide(body_t *a, body_t *b, double margin, manifold_featur
 
 manifold_t manifold_evaluate(const manifold_features_t *features, const body_t *a,
                              const body_t *b, double margin) {
+    if ((a->kind | b->kind) != BODY_SHAPE_POLYGON) {
+        /* A round pair's manifold is cheap to find again, and exact. */
+        manifold_features_t found;
+        double separation;
+        return round_manifold_collide(a, b, margin, &found, &separation);
+    }
     manifold_t manifold = {VEC_ZERO, 0, {{VEC_ZERO, 0.0, 0}, {VEC_ZERO, 0.0, 0}}};
     const body_t *reference = features->flip ? b : a;
     const body_t *incident = features->flip ? a : b;

@@ -11,7 +11,7 @@ static const double DEFAULT_FRICTION = 0.6;
 
 /* body_init and body_init_with_info share this; `function` is the one the
  * caller called, so that a refusal names it. */
-static void check_mass(double mass, const char *function) {
+void body_check_mass(double mass, const char *function) {
     if (isnan(mass)) engine_fail(function, "mass is NaN");
     if (!(mass > 0.0)) engine_fail(function, "mass must be > 0 or INFINITY (got %g)", mass);
     /* A subnormal mass: the first step would multiply by 1 / m = inf. */
@@ -45,18 +45,37 @@ static double shape_moment(const vector_t *vertices, size_t count, double mass,
     return moment;
 }
 
-/* Takes the shape list's vertices into a new body, counter-clockwise: one
- * block holds the body and its four vertex arrays (body_private.h). */
-static body_t *take_vertices(list_t *shape, const char *function) {
-    const char *problem = polygon_check(shape);
-    if (problem != NULL) engine_fail(function, "bad shape: %s", problem);
-    size_t count = list_size(shape);
+body_t *body_allocate(size_t count) {
     body_t *body = memory_calloc(1, sizeof(body_t) + 4 * count * sizeof(vector_t));
     body->count = count;
     body->world_vertices = body->shape;
     body->world_normals = body->shape + count;
     body->local_vertices = body->shape + 2 * count;
     body->local_normals = body->shape + 3 * count;
+    return body;
+}
+
+void body_set_defaults(body_t *body, double mass, double inertia, rgb_color_t color, void *info,
+                       free_func_t info_freer) {
+    body->mass = mass;
+    body->inverse_mass = isinf(mass) ? 0.0 : 1.0 / mass;
+    body->inertia = inertia;
+    body->inverse_inertia = isinf(mass) ? 0.0 : 1.0 / body->inertia;
+    body->friction = DEFAULT_FRICTION;
+    body->category = 1;
+    body->mask = UINT32_MAX;
+    body->color = color;
+    body->info = info;
+    body->info_freer = info_freer;
+}
+
+/* Takes the shape list's vertices into a new body, counter-clockwise: one
+ * block holds the body and its four vertex arrays (body_private.h). */
+static body_t *take_vertices(list_t *shape, const char *function) {
+    const char *problem = polygon_check(shape);
+    if (problem != NULL) engine_fail(function, "bad shape: %s", problem);
+    size_t count = list_size(shape);
+    body_t *body = body_allocate(count);
     vector_t *vertices = body->local_vertices;
     for (size_t i = 0; i < count; i++) vertices[i] = *(vector_t *)list_get(shape, i);
     if (polygon_array_signed_area(vertices, count) < 0.0) {
@@ -79,7 +98,7 @@ static const double CENTRED_TOLERANCE = 1e-3;
 static body_t *body_create(list_t *shape, double mass, rgb_color_t color, void *info,
                            free_func_t info_freer, bool centred, const char *function) {
     if (shape == NULL) engine_fail(function, "shape is NULL");
-    check_mass(mass, function);
+    body_check_mass(mass, function);
     body_t *body = take_vertices(shape, function);
     size_t n = body->count;
 
@@ -105,16 +124,8 @@ static body_t *body_create(list_t *shape, double mass, rgb_color_t color, void *
         vector_t edge = vec_subtract(body->local_vertices[(i + 1) % n], body->local_vertices[i]);
         body->local_normals[i] = vec_normalize((vector_t){edge.y, -edge.x});
     }
-    body->mass = mass;
-    body->inverse_mass = isinf(mass) ? 0.0 : 1.0 / mass;
-    body->inertia = shape_moment(body->local_vertices, n, mass, function);
-    body->inverse_inertia = isinf(mass) ? 0.0 : 1.0 / body->inertia;
-    body->friction = DEFAULT_FRICTION;
-    body->category = 1;
-    body->mask = UINT32_MAX;
-    body->color = color;
-    body->info = info;
-    body->info_freer = info_freer;
+    double inertia = shape_moment(body->local_vertices, n, mass, function);
+    body_set_defaults(body, mass, inertia, color, info, info_freer);
     return body;
 }
 
@@ -159,7 +170,7 @@ void body_update_world(body_t *body) {
         bounds.max.x = max_of(bounds.max.x, p.x);
         bounds.max.y = max_of(bounds.max.y, p.y);
     }
-    body->bounds = bounds;
+    body->bounds = body->kind == BODY_SHAPE_POLYGON ? bounds : body_round_bounds(body);
     body->world_valid = true;
 }
 
@@ -440,6 +451,7 @@ bool body_contains_point(body_t *body, vector_t point) {
     /* A NaN point would compare false against every edge and so be "inside". */
     REQUIRE_FINITE_VECTOR(point);
     body_update_world(body);
+    if (body->kind != BODY_SHAPE_POLYGON) return body_round_contains(body, point);
     for (size_t i = 0; i < body->count; i++) {
         if (vec_dot(body->world_normals[i], vec_subtract(point, body->world_vertices[i])) > 0.0) {
             return false;

@@ -4,6 +4,7 @@
 /* The body's fields, shared with the scene, the integrator and the contact
  * pipeline (which read and write them in bulk); everyone else uses body.h. */
 
+#include <math.h>
 #include <stdint.h>
 #include "jostle/body.h"
 
@@ -42,6 +43,9 @@ struct body {
      * (read for every pair the narrowphase searches). */
     bool seam_listed;
     bool has_seams;
+    /* body_shape_kind_t: a polygon, or a round shape (below), in what was
+     * padding too; a pair of polygons reads it once to keep its path. */
+    uint8_t kind;
     /* Largest distance from the centroid to a vertex (m). */
     double radius;
     double friction;
@@ -96,6 +100,13 @@ struct body {
      * world owns it). */
     struct seam_record *seam;
 
+    /* A round shape (body_round.c): the centres of its core, a point for a
+     * circle (both the same) or a capsule's segment, in the body frame,
+     * and the radius around them (m). The polygon below is then its
+     * outline, with vertices on the boundary. */
+    vector_t core[2];
+    double round_radius;
+
     /* Shape in the body frame, relative to the centroid, counter-clockwise. */
     vector_t *local_vertices;
     vector_t *local_normals;
@@ -103,6 +114,51 @@ struct body {
      * local ones. */
     vector_t shape[];
 };
+
+/* Allocates a body (zeroed) with room for a polygon of count vertices in
+ * its four arrays. */
+body_t *body_allocate(size_t count);
+
+/* Stops the program, naming function, when mass cannot be a body's. */
+void body_check_mass(double mass, const char *function);
+
+/* Sets what every new body starts with: mass and moment of inertia (and
+ * their inverses, 0 for mass INFINITY), the default material and filter,
+ * colour and info. */
+void body_set_defaults(body_t *body, double mass, double inertia, rgb_color_t color, void *info,
+                       free_func_t info_freer);
+
+/* A round body's core centres in the world (its pose as cached with the
+ * world polygon: call body_update_world after the pose changes). */
+static inline void body_world_core(const body_t *body, vector_t core[2]) {
+    core[0] = vec_add(body->centroid, vec_rotate_cs(body->core[0], body->rotation_cos,
+                                                    body->rotation_sin));
+    core[1] = vec_add(body->centroid, vec_rotate_cs(body->core[1], body->rotation_cos,
+                                                    body->rotation_sin));
+}
+
+/* The box of a round body's world core grown by its radius. */
+static inline aabb_t body_round_bounds(const body_t *body) {
+    vector_t core[2];
+    body_world_core(body, core);
+    double r = body->round_radius;
+    return (aabb_t){{fmin(core[0].x, core[1].x) - r, fmin(core[0].y, core[1].y) - r},
+                    {fmax(core[0].x, core[1].x) + r, fmax(core[0].y, core[1].y) + r}};
+}
+
+/* Whether the world point lies within the radius of a round body's core. */
+static inline bool body_round_contains(const body_t *body, vector_t point) {
+    vector_t core[2];
+    body_world_core(body, core);
+    vector_t d = vec_subtract(core[1], core[0]);
+    double length_squared = vec_dot(d, d);
+    double t = length_squared > 0.0 ? vec_dot(vec_subtract(point, core[0]), d) / length_squared
+                                    : 0.0;
+    t = fmin(1.0, fmax(0.0, t));
+    vector_t nearest = vec_add(core[0], vec_multiply(t, d));
+    double r = body->round_radius;
+    return vec_get_length_squared(vec_subtract(point, nearest)) <= r * r;
+}
 
 /* Tells the body's scene that it moved (its queries' grid is stale). */
 static inline void body_note_move(body_t *body) {

@@ -1,0 +1,374 @@
+/* Round bodies: circles and capsules, their exact mass properties, boxes and
+ * point tests, their manifolds against every shape, and their motion against
+ * closed forms (head-on hits, bounces, sliding, rolling). */
+#include <math.h>
+#include <stdlib.h>
+#include "jostle/jostle.h"
+#include "collision/round_manifold.h"
+#include "test.h"
+
+static const rgb_color_t GREY = {0.5, 0.5, 0.5};
+static const double DT = 1.0 / 60.0;
+static const double G = 9.81;
+
+/* A disc's moment is m r^2 / 2; its area centroid its centre. */
+static void circle_has_exact_mass_properties(void) {
+    body_t *disc = body_init_circle((vector_t){1.5, -2.0}, 0.3, 2.0, GREY);
+    CHECK(body_get_shape_kind(disc) == BODY_SHAPE_CIRCLE);
+    CHECK(body_get_centroid(disc).x == 1.5 && body_get_centroid(disc).y == -2.0);
+    CHECK_RELATIVE(body_get_inertia(disc), 2.0 * 0.3 * 0.3 / 2.0, 1e-12);
+    CHECK(body_get_round_radius(disc) == 0.3);
+    aabb_t box = body_get_bounds(disc);
+    CHECK_NEAR(box.min.x, 1.2, 1e-15);
+    CHECK_NEAR(box.max.y, -1.7, 1e-15);
+    body_free(disc);
+    body_t *wall = body_init_circle(VEC_ZERO, 1.0, INFINITY, GREY);
+    CHECK(isinf(body_get_inertia(wall)));
+    body_free(wall);
+}
+
+/* A capsule: a rectangle 2r by L and two half-discs of radius r, each
+ * half-disc's moment r^2 / 2 per kilogram about its flat side's centre,
+ * moved to its own centroid (4 r / (3 pi) out) and then to the capsule's
+ * centre (parallel-axis theorem). */
+static double capsule_moment(double m, double length, double r) {
+    double area = 2.0 * r * length + M_PI * r * r;
+    double rectangle_mass = m * 2.0 * r * length / area;
+    double half_mass = m * 0.5 * M_PI * r * r / area;
+    double offset = 4.0 * r / (3.0 * M_PI);
+    double half_own = half_mass * (0.5 * r * r - offset * offset);
+    double half_there = half_own + half_mass * pow(0.5 * length + offset, 2);
+    return rectangle_mass * (length * length + 4.0 * r * r) / 12.0 + 2.0 * half_there;
+}
+
+static void capsule_has_exact_mass_properties(void) {
+    const double lengths[] = {0.1, 1.0, 7.0}, radii[] = {0.05, 0.4, 2.0};
+    for (int i = 0; i < 3; i++) {
+        for (int j = 0; j < 3; j++) {
+            double L = lengths[i], r = radii[j];
+            vector_t p1 = {3.0, 1.0};
+            vector_t p2 = vec_add(p1, vec_multiply(L, (vector_t){0.6, 0.8}));
+            body_t *capsule = body_init_capsule(p1, p2, r, 3.0, GREY);
+            CHECK(body_get_shape_kind(capsule) == BODY_SHAPE_CAPSULE);
+            CHECK_RELATIVE(body_get_inertia(capsule), capsule_moment(3.0, L, r), 1e-12);
+            CHECK_VEC(body_get_centroid(capsule), 3.0 + 0.3 * L, 1.0 + 0.4 * L, 1e-15);
+            vector_t c1, c2;
+            body_get_core(capsule, &c1, &c2);
+            CHECK_VEC(c1, p1.x, p1.y, 1e-14);
+            CHECK_VEC(c2, p2.x, p2.y, 1e-14);
+            aabb_t box = body_get_bounds(capsule);
+            CHECK_NEAR(box.min.x, p1.x - r, 1e-14);
+            CHECK_NEAR(box.max.y, p2.y + r, 1e-14);
+            body_free(capsule);
+        }
+    }
+    /* Equal ends: a circle. */
+    body_t *circle = body_init_capsule((vector_t){1, 1}, (vector_t){1, 1}, 0.5, 1.0, GREY);
+    CHECK(body_get_shape_kind(circle) == BODY_SHAPE_CIRCLE);
+    CHECK_RELATIVE(body_get_inertia(circle), 0.125, 1e-15);
+    body_free(circle);
+}
+
+/* body_get_shape of a round body is its outline, vertices on the boundary;
+ * body_contains_point is the exact shape, between outline and boundary too. */
+static void outline_and_point_test(void) {
+    body_t *disc = body_init_circle((vector_t){1, 2}, 0.5, 1.0, GREY);
+    list_t *shape = body_get_shape(disc);
+    CHECK(list_size(shape) == 32);
+    for (size_t i = 0; i < list_size(shape); i++) {
+        vector_t *v = list_get(shape, i);
+        CHECK_NEAR(vec_get_length(vec_subtract(*v, (vector_t){1, 2})), 0.5, 1e-15);
+    }
+    CHECK(polygon_check(shape) == NULL);
+    list_free(shape);
+    /* Just inside the circle, outside the 32-gon between two vertices. */
+    double half_step = M_PI / 32;
+    vector_t between = {1 + 0.4999 * cos(half_step), 2 + 0.4999 * sin(half_step)};
+    CHECK(body_contains_point(disc, between));
+    CHECK(!body_contains_point(disc, (vector_t){1.5001, 2}));
+    body_set_rotation(disc, 1.0);
+    CHECK(body_contains_point(disc, between));
+    body_free(disc);
+
+    body_t *capsule = body_init_capsule((vector_t){0, 0}, (vector_t){2, 0}, 0.5, 1.0, GREY);
+    list_t *outline = body_get_shape(capsule);
+    CHECK(list_size(outline) == 34);
+    CHECK(polygon_check(outline) == NULL);
+    list_free(outline);
+    CHECK(body_contains_point(capsule, (vector_t){1.0, 0.4999}));
+    CHECK(body_contains_point(capsule, (vector_t){2.35, 0.35}));  /* in the cap */
+    CHECK(!body_contains_point(capsule, (vector_t){2.36, 0.36})); /* past it */
+    CHECK(!body_contains_point(capsule, (vector_t){1.0, 0.5001}));
+    body_set_rotation(capsule, M_PI / 2); /* about (1, 0): now from (1, -1) to (1, 1) */
+    CHECK(body_contains_point(capsule, (vector_t){1.0, 1.4999}));
+    CHECK(!body_contains_point(capsule, (vector_t){1.0, 1.5001}));
+    body_free(capsule);
+}
+
+BAD_CALL(zero_radius, body_init_circle(VEC_ZERO, 0.0, 1.0, GREY))
+BAD_CALL(nan_radius, body_init_circle(VEC_ZERO, NAN, 1.0, GREY))
+BAD_CALL(infinite_centre, body_init_circle((vector_t){INFINITY, 0}, 1.0, 1.0, GREY))
+BAD_CALL(negative_mass, body_init_capsule(VEC_ZERO, (vector_t){1, 0}, 0.5, -1.0, GREY))
+BAD_CALL(nearly_equal_ends, body_init_capsule(VEC_ZERO, (vector_t){1e-12, 0}, 0.5, 1.0, GREY))
+BAD_CALL(negative_capsule_radius,
+         body_init_capsule_with_info(VEC_ZERO, (vector_t){1, 0}, -1.0, 1.0, GREY, NULL, NULL))
+BAD_CALL(huge_moment, body_init_circle(VEC_ZERO, 1e200, 1e100, GREY))
+
+static void bad_input_aborts_with_message(void) {
+    CHECK_DIES(zero_radius, NULL, "engine error in body_init_circle: radius must be finite and > 0 (got 0)");
+    CHECK_DIES(nan_radius, NULL, "body_init_circle: radius must be finite and > 0 (got nan)");
+    CHECK_DIES(infinite_centre, NULL, "body_init_circle: centre is not finite");
+    CHECK_DIES(negative_mass, NULL, "body_init_capsule: mass must be > 0 or INFINITY (got -1)");
+    CHECK_DIES(nearly_equal_ends, NULL, "body_init_capsule: ends", "give equal ends for a circle");
+    CHECK_DIES(negative_capsule_radius, NULL,
+               "body_init_capsule_with_info: radius must be finite and > 0 (got -1)");
+    CHECK_DIES(huge_moment, NULL, "body_init_circle: the moment of inertia", "is not finite");
+}
+
+/* The manifold of a and b at their current poses. */
+static manifold_t collide(body_t *a, body_t *b, double margin, double *separation) {
+    body_get_bounds(a); /* brings the world polygon up to date */
+    body_get_bounds(b);
+    manifold_features_t features;
+    return round_manifold_collide(a, b, margin, &features, separation);
+}
+
+/* Two circles: the normal along the line of centres, the separation the
+ * distance less the radii, the point midway between the surfaces; with
+ * speculative points up to the margin and none beyond. */
+static void circle_circle_manifold(void) {
+    body_t *a = body_init_circle((vector_t){0, 0}, 1.0, 1.0, GREY);
+    body_t *b = body_init_circle((vector_t){3, 4}, 1.5, 1.0, GREY);
+    double s;
+    manifold_t m = collide(a, b, 3.0, &s);
+    CHECK(m.point_count == 1);
+    CHECK_VEC(m.normal, 0.6, 0.8, 1e-15);
+    CHECK_NEAR(m.points[0].separation, 2.5, 1e-15);
+    CHECK_NEAR(s, 2.5, 1e-15);
+    CHECK_VEC(m.points[0].point, 0.6 * 2.25, 0.8 * 2.25, 1e-15);
+    CHECK(collide(a, b, 2.4, &s).point_count == 0);
+    CHECK(!find_collision(a, b).collided);
+    body_set_centroid(b, (vector_t){1.2, 1.6}); /* 2 apart: 0.5 deep */
+    collision_info_t info = find_collision(a, b);
+    CHECK(info.collided);
+    CHECK_VEC(info.axis, 0.6, 0.8, 1e-15);
+    CHECK_NEAR(info.depth, 0.5, 1e-15);
+    info = find_collision(b, a);
+    CHECK_VEC(info.axis, -0.6, -0.8, 1e-15);
+    body_free(a);
+    body_free(b);
+}
+
+/* A circle and a box: over a face the normal is the face's and the
+ * separation the height over it less r; beyond a corner the normal runs
+ * from the corner to the centre. From body1 toward body2 either way round. */
+static void circle_polygon_manifold(void) {
+    body_t *box = body_init(polygon_make_box(VEC_ZERO, 1.0, 1.0), INFINITY, GREY);
+    body_t *ball = body_init_circle((vector_t){0.3, 1.7}, 0.5, 1.0, GREY);
+    double s;
+    manifold_t m = collide(box, ball, 1.0, &s);
+    CHECK(m.point_count == 1);
+    CHECK_VEC(m.normal, 0, 1, 0);
+    CHECK_NEAR(m.points[0].separation, 0.2, 1e-15);
+    CHECK_VEC(m.points[0].point, 0.3, 1.1, 1e-15);
+    m = collide(ball, box, 1.0, &s);
+    CHECK_VEC(m.normal, 0, -1, 0);
+    CHECK_NEAR(m.points[0].separation, 0.2, 1e-15);
+    /* Beyond the corner (1, 1), 0.3 and 0.4 off: 0.5 from it. */
+    body_set_centroid(ball, (vector_t){1.3, 1.4});
+    m = collide(box, ball, 1.0, &s);
+    CHECK(m.point_count == 1);
+    CHECK_VEC(m.normal, 0.6, 0.8, 1e-15);
+    CHECK_NEAR(m.points[0].separation, 0.0, 1e-15);
+    CHECK(find_collision(box, ball).collided); /* touching counts */
+    body_set_centroid(ball, (vector_t){1.3 + 0.6e-3, 1.4 + 0.8e-3});
+    CHECK(!find_collision(box, ball).collided);
+    CHECK_NEAR(collide(box, ball, 1.0, &s).points[0].separation, 1e-3, 1e-15);
+    /* Centre inside: the face of least overlap, the depth through it. */
+    body_set_centroid(ball, (vector_t){0.2, 0.9});
+    collision_info_t info = find_collision(box, ball);
+    CHECK(info.collided);
+    CHECK_VEC(info.axis, 0, 1, 0);
+    CHECK_NEAR(info.depth, 0.6, 1e-15);
+    body_free(box);
+    body_free(ball);
+}
+
+/* Capsules: lying on a face, two points at the ends of its core; a circle
+ * at its side or beyond its end; crossing capsules; a capsule's end on
+ * another's side. */
+static void capsule_manifolds(void) {
+    body_t *floor = body_init(polygon_make_box(VEC_ZERO, 5.0, 1.0), INFINITY, GREY);
+    body_t *rod = body_init_capsule((vector_t){-1, 1.6}, (vector_t){1, 1.6}, 0.5, 1.0, GREY);
+    double s;
+    manifold_t m = collide(floor, rod, 0.5, &s);
+    CHECK(m.point_count == 2);
+    CHECK_VEC(m.normal, 0, 1, 0);
+    CHECK_NEAR(m.points[0].separation, 0.1, 1e-15);
+    CHECK_NEAR(m.points[1].separation, 0.1, 1e-15);
+    CHECK_NEAR(fabs(m.points[0].point.x - m.points[1].point.x), 2.0, 1e-15);
+    CHECK(m.points[0].id != m.points[1].id);
+    /* Tilted: the low end 0.1 above, the other beyond the margin. */
+    body_set_rotation(rod, 0.5);
+    m = collide(floor, rod, 0.2, &s);
+    CHECK(m.point_count == 1);
+    CHECK_NEAR(m.points[0].separation, 1.6 - sin(0.5) - 0.5 - 1.0, 1e-15);
+    m = collide(rod, floor, 0.2, &s);
+    CHECK_VEC(m.normal, 0, -1, 1e-15);
+    body_set_rotation(rod, 0.0);
+    /* The floor's corner under the rod's side: the normal is the rod's. */
+    body_set_centroid(rod, (vector_t){5.5, 1.3});
+    m = collide(floor, rod, 0.5, &s);
+    CHECK(m.point_count >= 1);
+    CHECK_VEC(m.normal, 0, 1, 1e-15);
+    CHECK_NEAR(s, -0.2, 1e-15);
+
+    body_t *ball = body_init_circle((vector_t){5.5, 2.5}, 0.25, 1.0, GREY);
+    m = collide(rod, ball, 1.0, &s);
+    CHECK(m.point_count == 1);
+    CHECK_VEC(m.normal, 0, 1, 1e-15);
+    CHECK_NEAR(m.points[0].separation, 1.2 - 0.75, 1e-14);
+    body_set_centroid(ball, (vector_t){5.5 + 1.0 + 0.3, 1.3 + 0.4}); /* beyond the end */
+    m = collide(rod, ball, 1.0, &s);
+    CHECK_VEC(m.normal, 0.6, 0.8, 1e-14);
+    CHECK_NEAR(m.points[0].separation, 0.5 - 0.75, 1e-14);
+    CHECK_NEAR(find_collision(ball, rod).depth, 0.25, 1e-14);
+
+    body_t *other = body_init_capsule((vector_t){5.5, 2.5}, (vector_t){5.5, 4.5}, 0.5, 1.0, GREY);
+    m = collide(rod, other, 1.0, &s); /* its end 1.2 over the side */
+    CHECK(m.point_count == 1);
+    CHECK_VEC(m.normal, 0, 1, 1e-15);
+    CHECK_NEAR(m.points[0].separation, 0.2, 1e-14);
+    m = collide(other, rod, 1.0, &s);
+    CHECK_VEC(m.normal, 0, -1, 1e-15);
+    CHECK_NEAR(m.points[0].separation, 0.2, 1e-14);
+    body_set_centroid(other, (vector_t){5.5, 1.3}); /* crossing at their centres */
+    collision_info_t info = find_collision(rod, other);
+    CHECK(info.collided);
+    CHECK_NEAR(info.depth, 2.0, 1e-14);
+    body_free(other);
+    body_free(ball);
+    body_free(floor);
+    body_free(rod);
+}
+
+static scene_t *round_scene(double gravity) {
+    scene_t *scene = scene_init();
+    scene_set_gravity(scene, (vector_t){0.0, -gravity});
+    scene_set_contacts_enabled(scene, true);
+    return scene;
+}
+
+static body_t *add(scene_t *scene, body_t *body, double elasticity, double friction) {
+    body_set_elasticity(body, elasticity);
+    body_set_friction(body, friction);
+    scene_add_body(scene, body);
+    return body;
+}
+
+/* Equal circles, one at rest, hit head-on at e = 1: they swap velocities. */
+static void head_on_equal_circles_swap_velocities(void) {
+    scene_t *scene = round_scene(0.0);
+    body_t *a = add(scene, body_init_circle((vector_t){0, 0}, 0.5, 2.0, GREY), 1.0, 0.0);
+    body_t *b = add(scene, body_init_circle((vector_t){3, 0}, 0.5, 2.0, GREY), 1.0, 0.0);
+    body_set_velocity(a, (vector_t){4.0, 0.0});
+    for (int i = 0; i < 60; i++) scene_tick(scene, DT);
+    CHECK_NEAR(body_get_velocity(a).x, 0.0, 1e-12);
+    CHECK_NEAR(body_get_velocity(b).x, 4.0, 1e-12);
+    CHECK(body_get_velocity(a).y == 0.0 && body_get_velocity(b).y == 0.0);
+    CHECK(body_get_angular_velocity(a) == 0.0 && body_get_angular_velocity(b) == 0.0);
+    scene_free(scene);
+}
+
+/* A ball dropped from 10 m at e = 0.8 rises to 0.64 of its last height at
+ * each bounce: the apex from the state in flight, y + v^2 / (2 g). */
+static void dropped_ball_rebounds_to_e_squared(void) {
+    scene_t *scene = round_scene(G);
+    add(scene, body_init(polygon_make_box((vector_t){0, -0.5}, 50, 0.5), INFINITY, GREY), 0.8,
+        0.6);
+    body_t *ball = add(scene, body_init_circle((vector_t){0, 10.5}, 0.5, 1.0, GREY), 0.8, 0.6);
+    double height = 10.0, vy_before = 0.0;
+    int bounces = 0;
+    for (int step = 0; step < 2000 && bounces < 6; step++) {
+        scene_tick(scene, DT);
+        vector_t v = body_get_velocity(ball);
+        if (vy_before < 0.0 && v.y > 0.0) {
+            double apex = body_get_centroid(ball).y - 0.5 + v.y * v.y / (2.0 * G);
+            height *= 0.64;
+            CHECK_RELATIVE(apex, height, 1e-9);
+            CHECK(v.x == 0.0 && body_get_angular_velocity(ball) == 0.0);
+            bounces++;
+        }
+        vy_before = v.y;
+    }
+    CHECK(bounces == 6);
+    scene_free(scene);
+}
+
+/* Frictionless, a circle sliding on a floor never turns. */
+static void frictionless_circle_slides_without_turning(void) {
+    scene_t *scene = round_scene(G);
+    add(scene, body_init(polygon_make_box((vector_t){0, -0.5}, 50, 0.5), INFINITY, GREY), 0.0,
+        0.0);
+    body_t *ball = add(scene, body_init_circle((vector_t){-10, 0.6}, 0.5, 1.0, GREY), 0.0, 0.0);
+    body_set_velocity(ball, (vector_t){5.0, 0.0});
+    double most = 0.0;
+    for (int i = 0; i < 180; i++) {
+        scene_tick(scene, DT);
+        most = fmax(most, fabs(body_get_angular_velocity(ball)));
+    }
+    CHECK(most == 0.0);
+    CHECK_NEAR(body_get_velocity(ball).x, 5.0, 1e-12);
+    CHECK_NEAR(body_get_centroid(ball).y, 0.5, 1e-3);
+    scene_free(scene);
+}
+
+/* A disc rolling without slipping down a slope of angle theta (friction
+ * above tan(theta) / 3) accelerates at (2/3) g sin(theta). */
+static void disc_rolls_down_a_slope_at_two_thirds_g_sin_theta(void) {
+    const double theta = 0.3;
+    scene_t *scene = round_scene(G);
+    list_t *slab = polygon_make_box(VEC_ZERO, 40.0, 0.5);
+    polygon_rotate(slab, -theta, VEC_ZERO);
+    add(scene, body_init(slab, INFINITY, GREY), 0.0, 1.0);
+    vector_t down = {cos(theta), -sin(theta)}, up = {sin(theta), cos(theta)};
+    vector_t start = vec_add(vec_multiply(-20.0, down), vec_multiply(0.5 + 0.5, up));
+    body_t *disc = add(scene, body_init_circle(start, 0.5, 1.0, GREY), 0.0, 1.0);
+    for (int i = 0; i < 30; i++) scene_tick(scene, DT); /* settle onto the slope */
+    double v0 = vec_dot(body_get_velocity(disc), down);
+    for (int i = 0; i < 120; i++) scene_tick(scene, DT);
+    double v1 = vec_dot(body_get_velocity(disc), down);
+    double acceleration = (v1 - v0) / (120 * DT);
+    CHECK_RELATIVE(acceleration, 2.0 / 3.0 * G * sin(theta), 1e-3);
+    /* Rolling: the rim's contact point does not slide. */
+    CHECK_NEAR(body_get_angular_velocity(disc) * 0.5, -v1, 1e-3 * fabs(v1));
+    scene_free(scene);
+}
+
+/* A capsule dropped flat onto a floor comes to rest on two points and
+ * sleeps; so does a ball. */
+static void resting_capsule_and_ball_sleep(void) {
+    scene_t *scene = round_scene(G);
+    add(scene, body_init(polygon_make_box((vector_t){0, -0.5}, 50, 0.5), INFINITY, GREY), 0.0,
+        0.6);
+    body_t *rod = add(scene, body_init_capsule((vector_t){-1, 0.8}, (vector_t){1, 0.8}, 0.3, 1.0,
+                                               GREY), 0.0, 0.6);
+    body_t *ball = add(scene, body_init_circle((vector_t){5, 0.8}, 0.3, 1.0, GREY), 0.0, 0.6);
+    for (int i = 0; i < 240; i++) scene_tick(scene, DT);
+    CHECK(body_is_sleeping(rod));
+    CHECK(body_is_sleeping(ball));
+    CHECK_NEAR(body_get_centroid(rod).y, 0.3, 1e-3);
+    CHECK_NEAR(body_get_rotation(rod), 0.0, 1e-9);
+    CHECK_NEAR(body_get_centroid(ball).y, 0.3, 1e-3);
+    scene_free(scene);
+}
+
+TEST_SUITE(round, TEST_CASE(circle_has_exact_mass_properties),
+           TEST_CASE(capsule_has_exact_mass_properties), TEST_CASE(outline_and_point_test),
+           TEST_CASE(bad_input_aborts_with_message), TEST_CASE(circle_circle_manifold),
+           TEST_CASE(circle_polygon_manifold), TEST_CASE(capsule_manifolds),
+           TEST_CASE(head_on_equal_circles_swap_velocities),
+           TEST_CASE(dropped_ball_rebounds_to_e_squared),
+           TEST_CASE(frictionless_circle_slides_without_turning),
+           TEST_CASE(disc_rolls_down_a_slope_at_two_thirds_g_sin_theta),
+           TEST_CASE(resting_capsule_and_ball_sleep));
