@@ -68,14 +68,14 @@ endif
 # The app's plain-C parts (no SDL: text, the side bar's lines, the step
 # clock, the layout, the energy drift, the integrators by name, the list of
 # scenes, the SCENE panel's words, the sandbox's scenes with the game rules,
-# the geometry batch, the state a script logs),
+# the geometry batch, a round body's outline, the state a script logs),
 # tested directly against the sanitized engine; they build and run without
 # SDL.
 APP_UNIT_SRC := tests/app_units.c app/panels/text.c app/panels/stats_text.c app/core/step_clock.c \
                 app/core/layout.c app/core/energy_drift.c app/scene/integrator_choice.c \
                 app/scene/samples.c app/panels/scene_text.c app/scene/sandbox_scene.c app/draw/batch.c \
                 app/core/frame_meter.c app/draw/focus.c app/core/stage_chart.c app/core/plot.c \
-                app/scene/state_log.c
+                app/scene/state_log.c app/draw/round_outline.c
 build/tests/app_units: $(APP_UNIT_SRC) tests/app_expect.h $(APP_HDR) app/app.mk \
                        build/libjostle-san.a $(GAMES_SAN_OBJ)
 	@mkdir -p $(dir $@)

@@ -7,7 +7,8 @@
  * PageDown and PageUp go through (app/scene/samples.c), the SCENE panel's words
  * (app/scene_text.c), and the sandbox's scenes from scene files
  * (app/sandbox_scene.c with the game rules, against the sanitized engine),
- * the geometry batch the renderer draws in one call (app/batch.c), and the
+ * the geometry batch the renderer draws in one call (app/batch.c), the
+ * outline of a round body in pixels (app/draw/round_outline.c), and the
  * state a script's `log` prints (app/scene/state_log.c).
  * Ends with "N passed, N failed" like every test program make check runs.
  * Run from the repository root (it reads assets/scenes/).
@@ -21,6 +22,7 @@
 #include "core/energy_drift.h"
 #include "core/frame_meter.h"
 #include "draw/focus.h"
+#include "draw/round_outline.h"
 #include "scene/integrator_choice.h"
 #include "core/layout.h"
 #include "draw/palette.h"
@@ -1034,6 +1036,78 @@ static void test_batch_arrows_and_alpha(void) {
     batch_free(&batch);
 }
 
+/* Distance from p to the segment a b. */
+static double segment_distance(vector_t p, vector_t a, vector_t b) {
+    vector_t d = vec_subtract(b, a);
+    double t = vec_dot(vec_subtract(p, a), d) / vec_dot(d, d);
+    t = t < 0 ? 0 : t > 1 ? 1 : t;
+    return vec_get_length(vec_subtract(p, vec_add(a, vec_multiply(t, d))));
+}
+
+/* Whether the outline is strictly convex, either winding. */
+static bool outline_is_convex(const vector_t *p, int n) {
+    int sign = 0;
+    for (int k = 0; k < n; k++) {
+        vector_t e = vec_subtract(p[(k + 1) % n], p[k]);
+        vector_t f = vec_subtract(p[(k + 2) % n], p[(k + 1) % n]);
+        double cross = vec_cross(e, f);
+        int s = cross > 1e-12 ? 1 : cross < -1e-12 ? -1 : 0;
+        if (s == 0 || (sign != 0 && s != sign)) return false;
+        sign = s;
+    }
+    return true;
+}
+
+static void test_round_outlines_lie_on_the_boundary(void) {
+    vector_t out[ROUND_OUTLINE_MAX];
+    /* A circle: every vertex on the rim, chords within a quarter pixel of
+     * it (the sagitta r (1 - cos(pi / n))), more vertices when larger. */
+    const double radii[] = {2.0, 10.0, 50.0, 150.0};
+    int last = 0;
+    for (size_t i = 0; i < sizeof radii / sizeof radii[0]; i++) {
+        double r = radii[i];
+        vector_t c = {300.5, 200.25};
+        int n = round_outline(c, c, r, out);
+        EXPECT(n >= 8 && n <= ROUND_OUTLINE_MAX && n >= last, "circle r %g: %d vertices", r, n);
+        last = n;
+        for (int k = 0; k < n; k++) {
+            double d = vec_get_length(vec_subtract(out[k], c));
+            EXPECT(fabs(d - r) <= 1e-9 * r, "circle r %g: vertex %d at %g", r, k, d);
+        }
+        EXPECT(outline_is_convex(out, n), "circle r %g: not convex", r);
+        if (n < ROUND_OUTLINE_MAX) {
+            double sagitta = r * (1.0 - cos(M_PI / n));
+            EXPECT(sagitta <= 0.25, "circle r %g: chords %g px inside the rim", r, sagitta);
+        }
+    }
+    /* A capsule: every vertex at r from its core, the two caps' extreme
+     * points reached, convex, within the batch's limit. */
+    vector_t a = {100, 100}, b = {260, 220};
+    double r = 40.0;
+    int n = round_outline(a, b, r, out);
+    EXPECT(n >= 8 && n <= ROUND_OUTLINE_MAX, "capsule: %d vertices", n);
+    double far_a = 0.0, far_b = 0.0;
+    for (int k = 0; k < n; k++) {
+        double d = segment_distance(out[k], a, b);
+        EXPECT(fabs(d - r) <= 1e-9 * r, "capsule: vertex %d at %g from the core", k, d);
+        far_a = fmax(far_a, vec_get_length(vec_subtract(out[k], b)));
+        far_b = fmax(far_b, vec_get_length(vec_subtract(out[k], a)));
+    }
+    double core = vec_get_length(vec_subtract(b, a));
+    EXPECT(fabs(far_a - (core + r)) <= 1e-9 && fabs(far_b - (core + r)) <= 1e-9,
+           "capsule: ends reach %g and %g, expected %g", far_a, far_b, core + r);
+    EXPECT(outline_is_convex(out, n), "capsule: not convex");
+    /* Refused sizes and centres give nothing. */
+    EXPECT(round_outline(a, a, 0.0, out) == 0, "radius 0 drawn");
+    EXPECT(round_outline(a, a, NAN, out) == 0, "radius NaN drawn");
+    EXPECT(round_outline((vector_t){INFINITY, 0}, a, 1.0, out) == 0, "infinite centre drawn");
+    /* The radius line: the world's counter-clockwise is clockwise on a
+     * screen whose y grows downward. */
+    vector_t rim = round_rim_point((vector_t){10, 10}, 5.0, M_PI / 2.0);
+    EXPECT(fabs(rim.x - 10.0) < 1e-12 && fabs(rim.y - 5.0) < 1e-12, "rim at (%g, %g)", rim.x,
+           rim.y);
+}
+
 static void test_batch_culls_what_is_out_of_view(void) {
     vector_t p[4];
     const int w = 800, h = 600;
@@ -1152,6 +1226,7 @@ static const app_test_t TESTS[] = {
     {"app_units.batch_allocates_nothing_once_warm", test_batch_allocates_nothing_once_warm},
     {"app_units.batch_arrows_and_alpha", test_batch_arrows_and_alpha},
     {"app_units.batch_culls_what_is_out_of_view", test_batch_culls_what_is_out_of_view},
+    {"app_units.round_outlines_lie_on_the_boundary", test_round_outlines_lie_on_the_boundary},
     {"app_units.state_log_hash_and_lines", test_state_log_hash_and_lines},
 };
 

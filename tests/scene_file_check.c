@@ -125,6 +125,14 @@ static bool same_body(body_t *a, body_t *b, size_t i, char *why, size_t size) {
     const char *s = body_get_info(a), *t = body_get_info(b);
     if ((s == NULL) != (t == NULL) || (s != NULL && strcmp(s, t) != 0))
         return differ(why, size, "body %zu: tag differs", i);
+    if (body_get_shape_kind(a) != body_get_shape_kind(b) ||
+        body_get_round_radius(a) != body_get_round_radius(b))
+        return differ(why, size, "body %zu: shape kind or radius differs", i);
+    vector_t a1, a2, b1, b2;
+    body_get_core(a, &a1, &a2);
+    body_get_core(b, &b1, &b2);
+    if (!same_vector(a1, b1) || !same_vector(a2, b2))
+        return differ(why, size, "body %zu: core differs", i);
     polygon_t f = body_get_polygon(a), g = body_get_polygon(b);
     if (f.count != g.count) return differ(why, size, "body %zu: vertex count differs", i);
     for (size_t k = 0; k < f.count; k++) {

@@ -157,6 +157,109 @@ static void shapes_are_regular_boxes_or_vertices(void) {
     scene_file_free(file);
 }
 
+static void circles_and_capsules_are_round_bodies(void) {
+    scene_file_t *file = parse("body ball { circle 0.5; density 2; position 1 2; angle 0.3 }\n"
+                               "body rod { capsule 1 1 3 1 0.25; mass 3 }\n"
+                               "body moved { capsule 0 0 0 2 0.5; position 5 5; angle 90deg }\n"
+                               "template shot { circle 0.1; mass 0.2 }\n");
+    CHECK(bodies(file) == 3);
+    body_t *ball = body_at(file, 0), *rod = body_at(file, 1), *moved = body_at(file, 2);
+    /* A circle about its position, of density times its exact area. */
+    CHECK(body_get_shape_kind(ball) == BODY_SHAPE_CIRCLE);
+    CHECK(body_get_round_radius(ball) == 0.5);
+    CHECK_VEC(body_get_centroid(ball), 1, 2, 0);
+    CHECK(body_get_rotation(ball) == 0.3);
+    CHECK_NEAR(body_get_mass(ball), 2 * M_PI * 0.25, 1e-15);
+    CHECK_NEAR(body_get_inertia(ball), 0.5 * body_get_mass(ball) * 0.25, 1e-15);
+    /* A capsule's ends in world coordinates without a position: its centroid
+     * at their midpoint. */
+    CHECK(body_get_shape_kind(rod) == BODY_SHAPE_CAPSULE);
+    CHECK(body_get_round_radius(rod) == 0.25);
+    CHECK_VEC(body_get_centroid(rod), 2, 1, 0);
+    vector_t p1, p2;
+    body_get_core(rod, &p1, &p2);
+    CHECK_VEC(p1, 1, 1, 1e-15);
+    CHECK_VEC(p2, 3, 1, 1e-15);
+    CHECK_NEAR(body_get_mass(rod), 3, 0);
+    /* With a position and an angle: the core turned about the centroid. */
+    body_get_core(moved, &p1, &p2);
+    CHECK_VEC(p1, 6, 5, 1e-12);
+    CHECK_VEC(p2, 4, 5, 1e-12);
+    CHECK_NEAR(body_get_mass(moved), M_PI * 0.25 + 2, 1e-15); /* density 1 */
+    /* The written file says the same. */
+    char *text = scene_file_write(file, NULL, NULL);
+    CHECK(strstr(text, "    circle 0.5\n    density 2\n") != NULL);
+    CHECK(strstr(text, "    capsule 1 1 3 1 0.25\n    mass 3\n") != NULL);
+    CHECK(strstr(text, "template shot {\n    circle 0.1\n") != NULL);
+    free(text);
+    body_t *shot = scene_file_spawn(file, "shot", (vector_t){0, 9}, VEC_ZERO);
+    CHECK(shot != NULL && body_get_shape_kind(shot) == BODY_SHAPE_CIRCLE);
+    CHECK_NEAR(body_get_mass(shot), 0.2, 0);
+    scene_file_free(file);
+    CHECK(test_no_leaks());
+}
+
+/* A scene of round bodies stepped, saved mid-run and reloaded goes on as the
+ * original does, every body the same to the bit at every step; so does one
+ * with round bodies the file did not make (a circle exactly, a capsule's
+ * ends turned back by its angle to rounding). */
+static void round_bodies_saved_mid_run_continue_bit_for_bit(void) {
+    const char *text = "gravity 0 -9.81\ncontacts on\n"
+                       "body floor { box 20 1; static; position 0 -0.5; friction 0.8 }\n"
+                       "body ramp { capsule -6 3 -1 1 0.2; static }\n"
+                       "body balls { circle 0.3; position -5 4; repeat 3 2 0.7 0.7; "
+                       "elasticity 0.4 }\n"
+                       "body rods { capsule -0.4 0 0.4 0 0.2; position 2 1; repeat 2 3 1.3 0.5; "
+                       "angle 0.2 }\n";
+    char why[256] = "";
+    CHECK(scene_file_round_trip((const uint8_t *)text, strlen(text), "t.scene", why, sizeof why));
+    if (why[0] != '\0') printf("    %s\n", why);
+    scene_file_t *file = parse(text);
+    scene_t *scene = scene_file_get_scene(file);
+    for (int i = 0; i < 70; i++) scene_tick(scene, 1.0 / 60);
+    size_t length = 0;
+    char *saved = scene_file_write(file, &length, NULL);
+    scene_file_t *again = parse(saved);
+    free(saved);
+    for (int i = 0; i < 120 && why[0] == '\0'; i++) {
+        CHECK(scene_file_same(file, again, why, sizeof why));
+        scene_tick(scene, 1.0 / 60);
+        scene_tick(scene_file_get_scene(again), 1.0 / 60);
+    }
+    if (why[0] != '\0') printf("    %s\n", why);
+    scene_file_free(again);
+    /* Foreign round bodies: written as circle and capsule, loaded back. */
+    body_t *ball = body_init_circle((vector_t){3, 6}, 0.4, 2, (rgb_color_t){1, 0, 0});
+    body_t *rod = body_init_capsule((vector_t){-3, 6}, (vector_t){-2, 6.5}, 0.3, 1,
+                                    (rgb_color_t){0, 1, 0});
+    body_set_rotation(ball, 0.7);
+    body_set_angular_velocity(rod, 1.5);
+    scene_add_body(scene, ball);
+    scene_add_body(scene, rod);
+    for (int i = 0; i < 10; i++) scene_tick(scene, 1.0 / 60);
+    saved = scene_file_write(file, &length, NULL);
+    again = parse(saved);
+    free(saved);
+    scene_t *copy = scene_file_get_scene(again);
+    CHECK(scene_bodies(copy) == scene_bodies(scene));
+    size_t n = scene_bodies(copy);
+    body_t *ball2 = scene_get_body(copy, n - 2), *rod2 = scene_get_body(copy, n - 1);
+    CHECK(body_get_shape_kind(ball2) == BODY_SHAPE_CIRCLE);
+    CHECK(body_get_round_radius(ball2) == 0.4 && body_get_mass(ball2) == 2);
+    CHECK(body_get_centroid(ball2).x == body_get_centroid(ball).x);
+    CHECK(body_get_rotation(ball2) == body_get_rotation(ball));
+    CHECK(body_get_shape_kind(rod2) == BODY_SHAPE_CAPSULE);
+    CHECK(body_get_round_radius(rod2) == 0.3 && body_get_mass(rod2) == 1);
+    vector_t a1, a2, b1, b2;
+    body_get_core(rod, &a1, &a2);
+    body_get_core(rod2, &b1, &b2);
+    CHECK_VEC(b1, a1.x, a1.y, 1e-12);
+    CHECK_VEC(b2, a2.x, a2.y, 1e-12);
+    scene_file_free(again);
+    scene_file_free(file);
+    CHECK(test_no_leaks());
+}
+
 static void mass_density_or_static(void) {
     scene_file_t *file = parse("body a { box 2 3; mass 5 }\n"
                                "body b { box 2 3; density 2 }\n"
@@ -719,6 +822,24 @@ static const bad_file_t BAD_FILES[] = {
     {"body a { box 1e-150 1e-150 }",
      "t.scene:1:10: expected a moment of inertia from 1e-290 to 1e+290 kg m^2, found 0 kg m^2 "
      "(density 1 kg/m^2 on 1e-300 m^2, 1e-300 kg on this shape)"},
+    {"body a { circle 0 }",
+     "t.scene:1:17: expected the radius (m), a number > 0 and <= 1e+09, found \"0\""},
+    {"body a { circle }",
+     "t.scene:1:17: expected the radius (m), a number, found '}'"},
+    {"body a { capsule 0 0 1 0 -1 }",
+     "t.scene:1:26: expected the radius (m), a number > 0 and <= 1e+09, found \"-1\""},
+    {"body a { capsule 0 0 1 }",
+     "t.scene:1:24: expected the y of the second end (m), a number, found '}'"},
+    {"body a { capsule 0 0 x 0 1 }",
+     "t.scene:1:22: expected the x of the second end (m), a number, found \"x\""},
+    {"body a { capsule 1 2 1 2 0.5 }",
+     "t.scene:1:26: expected capsule ends at least 1e-09 of the radius apart (circle R for a "
+     "circle), found them 0 m apart with radius 0.5 m"},
+    {"body a { circle 1; centred }",
+     "t.scene:1:10: expected centred with a vertices shape, found it with a circle"},
+    {"body a { circle 1; box 1 1 }",
+     "t.scene:1:20: expected one shape (regular, box, vertices, circle or capsule) per body, found "
+     "a second (the first at line 1)"},
     {"body a { box 1 1; elasticity -0.5 }",
      "t.scene:1:30: expected the elasticity, a number >= 0 and <= 1e+09, found \"-0.5\""},
     {"body a { box 1 1; color 2 0 0 }",
@@ -726,18 +847,18 @@ static const bad_file_t BAD_FILES[] = {
     {"body a { box 1 1; position 30deg 0 }",
      "t.scene:1:28: expected a coordinate (m), a number, found \"30deg\""},
     {"body a { box 1 1; box 2 2 }",
-     "t.scene:1:19: expected one shape (regular, box or vertices) per body, found a second (the "
-     "first at line 1)"},
+     "t.scene:1:19: expected one shape (regular, box, vertices, circle or capsule) per body, found "
+     "a second (the first at line 1)"},
     {"body a { box 1 1; static\n mass 2 }",
      "t.scene:2:2: expected one mass, density or static per body, found a second (the first at "
      "line 1)"},
-    {"body a { mass 1 }", "t.scene:1:17: expected a shape (regular, box or vertices) in the body, "
-                          "found '}' without one"},
+    {"body a { mass 1 }", "t.scene:1:17: expected a shape (regular, box, vertices, circle or "
+                          "capsule) in the body, found '}' without one"},
     {"body a {\n box 1 1\n",
      "t.scene:3:1: expected '}' to close the block opened at line 1, found the end of the file"},
     {"body a { colour 1 1 1 }",
-     "t.scene:1:10: expected a body property (regular, box, vertices, mass, density, static, "
-     "elasticity, friction, color, position, angle, velocity, spin, tag, group, filter, centred, "
+     "t.scene:1:10: expected a body property (regular, box, vertices, circle, capsule, mass, "
+     "density, static, elasticity, friction, color, position, angle, velocity, spin, tag, group, filter, centred, "
      "asleep, sleep_timer, repeat) or '}', found \"colour\""},
     {"body a { box 1 1 }\nbody a { box 1 1 }",
      "t.scene:2:6: expected a new name, found \"a\", already the name of a body (line 1)"},
@@ -1026,7 +1147,8 @@ static void fuzz_corpus_replays_cleanly(void) {
 TEST_SUITE(scene_file, TEST_CASE(settings_reach_the_scene),
            TEST_CASE(solver_settings_are_read_written_and_kept),
            TEST_CASE(every_integrator_name_is_read_and_written),
-           TEST_CASE(shapes_are_regular_boxes_or_vertices), TEST_CASE(mass_density_or_static),
+           TEST_CASE(shapes_are_regular_boxes_or_vertices),
+           TEST_CASE(circles_and_capsules_are_round_bodies), TEST_CASE(mass_density_or_static),
            TEST_CASE(pose_motion_and_material_reach_the_body), TEST_CASE(filters_keep_bodies_apart),
            TEST_CASE(repeat_makes_a_group_of_copies), TEST_CASE(forces_and_rules_make_their_pairs),
            TEST_CASE(springs_may_have_a_rest_length),
@@ -1038,6 +1160,7 @@ TEST_SUITE(scene_file, TEST_CASE(settings_reach_the_scene),
            TEST_CASE(category_and_note_are_kept),
            TEST_CASE(settings_changed_live_are_written),
            TEST_CASE(written_scenes_load_back_the_same),
+           TEST_CASE(round_bodies_saved_mid_run_continue_bit_for_bit),
            TEST_CASE(a_running_scene_is_written_as_it_is_now),
            TEST_CASE(step_lengths_and_previous_points_reach_the_world),
            TEST_CASE(save_and_load_through_a_path),

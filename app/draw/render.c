@@ -8,6 +8,7 @@
 #include "draw/focus.h"
 #include "tools/tools.h"
 #include "draw/raster.h"
+#include "draw/round_outline.h"
 
 #define MAX_VERTICES BATCH_MAX_POLYGON
 #define IMPULSE_MAX_PIXELS 200.0
@@ -54,7 +55,44 @@ void render_free(void) {
     raster_free();
 }
 
-/* Every body in view, fill and outline, in one batch: each body's polygon
+/* A body's outline in pixels (room for BATCH_MAX_POLYGON): a polygon's own
+ * vertices; a circle's or capsule's true boundary (round_outline). For a
+ * round body, also the radius line that shows its rotation: from the centre
+ * of a circle, or of a capsule's second end, to the rim along the body's
+ * angle (a capsule's: along its core). Returns the vertex count. */
+static int body_pixels(const camera_t *camera, body_t *body, vector_t *pixels,
+                       vector_t line[2]) {
+    body_shape_kind_t kind = body_get_shape_kind(body);
+    if (kind == BODY_SHAPE_POLYGON) {
+        polygon_t polygon = body_get_polygon(body);
+        int n = polygon.count < BATCH_MAX_POLYGON ? (int)polygon.count : BATCH_MAX_POLYGON;
+        for (int k = 0; k < n; k++) pixels[k] = camera_to_pixel(camera, polygon.vertices[k]);
+        return n;
+    }
+    vector_t p1, p2;
+    body_get_core(body, &p1, &p2);
+    double r = camera_length_to_pixels(camera, body_get_round_radius(body));
+    vector_t c1 = camera_to_pixel(camera, p1), c2 = camera_to_pixel(camera, p2);
+    double angle = body_get_rotation(body);
+    if (kind == BODY_SHAPE_CAPSULE) angle = atan2(p2.y - p1.y, p2.x - p1.x);
+    line[0] = c2;
+    line[1] = round_rim_point(c2, r, angle);
+    return round_outline(c1, c2, r, pixels);
+}
+
+/* A one-and-a-half-pixel line from a to b as a thin quad (nothing when
+ * shorter than a pixel). */
+static void batch_line(batch_t *batch, vector_t a, vector_t b, palette_rgb_t color) {
+    vector_t d = vec_subtract(b, a);
+    double length = vec_get_length(d);
+    if (!(length >= 1.0)) return;
+    vector_t side = vec_multiply(0.75 / length, vec_perpendicular(d));
+    vector_t quad[4] = {vec_add(a, side), vec_add(b, side), vec_subtract(b, side),
+                        vec_subtract(a, side)};
+    batch_polygon(batch, quad, 4, color, 255);
+}
+
+/* Every body in view, fill and outline, in one batch: each body's outline
  * is read and taken to pixels once. */
 static void draw_bodies(SDL_Renderer *renderer, SDL_Surface *canvas, app_t *app,
                         body_t *hovered) {
@@ -66,9 +104,8 @@ static void draw_bodies(SDL_Renderer *renderer, SDL_Surface *canvas, app_t *app,
     for (size_t i = 0; i < scene_bodies(scene); i++) {
         body_t *body = scene_get_body(scene, i);
         if (body_is_removed(body)) continue;
-        polygon_t polygon = body_get_polygon(body);
-        int n = polygon.count < BATCH_MAX_POLYGON ? (int)polygon.count : BATCH_MAX_POLYGON;
-        for (int k = 0; k < n; k++) pixels[k] = camera_to_pixel(camera, polygon.vertices[k]);
+        vector_t line[2] = {VEC_ZERO, VEC_ZERO};
+        int n = body_pixels(camera, body, pixels, line);
         if (!batch_polygon_visible(pixels, n, camera->width, camera->height)) continue;
         palette_rgb_t fill = rgb_of(body_get_color(body));
         if (dim_sleeping && body_is_sleeping(body)) fill = palette_sleeping(fill);
@@ -76,6 +113,7 @@ static void draw_bodies(SDL_Renderer *renderer, SDL_Surface *canvas, app_t *app,
                                 : body == app->sandbox.inspected ? PALETTE_ACCENT
                                                                  : lighter(fill, 0.45);
         batch_outlined(&body_batch, pixels, n, fill, outline);
+        batch_line(&body_batch, line[0], line[1], outline);
     }
     raster_begin(renderer, canvas);
     raster_batch(&body_batch);

@@ -13,6 +13,10 @@ static const double DEFAULT_FRICTION = 0.6; /* the engine's default (body.h) */
 static const double DEFAULT_DENSITY = 1.0;  /* kg/m^2 */
 static const rgb_color_t STATIC_COLOR = {0.5, 0.5, 0.5};
 static const rgb_color_t MOVING_COLOR = {0.85, 0.55, 0.25};
+/* The engine's outline of a round body (body.h), counted against the limits
+ * on vertices since the engine keeps it. */
+enum { CIRCLE_OUTLINE = 32, CAPSULE_OUTLINE = 34 };
+static const double SHORTEST_CAPSULE = 1e-9; /* share of the radius (body.h) */
 
 /* ---- Bodies --------------------------------------------------------------- */
 
@@ -82,11 +86,48 @@ static bool read_vertices(parser_t *p, sf_shape_t *shape) {
     return true;
 }
 
+/* `capsule X1 Y1 X2 Y2 R`: two different end centres and the radius. */
+static bool read_capsule(parser_t *p, sf_shape_t *shape) {
+    static const char *const names[4] = {"the x of the first end (m)", "the y of the first end (m)",
+                                         "the x of the second end (m)",
+                                         "the y of the second end (m)"};
+    double *values[4] = {&shape->ends[0].x, &shape->ends[0].y, &shape->ends[1].x,
+                         &shape->ends[1].y};
+    for (size_t i = 0; i < 4; i++) {
+        quantity_t q = COORDINATE;
+        q.what = names[i];
+        if (!sf_read_quantity(p, &q, values[i])) return false;
+    }
+    sf_where_t radius_where = p->token.where;
+    if (!sf_read_quantity(p, &RADIUS, &shape->radius)) return false;
+    double length = vec_get_length(vec_subtract(shape->ends[1], shape->ends[0]));
+    if (!(length >= SHORTEST_CAPSULE * shape->radius)) {
+        /* The engine makes equal ends a circle and refuses ends nearly
+         * equal; a file says circle for a circle. */
+        return sf_fail(p->lexer, radius_where,
+                       "expected capsule ends at least %g of the radius apart (circle R for a "
+                       "circle), found them %g m apart with radius %g m",
+                       SHORTEST_CAPSULE, length, shape->radius);
+    }
+    return true;
+}
+
 static bool parse_shape(parser_t *p, const char *keyword, sf_body_t *body, seen_t *seen,
                         sf_where_t here) {
-    if (!once(p, &seen->shape, "shape (regular, box or vertices)", here)) return false;
+    if (!once(p, &seen->shape, "shape (regular, box, vertices, circle or capsule)", here))
+        return false;
     sf_shape_t *shape = &body->shape;
     shape->where = here;
+    if (strcmp(keyword, "circle") == 0) {
+        shape->kind = SHAPE_CIRCLE;
+        shape->count = CIRCLE_OUTLINE;
+        return sf_read_quantity(p, &RADIUS, &shape->radius);
+    }
+    if (strcmp(keyword, "capsule") == 0) {
+        shape->kind = SHAPE_CAPSULE;
+        shape->count = CAPSULE_OUTLINE;
+        return read_capsule(p, shape);
+    }
     if (strcmp(keyword, "regular") == 0) {
         uint64_t sides = 0;
         shape->kind = SHAPE_REGULAR;
@@ -115,7 +156,8 @@ static bool parse_property(parser_t *p, sf_body_t *body, seen_t *seen) {
     if (p->token.length < sizeof keyword) memcpy(keyword, p->token.text, p->token.length);
     keyword[p->token.length < sizeof keyword ? p->token.length : 0] = '\0';
     if (strcmp(keyword, "regular") == 0 || strcmp(keyword, "box") == 0 ||
-        strcmp(keyword, "vertices") == 0) {
+        strcmp(keyword, "vertices") == 0 || strcmp(keyword, "circle") == 0 ||
+        strcmp(keyword, "capsule") == 0) {
         next(p);
         return parse_shape(p, keyword, body, seen, here);
     }
@@ -230,7 +272,7 @@ static bool parse_property(parser_t *p, sf_body_t *body, seen_t *seen) {
         body->repeat_y = (size_t)y;
         return sf_read_vector(p, &OFFSET, &body->repeat_step);
     }
-    return sf_expected(p, "a body property (regular, box, vertices, mass, density, static, "
+    return sf_expected(p, "a body property (regular, box, vertices, circle, capsule, mass, density, static, "
                           "elasticity, friction, color, position, angle, velocity, spin, tag, "
                           "group, filter, centred, asleep, sleep_timer, repeat) or '}'");
 }
@@ -268,11 +310,43 @@ static bool centred_enough(list_t *list, vector_t centroid) {
     return vec_get_length(centroid) <= 1e-3 * radius;
 }
 
+/* A capsule's (or, with length 0, a disc's) moment of inertia per kilogram
+ * about its centroid: the rectangle's (L^2 + 4 r^2) / 12 and the two
+ * half-discs' (r^2 / 2 about the end centre, less the shift of their
+ * centroids 4 r / (3 pi), plus the shift to the capsule's centroid), each
+ * weighted by its share of the area. */
+static double round_moment_per_kg(double length, double r) {
+    double rectangle = 2.0 * r * length, discs = M_PI * r * r;
+    double off = 0.5 * length + 4.0 * r / (3.0 * M_PI);
+    double disc_own = 0.5 * r * r - (4.0 * r / (3.0 * M_PI)) * (4.0 * r / (3.0 * M_PI));
+    double rectangle_moment = (length * length + 4.0 * r * r) / 12.0;
+    return (rectangle * rectangle_moment + discs * (disc_own + off * off)) / (rectangle + discs);
+}
+
+/* A circle or capsule: exact area and moment; the centroid where the engine
+ * puts it (the centre, or the first end plus half the core). */
+static void derive_round(sf_shape_t *shape) {
+    double r = shape->radius;
+    double length = 0.0;
+    shape->centroid = VEC_ZERO;
+    if (shape->kind == SHAPE_CAPSULE) {
+        vector_t d = vec_subtract(shape->ends[1], shape->ends[0]);
+        length = vec_get_length(d);
+        shape->centroid = vec_add(shape->ends[0], vec_multiply(0.5, d));
+    }
+    shape->area = M_PI * r * r + 2.0 * r * length;
+    shape->moment_per_kg = round_moment_per_kg(length, r);
+}
+
 /* Checks the shape as the engine will see it and derives what the body needs.
  * The engine gets the vertices relative to their centroid, so that is the
  * list polygon_check judges (centring rounds, so checking the written list
  * alone would not be enough). */
 static bool derive_shape(parser_t *p, sf_shape_t *shape) {
+    if (shape->kind == SHAPE_CIRCLE || shape->kind == SHAPE_CAPSULE) {
+        derive_round(shape);
+        return true;
+    }
     list_t *list = shape_list(shape);
     const char *problem = polygon_check(list);
     if (problem == NULL && shape->kind == SHAPE_VERTICES && !polygon_is_counterclockwise(list)) {
@@ -393,14 +467,17 @@ static bool finish_body(parser_t *p, sf_body_t *body, const seen_t *seen, sf_whe
     sf_doc_t *doc = p->doc;
     if (body->shape.kind == SHAPE_NONE) {
         return sf_fail(p->lexer, close_where,
-                       "expected a shape (regular, box or vertices) in the %s, found '}' without "
+                       "expected a shape (regular, box, vertices, circle or capsule) in the %s, found '}' without "
                        "one",
                        body->is_template ? "template" : "body");
     }
     if (body->shape.as_centred && body->shape.kind != SHAPE_VERTICES) {
         return sf_fail(p->lexer, body->shape.where,
                        "expected centred with a vertices shape, found it with %s",
-                       body->shape.kind == SHAPE_BOX ? "a box" : "a regular polygon");
+                       body->shape.kind == SHAPE_BOX       ? "a box"
+                       : body->shape.kind == SHAPE_CIRCLE  ? "a circle"
+                       : body->shape.kind == SHAPE_CAPSULE ? "a capsule"
+                                                           : "a regular polygon");
     }
     if (!derive_shape(p, &body->shape)) return false;
     if (!derive_mass(p, body, seen->mass.line != 0 ? seen->mass : body->shape.where)) return false;

@@ -75,6 +75,31 @@ static bool spec_in_group(const sf_body_t *spec, size_t group) {
     return false;
 }
 
+/* A body of the spec's shape and mass, wherever the engine puts it: a
+ * capsule from its ends as written, so that the same description makes the
+ * same body to the bit. */
+static body_t *make_shape(const sf_body_t *spec, sf_record_t *record) {
+    const sf_shape_t *s = &spec->shape;
+    if (s->kind == SHAPE_CIRCLE) {
+        return body_init_circle_with_info(VEC_ZERO, s->radius, spec->mass, spec->color, record,
+                                          record_freed);
+    }
+    if (s->kind == SHAPE_CAPSULE) {
+        return body_init_capsule_with_info(s->ends[0], s->ends[1], s->radius, spec->mass,
+                                           spec->color, record, record_freed);
+    }
+    list_t *shape = list_init(s->count, free);
+    for (size_t i = 0; i < s->count; i++) {
+        vector_t *v = malloc(sizeof *v);
+        if (v == NULL) abort();
+        *v = s->centred[i];
+        list_add(shape, v);
+    }
+    return s->as_centred
+               ? body_init_centred(shape, spec->mass, spec->color, record, record_freed)
+               : body_init_with_info(shape, spec->mass, spec->color, record, record_freed);
+}
+
 /* Makes a body of spec with its centroid at position and adds it to the
  * scene; every value was checked by the parser (or by spawn). */
 static sf_record_t *make_body(scene_file_t *file, size_t spec_index, vector_t position,
@@ -88,16 +113,7 @@ static sf_record_t *make_body(scene_file_t *file, size_t spec_index, vector_t po
     record->spec = spec_index;
     record->index = file->record_count;
 
-    list_t *shape = list_init(spec->shape.count, free);
-    for (size_t i = 0; i < spec->shape.count; i++) {
-        vector_t *v = malloc(sizeof *v);
-        if (v == NULL) abort();
-        *v = spec->shape.centred[i];
-        list_add(shape, v);
-    }
-    body_t *body = spec->shape.as_centred
-                       ? body_init_centred(shape, spec->mass, spec->color, record, record_freed)
-                       : body_init_with_info(shape, spec->mass, spec->color, record, record_freed);
+    body_t *body = make_shape(spec, record);
     body_set_centroid(body, position);
     body_set_rotation(body, spec->angle);
     body_set_velocity(body, velocity);
@@ -315,8 +331,23 @@ static int compare_contact_pairs(const void *p, const void *q) {
     return a->where.line < b->where.line ? -1 : a->where.line > b->where.line;
 }
 
+/* Whether the file's body number `index` (in the order the file makes
+ * them) is a circle or a capsule; false past the last. */
+static bool is_round(const sf_doc_t *doc, size_t index) {
+    for (size_t i = 0; i < doc->body_count; i++) {
+        const sf_body_t *spec = &doc->bodies[i];
+        if (spec->is_template) continue;
+        size_t copies = spec->repeat_x * spec->repeat_y;
+        if (index < copies) {
+            return spec->shape.kind == SHAPE_CIRCLE || spec->shape.kind == SHAPE_CAPSULE;
+        }
+        index -= copies;
+    }
+    return false;
+}
+
 /* The contact blocks name two different bodies the file makes, once per
- * pair, with unit normals. */
+ * pair, with unit normals (a round pair's face normal may be zero). */
 static bool check_contacts(const sf_doc_t *doc, sf_lexer_t *lexer) {
     for (size_t i = 0; i < doc->contact_count; i++) {
         const sf_contact_t *c = &doc->contacts[i];
@@ -331,7 +362,12 @@ static bool check_contacts(const sf_doc_t *doc, sf_lexer_t *lexer) {
             return sf_fail(lexer, c->where, "expected two different bodies, found %zu twice",
                            c->body_a);
         }
-        if (!is_unit(c->memory.normal) || !is_unit(c->memory.face_normal)) {
+        /* A round pair keeps no face (its manifold is found again each
+         * step): its face normal is zero. */
+        bool round = is_round(doc, c->body_a) || is_round(doc, c->body_b);
+        bool face_ok = is_unit(c->memory.face_normal) ||
+                       (round && c->memory.face_normal.x == 0.0 && c->memory.face_normal.y == 0.0);
+        if (!is_unit(c->memory.normal) || !face_ok) {
             return sf_fail(lexer, c->where,
                            "expected unit vectors for the normal and the face's normal, found "
                            "lengths %g and %g",

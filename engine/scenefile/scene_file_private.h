@@ -95,20 +95,30 @@ bool sf_is_name(const sf_token_t *token);
 
 /* ---- Description ---------------------------------------------------------- */
 
-typedef enum { SHAPE_NONE = 0, SHAPE_REGULAR, SHAPE_BOX, SHAPE_VERTICES } sf_shape_kind_t;
+typedef enum {
+    SHAPE_NONE = 0,
+    SHAPE_REGULAR,
+    SHAPE_BOX,
+    SHAPE_VERTICES,
+    SHAPE_CIRCLE,
+    SHAPE_CAPSULE
+} sf_shape_kind_t;
 
 typedef struct {
     sf_shape_kind_t kind;
     sf_where_t where;
     size_t sides;         /* SHAPE_REGULAR */
-    double radius;        /* SHAPE_REGULAR: circumradius */
+    double radius;        /* SHAPE_REGULAR: circumradius; SHAPE_CIRCLE, SHAPE_CAPSULE: radius */
+    vector_t ends[2];     /* SHAPE_CAPSULE: the end centres as written */
     double width, height; /* SHAPE_BOX: full sizes */
     vector_t *written;    /* SHAPE_VERTICES: as written, made counter-clockwise */
     bool as_centred;      /* SHAPE_VERTICES: written relative to the centroid, kept exactly */
-    size_t count;         /* vertices */
+    size_t count;         /* vertices (of the engine's outline for a round shape) */
     /* Derived once the shape is checked: */
-    vector_t *centred;    /* the vertices relative to the area centroid, counter-clockwise */
-    vector_t centroid;    /* where that centroid lies as written (origin for regular, box) */
+    vector_t *centred;    /* the vertices relative to the area centroid, counter-clockwise
+                             (NULL for a round shape) */
+    vector_t centroid;    /* where that centroid lies as written (origin for regular, box,
+                             circle; the ends' midpoint for a capsule) */
     double area;          /* m^2, > 0 */
     double moment_per_kg; /* moment of inertia of 1 kg of it, kg m^2 / kg */
 } sf_shape_t;

@@ -139,6 +139,16 @@ static void put_shape(out_t *out, const sf_shape_t *shape) {
         put_number(out, shape->width);
         put_number(out, shape->height);
         break;
+    case SHAPE_CIRCLE:
+        put(out, "    circle");
+        put_number(out, shape->radius);
+        break;
+    case SHAPE_CAPSULE:
+        put(out, "    capsule");
+        put_vector(out, shape->ends[0]);
+        put_vector(out, shape->ends[1]);
+        put_number(out, shape->radius);
+        break;
     default:
         put(out, "    vertices");
         for (size_t i = 0; i < shape->count; i++) put_vector(out, shape->written[i]);
@@ -294,13 +304,41 @@ static void put_record(out_t *out, const sf_doc_t *doc, const sf_record_t *recor
     put(out, "}\n");
 }
 
-/* A body the file did not make: its vertices in its own frame, taken as
- * they are (centred), so that it comes back the same to the bit. */
-static void put_foreign(out_t *out, body_t *body, size_t island) {
-    put(out, "\nbody {\n    vertices");
+/* The shape of a body the file did not make, in its own frame. A circle is
+ * exact; a capsule's ends are its world core turned back by its angle, the
+ * same to rounding. */
+static void put_foreign_shape(out_t *out, body_t *body) {
+    body_shape_kind_t kind = body_get_shape_kind(body);
+    if (kind == BODY_SHAPE_CIRCLE) {
+        put(out, "    circle");
+        put_number(out, body_get_round_radius(body));
+        put(out, "\n");
+        return;
+    }
+    if (kind == BODY_SHAPE_CAPSULE) {
+        vector_t ends[2];
+        body_get_core(body, &ends[0], &ends[1]);
+        vector_t centroid = body_get_centroid(body);
+        double angle = body_get_rotation(body);
+        put(out, "    capsule");
+        for (size_t i = 0; i < 2; i++) {
+            put_vector(out, vec_rotate(vec_subtract(ends[i], centroid), -angle));
+        }
+        put_number(out, body_get_round_radius(body));
+        put(out, "\n");
+        return;
+    }
+    put(out, "    vertices");
     polygon_t polygon = body_get_local_polygon(body);
     for (size_t i = 0; i < polygon.count; i++) put_vector(out, polygon.vertices[i]);
     put(out, "\n    centred\n");
+}
+
+/* A body the file did not make: its vertices in its own frame, taken as
+ * they are (centred), so that it comes back the same to the bit. */
+static void put_foreign(out_t *out, body_t *body, size_t island) {
+    put(out, "\nbody {\n");
+    put_foreign_shape(out, body);
     double mass = body_get_mass(body);
     put_mass(out, isinf(mass) ? MASS_STATIC : MASS_TOTAL, mass);
     state_t state = live_state(body);
