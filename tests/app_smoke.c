@@ -332,6 +332,8 @@ static void test_status_lines_confirm_changes(void) {
         {"key s", "one step of 0.008333 s (paused)"},
         {"key ]", "time x1.0"},
         {"key b", "shape: box"},
+        {"key 1", "shape: circle"},
+        {"key tab", "shape: capsule"},
         {"key e", "E: no body under the cursor"},
     };
     const size_t count = sizeof steps / sizeof steps[0];

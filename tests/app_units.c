@@ -794,6 +794,55 @@ static void test_default_scene_is_a_scene_file(void) {
            "docs/sandbox-reference.md does not show SANDBOX_DEFAULT_SCENE word for word");
 }
 
+/* The SHAPE panel's round shapes drop as round bodies: a circle of radius
+ * size and a flat capsule 2 sizes long and 1 high, of density 1 kg/m^2,
+ * their centroid where placed; placed on the floor by their exact extent. */
+static void test_round_shapes_drop_round(void) {
+    static sandbox_t sandbox;
+    sandbox_init(&sandbox, 1);
+    const char *problem = NULL;
+    shape_choice_t circle = {SHAPE_CIRCLE, 0, 0.5};
+    EXPECT(strcmp(sandbox_shape_name(circle), "circle") == 0, "the circle is named \"%s\"",
+           sandbox_shape_name(circle));
+    list_t *outline = sandbox_make_shape(&sandbox, circle, &problem);
+    EXPECT(outline != NULL, "no circle: %s", problem != NULL ? problem : "?");
+    vector_t placed = VEC_ZERO;
+    const char *why = outline != NULL
+                          ? sandbox_place(&sandbox, outline, (vector_t){0.0, 0.1}, &placed)
+                          : "no outline";
+    EXPECT(why == NULL && fabs(placed.y - 0.5) < 1e-12, "a circle on the floor goes to y = %g",
+           placed.y);
+    body_t *ball = outline != NULL ? sandbox_drop_shape(&sandbox, circle, outline, placed,
+                                                        (vector_t){1.0, 0.0}, 0.5, &problem)
+                                   : NULL;
+    EXPECT(ball != NULL && body_get_shape_kind(ball) == BODY_SHAPE_CIRCLE &&
+               body_get_round_radius(ball) == 0.5 &&
+               fabs(body_get_mass(ball) - M_PI * 0.25) < 1e-12 &&
+               body_get_centroid(ball).x == placed.x && body_get_centroid(ball).y == placed.y &&
+               body_get_velocity(ball).x == 1.0 && body_get_elasticity(ball) == 0.5,
+           "the dropped circle: %s", problem != NULL ? problem : "wrong kind, size or pose");
+    shape_choice_t capsule = {SHAPE_CAPSULE, 0, 1.0};
+    EXPECT(strcmp(sandbox_shape_name(capsule), "capsule") == 0, "the capsule is named \"%s\"",
+           sandbox_shape_name(capsule));
+    outline = sandbox_make_shape(&sandbox, capsule, &problem);
+    body_t *pill = outline != NULL ? sandbox_drop_shape(&sandbox, capsule, outline,
+                                                        (vector_t){5.0, 5.0}, VEC_ZERO, 0.0,
+                                                        &problem)
+                                   : NULL;
+    EXPECT(pill != NULL && body_get_shape_kind(pill) == BODY_SHAPE_CAPSULE &&
+               body_get_round_radius(pill) == 0.5 &&
+               fabs(body_get_mass(pill) - (M_PI * 0.25 + 1.0)) < 1e-12,
+           "the dropped capsule: %s", problem != NULL ? problem : "wrong kind, size or mass");
+    if (pill != NULL) {
+        aabb_t box = body_get_bounds(pill);
+        EXPECT(fabs(box.min.x - 4.0) < 1e-9 && fabs(box.max.x - 6.0) < 1e-9 &&
+                   fabs(box.min.y - 4.5) < 1e-9 && fabs(box.max.y - 5.5) < 1e-9,
+               "the capsule spans (%g, %g) to (%g, %g)", box.min.x, box.min.y, box.max.x,
+               box.max.y);
+    }
+    sandbox_free(&sandbox);
+}
+
 /* Every sample opens: its view, timestep and integrator are the file's, its
  * game starts; a refused file leaves the open scene as it was; R reads the
  * file again, keeping the integrator the user chose. */
@@ -1218,6 +1267,7 @@ static const app_test_t TESTS[] = {
     {"app_units.plot_columns_hold_low_and_high", test_plot_columns_hold_low_and_high},
     {"app_units.scene_panel_words", test_scene_panel_words},
     {"app_units.default_scene_is_a_scene_file", test_default_scene_is_a_scene_file},
+    {"app_units.round_shapes_drop_round", test_round_shapes_drop_round},
     {"app_units.scene_files_open_and_refusals_keep_the_scene",
      test_scene_files_open_and_refusals_keep_the_scene},
     {"app_units.grabbed_body_destroyed_is_let_go", test_grabbed_body_destroyed_is_let_go},

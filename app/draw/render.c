@@ -173,6 +173,27 @@ static void draw_throw(SDL_Renderer *renderer, vector_t from, vector_t velocity)
               "%.1f m/s", speed);
 }
 
+/* The next shape's outline in pixels with its centroid at `at` (room for
+ * MAX_VERTICES): a round one's true boundary, a polygon's vertices. */
+static int preview_pixels(const app_t *app, vector_t at, vector_t *pixels) {
+    const camera_t *camera = &app->camera;
+    vector_t p1, p2;
+    double radius;
+    if (sandbox_shape_core(app->shape, &p1, &p2, &radius)) {
+        return round_outline(camera_to_pixel(camera, vec_add(at, p1)),
+                             camera_to_pixel(camera, vec_add(at, p2)),
+                             camera_length_to_pixels(camera, radius), pixels);
+    }
+    size_t n = list_size(app->next_vertices);
+    if (n > MAX_VERTICES) n = MAX_VERTICES;
+    vector_t centroid = polygon_centroid(app->next_vertices);
+    for (size_t i = 0; i < n; i++) {
+        vector_t v = *(vector_t *)list_get(app->next_vertices, i);
+        pixels[i] = camera_to_pixel(camera, vec_add(at, vec_subtract(v, centroid)));
+    }
+    return (int)n;
+}
+
 /* The shape the next click drops, translucent, where it would go (moved
  * clear of the floor and walls); a red outline where a drop is refused.
  * None in a game. */
@@ -185,15 +206,12 @@ static void draw_preview(SDL_Renderer *renderer, app_t *app) {
     vector_t at;
     bool refused = sandbox_place(&app->sandbox, app->next_vertices,
                                  camera_to_world(&app->camera, app->mouse), &at) != NULL;
-    size_t n = list_size(app->next_vertices);
-    if (n > MAX_VERTICES) n = MAX_VERTICES;
+    vector_t pixels[MAX_VERTICES];
+    int n = preview_pixels(app, at, pixels);
     Sint16 xs[MAX_VERTICES], ys[MAX_VERTICES];
-    vector_t centroid = polygon_centroid(app->next_vertices);
-    for (size_t i = 0; i < n; i++) {
-        vector_t v = *(vector_t *)list_get(app->next_vertices, i);
-        vector_t p = camera_to_pixel(&app->camera, vec_add(at, vec_subtract(v, centroid)));
-        xs[i] = draw_coord(p.x);
-        ys[i] = draw_coord(p.y);
+    for (int i = 0; i < n; i++) {
+        xs[i] = draw_coord(pixels[i].x);
+        ys[i] = draw_coord(pixels[i].y);
     }
     if (refused) {
         polygonRGBA(renderer, xs, ys, (int)n, PALETTE_WARNING.r, PALETTE_WARNING.g,

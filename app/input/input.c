@@ -18,6 +18,7 @@ const input_control_t INPUT_CONTROLS[] = {
     {"Right drag elsewhere, middle drag", "pan the view"},
     {"Ctrl + left click, D, Del, Backspace", "delete the body under the cursor"},
     {"3 4 5 6 7 8", "regular polygon with 3 to 8 sides"},
+    {"1 / 2", "circle / capsule"},
     {"B / P / Tab", "box / random convex polygon / next shape"},
     {"Mouse wheel", "shape size (over the slider: elasticity)"},
     {"Up / Down, slider", "elasticity of new bodies +/- 0.05"},
@@ -81,8 +82,9 @@ static void drop_at(app_t *app, vector_t at, vector_t velocity) {
         return;
     }
     const char *problem = NULL;
-    body_t *body = sandbox_drop(&app->sandbox, sandbox_copy_vertices(app->next_vertices), placed,
-                                velocity, app->elasticity, &problem);
+    body_t *body = sandbox_drop_shape(&app->sandbox, app->shape,
+                                      sandbox_copy_vertices(app->next_vertices), placed, velocity,
+                                      app->elasticity, &problem);
     if (body == NULL) {
         app_status(app, "cannot drop: %s", problem);
         return;
@@ -104,6 +106,10 @@ static void next_shape(app_t *app) {
         set_shape(app, SHAPE_BOX, 0);
     } else if (app->shape.kind == SHAPE_BOX) {
         set_shape(app, SHAPE_RANDOM, 0);
+    } else if (app->shape.kind == SHAPE_RANDOM) {
+        set_shape(app, SHAPE_CIRCLE, 0);
+    } else if (app->shape.kind == SHAPE_CIRCLE) {
+        set_shape(app, SHAPE_CAPSULE, 0);
     } else {
         set_shape(app, SHAPE_REGULAR, 3);
     }
@@ -302,6 +308,12 @@ static void on_key(app_t *app, const SDL_KeyboardEvent *key) {
         break;
     case SDLK_p:
         set_shape(app, SHAPE_RANDOM, 0);
+        break;
+    case SDLK_1:
+        set_shape(app, SHAPE_CIRCLE, 0);
+        break;
+    case SDLK_2:
+        set_shape(app, SHAPE_CAPSULE, 0);
         break;
     case SDLK_TAB:
         next_shape(app);

@@ -262,6 +262,42 @@ static list_t *random_polygon(sandbox_t *sandbox, double size) {
     return shape;
 }
 
+bool sandbox_shape_core(shape_choice_t shape, vector_t *p1, vector_t *p2, double *radius) {
+    if (shape.kind == SHAPE_CIRCLE) {
+        *p1 = *p2 = VEC_ZERO;
+        *radius = shape.size;
+        return true;
+    }
+    if (shape.kind == SHAPE_CAPSULE) {
+        *p1 = (vector_t){-0.5 * shape.size, 0.0};
+        *p2 = (vector_t){0.5 * shape.size, 0.0};
+        *radius = 0.5 * shape.size;
+        return true;
+    }
+    return false;
+}
+
+/* Points on a round shape's boundary, counter-clockwise: a half circle
+ * round each end (one full circle when the ends are equal), quarter turns
+ * among them so that the bounding box is exact. */
+static list_t *round_shape_outline(vector_t p1, vector_t p2, double radius) {
+    enum { HALF = 16 };
+    bool circle = p1.x == p2.x && p1.y == p2.y;
+    list_t *vertices = list_init(2 * HALF + 2, free);
+    for (int end = 0; end < 2; end++) {
+        vector_t centre = end == 0 ? p2 : p1;
+        int count = circle ? 2 * HALF : HALF + 1;
+        for (int k = 0; k < count; k++) {
+            double angle = M_PI * (end - 0.5) + M_PI * k / HALF;
+            vector_t *v = malloc(sizeof(vector_t));
+            *v = vec_add(centre, (vector_t){radius * cos(angle), radius * sin(angle)});
+            list_add(vertices, v);
+        }
+        if (circle) break;
+    }
+    return vertices;
+}
+
 list_t *sandbox_make_shape(sandbox_t *sandbox, shape_choice_t shape, const char **problem) {
     *problem = NULL;
     if (!(shape.size >= SHAPE_MIN_SIZE && shape.size <= SHAPE_MAX_SIZE)) {
@@ -285,6 +321,14 @@ list_t *sandbox_make_shape(sandbox_t *sandbox, shape_choice_t shape, const char 
     case SHAPE_RANDOM:
         vertices = random_polygon(sandbox, shape.size);
         break;
+    case SHAPE_CIRCLE:
+    case SHAPE_CAPSULE: {
+        vector_t p1, p2;
+        double radius;
+        sandbox_shape_core(shape, &p1, &p2, &radius);
+        vertices = round_shape_outline(p1, p2, radius);
+        break;
+    }
     }
     if (vertices == NULL) {
         *problem = "unknown shape";
@@ -385,6 +429,17 @@ list_t *sandbox_copy_vertices(list_t *vertices) {
     return copy;
 }
 
+/* Puts a new body's centroid at `at`, sets it moving and adds it. */
+static body_t *add_dropped(sandbox_t *sandbox, body_t *body, vector_t at, vector_t velocity,
+                           double elasticity) {
+    body_set_centroid(body, at);
+    body_set_velocity(body, velocity);
+    body_set_elasticity(body, fmax(0.0, elasticity));
+    scene_add_body(sandbox->scene, body);
+    sandbox->changes++;
+    return body;
+}
+
 body_t *sandbox_drop(sandbox_t *sandbox, list_t *vertices, vector_t at, vector_t velocity,
                      double elasticity, const char **problem) {
     *problem = NULL;
@@ -399,13 +454,36 @@ body_t *sandbox_drop(sandbox_t *sandbox, list_t *vertices, vector_t at, vector_t
     }
     double mass = SANDBOX_DENSITY * fabs(polygon_area(vertices));
     palette_rgb_t color = PALETTE_BODIES[sandbox->next_color++ % PALETTE_BODY_COUNT];
-    body_t *body = body_init(vertices, mass, color_of(color));
-    body_set_centroid(body, at);
-    body_set_velocity(body, velocity);
-    body_set_elasticity(body, fmax(0.0, elasticity));
-    scene_add_body(sandbox->scene, body);
-    sandbox->changes++;
-    return body;
+    return add_dropped(sandbox, body_init(vertices, mass, color_of(color)), at, velocity,
+                       elasticity);
+}
+
+body_t *sandbox_drop_shape(sandbox_t *sandbox, shape_choice_t shape, list_t *vertices,
+                           vector_t at, vector_t velocity, double elasticity,
+                           const char **problem) {
+    vector_t p1, p2;
+    double radius;
+    if (!sandbox_shape_core(shape, &p1, &p2, &radius)) {
+        return sandbox_drop(sandbox, vertices, at, velocity, elasticity, problem);
+    }
+    list_free(vertices);
+    *problem = NULL;
+    if (!vec_is_finite(at) || !vec_is_finite(velocity) || !isfinite(elasticity)) {
+        *problem = "position, velocity or elasticity is not finite";
+        return NULL;
+    }
+    if (!(shape.size >= SHAPE_MIN_SIZE && shape.size <= SHAPE_MAX_SIZE)) {
+        *problem = "size out of range";
+        return NULL;
+    }
+    /* A disc, or a capsule's two half discs and the rectangle between. */
+    double area = M_PI * radius * radius + 2.0 * radius * vec_get_length(vec_subtract(p2, p1));
+    rgb_color_t color = color_of(PALETTE_BODIES[sandbox->next_color++ % PALETTE_BODY_COUNT]);
+    body_t *body = shape.kind == SHAPE_CIRCLE
+                       ? body_init_circle(at, radius, SANDBOX_DENSITY * area, color)
+                       : body_init_capsule(vec_add(at, p1), vec_add(at, p2), radius,
+                                           SANDBOX_DENSITY * area, color);
+    return add_dropped(sandbox, body, at, velocity, elasticity);
 }
 
 void sandbox_spawn(sandbox_t *sandbox, size_t count, double size, double elasticity) {
@@ -617,6 +695,10 @@ const char *sandbox_shape_name(shape_choice_t shape) {
         return "box";
     case SHAPE_RANDOM:
         return "random";
+    case SHAPE_CIRCLE:
+        return "circle";
+    case SHAPE_CAPSULE:
+        return "capsule";
     }
     return "?";
 }

@@ -48,6 +48,8 @@ typedef enum {
     SHAPE_REGULAR = 0, /* a regular polygon of `sides` sides (3 to 8) */
     SHAPE_BOX,         /* a rectangle 2 size wide and 1.2 size high */
     SHAPE_RANDOM,      /* a random convex polygon of 5 to 9 vertices */
+    SHAPE_CIRCLE,      /* a circle of radius size */
+    SHAPE_CAPSULE,     /* a horizontal capsule 2 size long and 1 size high */
 } shape_kind_t;
 
 typedef struct {
@@ -169,10 +171,23 @@ bool sandbox_reset(sandbox_t *sandbox, char *error, size_t error_size);
  * many there were. */
 size_t sandbox_clear(sandbox_t *sandbox);
 
-/* A new list of vertices for the shape centred at the origin; NULL and a
- * message in *problem when the shape is unusable. The random shape draws
+/* A new list of vertices for the shape centred at the origin (for a circle
+ * or capsule, its outline: vertices on its boundary, its bounding box
+ * exact); NULL and a message in *problem when the shape is unusable. The random shape draws
  * from the sandbox's generator. */
 list_t *sandbox_make_shape(sandbox_t *sandbox, shape_choice_t shape, const char **problem);
+
+/* For a circle or capsule: the centres of its end circles relative to its
+ * centroid (equal for a circle; a capsule's lie along x) and its radius
+ * (m); false for a polygon. */
+bool sandbox_shape_core(shape_choice_t shape, vector_t *p1, vector_t *p2, double *radius);
+
+/* Drops the shape made by sandbox_make_shape (vertices taken over): a
+ * polygon by sandbox_drop, a circle or capsule as the round body itself
+ * (the vertices, its outline, only place it). */
+body_t *sandbox_drop_shape(sandbox_t *sandbox, shape_choice_t shape, list_t *vertices,
+                           vector_t at, vector_t velocity, double elasticity,
+                           const char **problem);
 
 /* Drops a body of the given vertices (taken over; any position: the body's
  * centroid is moved to `at`), moving at velocity, with the given elasticity.
@@ -271,7 +286,8 @@ typedef struct {
 
 sandbox_totals_t sandbox_totals(sandbox_t *sandbox);
 
-/* A short name for the shape ("hexagon", "box", "random"). */
+/* A short name for the shape ("hexagon", "box", "random", "circle",
+ * "capsule"). */
 const char *sandbox_shape_name(shape_choice_t shape);
 
 /* The name a scene file goes by: its file name without the directory and
