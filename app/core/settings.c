@@ -265,6 +265,7 @@ void settings_reset(app_t *app) {
     }
     char words[32];
     step_words(sandbox->step, words, sizeof words);
-    app_status(app, "solver reset: engine defaults, sleeping on, %d workers, %s, fixed %s",
-               SANDBOX_WORKERS, integrator_get_name(sandbox->integrator), words);
+    app_status(app, "solver reset: engine defaults, sleeping on, %d worker%s, %s, fixed %s",
+               SANDBOX_WORKERS, SANDBOX_WORKERS == 1 ? "" : "s",
+               integrator_get_name(sandbox->integrator), words);
 }
