@@ -30,6 +30,10 @@ static double shape_moment(const vector_t *vertices, size_t count, double mass,
      * dividing by the area, which can overflow or underflow where the moment
      * itself does not; the per-kilogram moment times the mass cannot. */
     if (!isnormal(moment)) moment = mass * polygon_array_moment(vertices, count, 1.0);
+    return body_checked_moment(moment, mass, function);
+}
+
+double body_checked_moment(double moment, double mass, const char *function) {
     if (!isfinite(moment)) {
         engine_fail(function,
                     "the moment of inertia of this shape with mass %g kg is not finite; "

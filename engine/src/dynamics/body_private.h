@@ -119,6 +119,10 @@ struct body {
  * its four arrays. */
 body_t *body_allocate(size_t count);
 
+/* moment (kg m^2) of a body of finite mass, returned when it and its
+ * inverse are finite; otherwise stops the program, naming function. */
+double body_checked_moment(double moment, double mass, const char *function);
+
 /* Stops the program, naming function, when mass cannot be a body's. */
 void body_check_mass(double mass, const char *function);
 

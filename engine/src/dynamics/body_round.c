@@ -35,20 +35,7 @@ static double capsule_moment_per_kg(double length, double r) {
 
 static double round_moment(double length, double r, double mass, const char *function) {
     if (isinf(mass)) return INFINITY;
-    double moment = mass * capsule_moment_per_kg(length, r);
-    if (!isfinite(moment)) {
-        engine_fail(function,
-                    "the moment of inertia of this shape with mass %g kg is not finite; "
-                    "give a body that must not move mass INFINITY",
-                    mass);
-    }
-    if (!isfinite(1.0 / moment)) {
-        engine_fail(function,
-                    "the moment of inertia of this shape with mass %g kg, %g kg m^2, is too "
-                    "small: its inverse is not finite",
-                    mass, moment);
-    }
-    return moment;
+    return body_checked_moment(mass * capsule_moment_per_kg(length, r), mass, function);
 }
 
 /* The outline in the body frame, counter-clockwise: half-turns of radius r
