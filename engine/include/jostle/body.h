@@ -92,9 +92,8 @@ body_t *body_init_centred(list_t *shape, double mass, rgb_color_t color, void *i
  * with its vertices on the boundary (32 for a circle, 17 on each end of a
  * capsule, the first of a circle at angle 0 from the centre), which
  * body_get_shape returns (a new list, as for a polygon), body_get_polygon
- * and body_get_local_polygon view; so does the search for the moment of an
- * impact within a step (the manifold at that moment is the exact one).
- * The scene's queries (query.h) use the exact shape.
+ * and body_get_local_polygon view. The scene's queries (query.h) and the
+ * search for the moment of an impact within a step use the exact shape.
  *
  * A radius that is not finite or not > 0, a non-finite centre or end, and
  * the mass errors of body_init stop the program: "engine error in
