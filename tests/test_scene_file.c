@@ -199,6 +199,31 @@ static void circles_and_capsules_are_round_bodies(void) {
     CHECK(test_no_leaks());
 }
 
+/* The text round-trips (scene_file_round_trip); loaded and stepped 70
+ * steps of 1/60 s, then saved, the copy goes on as the original does for
+ * 120 steps, every body the same to the bit. Returns the original, stepped,
+ * and in *saved its text at the save (the caller frees both). */
+static scene_file_t *continues_bit_for_bit(const char *text, char **saved) {
+    char why[256] = "";
+    CHECK(scene_file_round_trip((const uint8_t *)text, strlen(text), "t.scene", why, sizeof why));
+    if (why[0] != '\0') printf("    %s\n", why);
+    scene_file_t *file = parse(text);
+    scene_t *scene = scene_file_get_scene(file);
+    for (int i = 0; i < 70; i++) scene_tick(scene, 1.0 / 60);
+    size_t length = 0;
+    *saved = scene_file_write(file, &length, NULL);
+    scene_file_t *again = parse(*saved);
+    why[0] = '\0';
+    for (int i = 0; i < 120 && why[0] == '\0'; i++) {
+        CHECK(scene_file_same(file, again, why, sizeof why));
+        scene_tick(scene, 1.0 / 60);
+        scene_tick(scene_file_get_scene(again), 1.0 / 60);
+    }
+    if (why[0] != '\0') printf("    %s\n", why);
+    scene_file_free(again);
+    return file;
+}
+
 /* A scene of round bodies stepped, saved mid-run and reloaded goes on as the
  * original does, every body the same to the bit at every step; so does one
  * with round bodies the file did not make (a circle exactly, a capsule's
@@ -211,23 +236,12 @@ static void round_bodies_saved_mid_run_continue_bit_for_bit(void) {
                        "elasticity 0.4 }\n"
                        "body rods { capsule -0.4 0 0.4 0 0.2; position 2 1; repeat 2 3 1.3 0.5; "
                        "angle 0.2 }\n";
-    char why[256] = "";
-    CHECK(scene_file_round_trip((const uint8_t *)text, strlen(text), "t.scene", why, sizeof why));
-    if (why[0] != '\0') printf("    %s\n", why);
-    scene_file_t *file = parse(text);
-    scene_t *scene = scene_file_get_scene(file);
-    for (int i = 0; i < 70; i++) scene_tick(scene, 1.0 / 60);
-    size_t length = 0;
-    char *saved = scene_file_write(file, &length, NULL);
-    scene_file_t *again = parse(saved);
+    char *saved;
+    scene_file_t *file = continues_bit_for_bit(text, &saved);
     free(saved);
-    for (int i = 0; i < 120 && why[0] == '\0'; i++) {
-        CHECK(scene_file_same(file, again, why, sizeof why));
-        scene_tick(scene, 1.0 / 60);
-        scene_tick(scene_file_get_scene(again), 1.0 / 60);
-    }
-    if (why[0] != '\0') printf("    %s\n", why);
-    scene_file_free(again);
+    scene_t *scene = scene_file_get_scene(file);
+    size_t length = 0;
+    scene_file_t *again;
     /* Foreign round bodies: written as circle and capsule, loaded back. */
     body_t *ball = body_init_circle((vector_t){3, 6}, 0.4, 2, (rgb_color_t){1, 0, 0});
     body_t *rod = body_init_capsule((vector_t){-3, 6}, (vector_t){-2, 6.5}, 0.3, 1,
@@ -273,29 +287,18 @@ static void chains_saved_mid_run_continue_bit_for_bit(void) {
                        "elasticity 0.2 }\n"
                        "body crates { box 0.5 0.5; position 1 1; repeat 3 1 0.8 0 }\n"
                        "body rod { capsule 6 7 7 7 0.2 }\n";
-    char why[256] = "";
-    CHECK(scene_file_round_trip((const uint8_t *)text, strlen(text), "t.scene", why, sizeof why));
-    if (why[0] != '\0') printf("    %s\n", why);
-    scene_file_t *file = parse(text);
+    char *saved;
+    scene_file_t *file = continues_bit_for_bit(text, &saved);
+    CHECK(strstr(saved, "    chain -8 4 -3 1 0 0 4 0 4.5 0.5 8 3\n") != NULL);
+    CHECK(strstr(saved, "    segment ") != NULL); /* contacts with the chain's segments */
+    free(saved);
     scene_t *scene = scene_file_get_scene(file);
     body_t *ground = body_at(file, 0);
     CHECK(body_get_shape_kind(ground) == BODY_SHAPE_CHAIN && !body_is_loop(ground));
     CHECK(body_get_segment_count(ground) == 5 && isinf(body_get_mass(ground)));
     CHECK(body_is_loop(body_at(file, 1)) && body_get_segment_count(body_at(file, 1)) == 4);
-    for (int i = 0; i < 70; i++) scene_tick(scene, 1.0 / 60);
     size_t length = 0;
-    char *saved = scene_file_write(file, &length, NULL);
-    CHECK(strstr(saved, "    chain -8 4 -3 1 0 0 4 0 4.5 0.5 8 3\n") != NULL);
-    CHECK(strstr(saved, "    segment ") != NULL); /* contacts with the chain's segments */
-    scene_file_t *again = parse(saved);
-    free(saved);
-    for (int i = 0; i < 120 && why[0] == '\0'; i++) {
-        CHECK(scene_file_same(file, again, why, sizeof why));
-        scene_tick(scene, 1.0 / 60);
-        scene_tick(scene_file_get_scene(again), 1.0 / 60);
-    }
-    if (why[0] != '\0') printf("    %s\n", why);
-    scene_file_free(again);
+    scene_file_t *again;
     /* A chain the file did not make, moved: its points in its frame. */
     body_t *shelf = body_init_chain((vector_t[]){{0, 0}, {1, 0.1}, {2, 0}}, 3, false,
                                     (rgb_color_t){0, 0, 1});
