@@ -6,6 +6,7 @@
 #include "test.h"
 #include "jostle/body.h"
 #include "jostle/collision.h"
+#include "jostle/forces.h"
 #include "jostle/polygon.h"
 #include "jostle/scene.h"
 #include "collision/time_of_impact.h"
@@ -406,6 +407,35 @@ static void time_of_impact_is_exact_for_round_shapes(void) {
     body_free(floor);
 }
 
+/* The seed's collision handlers take a chain: with world contacts off, a
+ * ball dropped on a chain floor under create_physics_collision at e = 1
+ * bounces back up, and one pushed up through the floor from behind is left
+ * alone (one-sided). */
+static void seed_collision_handlers_take_a_chain(void) {
+    scene_t *scene = scene_init();
+    scene_set_gravity(scene, (vector_t){0.0, -G});
+    vector_t points[3] = {{-2, 0}, {0, 0}, {2, 0}};
+    body_t *floor = body_init_chain(points, 3, false, GREY);
+    body_t *ball = body_init_circle((vector_t){0.0, 1.0}, 0.25, 1.0, GREY);
+    body_t *rising = body_init_circle((vector_t){1.0, -1.0}, 0.25, 1.0, GREY);
+    scene_add_body(scene, floor);
+    scene_add_body(scene, ball);
+    scene_add_body(scene, rising);
+    body_set_velocity(rising, (vector_t){0.0, 8.0});
+    create_physics_collision(scene, ball, floor, 1.0);
+    create_physics_collision(scene, rising, floor, 1.0);
+    double lowest = INFINITY, rose = -INFINITY;
+    for (int step = 0; step < 50; step++) {
+        scene_tick(scene, DT);
+        lowest = fmin(lowest, body_get_centroid(ball).y);
+        rose = fmax(rose, body_get_centroid(rising).y);
+    }
+    CHECK(lowest > 0.0 && lowest < 0.25); /* reached the floor, not through it */
+    CHECK(body_get_velocity(ball).y > 0.0 || body_get_centroid(ball).y > 0.5); /* bounced */
+    CHECK(rose > 1.0); /* passed up through the floor */
+    scene_free(scene);
+}
+
 TEST_SUITE(chains, TEST_CASE(box_glides_over_a_segment_floor),
            TEST_CASE(circle_rolls_over_joins_without_bumps),
            TEST_CASE(capsule_slides_over_joins_without_bumps), TEST_CASE(loop_keeps_bodies_inside),
@@ -413,4 +443,5 @@ TEST_SUITE(chains, TEST_CASE(box_glides_over_a_segment_floor),
            TEST_CASE(ball_on_a_chain_sleeps_and_reports_the_chain),
            TEST_CASE(find_collision_with_a_chain), TEST_CASE(bad_input_aborts_with_message),
            TEST_CASE(chain_accessors), TEST_CASE(long_chain_pairs_stay_linear),
-           TEST_CASE(time_of_impact_is_exact_for_round_shapes));
+           TEST_CASE(time_of_impact_is_exact_for_round_shapes),
+           TEST_CASE(seed_collision_handlers_take_a_chain));

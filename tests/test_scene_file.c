@@ -895,6 +895,8 @@ static const bad_file_t BAD_FILES[] = {
      "t.scene:1:10: expected segments of some length, found point 1 (0, 0) equal to point 4"},
     {"body a { chain 0 0 1 0; mass 2 }",
      "t.scene:1:25: expected a chain to be static (static, or no mass), found a mass"},
+    {"template a { chain 0 0 1 0 }",
+     "t.scene:1:14: expected no chain in a template (a game spawns moving copies), found one"},
     {"body a { chain 0 0 1 0; velocity 1 0 }",
      "t.scene:1:25: expected a chain at rest (it is static), found a velocity"},
     {"body a { chain 0 0 nan 0 }",

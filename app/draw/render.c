@@ -279,7 +279,9 @@ static void outline_body(SDL_Renderer *renderer, const camera_t *camera, body_t 
                          palette_rgb_t c) {
     polygon_t polygon = body_get_polygon(body);
     size_t n = polygon.count;
-    for (size_t k = 0; k < n; k++) {
+    /* An open chain's points do not close. */
+    size_t edges = body_get_shape_kind(body) == BODY_SHAPE_CHAIN ? body_get_segment_count(body) : n;
+    for (size_t k = 0; k < edges; k++) {
         vector_t a = camera_to_pixel(camera, polygon.vertices[k]);
         vector_t b = camera_to_pixel(camera, polygon.vertices[(k + 1) % n]);
         thickLineRGBA(renderer, draw_coord(a.x), draw_coord(a.y), draw_coord(b.x),

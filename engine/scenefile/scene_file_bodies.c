@@ -494,6 +494,10 @@ static bool register_name(parser_t *p, sf_body_t *body, size_t index, sf_where_t
  * whether or not the block says so. */
 static bool finish_chain(parser_t *p, sf_body_t *body, const seen_t *seen) {
     if (body->shape.kind != SHAPE_CHAIN && body->shape.kind != SHAPE_LOOP) return true;
+    if (body->is_template) {
+        return sf_fail(p->lexer, body->shape.where,
+                       "expected no chain in a template (a game spawns moving copies), found one");
+    }
     if (seen->mass.line != 0 && body->mass_kind != MASS_STATIC) {
         return sf_fail(p->lexer, seen->mass,
                        "expected a chain to be static (static, or no mass), found %s",

@@ -3,8 +3,8 @@
 #include "dynamics/body_private.h"
 #include "base/check.h"
 #include "collision/collision_private.h"
-#include "collision/manifold.h"
 #include "collision/round_manifold.h"
+#include "collision/segment_manifold.h"
 
 typedef struct {
     double min;
@@ -88,7 +88,9 @@ static collision_info_t chain_collision(body_t *body1, body_t *body2, double *le
             body_t *b = parts2 != NULL ? parts2[j] : body2;
             manifold_features_t features;
             double separation;
-            manifold_t m = manifold_collide(a, b, 0.0, &features, &separation);
+            /* Not manifold_collide: a program of seed collisions links
+             * none of the world's narrowphase. */
+            manifold_t m = segment_manifold_collide(a, b, 0.0, &features, &separation);
             for (int k = 0; k < m.point_count; k++) {
                 separation = fmin(separation, m.points[k].separation);
             }
