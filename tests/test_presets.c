@@ -403,6 +403,48 @@ static void friction_holds_above_tan_30_and_slides_below(scene_file_t *file) {
     }
 }
 
+/* The ball rolls down the chain's straight slope (four segments, joins
+ * flat) as a disc rolls without slipping: after 1 s it has covered
+ * (1/3) g sin(theta) t^2 along the slope, with w = -v / r, both to 1%;
+ * for 8 s it never sinks more than 5 mm into any segment, never lifts off
+ * the ramp by more than 5 mm while on it (no bump at a join), and it ends
+ * at rest on the floor against the wall. */
+static void ramp_ball_rolls_at_two_thirds_g_sin(scene_file_t *file) {
+    scene_t *scene = scene_file_get_scene(file);
+    body_t *ball = named(file, "ball"), *ramp = named(file, "ramp");
+    double dt = scene_file_get_timestep(file), r = body_get_round_radius(ball);
+    double length = sqrt(73.0), sine = 3.0 / length;
+    vector_t down = {8.0 / length, -3.0 / length}, start = body_get_centroid(ball);
+    double deepest = 0.0, highest = 0.0;
+    for (long step = 1; step <= lround(8.0 / dt); step++) {
+        scene_tick(scene, dt);
+        vector_t at = body_get_centroid(ball);
+        double gap = INFINITY;
+        for (size_t k = 0; k < body_get_segment_count(ramp); k++) {
+            vector_t p1, p2;
+            body_get_segment(ramp, k, &p1, &p2);
+            vector_t d = vec_subtract(p2, p1);
+            double t = fmax(0.0, fmin(1.0, vec_dot(vec_subtract(at, p1), d) / vec_dot(d, d)));
+            gap = fmin(gap, vec_get_length(vec_subtract(at, vec_add(p1, vec_multiply(t, d)))) - r);
+        }
+        deepest = fmin(deepest, gap);
+        highest = fmax(highest, gap);
+        if (step == lround(1.0 / dt)) {
+            double t = (double)step * dt;
+            double travelled = vec_dot(vec_subtract(at, start), down);
+            double v = vec_dot(body_get_velocity(ball), down);
+            CHECK_RELATIVE(travelled, 9.8 * sine * t * t / 3.0, 0.01);
+            CHECK_RELATIVE(body_get_angular_velocity(ball), -v / r, 0.01);
+        }
+    }
+    CHECK(deepest > -0.005);
+    CHECK(highest < 0.005);
+    vector_t at = body_get_centroid(ball);
+    CHECK_NEAR(at.y, r, 0.005);
+    CHECK_NEAR(at.x, 10.0 - r, 0.01);
+    CHECK(vec_get_length(body_get_velocity(ball)) < 0.05);
+}
+
 /* ---- Every preset --------------------------------------------------------- */
 
 typedef struct {
@@ -442,6 +484,9 @@ static const preset_t PRESETS[] = {
      "Euler) flings it out"},
     {"mass_ratio_stack", mass_ratio_stack_holds, "Stability",
      "1000 kg on 1 kg on the floor: the stack stands, every box within 1 cm"},
+    {"ramp", ramp_ball_rolls_at_two_thirds_g_sin, "Shapes",
+     "a ball rolls down a ramp of chain segments at (2/3) g sin theta without slipping, over the "
+     "joins"},
     {"tunnelling", tunnelling_stops_every_box_and_keeps_them_in_view, "Collisions",
      "boxes at 50 to 5000 m/s meet a 0.1 m wall: not one passes through"},
 };

@@ -362,6 +362,93 @@ static void bad_input_stops_with_the_function_named(void) {
     CHECK_DIES(explode_nan_impulse, NULL, "engine error in scene_explode:", "impulse must be");
 }
 
+
+/* Round bodies and chains are queried on their exact shapes: a ray enters
+ * a circle and a capsule where the closed forms say, to 1e-12, where the
+ * 32-vertex outline would be up to 0.5% of the radius off. */
+static void ray_hits_round_bodies_exactly(void) {
+    scene_t *scene = scene_init();
+    body_t *ball = body_init_circle((vector_t){0, 0}, 1.0, 1.0, GREY);
+    scene_add_body(scene, ball);
+    /* A ray at height h enters the unit circle at x = -sqrt(1 - h^2). */
+    for (int k = 0; k < 8; k++) {
+        double h = 0.11 * k;
+        double x = -sqrt(1.0 - h * h);
+        check_hit(scene, (vector_t){-3, h}, (vector_t){3, h}, ball, x, h, x, h, (x + 3.0) / 6.0);
+    }
+    body_set_centroid(ball, (vector_t){0, 10});
+    body_t *rod = body_init_capsule((vector_t){-1, 0}, (vector_t){1, 0}, 0.5, 1.0, GREY);
+    scene_add_body(scene, rod);
+    /* Down onto the flat side, and onto an end's half-disc. */
+    check_hit(scene, (vector_t){0.3, 3}, (vector_t){0.3, -3}, rod, 0.3, 0.5, 0, 1, 2.5 / 6.0);
+    double y = sqrt(0.25 - 0.09);
+    check_hit(scene, (vector_t){1.3, 3}, (vector_t){1.3, -3}, rod, 1.3, y, 0.3 / 0.5, y / 0.5,
+              (3.0 - y) / 6.0);
+    scene_free(scene);
+}
+
+/* A box query and the body at a point find a circle by its true rim: a
+ * point just inside the rim between two outline vertices is in it, one
+ * just outside is not. */
+static void box_and_point_queries_see_the_true_rim(void) {
+    scene_t *scene = scene_init();
+    body_t *ball = body_init_circle((vector_t){0, 0}, 1.0, 1.0, GREY);
+    scene_add_body(scene, ball);
+    double angle = M_PI / 32.0; /* halfway between outline vertices */
+    vector_t rim = {cos(angle), sin(angle)};
+    vector_t inside = vec_multiply(1.0 - 1e-12, rim), outside = vec_multiply(1.0 + 1e-12, rim);
+    CHECK(scene_body_at(scene, inside) == ball);
+    CHECK(scene_body_at(scene, outside) == NULL);
+    CHECK(scene_query_box(scene, inside, vec_add(inside, (vector_t){1, 1}), NULL, 0) == 1);
+    CHECK(scene_query_box(scene, outside, vec_add(outside, (vector_t){1, 1}), NULL, 0) == 0);
+    CHECK(body_contains_point(ball, inside) && !body_contains_point(ball, outside));
+    /* A capsule's rim about an end. */
+    body_t *rod = body_init_capsule((vector_t){3, 0}, (vector_t){5, 0}, 0.5, 1.0, GREY);
+    scene_add_body(scene, rod);
+    vector_t end_rim = {5.0 + 0.5 * cos(0.7), 0.5 * sin(0.7)};
+    CHECK(scene_body_at(scene, vec_add(end_rim, (vector_t){-1e-12, 0})) == rod);
+    CHECK(scene_body_at(scene, vec_add(end_rim, (vector_t){1e-12, 0})) == NULL);
+    scene_free(scene);
+}
+
+/* The explosion's distance to a circle is exact: a ball of radius 1 and
+ * mass 1 whose centre is 3 m from the centre of a blast of radius 4 gets
+ * impulse 10 (1 - 2/4) along the line of centres, at its rim. */
+static void explosion_reaches_round_bodies_exactly(void) {
+    scene_t *scene = scene_init();
+    /* Towards the blast, the ball's rim lies halfway between two vertices
+     * of its outline. */
+    double a = M_PI / 32.0;
+    body_t *ball = body_init_circle((vector_t){3 * cos(a), 3 * sin(a)}, 1.0, 1.0, GREY);
+    scene_add_body(scene, ball);
+    scene_explode(scene, (vector_t){0, 0}, 4.0, 10.0);
+    scene_tick(scene, 1e-3);
+    CHECK_VEC(body_get_velocity(ball), 5.0 * cos(a), 5.0 * sin(a), EXACT);
+    CHECK_NEAR(body_get_angular_velocity(ball), 0.0, EXACT);
+    scene_free(scene);
+}
+
+/* A chain is queried on its segments: a ray from its free side hits the
+ * segment it crosses with that segment's normal, one from behind passes;
+ * a box and a point find it only on a segment. */
+static void chains_are_queried_on_their_segments(void) {
+    scene_t *scene = scene_init();
+    vector_t points[3] = {{0, 0}, {2, 0}, {4, 2}};
+    body_t *chain = body_init_chain(points, 3, false, GREY);
+    scene_add_body(scene, chain);
+    check_hit(scene, (vector_t){1, 1}, (vector_t){1, -1}, chain, 1, 0, 0, 1, 0.5);
+    double s = sqrt(0.5);
+    check_hit(scene, (vector_t){2, 2}, (vector_t){4, 0}, chain, 3, 1, -s, s, 0.5);
+    ray_hit_t hit;
+    CHECK(!scene_ray_cast(scene, (vector_t){1, -1}, (vector_t){1, 1}, &hit)); /* from behind */
+    CHECK(scene_body_at(scene, (vector_t){1, 0}) == chain);
+    CHECK(scene_body_at(scene, (vector_t){3, 1}) == chain);
+    CHECK(scene_body_at(scene, (vector_t){3, 0.5}) == NULL); /* under the slope: no inside */
+    CHECK(scene_query_box(scene, (vector_t){2.9, 0.1}, (vector_t){3.2, 0.5}, NULL, 0) == 0);
+    CHECK(scene_query_box(scene, (vector_t){2.9, 0.1}, (vector_t){3.2, 1.0}, NULL, 0) == 1);
+    scene_free(scene);
+}
+
 TEST_SUITE(queries, TEST_CASE(ray_hits_box_at_known_angles),
            TEST_CASE(ray_hits_triangle_at_known_angles), TEST_CASE(ray_that_misses_hits_nothing),
            TEST_CASE(ray_from_inside_ignores_that_body),
@@ -371,4 +458,8 @@ TEST_SUITE(queries, TEST_CASE(ray_hits_box_at_known_angles),
            TEST_CASE(explosion_impulses_are_exact),
            TEST_CASE(explosion_spins_off_centre_and_wakes_sleepers),
            TEST_CASE(queries_agree_with_brute_force),
-           TEST_CASE(bad_input_stops_with_the_function_named));
+           TEST_CASE(bad_input_stops_with_the_function_named),
+           TEST_CASE(ray_hits_round_bodies_exactly),
+           TEST_CASE(box_and_point_queries_see_the_true_rim),
+           TEST_CASE(explosion_reaches_round_bodies_exactly),
+           TEST_CASE(chains_are_queried_on_their_segments));

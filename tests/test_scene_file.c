@@ -199,6 +199,31 @@ static void circles_and_capsules_are_round_bodies(void) {
     CHECK(test_no_leaks());
 }
 
+/* The text round-trips (scene_file_round_trip); loaded and stepped 70
+ * steps of 1/60 s, then saved, the copy goes on as the original does for
+ * 120 steps, every body the same to the bit. Returns the original, stepped,
+ * and in *saved its text at the save (the caller frees both). */
+static scene_file_t *continues_bit_for_bit(const char *text, char **saved) {
+    char why[256] = "";
+    CHECK(scene_file_round_trip((const uint8_t *)text, strlen(text), "t.scene", why, sizeof why));
+    if (why[0] != '\0') printf("    %s\n", why);
+    scene_file_t *file = parse(text);
+    scene_t *scene = scene_file_get_scene(file);
+    for (int i = 0; i < 70; i++) scene_tick(scene, 1.0 / 60);
+    size_t length = 0;
+    *saved = scene_file_write(file, &length, NULL);
+    scene_file_t *again = parse(*saved);
+    why[0] = '\0';
+    for (int i = 0; i < 120 && why[0] == '\0'; i++) {
+        CHECK(scene_file_same(file, again, why, sizeof why));
+        scene_tick(scene, 1.0 / 60);
+        scene_tick(scene_file_get_scene(again), 1.0 / 60);
+    }
+    if (why[0] != '\0') printf("    %s\n", why);
+    scene_file_free(again);
+    return file;
+}
+
 /* A scene of round bodies stepped, saved mid-run and reloaded goes on as the
  * original does, every body the same to the bit at every step; so does one
  * with round bodies the file did not make (a circle exactly, a capsule's
@@ -211,23 +236,12 @@ static void round_bodies_saved_mid_run_continue_bit_for_bit(void) {
                        "elasticity 0.4 }\n"
                        "body rods { capsule -0.4 0 0.4 0 0.2; position 2 1; repeat 2 3 1.3 0.5; "
                        "angle 0.2 }\n";
-    char why[256] = "";
-    CHECK(scene_file_round_trip((const uint8_t *)text, strlen(text), "t.scene", why, sizeof why));
-    if (why[0] != '\0') printf("    %s\n", why);
-    scene_file_t *file = parse(text);
-    scene_t *scene = scene_file_get_scene(file);
-    for (int i = 0; i < 70; i++) scene_tick(scene, 1.0 / 60);
-    size_t length = 0;
-    char *saved = scene_file_write(file, &length, NULL);
-    scene_file_t *again = parse(saved);
+    char *saved;
+    scene_file_t *file = continues_bit_for_bit(text, &saved);
     free(saved);
-    for (int i = 0; i < 120 && why[0] == '\0'; i++) {
-        CHECK(scene_file_same(file, again, why, sizeof why));
-        scene_tick(scene, 1.0 / 60);
-        scene_tick(scene_file_get_scene(again), 1.0 / 60);
-    }
-    if (why[0] != '\0') printf("    %s\n", why);
-    scene_file_free(again);
+    scene_t *scene = scene_file_get_scene(file);
+    size_t length = 0;
+    scene_file_t *again;
     /* Foreign round bodies: written as circle and capsule, loaded back. */
     body_t *ball = body_init_circle((vector_t){3, 6}, 0.4, 2, (rgb_color_t){1, 0, 0});
     body_t *rod = body_init_capsule((vector_t){-3, 6}, (vector_t){-2, 6.5}, 0.3, 1,
@@ -255,6 +269,51 @@ static void round_bodies_saved_mid_run_continue_bit_for_bit(void) {
     body_get_core(rod2, &b1, &b2);
     CHECK_VEC(b1, a1.x, a1.y, 1e-12);
     CHECK_VEC(b2, a2.x, a2.y, 1e-12);
+    scene_file_free(again);
+    scene_file_free(file);
+    CHECK(test_no_leaks());
+}
+
+/* Chains in scene files: `chain` and `loop` through points in world
+ * coordinates, static; a scene with bodies resting and rolling on them,
+ * saved mid-run (their contacts with the chains' segments included) and
+ * reloaded, goes on as the original does, to the bit; a chain the file
+ * did not make is written and comes back the same. */
+static void chains_saved_mid_run_continue_bit_for_bit(void) {
+    const char *text = "gravity 0 -9.81\ncontacts on\n"
+                       "body ground { chain -8 4  -3 1  0 0  4 0  4.5 0.5  8 3; friction 0.8 }\n"
+                       "body pen { loop 5 5  9 5  9 9  5 9; static; elasticity 0.5 }\n"
+                       "body balls { circle 0.3; position -6 5; repeat 3 1 0.7 0; "
+                       "elasticity 0.2 }\n"
+                       "body crates { box 0.5 0.5; position 1 1; repeat 3 1 0.8 0 }\n"
+                       "body rod { capsule 6 7 7 7 0.2 }\n";
+    char *saved;
+    scene_file_t *file = continues_bit_for_bit(text, &saved);
+    CHECK(strstr(saved, "    chain -8 4 -3 1 0 0 4 0 4.5 0.5 8 3\n") != NULL);
+    CHECK(strstr(saved, "    segment ") != NULL); /* contacts with the chain's segments */
+    free(saved);
+    scene_t *scene = scene_file_get_scene(file);
+    body_t *ground = body_at(file, 0);
+    CHECK(body_get_shape_kind(ground) == BODY_SHAPE_CHAIN && !body_is_loop(ground));
+    CHECK(body_get_segment_count(ground) == 5 && isinf(body_get_mass(ground)));
+    CHECK(body_is_loop(body_at(file, 1)) && body_get_segment_count(body_at(file, 1)) == 4);
+    size_t length = 0;
+    scene_file_t *again;
+    /* A chain the file did not make, moved: its points in its frame. */
+    body_t *shelf = body_init_chain((vector_t[]){{0, 0}, {1, 0.1}, {2, 0}}, 3, false,
+                                    (rgb_color_t){0, 0, 1});
+    body_set_centroid(shelf, (vector_t){-2, 6});
+    scene_add_body(scene, shelf);
+    saved = scene_file_write(file, &length, NULL);
+    again = parse(saved);
+    free(saved);
+    scene_t *copy = scene_file_get_scene(again);
+    body_t *shelf2 = scene_get_body(copy, scene_bodies(copy) - 1);
+    CHECK(body_get_shape_kind(shelf2) == BODY_SHAPE_CHAIN && body_get_segment_count(shelf2) == 2);
+    vector_t a1, a2, b1, b2;
+    body_get_segment(shelf, 1, &a1, &a2);
+    body_get_segment(shelf2, 1, &b1, &b2);
+    CHECK(a1.x == b1.x && a1.y == b1.y && a2.x == b2.x && a2.y == b2.y);
     scene_file_free(again);
     scene_file_free(file);
     CHECK(test_no_leaks());
@@ -826,6 +885,25 @@ static const bad_file_t BAD_FILES[] = {
      "t.scene:1:17: expected the radius (m), a number > 0 and <= 1e+09, found \"0\""},
     {"body a { circle }",
      "t.scene:1:17: expected the radius (m), a number, found '}'"},
+    {"body a { chain 0 0 }",
+     "t.scene:1:20: expected at least 2 points (x y pairs), 1 so far, found '}'"},
+    {"body a { loop 0 0 1 0 }",
+     "t.scene:1:23: expected at least 3 points (x y pairs), 2 so far, found '}'"},
+    {"body a { chain 0 0 1 0 1 0 }",
+     "t.scene:1:10: expected segments of some length, found point 3 (1, 0) equal to point 2"},
+    {"body a { loop 0 0 1 0 1 1 0 0 }",
+     "t.scene:1:10: expected segments of some length, found point 1 (0, 0) equal to point 4"},
+    {"body a { chain 0 0 1 0; mass 2 }",
+     "t.scene:1:25: expected a chain to be static (static, or no mass), found a mass"},
+    {"template a { chain 0 0 1 0 }",
+     "t.scene:1:14: expected no chain in a template (a game spawns moving copies), found one"},
+    {"body a { chain 0 0 1 0; velocity 1 0 }",
+     "t.scene:1:25: expected a chain at rest (it is static), found a velocity"},
+    {"body a { chain 0 0 nan 0 }",
+     "t.scene:1:20: expected at least 2 points (x y pairs), 1 so far, found \"nan\""},
+    {"contacts on\nbody a { chain 0 0 1 0 }\nbody b { box 1 1 }\n"
+     "contact 1 0 { segment 3; normal 0 1; pose 0 0 0 }",
+     "t.scene:4:1: expected a segment of body 0 (it has 1), found segment 3"},
     {"body a { capsule 0 0 1 0 -1 }",
      "t.scene:1:26: expected the radius (m), a number > 0 and <= 1e+09, found \"-1\""},
     {"body a { capsule 0 0 1 }",
@@ -838,7 +916,7 @@ static const bad_file_t BAD_FILES[] = {
     {"body a { circle 1; centred }",
      "t.scene:1:10: expected centred with a vertices shape, found it with a circle"},
     {"body a { circle 1; box 1 1 }",
-     "t.scene:1:20: expected one shape (regular, box, vertices, circle or capsule) per body, found "
+     "t.scene:1:20: expected one shape (regular, box, vertices, circle, capsule, chain or loop) per body, found "
      "a second (the first at line 1)"},
     {"body a { box 1 1; elasticity -0.5 }",
      "t.scene:1:30: expected the elasticity, a number >= 0 and <= 1e+09, found \"-0.5\""},
@@ -847,17 +925,17 @@ static const bad_file_t BAD_FILES[] = {
     {"body a { box 1 1; position 30deg 0 }",
      "t.scene:1:28: expected a coordinate (m), a number, found \"30deg\""},
     {"body a { box 1 1; box 2 2 }",
-     "t.scene:1:19: expected one shape (regular, box, vertices, circle or capsule) per body, found "
+     "t.scene:1:19: expected one shape (regular, box, vertices, circle, capsule, chain or loop) per body, found "
      "a second (the first at line 1)"},
     {"body a { box 1 1; static\n mass 2 }",
      "t.scene:2:2: expected one mass, density or static per body, found a second (the first at "
      "line 1)"},
-    {"body a { mass 1 }", "t.scene:1:17: expected a shape (regular, box, vertices, circle or "
-                          "capsule) in the body, found '}' without one"},
+    {"body a { mass 1 }", "t.scene:1:17: expected a shape (regular, box, vertices, circle, "
+                          "capsule, chain or loop) in the body, found '}' without one"},
     {"body a {\n box 1 1\n",
      "t.scene:3:1: expected '}' to close the block opened at line 1, found the end of the file"},
     {"body a { colour 1 1 1 }",
-     "t.scene:1:10: expected a body property (regular, box, vertices, circle, capsule, mass, "
+     "t.scene:1:10: expected a body property (regular, box, vertices, circle, capsule, chain, loop, mass, "
      "density, static, elasticity, friction, color, position, angle, velocity, spin, tag, group, filter, centred, "
      "asleep, sleep_timer, repeat) or '}', found \"colour\""},
     {"body a { box 1 1 }\nbody a { box 1 1 }",
@@ -952,8 +1030,8 @@ static const bad_file_t BAD_FILES[] = {
      "t.scene:4:1: expected one contact per pair, found a second for 0 and 1 (the first at line "
      "3)"},
     {"contacts on\nbody a { box 1 1; repeat 2 1 2 0 }\ncontact 0 1 { norm 0 1 }",
-     "t.scene:3:15: expected a contact line (normal, point, face, incident, pose, previous) or "
-     "'}', found \"norm\""},
+     "t.scene:3:15: expected a contact line (normal, point, face, incident, pose, previous, "
+     "segment) or '}', found \"norm\""},
     {"contact 0 1 { incident 1 0 0; incident 2 0 0; incident 3 0 0 }",
      "t.scene:1:47: expected at most two incident lines in a contact, found a third"},
     {"contact 0 1 { previous 1 0 0; previous 2 0 0; previous 3 0 0 }",
@@ -1161,6 +1239,7 @@ TEST_SUITE(scene_file, TEST_CASE(settings_reach_the_scene),
            TEST_CASE(settings_changed_live_are_written),
            TEST_CASE(written_scenes_load_back_the_same),
            TEST_CASE(round_bodies_saved_mid_run_continue_bit_for_bit),
+           TEST_CASE(chains_saved_mid_run_continue_bit_for_bit),
            TEST_CASE(a_running_scene_is_written_as_it_is_now),
            TEST_CASE(step_lengths_and_previous_points_reach_the_world),
            TEST_CASE(save_and_load_through_a_path),

@@ -92,6 +92,26 @@ static void batch_line(batch_t *batch, vector_t a, vector_t b, palette_rgb_t col
     batch_polygon(batch, quad, 4, color, 255);
 }
 
+/* A chain: each segment a band 6 pixels deep on its solid side (the right
+ * of its direction), filled and outlined, so that the side bodies rest on
+ * shows. */
+static void batch_chain(batch_t *batch, const camera_t *camera, body_t *chain,
+                        palette_rgb_t fill, palette_rgb_t outline) {
+    double depth = 6.0 / camera_length_to_pixels(camera, 1.0);
+    for (size_t k = 0; k < body_get_segment_count(chain); k++) {
+        vector_t p1, p2;
+        body_get_segment(chain, k, &p1, &p2);
+        vector_t e = vec_normalize(vec_subtract(p2, p1));
+        vector_t back = {e.y * depth, -e.x * depth};
+        vector_t quad[4] = {camera_to_pixel(camera, p1), camera_to_pixel(camera, vec_add(p1, back)),
+                            camera_to_pixel(camera, vec_add(p2, back)),
+                            camera_to_pixel(camera, p2)};
+        if (!batch_polygon_visible(quad, 4, camera->width, camera->height)) continue;
+        batch_outlined(batch, quad, 4, fill, fill);
+        batch_line(batch, quad[0], quad[3], outline);
+    }
+}
+
 /* Every body in view, fill and outline, in one batch: each body's outline
  * is read and taken to pixels once. */
 static void draw_bodies(SDL_Renderer *renderer, SDL_Surface *canvas, app_t *app,
@@ -104,6 +124,12 @@ static void draw_bodies(SDL_Renderer *renderer, SDL_Surface *canvas, app_t *app,
     for (size_t i = 0; i < scene_bodies(scene); i++) {
         body_t *body = scene_get_body(scene, i);
         if (body_is_removed(body)) continue;
+        if (body_get_shape_kind(body) == BODY_SHAPE_CHAIN) {
+            palette_rgb_t fill = rgb_of(body_get_color(body));
+            palette_rgb_t outline = body == hovered ? PALETTE_GRAB : lighter(fill, 0.45);
+            batch_chain(&body_batch, camera, body, fill, outline);
+            continue;
+        }
         vector_t line[2] = {VEC_ZERO, VEC_ZERO};
         int n = body_pixels(camera, body, pixels, line);
         if (!batch_polygon_visible(pixels, n, camera->width, camera->height)) continue;
@@ -253,7 +279,9 @@ static void outline_body(SDL_Renderer *renderer, const camera_t *camera, body_t 
                          palette_rgb_t c) {
     polygon_t polygon = body_get_polygon(body);
     size_t n = polygon.count;
-    for (size_t k = 0; k < n; k++) {
+    /* An open chain's points do not close. */
+    size_t edges = body_get_shape_kind(body) == BODY_SHAPE_CHAIN ? body_get_segment_count(body) : n;
+    for (size_t k = 0; k < edges; k++) {
         vector_t a = camera_to_pixel(camera, polygon.vertices[k]);
         vector_t b = camera_to_pixel(camera, polygon.vertices[(k + 1) % n]);
         thickLineRGBA(renderer, draw_coord(a.x), draw_coord(a.y), draw_coord(b.x),

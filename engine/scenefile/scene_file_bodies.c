@@ -37,9 +37,10 @@ static bool once(parser_t *p, sf_where_t *seen, const char *what, sf_where_t her
     return true;
 }
 
-/* Vertex coordinates up to the end of the property. A list may go on over
- * several lines: a line that starts with a number continues it. */
-static bool read_vertices(parser_t *p, sf_shape_t *shape) {
+/* Vertex coordinates up to the end of the property, at least `least` of
+ * them. A list may go on over several lines: a line that starts with a
+ * number continues it. */
+static bool read_vertices(parser_t *p, sf_shape_t *shape, size_t least) {
     size_t capacity = 0;
     for (;;) {
         if (p->token.kind == TOKEN_NEWLINE) {
@@ -77,9 +78,10 @@ static bool read_vertices(parser_t *p, sf_shape_t *shape) {
         sf_reserve((void **)&shape->written, &capacity, shape->count + 1, sizeof(vector_t));
         shape->written[shape->count++] = v;
     }
-    if (shape->count < 3) {
+    if (shape->count < least) {
         char expectation[128];
-        snprintf(expectation, sizeof expectation, "at least 3 vertices (x y pairs), %zu so far",
+        snprintf(expectation, sizeof expectation, "at least %zu %s (x y pairs), %zu so far", least,
+                 least == 3 && shape->kind == SHAPE_VERTICES ? "vertices" : "points",
                  shape->count);
         return sf_expected(p, expectation);
     }
@@ -114,7 +116,8 @@ static bool read_capsule(parser_t *p, sf_shape_t *shape) {
 
 static bool parse_shape(parser_t *p, const char *keyword, sf_body_t *body, seen_t *seen,
                         sf_where_t here) {
-    if (!once(p, &seen->shape, "shape (regular, box, vertices, circle or capsule)", here))
+    if (!once(p, &seen->shape, "shape (regular, box, vertices, circle, capsule, chain or loop)",
+              here))
         return false;
     sf_shape_t *shape = &body->shape;
     shape->where = here;
@@ -146,8 +149,12 @@ static bool parse_shape(parser_t *p, const char *keyword, sf_body_t *body, seen_
         return sf_read_quantity(p, &width, &shape->width) &&
                sf_read_quantity(p, &height, &shape->height);
     }
+    if (strcmp(keyword, "chain") == 0 || strcmp(keyword, "loop") == 0) {
+        shape->kind = keyword[0] == 'c' ? SHAPE_CHAIN : SHAPE_LOOP;
+        return read_vertices(p, shape, shape->kind == SHAPE_CHAIN ? 2 : 3);
+    }
     shape->kind = SHAPE_VERTICES;
-    return read_vertices(p, shape);
+    return read_vertices(p, shape, 3);
 }
 
 static bool parse_property(parser_t *p, sf_body_t *body, seen_t *seen) {
@@ -157,7 +164,8 @@ static bool parse_property(parser_t *p, sf_body_t *body, seen_t *seen) {
     keyword[p->token.length < sizeof keyword ? p->token.length : 0] = '\0';
     if (strcmp(keyword, "regular") == 0 || strcmp(keyword, "box") == 0 ||
         strcmp(keyword, "vertices") == 0 || strcmp(keyword, "circle") == 0 ||
-        strcmp(keyword, "capsule") == 0) {
+        strcmp(keyword, "capsule") == 0 || strcmp(keyword, "chain") == 0 ||
+        strcmp(keyword, "loop") == 0) {
         next(p);
         return parse_shape(p, keyword, body, seen, here);
     }
@@ -272,7 +280,8 @@ static bool parse_property(parser_t *p, sf_body_t *body, seen_t *seen) {
         body->repeat_y = (size_t)y;
         return sf_read_vector(p, &OFFSET, &body->repeat_step);
     }
-    return sf_expected(p, "a body property (regular, box, vertices, circle, capsule, mass, density, static, "
+    return sf_expected(p, "a body property (regular, box, vertices, circle, capsule, chain, loop, "
+                          "mass, density, static, "
                           "elasticity, friction, color, position, angle, velocity, spin, tag, "
                           "group, filter, centred, asleep, sleep_timer, repeat) or '}'");
 }
@@ -338,6 +347,25 @@ static void derive_round(sf_shape_t *shape) {
     shape->moment_per_kg = round_moment_per_kg(length, r);
 }
 
+/* A chain: its segments as body_init_chain checks them (no segment of zero
+ * length, the loop's closing one included); its frame is the file's. */
+static bool derive_chain(parser_t *p, sf_shape_t *shape) {
+    size_t n = shape->count, segments = shape->kind == SHAPE_LOOP ? n : n - 1;
+    for (size_t i = 0; i < segments; i++) {
+        vector_t a = shape->written[i], b = shape->written[(i + 1) % n];
+        if (a.x == b.x && a.y == b.y) {
+            return sf_fail(p->lexer, shape->where,
+                           "expected segments of some length, found point %zu (%g, %g) equal to "
+                           "point %zu",
+                           (i + 1) % n + 1, b.x, b.y, i + 1);
+        }
+    }
+    shape->centroid = VEC_ZERO;
+    shape->area = 0.0;
+    shape->moment_per_kg = 0.0;
+    return true;
+}
+
 /* Checks the shape as the engine will see it and derives what the body needs.
  * The engine gets the vertices relative to their centroid, so that is the
  * list polygon_check judges (centring rounds, so checking the written list
@@ -347,6 +375,7 @@ static bool derive_shape(parser_t *p, sf_shape_t *shape) {
         derive_round(shape);
         return true;
     }
+    if (shape->kind == SHAPE_CHAIN || shape->kind == SHAPE_LOOP) return derive_chain(p, shape);
     list_t *list = shape_list(shape);
     const char *problem = polygon_check(list);
     if (problem == NULL && shape->kind == SHAPE_VERTICES && !polygon_is_counterclockwise(list)) {
@@ -461,13 +490,36 @@ static bool register_name(parser_t *p, sf_body_t *body, size_t index, sf_where_t
     return true;
 }
 
+/* A chain is static (body.h): no mass, density, velocity or spin; static
+ * whether or not the block says so. */
+static bool finish_chain(parser_t *p, sf_body_t *body, const seen_t *seen) {
+    if (body->shape.kind != SHAPE_CHAIN && body->shape.kind != SHAPE_LOOP) return true;
+    if (body->is_template) {
+        return sf_fail(p->lexer, body->shape.where,
+                       "expected no chain in a template (a game spawns moving copies), found one");
+    }
+    if (seen->mass.line != 0 && body->mass_kind != MASS_STATIC) {
+        return sf_fail(p->lexer, seen->mass,
+                       "expected a chain to be static (static, or no mass), found %s",
+                       body->mass_kind == MASS_TOTAL ? "a mass" : "a density");
+    }
+    if (seen->velocity.line != 0 || seen->spin.line != 0) {
+        return sf_fail(p->lexer, seen->velocity.line != 0 ? seen->velocity : seen->spin,
+                       "expected a chain at rest (it is static), found a %s",
+                       seen->velocity.line != 0 ? "velocity" : "spin");
+    }
+    body->mass_kind = MASS_STATIC;
+    return true;
+}
+
 /* After '}': the derived values, the defaults, the limits. */
 static bool finish_body(parser_t *p, sf_body_t *body, const seen_t *seen, sf_where_t name_where,
                         sf_where_t close_where) {
     sf_doc_t *doc = p->doc;
     if (body->shape.kind == SHAPE_NONE) {
         return sf_fail(p->lexer, close_where,
-                       "expected a shape (regular, box, vertices, circle or capsule) in the %s, found '}' without "
+                       "expected a shape (regular, box, vertices, circle, capsule, chain or loop) in the %s, "
+                       "found '}' without "
                        "one",
                        body->is_template ? "template" : "body");
     }
@@ -477,9 +529,11 @@ static bool finish_body(parser_t *p, sf_body_t *body, const seen_t *seen, sf_whe
                        body->shape.kind == SHAPE_BOX       ? "a box"
                        : body->shape.kind == SHAPE_CIRCLE  ? "a circle"
                        : body->shape.kind == SHAPE_CAPSULE ? "a capsule"
-                                                           : "a regular polygon");
+                       : body->shape.kind == SHAPE_REGULAR ? "a regular polygon"
+                                                           : "a chain");
     }
     if (!derive_shape(p, &body->shape)) return false;
+    if (!finish_chain(p, body, seen)) return false;
     if (!derive_mass(p, body, seen->mass.line != 0 ? seen->mass : body->shape.where)) return false;
     if (!body->has_color)
         body->color = body->mass_kind == MASS_STATIC ? STATIC_COLOR : MOVING_COLOR;

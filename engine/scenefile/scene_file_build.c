@@ -88,6 +88,10 @@ static body_t *make_shape(const sf_body_t *spec, sf_record_t *record) {
         return body_init_capsule_with_info(s->ends[0], s->ends[1], s->radius, spec->mass,
                                            spec->color, record, record_freed);
     }
+    if (s->kind == SHAPE_CHAIN || s->kind == SHAPE_LOOP) {
+        return body_init_chain_with_info(s->written, s->count, s->kind == SHAPE_LOOP, spec->color,
+                                         record, record_freed);
+    }
     list_t *shape = list_init(s->count, free);
     for (size_t i = 0; i < s->count; i++) {
         vector_t *v = malloc(sizeof *v);
@@ -328,22 +332,48 @@ static int compare_contact_pairs(const void *p, const void *q) {
     const sf_contact_t *a = *(const sf_contact_t *const *)p, *b = *(const sf_contact_t *const *)q;
     if (a->body_a != b->body_a) return a->body_a < b->body_a ? -1 : 1;
     if (a->body_b != b->body_b) return a->body_b < b->body_b ? -1 : 1;
+    if (a->memory.segment != b->memory.segment) return a->memory.segment < b->memory.segment ? -1 : 1;
     return a->where.line < b->where.line ? -1 : a->where.line > b->where.line;
 }
 
-/* Whether the file's body number `index` (in the order the file makes
- * them) is a circle or a capsule; false past the last. */
-static bool is_round(const sf_doc_t *doc, size_t index) {
+/* The shape of the file's body number `index` (in the order the file
+ * makes them); NULL past the last. */
+static const sf_shape_t *shape_of(const sf_doc_t *doc, size_t index) {
     for (size_t i = 0; i < doc->body_count; i++) {
         const sf_body_t *spec = &doc->bodies[i];
         if (spec->is_template) continue;
         size_t copies = spec->repeat_x * spec->repeat_y;
-        if (index < copies) {
-            return spec->shape.kind == SHAPE_CIRCLE || spec->shape.kind == SHAPE_CAPSULE;
-        }
+        if (index < copies) return &spec->shape;
         index -= copies;
     }
-    return false;
+    return NULL;
+}
+
+static bool is_chain(const sf_shape_t *shape) {
+    return shape != NULL && (shape->kind == SHAPE_CHAIN || shape->kind == SHAPE_LOOP);
+}
+
+/* Whether the body is a circle, a capsule or a chain: its manifold is
+ * found again each step, and keeps no face. */
+static bool is_round(const sf_doc_t *doc, size_t index) {
+    const sf_shape_t *shape = shape_of(doc, index);
+    return shape != NULL && (shape->kind == SHAPE_CIRCLE || shape->kind == SHAPE_CAPSULE ||
+                             is_chain(shape));
+}
+
+/* A contact with a chain names one of its segments, the chain second. */
+static bool check_segment(const sf_doc_t *doc, const sf_contact_t *c, sf_lexer_t *lexer) {
+    if (is_chain(shape_of(doc, c->body_a))) {
+        return sf_fail(lexer, c->where, "expected the chain as the contact's second body, found it first");
+    }
+    const sf_shape_t *b = shape_of(doc, c->body_b);
+    size_t segments = !is_chain(b) ? 0 : b->kind == SHAPE_LOOP ? b->count : b->count - 1;
+    if (segments > 0 ? c->memory.segment >= segments : c->memory.segment != 0) {
+        return sf_fail(lexer, c->where,
+                       "expected a segment of body %zu (it has %zu), found segment %zu",
+                       c->body_b, segments, c->memory.segment);
+    }
+    return true;
 }
 
 /* The contact blocks name two different bodies the file makes, once per
@@ -364,6 +394,7 @@ static bool check_contacts(const sf_doc_t *doc, sf_lexer_t *lexer) {
         }
         /* A round pair keeps no face (its manifold is found again each
          * step): its face normal is zero. */
+        if (!check_segment(doc, c, lexer)) return false;
         bool round = is_round(doc, c->body_a) || is_round(doc, c->body_b);
         bool face_ok = is_unit(c->memory.face_normal) ||
                        (round && c->memory.face_normal.x == 0.0 && c->memory.face_normal.y == 0.0);
@@ -380,7 +411,8 @@ static bool check_contacts(const sf_doc_t *doc, sf_lexer_t *lexer) {
     qsort(sorted, doc->contact_count, sizeof *sorted, compare_contact_pairs);
     for (size_t i = 1; i < doc->contact_count; i++) {
         const sf_contact_t *c = sorted[i], *before = sorted[i - 1];
-        if (c->body_a == before->body_a && c->body_b == before->body_b) {
+        if (c->body_a == before->body_a && c->body_b == before->body_b &&
+            c->memory.segment == before->memory.segment) {
             sf_where_t where = sorted[i]->where, first = sorted[i - 1]->where;
             size_t a = sorted[i]->body_a, b = sorted[i]->body_b;
             free(sorted);

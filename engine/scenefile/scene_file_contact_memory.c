@@ -61,16 +61,24 @@ static bool parse_contact_line(parser_t *p, sf_contact_t *contact, sf_where_t *s
     if (p->token.length < sizeof keyword) memcpy(keyword, p->token.text, p->token.length);
     keyword[p->token.length < sizeof keyword ? p->token.length : 0] = '\0';
     static const char *const LINES[] = {"normal", "point", "incident", "face", "pose",
-                                        "previous"};
+                                        "previous", "segment"};
     bool known = false;
     for (size_t i = 0; i < sizeof LINES / sizeof LINES[0]; i++) {
         known = known || strcmp(keyword, LINES[i]) == 0;
     }
     if (!known) {
-        return sf_expected(p,
-                           "a contact line (normal, point, face, incident, pose, previous) or '}'");
+        return sf_expected(p, "a contact line (normal, point, face, incident, pose, previous, "
+                              "segment) or '}'");
     }
     next(p);
+    if (strcmp(keyword, "segment") == 0) {
+        uint64_t segment = 0;
+        if (!sf_first_time(p, &seen[3], "segment", here) ||
+            !sf_read_count(p, "the chain's segment", 0, SCENE_FILE_MAX_VERTICES, &segment))
+            return false;
+        m->segment = (size_t)segment;
+        return true;
+    }
     if (strcmp(keyword, "previous") == 0) {
         if (m->previous_count == 2) {
             return sf_fail(p->lexer, here,
@@ -124,7 +132,7 @@ bool sf_parse_contact(parser_t *p, sf_where_t here) {
     while (p->token.kind == TOKEN_NEWLINE) next(p);
     if (p->token.kind != TOKEN_OPEN) return sf_expected(p, "'{' to open the contact");
     next(p);
-    sf_where_t seen[3] = {{0, 0}, {0, 0}, {0, 0}};
+    sf_where_t seen[4] = {{0, 0}, {0, 0}, {0, 0}, {0, 0}};
     for (;;) {
         while (at_separator(p)) next(p);
         if (p->token.kind == TOKEN_CLOSE) break;

@@ -101,7 +101,9 @@ typedef enum {
     SHAPE_BOX,
     SHAPE_VERTICES,
     SHAPE_CIRCLE,
-    SHAPE_CAPSULE
+    SHAPE_CAPSULE,
+    SHAPE_CHAIN, /* `chain`: an open chain through the written points */
+    SHAPE_LOOP   /* `loop`: a closed one */
 } sf_shape_kind_t;
 
 typedef struct {
@@ -111,7 +113,8 @@ typedef struct {
     double radius;        /* SHAPE_REGULAR: circumradius; SHAPE_CIRCLE, SHAPE_CAPSULE: radius */
     vector_t ends[2];     /* SHAPE_CAPSULE: the end centres as written */
     double width, height; /* SHAPE_BOX: full sizes */
-    vector_t *written;    /* SHAPE_VERTICES: as written, made counter-clockwise */
+    vector_t *written;    /* SHAPE_VERTICES: as written, made counter-clockwise; SHAPE_CHAIN,
+                             SHAPE_LOOP: the points as written, in the chain's frame */
     bool as_centred;      /* SHAPE_VERTICES: written relative to the centroid, kept exactly */
     size_t count;         /* vertices (of the engine's outline for a round shape) */
     /* Derived once the shape is checked: */

@@ -149,6 +149,11 @@ static void put_shape(out_t *out, const sf_shape_t *shape) {
         put_vector(out, shape->ends[1]);
         put_number(out, shape->radius);
         break;
+    case SHAPE_CHAIN:
+    case SHAPE_LOOP:
+        put(out, shape->kind == SHAPE_CHAIN ? "    chain" : "    loop");
+        for (size_t i = 0; i < shape->count; i++) put_vector(out, shape->written[i]);
+        break;
     default:
         put(out, "    vertices");
         for (size_t i = 0; i < shape->count; i++) put_vector(out, shape->written[i]);
@@ -328,8 +333,15 @@ static void put_foreign_shape(out_t *out, body_t *body) {
         put(out, "\n");
         return;
     }
-    put(out, "    vertices");
     polygon_t polygon = body_get_local_polygon(body);
+    if (kind == BODY_SHAPE_CHAIN) {
+        /* Its points as made, in its frame: exact. */
+        put(out, body_is_loop(body) ? "    loop" : "    chain");
+        for (size_t i = 0; i < polygon.count; i++) put_vector(out, polygon.vertices[i]);
+        put(out, "\n");
+        return;
+    }
+    put(out, "    vertices");
     for (size_t i = 0; i < polygon.count; i++) put_vector(out, polygon.vertices[i]);
     put(out, "\n    centred\n");
 }
@@ -449,7 +461,8 @@ typedef struct {
 static int compare_numbered(const void *p, const void *q) {
     const numbered_contact_t *x = p, *y = q;
     if (x->a != y->a) return x->a < y->a ? -1 : 1;
-    return (x->b > y->b) - (x->b < y->b);
+    if (x->b != y->b) return x->b < y->b ? -1 : 1;
+    return (x->memory.segment > y->memory.segment) - (x->memory.segment < y->memory.segment);
 }
 
 static void put_point(out_t *out, const scene_memory_point_t *p) {
@@ -465,7 +478,9 @@ static void put_point(out_t *out, const scene_memory_point_t *p) {
 
 static void put_contact(out_t *out, const numbered_contact_t *c) {
     const scene_contact_memory_t *m = &c->memory;
-    put(out, "contact %zu %zu {\n    normal", c->a, c->b);
+    put(out, "contact %zu %zu {\n", c->a, c->b);
+    if (body_get_shape_kind(m->body_b) == BODY_SHAPE_CHAIN) put(out, "    segment %zu\n", m->segment);
+    put(out, "    normal");
     put_vector(out, m->normal);
     put(out, "\n");
     for (int j = 0; j < m->point_count; j++) put_point(out, &m->points[j]);

@@ -92,9 +92,8 @@ body_t *body_init_centred(list_t *shape, double mass, rgb_color_t color, void *i
  * with its vertices on the boundary (32 for a circle, 17 on each end of a
  * capsule, the first of a circle at angle 0 from the centre), which
  * body_get_shape returns (a new list, as for a polygon), body_get_polygon
- * and body_get_local_polygon view; so do the scene's queries and the
- * search for the moment of an impact within a step (the manifold at that
- * moment is the exact one).
+ * and body_get_local_polygon view. The scene's queries (query.h) and the
+ * search for the moment of an impact within a step use the exact shape.
  *
  * A radius that is not finite or not > 0, a non-finite centre or end, and
  * the mass errors of body_init stop the program: "engine error in
@@ -111,12 +110,58 @@ body_t *body_init_capsule(vector_t p1, vector_t p2, double radius, double mass,
 body_t *body_init_capsule_with_info(vector_t p1, vector_t p2, double radius, double mass,
                                     rgb_color_t color, void *info, free_func_t info_freer);
 
+/*
+ * Chains: static geometry made of line segments (a floor, a slope, a
+ * terrain outline, a closed loop). points[0 .. count) (world coordinates,
+ * copied) are joined in order by segments, and the last back to the first
+ * when loop is true. A chain collides on one side only, the left of its
+ * direction: a floor listed left to right is solid from above, a loop listed
+ * counter-clockwise keeps bodies inside it and one listed clockwise keeps
+ * them out. Joins are smooth: each segment knows the points before and after
+ * it, so a body sliding or rolling over a join meets one surface and does
+ * not catch on the corner where two segments meet, and the segments of a
+ * straight run act as one long segment. The ends of an open chain are
+ * rounded corners.
+ *
+ * A chain is static: mass, moment of inertia and the default material as a
+ * body of mass INFINITY. Its frame is the world's as made (centroid (0, 0),
+ * rotation 0); body_set_centroid and body_set_rotation move and turn that
+ * frame and the segments with it. A nonzero velocity or angular velocity,
+ * or a finite moment of inertia, stops the program: a chain does not move.
+ *
+ * The seed's polygon functions see its points, in order, relative to that
+ * frame: body_get_shape returns them (a new list), body_get_polygon and
+ * body_get_local_polygon view them, their normals those of the edges from
+ * each point to the next (the last to the first). The points are not a
+ * convex polygon: the polygon functions' areas and centroids mean nothing
+ * for them. body_get_bounds is the box of the points; body_contains_point
+ * is whether the point lies on a segment; find_collision, the contact
+ * record and the queries use the segments.
+ *
+ * Refused, stopping the program: fewer than 2 points (3 for a loop), a
+ * NULL list, a point that is not finite, two consecutive points that are
+ * equal (a segment of zero length), a loop's last point equal to its first
+ * ("engine error in body_init_chain: segment 3 from (1, 0) to (1, 0) has
+ * zero length").
+ */
+body_t *body_init_chain(const vector_t *points, size_t count, bool loop, rgb_color_t color);
+body_t *body_init_chain_with_info(const vector_t *points, size_t count, bool loop,
+                                  rgb_color_t color, void *info, free_func_t info_freer);
+
 /* What a body's shape is. */
 typedef enum {
     BODY_SHAPE_POLYGON = 0,
     BODY_SHAPE_CIRCLE,
     BODY_SHAPE_CAPSULE,
+    BODY_SHAPE_CHAIN,
 } body_shape_kind_t;
+
+/* A chain's segments: how many (0 for another body), and segment i's world
+ * ends (from point i to point i + 1). */
+size_t body_get_segment_count(body_t *body);
+void body_get_segment(body_t *body, size_t index, vector_t *p1, vector_t *p2);
+/* Whether a chain closes into a loop (false for another body). */
+bool body_is_loop(body_t *body);
 
 body_shape_kind_t body_get_shape_kind(body_t *body);
 

@@ -3,7 +3,10 @@
 
 /*
  * Questions about a scene's bodies where they are now, answered exactly
- * against each body's shape (its convex polygon), and an explosion.
+ * against each body's shape (a convex polygon, a circle's or capsule's
+ * true boundary, a chain's one-sided segments: a ray crosses a segment
+ * from its free side only, and a chain contains the points on its
+ * segments), and an explosion.
  *
  * How: the scene keeps a grid of the bodies' bounding boxes (the
  * broadphase's, collision/broadphase.h), built at the first query after

@@ -125,6 +125,9 @@ typedef struct {
 
 typedef struct {
     body_t *body_a, *body_b;
+    /* When body_b is a chain (body.h): the segment the contact is with
+     * (body_get_segment's index); 0 otherwise. A chain is never body_a. */
+    size_t segment;
     vector_t normal; /* unit, from body_a toward body_b */
     int point_count; /* 0 to 2 */
     scene_memory_point_t points[2];
@@ -151,7 +154,8 @@ scene_contact_memory_t scene_get_contact_memory(scene_t *scene, size_t index);
  * contacts on. Refused: a NULL array with count > 0; a body that is NULL,
  * not in this scene or marked removed; body_a == body_b; a pair listed
  * twice; a count (of points, features or previous points) outside 0 to 2;
- * a value that is not finite.
+ * a value that is not finite; a chain as body_a, a segment beyond body_b's
+ * last, a nonzero segment when body_b is not a chain.
  */
 void scene_restore_contact_memory(scene_t *scene, const scene_contact_memory_t *memories,
                                   size_t count);

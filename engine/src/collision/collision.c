@@ -4,6 +4,7 @@
 #include "base/check.h"
 #include "collision/collision_private.h"
 #include "collision/round_manifold.h"
+#include "collision/segment_manifold.h"
 
 typedef struct {
     double min;
@@ -61,11 +62,57 @@ static collision_info_t round_collision(const body_t *body1, const body_t *body2
     return info;
 }
 
+/* The bodies that stand for body in a pair: a chain's segments (brought up
+ * to date), or the body itself. */
+static size_t parts_of(body_t *body, body_t ***parts) {
+    if (body->kind != BODY_SHAPE_CHAIN) {
+        *parts = NULL;
+        return 1;
+    }
+    for (size_t k = 0; k < body->part_count; k++) body_update_world(body->parts[k]);
+    *parts = body->parts;
+    return body->part_count;
+}
+
+/* A pair with a chain: each segment against the other body (or each
+ * segment of it) by the chain's rules (segment_manifold.h), the deepest
+ * touch kept; *least receives the least separation found. */
+static collision_info_t chain_collision(body_t *body1, body_t *body2, double *least) {
+    body_t **parts1, **parts2;
+    size_t n1 = parts_of(body1, &parts1), n2 = parts_of(body2, &parts2);
+    collision_info_t info = {false, VEC_ZERO, 0.0};
+    *least = INFINITY;
+    for (size_t i = 0; i < n1; i++) {
+        for (size_t j = 0; j < n2; j++) {
+            body_t *a = parts1 != NULL ? parts1[i] : body1;
+            body_t *b = parts2 != NULL ? parts2[j] : body2;
+            manifold_features_t features;
+            double separation;
+            /* Not manifold_collide: a program of seed collisions links
+             * none of the world's narrowphase. */
+            manifold_t m = segment_manifold_collide(a, b, 0.0, &features, &separation);
+            for (int k = 0; k < m.point_count; k++) {
+                separation = fmin(separation, m.points[k].separation);
+            }
+            bool touches = m.point_count > 0 && separation <= 0.0;
+            if (touches && (!info.collided || -separation > info.depth)) {
+                info = (collision_info_t){true, m.normal, -separation};
+            }
+            *least = fmin(*least, separation);
+        }
+    }
+    return info;
+}
+
 collision_info_t find_collision(body_t *body1, body_t *body2) {
     REQUIRE_NOT_NULL(body1);
     REQUIRE_NOT_NULL(body2);
     body_update_world(body1);
     body_update_world(body2);
+    if (body1->kind == BODY_SHAPE_CHAIN || body2->kind == BODY_SHAPE_CHAIN) {
+        double least;
+        return chain_collision(body1, body2, &least);
+    }
     if ((body1->kind | body2->kind) != BODY_SHAPE_POLYGON) return round_collision(body1, body2);
     collision_info_t info = {false, VEC_ZERO, 0.0};
     /* Bounds apart by a gap: some edge normal separates them too, so the
@@ -96,6 +143,11 @@ static double gap_on_normals_of(const body_t *owner, const body_t *body1, const 
 double collision_separation(body_t *body1, body_t *body2) {
     body_update_world(body1);
     body_update_world(body2);
+    if (body1->kind == BODY_SHAPE_CHAIN || body2->kind == BODY_SHAPE_CHAIN) {
+        double least;
+        chain_collision(body1, body2, &least);
+        return least;
+    }
     if ((body1->kind | body2->kind) != BODY_SHAPE_POLYGON) {
         manifold_features_t features;
         double separation;

@@ -4,6 +4,7 @@
 #include "base/scalar.h"
 #include "collision/seams.h"
 #include "collision/round_manifold.h"
+#include "collision/segment_manifold.h"
 
 /* Prefer polygon a as the reference unless b's face is clearly better, so
  * the choice (and so the feature ids) does not flicker between steps when
@@ -320,6 +321,9 @@ static manifold_t collide_at_seams(const body_t *a, const body_t *b, bool flip, 
 manifold_t manifold_collide(body_t *a, body_t *b, double margin, manifold_features_t *features,
                             double *separation) {
     if ((a->kind | b->kind) != BODY_SHAPE_POLYGON) {
+        if (a->kind == BODY_SHAPE_SEGMENT || b->kind == BODY_SHAPE_SEGMENT) {
+            return segment_manifold_collide(a, b, margin, features, separation);
+        }
         return round_manifold_collide(a, b, margin, features, separation);
     }
     manifold_t manifold = {VEC_ZERO, 0, {{VEC_ZERO, 0.0, 0}, {VEC_ZERO, 0.0, 0}}};
@@ -346,6 +350,9 @@ manifold_t manifold_evaluate(const manifold_features_t *features, const body_t *
         /* A round pair's manifold is cheap to find again, and exact. */
         manifold_features_t found;
         double separation;
+        if (a->kind == BODY_SHAPE_SEGMENT || b->kind == BODY_SHAPE_SEGMENT) {
+            return segment_manifold_collide(a, b, margin, &found, &separation);
+        }
         return round_manifold_collide(a, b, margin, &found, &separation);
     }
     manifold_t manifold = {VEC_ZERO, 0, {{VEC_ZERO, 0.0, 0}, {VEC_ZERO, 0.0, 0}}};

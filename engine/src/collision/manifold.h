@@ -15,7 +15,8 @@
  * keeps to the faces of their combined surface, as against one body.
  *
  * A pair with a round body (a circle or capsule) takes the exact round
- * path of round_manifold.h; polygons never reach it.
+ * path of round_manifold.h, and one with a chain's segment that of
+ * segment_manifold.h; polygons never reach them.
  */
 
 #include "jostle/body.h"

@@ -21,6 +21,16 @@ typedef struct {
 } core_t;
 
 static void core_of(const body_t *body, core_t *core) {
+    if (body->kind == BODY_SHAPE_SEGMENT) {
+        /* One face: a chain's segment collides on its free side. */
+        core->count = 2;
+        core->faces = 1;
+        core->v = body->world_vertices;
+        core->room[2] = body_rotate_vector(body, body->segment->normal);
+        core->n = core->room + 2;
+        core->radius = 0.0;
+        return;
+    }
     if (body->kind == BODY_SHAPE_POLYGON) {
         core->count = core->faces = body->count;
         core->v = body->world_vertices;
@@ -203,7 +213,7 @@ static manifold_t face_manifold(const core_t *r, size_t f, const core_t *in, boo
 
 /* The face of a core's edge `edge` that faces direction d. */
 static size_t facing(const core_t *core, int edge, vector_t d) {
-    if (core->count == 2) return vec_dot(core->n[0], d) >= 0.0 ? 0 : 1;
+    if (core->count == 2) return core->faces == 1 || vec_dot(core->n[0], d) >= 0.0 ? 0 : 1;
     return (size_t)edge;
 }
 
@@ -264,4 +274,14 @@ manifold_t round_manifold_collide(const body_t *body_a, const body_t *body_b, do
     *features = (manifold_features_t){.point_count = manifold.point_count};
     for (int i = 0; i < manifold.point_count; i++) features->ids[i] = manifold.points[i].id;
     return manifold;
+}
+
+manifold_t round_manifold_on_face(vector_t v1, vector_t v2, vector_t normal, const body_t *other,
+                                  bool face_is_b, double margin) {
+    core_t face = {2, 1, NULL, NULL, 0.0, {v1, v2, normal, VEC_ZERO}};
+    face.v = face.room;
+    face.n = face.room + 2;
+    core_t in;
+    core_of(other, &in);
+    return face_manifold(&face, 0, &in, face_is_b, margin);
 }

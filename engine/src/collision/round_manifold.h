@@ -20,6 +20,9 @@
  * (speculative contacts), with ids naming their features. The normal
  * points from a toward b.
  *
+ * A chain's segment (BODY_SHAPE_SEGMENT) is a core of one face, its free
+ * side's; segment_manifold.h applies its chain's rules on top.
+ *
  * The same contract as manifold_collide: *separation receives the shapes'
  * separation (their distance when apart, minus the overlap along the
  * normal otherwise); world polygons must be up to date.
@@ -30,5 +33,14 @@
 
 manifold_t round_manifold_collide(const body_t *a, const body_t *b, double margin,
                                   manifold_features_t *features, double *separation);
+
+/* The manifold of `other` on a straight face from v1 to v2 whose unit
+ * normal points to where other lies: other's core point, or its edge most
+ * opposed to the normal clipped to the face's side planes, each point's
+ * separation its distance from the face's line less other's radius. The
+ * normal points from the face toward other, or the other way when
+ * face_is_b. */
+manifold_t round_manifold_on_face(vector_t v1, vector_t v2, vector_t normal, const body_t *other,
+                                  bool face_is_b, double margin);
 
 #endif // #ifndef ROUND_MANIFOLD_H

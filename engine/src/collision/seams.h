@@ -108,9 +108,12 @@ typedef struct {
 
 void seams_free(seams_t *seams);
 
-/* Whether the body counts as static for the seams. */
+/* Whether the body counts as static for the seams: a polygon (a chain's
+ * segments know their neighbours themselves, segment_manifold.h, and a
+ * round body has no flat faces). */
 static inline bool seams_is_static(const body_t *body) {
-    return body->inverse_mass == 0.0 && body->inverse_inertia == 0.0 && !body->removed &&
+    return body->kind == BODY_SHAPE_POLYGON && body->inverse_mass == 0.0 &&
+           body->inverse_inertia == 0.0 && !body->removed &&
            body->velocity.x == 0.0 && body->velocity.y == 0.0 && body->angular_velocity == 0.0;
 }
 

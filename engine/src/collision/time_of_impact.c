@@ -3,12 +3,16 @@
 #include "dynamics/body_private.h"
 #include "base/memory.h"
 #include "base/scalar.h"
+#include "collision/round_manifold.h"
 
 /* Rounds of the search (an axis each) before it gives up, and steps of the
  * root finder on one axis. */
 enum { MAX_ROUNDS = 20, MAX_ROOT_STEPS = 60 };
 /* Steps of conservative advancement on one axis before it gives up. */
 enum { MAX_ADVANCES = 32 };
+/* Steps of conservative advancement on a round pair's distance before it
+ * gives up (a grazing pass). */
+enum { MAX_ROUND_ADVANCES = 200 };
 
 /* A body and its motion over the step. */
 typedef struct {
@@ -266,12 +270,47 @@ static double separation_rate(const body_t *a, const toi_motion_t *motion_a, con
            fabs(wb - wa) * max_of(a->radius, b->radius);
 }
 
+/* A pair with a round body or a chain's segment: their exact separation
+ * at time t (round_manifold.h), the distance between the shapes when
+ * apart. */
+static double exact_separation(const pair_t *pair, double t, toi_scratch_t *scratch) {
+    const body_t *a = pair->a.body;
+    body_t ghost_a, ghost_b;
+    pose_at(&ghost_a, &pair->a, t, scratch->vectors);
+    pose_at(&ghost_b, &pair->b, t, scratch->vectors + 2 * a->count);
+    manifold_features_t features;
+    double separation;
+    round_manifold_collide(&ghost_a, &ghost_b, -INFINITY, &features, &separation);
+    return separation;
+}
+
+/* The first touch of a round pair: conservative advancement on the exact
+ * distance, which falls no faster than the pair's rate, so each advance by
+ * the distance (less half the tolerance) over the rate stops short of the
+ * first touch. A negative number when they do not touch in [0, duration]. */
+static double round_first_touch(const pair_t *pair, double duration, double tolerance,
+                                toi_scratch_t *scratch) {
+    const body_t *a = pair->a.body, *b = pair->b.body;
+    toi_scratch_reserve(scratch, a->count > b->count ? a->count : b->count);
+    double t = 0.0;
+    for (int k = 0; k < MAX_ROUND_ADVANCES; k++) {
+        double separation = exact_separation(pair, t, scratch);
+        if (separation <= tolerance) return t;
+        if (!(pair->rate > 0.0)) return -1.0;
+        t += (separation - 0.5 * tolerance) / pair->rate;
+        if (t > duration) return -1.0;
+    }
+    return -1.0;
+}
+
 bool time_of_impact(const body_t *a, const toi_motion_t *motion_a, const body_t *b,
                     const toi_motion_t *motion_b, double duration, double margin,
                     double tolerance, toi_scratch_t *scratch, toi_contact_t *contact) {
     pair_t pair = {{a, motion_a}, {b, motion_b},
                    separation_rate(a, motion_a, b, motion_b, duration)};
-    double t = first_touch(&pair, duration, tolerance);
+    double t = (a->kind | b->kind) != BODY_SHAPE_POLYGON
+                   ? round_first_touch(&pair, duration, tolerance, scratch)
+                   : first_touch(&pair, duration, tolerance);
     contact->touches = t >= 0.0;
     if (!contact->touches) return contact_at(&pair, duration, INFINITY, scratch, contact);
     return contact_at(&pair, t, margin, scratch, contact);

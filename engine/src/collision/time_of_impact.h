@@ -21,6 +21,10 @@
  * apart makes each face's separation concave in t, and the answer is exact
  * to rounding; with turning, the advancement gives up after 32 steps on one
  * face (a grazing pass), taking the pair as not touching.
+ *
+ * A pair with a circle, a capsule or a chain's segment advances on the
+ * exact distance between the shapes instead (round_manifold.h), by the
+ * distance over the same bound, and gives up after 200 steps.
  */
 
 #include <stdbool.h>

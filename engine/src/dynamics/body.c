@@ -157,7 +157,52 @@ void body_free(body_t *body) {
             "frees it), or free it after scene_free of that scene");
     body_wake(body);
     if (body->info_freer != NULL) body->info_freer(body->info);
+    for (size_t k = 0; k < body->part_count; k++) {
+        memory_free(body->parts[k]->segment);
+        memory_free(body->parts[k]);
+    }
+    memory_free(body->parts);
     memory_free(body);
+}
+
+/* A chain's segments follow its pose (body_private.h): each turned as the
+ * chain is, at its offset in the chain's frame. */
+static void place_parts(body_t *body) {
+    if (body->part_count == 0) return;
+    body_update_world(body);
+    for (size_t k = 0; k < body->part_count; k++) {
+        body_t *part = body->parts[k];
+        body_mark_changed(part); /* before: its box there is needed */
+        part->angle = body->angle;
+        part->centroid = body_to_world(body, part->segment->offset);
+        part->world_valid = false;
+    }
+}
+
+/* A chain's segments take its material, filter and colour. */
+static void copy_to_parts(body_t *body) {
+    for (size_t k = 0; k < body->part_count; k++) {
+        body_t *part = body->parts[k];
+        if (part->friction != body->friction || part->elasticity != body->elasticity ||
+            part->category != body->category || part->mask != body->mask ||
+            part->group != body->group) {
+            body_mark_changed(part);
+        }
+        part->friction = body->friction;
+        part->elasticity = body->elasticity;
+        part->category = body->category;
+        part->mask = body->mask;
+        part->group = body->group;
+        part->color = body->color;
+    }
+}
+
+/* A chain does not move (body.h); `function` is the setter called. */
+static void require_still(const body_t *body, bool moving, const char *what,
+                          const char *function) {
+    if (body->kind == BODY_SHAPE_CHAIN && moving) {
+        engine_fail(function, "a chain is static: it cannot be given %s", what);
+    }
 }
 
 void body_update_world(body_t *body) {
@@ -174,7 +219,8 @@ void body_update_world(body_t *body) {
         bounds.max.x = max_of(bounds.max.x, p.x);
         bounds.max.y = max_of(bounds.max.y, p.y);
     }
-    body->bounds = body->kind == BODY_SHAPE_POLYGON ? bounds : body_round_bounds(body);
+    bool round = body->kind == BODY_SHAPE_CIRCLE || body->kind == BODY_SHAPE_CAPSULE;
+    body->bounds = round ? body_round_bounds(body) : bounds;
     body->world_valid = true;
 }
 
@@ -269,11 +315,13 @@ void body_set_centroid(body_t *body, vector_t x) {
     body->centroid = x;
     body->world_valid = false;
     body_note_move(body);
+    place_parts(body);
 }
 
 void body_set_velocity(body_t *body, vector_t v) {
     REQUIRE_NOT_NULL(body);
     REQUIRE_FINITE_VECTOR(v);
+    require_still(body, v.x != 0.0 || v.y != 0.0, "a velocity", __func__);
     body->velocity = v;
     body_mark_changed(body);
 }
@@ -285,11 +333,13 @@ void body_set_rotation(body_t *body, double angle) {
     body->angle = angle;
     body->world_valid = false;
     body_note_move(body);
+    place_parts(body);
 }
 
 void body_set_color(body_t *body, rgb_color_t color) {
     REQUIRE_NOT_NULL(body);
     body->color = color;
+    copy_to_parts(body);
 }
 
 void body_add_force(body_t *body, vector_t force) {
@@ -374,6 +424,10 @@ void body_remove(body_t *body) {
     REQUIRE_NOT_NULL(body);
     body->removed = true;
     body_mark_changed(body);
+    for (size_t k = 0; k < body->part_count; k++) {
+        body->parts[k]->removed = true;
+        body_mark_changed(body->parts[k]);
+    }
 }
 
 bool body_is_removed(body_t *body) {
@@ -389,6 +443,7 @@ double body_get_angular_velocity(body_t *body) {
 void body_set_angular_velocity(body_t *body, double omega) {
     REQUIRE_NOT_NULL(body);
     REQUIRE_FINITE(omega);
+    require_still(body, omega != 0.0, "an angular velocity", __func__);
     body->angular_velocity = omega;
     body_mark_changed(body);
 }
@@ -403,6 +458,7 @@ void body_set_inertia(body_t *body, double inertia) {
     REQUIRE(inertia > 0.0, "inertia must be > 0 or INFINITY (got %g)", inertia);
     REQUIRE(isfinite(1.0 / inertia), "inertia %g kg m^2 is too small: its inverse is not finite",
             inertia);
+    require_still(body, !isinf(inertia), "a finite moment of inertia", __func__);
     body->inertia = inertia;
     body->inverse_inertia = isinf(inertia) ? 0.0 : 1.0 / inertia;
     body_mark_changed(body);
@@ -419,6 +475,7 @@ void body_set_elasticity(body_t *body, double elasticity) {
             "elasticity must be finite and >= 0 (got %g)", elasticity);
     if (elasticity != body->elasticity) body_mark_changed(body);
     body->elasticity = elasticity;
+    copy_to_parts(body);
 }
 
 double body_get_friction(body_t *body) {
@@ -432,6 +489,7 @@ void body_set_friction(body_t *body, double friction) {
             friction);
     if (friction != body->friction) body_mark_changed(body);
     body->friction = friction;
+    copy_to_parts(body);
 }
 
 void body_set_collision_filter(body_t *body, uint32_t category, uint32_t mask, uint32_t group) {
@@ -440,6 +498,7 @@ void body_set_collision_filter(body_t *body, uint32_t category, uint32_t mask, u
     body->mask = mask;
     body->group = group;
     body_mark_changed(body);
+    copy_to_parts(body);
 }
 
 void body_get_collision_filter(body_t *body, uint32_t *category, uint32_t *mask,
@@ -450,11 +509,24 @@ void body_get_collision_filter(body_t *body, uint32_t *category, uint32_t *mask,
     if (group != NULL) *group = body->group;
 }
 
+/* Whether the point lies on one of the chain's segments: its distance from
+ * the segment's line is 0 and it lies between the ends. */
+static bool chain_contains(const body_t *body, vector_t point) {
+    for (size_t i = 0; i < body->part_count; i++) {
+        vector_t p1 = body->world_vertices[i], p2 = body->world_vertices[(i + 1) % body->count];
+        vector_t d = vec_subtract(p2, p1), r = vec_subtract(point, p1);
+        double t = vec_dot(r, d);
+        if (vec_cross(d, r) == 0.0 && t >= 0.0 && t <= vec_dot(d, d)) return true;
+    }
+    return false;
+}
+
 bool body_contains_point(body_t *body, vector_t point) {
     REQUIRE_NOT_NULL(body);
     /* A NaN point would compare false against every edge and so be "inside". */
     REQUIRE_FINITE_VECTOR(point);
     body_update_world(body);
+    if (body->kind == BODY_SHAPE_CHAIN) return chain_contains(body, point);
     if (body->kind != BODY_SHAPE_POLYGON) return body_round_contains(body, point);
     for (size_t i = 0; i < body->count; i++) {
         if (vec_dot(body->world_normals[i], vec_subtract(point, body->world_vertices[i])) > 0.0) {

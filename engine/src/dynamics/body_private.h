@@ -107,6 +107,16 @@ struct body {
     vector_t core[2];
     double round_radius;
 
+    /* A chain (body_chain.c): its segments, static bodies of their own
+     * (kind BODY_SHAPE_SEGMENT) that the world collides in its place, each
+     * at the midpoint of its ends, turned as the chain is. A segment names
+     * its chain and what it knows of its neighbours (segment). */
+    struct body **parts;
+    size_t part_count;
+    bool loop;
+    struct body *chain;
+    struct body_segment *segment;
+
     /* Shape in the body frame, relative to the centroid, counter-clockwise. */
     vector_t *local_vertices;
     vector_t *local_normals;
@@ -114,6 +124,35 @@ struct body {
      * local ones. */
     vector_t shape[];
 };
+
+/* A chain's segment as the world sees it: a static body whose core (core[0]
+ * to core[1], body frame) collides on the side of `normal` only. */
+enum { BODY_SHAPE_SEGMENT = 4 };
+
+/* What a segment knows of its chain (body frame, which turns as the chain
+ * turns): the points before its start and after its end (ghost vertices,
+ * where has_ghost says there is one: not at an open chain's ends), the
+ * normal of its free side, and, lengths along it from core[0] (m), the
+ * straight run of segments it belongs to, [run_lo, run_hi] (itself when
+ * its joins bend), and the stretch [claim_lo, claim_hi] of that run where
+ * the middle of a contact's points makes the contact this segment's. */
+typedef struct body_segment {
+    vector_t normal;
+    vector_t ghost[2];
+    bool has_ghost[2];
+    double run_lo, run_hi;
+    double claim_lo, claim_hi;
+    /* Its place in the chain, and its offset (chain frame) from the
+     * chain's origin. */
+    size_t index;
+    vector_t offset;
+} body_segment_t;
+
+/* The body that stands for a world body in what the scene reports: a
+ * segment's chain, otherwise the body itself. */
+static inline struct body *body_public(struct body *body) {
+    return body->chain != NULL ? body->chain : body;
+}
 
 /* Allocates a body (zeroed) with room for a polygon of count vertices in
  * its four arrays. */

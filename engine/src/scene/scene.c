@@ -22,6 +22,8 @@ struct scene {
     /* The most vertices of any body ever added: what a step's scratch room
      * for posed polygons must hold (world_step_t). */
     size_t largest_polygon;
+    /* How many segments the chains among the bodies have (world_step_t). */
+    size_t chain_parts;
 
     force_entry_t *forces;
     size_t force_count, force_capacity;
@@ -183,7 +185,15 @@ void scene_add_body(scene_t *scene, body_t *body) {
                    sizeof(body_t *));
     body->id = scene->next_body_id++;
     scene->bodies[scene->body_count++] = body;
-    if (body->count > scene->largest_polygon) scene->largest_polygon = body->count;
+    /* A chain collides through its segments, which the world's pairs tell
+     * apart by their own ids. */
+    for (size_t k = 0; k < body->part_count; k++) {
+        body->parts[k]->id = scene->next_body_id++;
+        body_mark_changed(body->parts[k]);
+    }
+    scene->chain_parts += body->part_count;
+    size_t polygon = body->kind == BODY_SHAPE_CHAIN ? 2 : body->count;
+    if (polygon > scene->largest_polygon) scene->largest_polygon = polygon;
     body_mark_changed(body); /* sleeping bodies it lands in wake */
 }
 
@@ -772,6 +782,7 @@ static void stage_reap(scene_t *scene) {
     for (size_t i = 0; i < scene->body_count; i++) {
         body_t *body = scene->bodies[i];
         if (body->removed) {
+            scene->chain_parts -= body->part_count;
             free_owned_body(body);
             scene->stats.removed_bodies++;
         } else {
@@ -815,7 +826,8 @@ static void tick(scene_t *scene, double dt) {
                                    scene->sleep_linear,
                                    scene->sleep_angular,
                                    scene->sleep_time,
-                                   &scene->clock};
+                                   &scene->clock,
+                                   scene->chain_parts};
         scene->world_ops->step(scene->world, scene->bodies, scene->motions, scene->body_count,
                                &world_step, &scene->stats);
         scene->record_needs_world = true;

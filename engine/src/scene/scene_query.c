@@ -58,10 +58,47 @@ static queries_t *ready_queries(scene_t *scene) {
     return queries;
 }
 
-/* ---- The shape tests by kind (convex polygons today) ------------------------ */
+/* ---- The shape tests by kind ------------------------------------------------ */
+
+/* A round body's world core (body_world_core, after body_update_world). */
+static void round_core(const body_t *body, vector_t core[2]) {
+    body_world_core(body, core);
+}
+
+static bool is_round(const body_t *body) {
+    return body->kind == BODY_SHAPE_CIRCLE || body->kind == BODY_SHAPE_CAPSULE;
+}
+
+/* A chain's segment i: its world ends and the normal of its free side. */
+static void chain_segment(const body_t *chain, size_t i, vector_t *p1, vector_t *p2,
+                          vector_t *normal) {
+    *p1 = chain->world_vertices[i];
+    *p2 = chain->world_vertices[(i + 1) % chain->count];
+    vector_t e = vec_normalize(vec_subtract(*p2, *p1));
+    *normal = (vector_t){-e.y, e.x};
+}
 
 static bool body_ray_cast(const body_t *body, vector_t from, vector_t d, double max_fraction,
                           double *fraction, vector_t *normal) {
+    if (is_round(body)) {
+        vector_t core[2];
+        round_core(body, core);
+        return capsule_ray_cast(core[0], core[1], body->round_radius, from, d, max_fraction,
+                                fraction, normal);
+    }
+    if (body->kind == BODY_SHAPE_CHAIN) {
+        bool hit = false;
+        for (size_t i = 0; i < body->part_count; i++) {
+            vector_t p1, p2, n;
+            chain_segment(body, i, &p1, &p2, &n);
+            if (segment_ray_cast(p1, p2, n, from, d, max_fraction, fraction)) {
+                max_fraction = *fraction;
+                *normal = n;
+                hit = true;
+            }
+        }
+        return hit;
+    }
     size_t edge;
     if (!polygon_ray_cast(body->world_vertices, body->world_normals, body->count, from, d,
                           max_fraction, fraction, &edge)) {
@@ -72,15 +109,48 @@ static bool body_ray_cast(const body_t *body, vector_t from, vector_t d, double 
 }
 
 static bool body_overlaps_box(const body_t *body, aabb_t box) {
+    if (!aabb_overlaps(body->bounds, box)) return false;
+    if (is_round(body)) {
+        vector_t core[2];
+        round_core(body, core);
+        return capsule_overlaps_box(core[0], core[1], body->round_radius, box);
+    }
+    if (body->kind == BODY_SHAPE_CHAIN) {
+        for (size_t i = 0; i < body->part_count; i++) {
+            vector_t p1, p2, n;
+            chain_segment(body, i, &p1, &p2, &n);
+            if (capsule_overlaps_box(p1, p2, 0.0, box)) return true;
+        }
+        return false;
+    }
     return polygon_overlaps_box(body->world_vertices, body->world_normals, body->count,
                                 body->bounds, box);
 }
 
-static bool body_holds_point(const body_t *body, vector_t point) {
+static bool body_holds_point(body_t *body, vector_t point) {
+    if (body->kind != BODY_SHAPE_POLYGON) return body_contains_point(body, point);
     return polygon_contains_point(body->world_vertices, body->world_normals, body->count, point);
 }
 
 static double body_distance(const body_t *body, vector_t point, vector_t *nearest) {
+    if (is_round(body)) {
+        vector_t core[2];
+        round_core(body, core);
+        return capsule_distance(core[0], core[1], body->round_radius, point, nearest);
+    }
+    if (body->kind == BODY_SHAPE_CHAIN) {
+        double best = INFINITY;
+        for (size_t i = 0; i < body->part_count; i++) {
+            vector_t p1, p2, n, q;
+            chain_segment(body, i, &p1, &p2, &n);
+            double distance = capsule_distance(p1, p2, 0.0, point, &q);
+            if (distance < best) {
+                best = distance;
+                *nearest = q;
+            }
+        }
+        return best;
+    }
     return polygon_distance(body->world_vertices, body->world_normals, body->count, point,
                             nearest);
 }

@@ -187,6 +187,16 @@ static void check_memory(const scene_t *scene, const scene_contact_memory_t *m, 
     if (m->body_a == m->body_b) {
         engine_fail("scene_restore_contact_memory", "memories[%zu] pairs a body with itself", i);
     }
+    if (m->body_a->kind == BODY_SHAPE_CHAIN) {
+        engine_fail("scene_restore_contact_memory",
+                    "memories[%zu].body_a is a chain: a chain is always body_b", i);
+    }
+    size_t segments = m->body_b->part_count;
+    if (segments > 0 ? m->segment >= segments : m->segment != 0) {
+        engine_fail("scene_restore_contact_memory",
+                    "memories[%zu].segment %zu is not a segment of body_b (%zu segments)", i,
+                    m->segment, segments);
+    }
     if (m->point_count < 0 || m->point_count > 2 || m->feature_count < 0 || m->feature_count > 2 ||
         m->previous_count < 0 || m->previous_count > 2) {
         engine_fail("scene_restore_contact_memory",
@@ -218,13 +228,19 @@ void scene_restore_contact_memory(scene_t *scene, const scene_contact_memory_t *
     for (size_t i = 0; i < count; i++) check_memory(scene, &memories[i], i);
     /* The world keeps a step's contacts grouped by body a. */
     scene_contact_memory_t *sorted = memory_alloc((count + 1) * sizeof *sorted);
-    for (size_t i = 0; i < count; i++) sorted[i] = memories[i];
+    for (size_t i = 0; i < count; i++) {
+        sorted[i] = memories[i];
+        /* The world's pair is with the chain's segment. */
+        if (sorted[i].body_b->part_count > 0) {
+            sorted[i].body_b = sorted[i].body_b->parts[sorted[i].segment];
+        }
+    }
     qsort(sorted, count, sizeof *sorted, compare_memories);
     for (size_t i = 1; i < count; i++) {
         if (memory_key(&sorted[i - 1]) == memory_key(&sorted[i])) {
             engine_fail(__func__, "the pair of bodies %zu and %zu is listed twice",
                         scene_body_index(scene, sorted[i].body_a),
-                        scene_body_index(scene, sorted[i].body_b));
+                        scene_body_index(scene, body_public(sorted[i].body_b)));
         }
     }
     ops->restore_memory(world, sorted, count);

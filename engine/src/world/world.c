@@ -146,7 +146,8 @@ WORLD_INLINE bool load_body(world_t *world, body_t *body, const integrator_motio
     broadphase_proxy_t *proxy = &world->proxies[i];
     proxy->box = swept_box(body->bounds, dt, state, dt * spin + CONTACT_MARGIN);
     set_filter(proxy, body);
-    if (body->removed) proxy->category = 0;
+    /* A chain pairs through its segments (gather_bodies). */
+    if (body->removed || body->kind == BODY_SHAPE_CHAIN) proxy->category = 0;
     return (proxy->fixed || body->seam_listed) && seams_body_changed(body);
 }
 
@@ -316,20 +317,34 @@ static void run_pipeline(world_t *world, body_t **bodies, integrator_motion_t *m
     stage_clock_lap(clock, SCENE_STAGE_SOLVER);
 }
 
-/* The awake bodies and copies of their motions; returns how many. */
-static size_t gather_awake(world_t *world, body_t **bodies, const integrator_motion_t *motions,
-                           size_t count) {
-    memory_reserve((void **)&world->active, &world->active_capacity, count, sizeof(body_t *));
-    memory_reserve((void **)&world->active_motions, &world->active_motion_capacity, count,
+/* The bodies of the step and copies of their motions: the awake ones (all
+ * when skip_asleep is false), then the segments of the chains among them,
+ * static bodies that stand in their chain's place (their index SIZE_MAX:
+ * no motion to hand back); returns how many. Segments come last, so each
+ * pair with one has it as body b. */
+static size_t gather_bodies(world_t *world, body_t **bodies, const integrator_motion_t *motions,
+                            size_t count, bool skip_asleep, size_t parts) {
+    size_t room = count + parts;
+    memory_reserve((void **)&world->active, &world->active_capacity, room, sizeof(body_t *));
+    memory_reserve((void **)&world->active_motions, &world->active_motion_capacity, room,
                    sizeof(integrator_motion_t));
-    memory_reserve((void **)&world->active_index, &world->active_index_capacity, count,
+    memory_reserve((void **)&world->active_index, &world->active_index_capacity, room,
                    sizeof(size_t));
     size_t active = 0;
     for (size_t i = 0; i < count; i++) {
-        if (bodies[i]->asleep) continue;
+        if (skip_asleep && bodies[i]->asleep) continue;
         world->active[active] = bodies[i];
         world->active_motions[active] = motions[i];
         world->active_index[active++] = i;
+    }
+    for (size_t i = 0; i < count && parts > 0; i++) {
+        const body_t *chain = bodies[i];
+        if (chain->part_count == 0 || chain->removed) continue;
+        for (size_t k = 0; k < chain->part_count && active < room; k++) {
+            world->active[active] = chain->parts[k];
+            world->active_motions[active] = motions[i]; /* a static body's */
+            world->active_index[active++] = SIZE_MAX;
+        }
     }
     return active;
 }
@@ -361,16 +376,21 @@ void world_wake_changed(world_t *world, body_t **bodies, size_t count, double dt
 void world_step(world_t *world, body_t **bodies, integrator_motion_t *motions, size_t count,
                 const world_step_t *step, scene_stats_t *stats) {
     time_step(world, step->dt);
-    /* Nobody asleep: every body is in the step, with nothing to gather. */
-    if (!step->sleeping || !sleep_any(&world->sleep)) {
+    bool sleepers = step->sleeping && sleep_any(&world->sleep);
+    /* Nobody asleep and no chain: every body is in the step, with nothing
+     * to gather. */
+    if (!sleepers && step->chain_parts == 0) {
         run_pipeline(world, bodies, motions, count, step, stats, bodies, count);
         return;
     }
-    size_t active = gather_awake(world, bodies, motions, count);
-    stage_clock_lap(step->clock, SCENE_STAGE_SLEEP);
+    size_t active = gather_bodies(world, bodies, motions, count, sleepers, step->chain_parts);
+    if (sleepers) stage_clock_lap(step->clock, SCENE_STAGE_SLEEP);
     run_pipeline(world, world->active, world->active_motions, active, step, stats, bodies, count);
-    for (size_t k = 0; k < active; k++) motions[world->active_index[k]] = world->active_motions[k];
-    stage_clock_lap(step->clock, SCENE_STAGE_SLEEP);
+    for (size_t k = 0; k < active; k++) {
+        size_t i = world->active_index[k];
+        if (i != SIZE_MAX) motions[i] = world->active_motions[k];
+    }
+    if (sleepers) stage_clock_lap(step->clock, SCENE_STAGE_SLEEP);
 }
 
 bool world_pair_collides(const body_t *body1, const body_t *body2) {

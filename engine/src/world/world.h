@@ -56,6 +56,9 @@ typedef struct {
     /* The stage times of the tick (NULL: not timed); the world laps its
      * stages from the moment it is called. */
     stage_clock_t *clock;
+    /* How many segments the chains among the bodies have (body.h): the
+     * world collides those in their chains' place. */
+    size_t chain_parts;
 } world_step_t;
 
 /* Wakes the sleeping islands that a body of bodies[0 .. count) changed

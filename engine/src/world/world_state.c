@@ -5,6 +5,7 @@
  */
 #include "world/world.h"
 #include "world/world_types.h"
+#include <math.h>
 #include "base/memory.h"
 
 size_t world_contact_count(const world_t *world) {
@@ -14,7 +15,10 @@ size_t world_contact_count(const world_t *world) {
 contact_t world_get_contact(const world_t *world, size_t index) {
     const solver_contact_t *c = &world->contacts[index];
     const contact_source_t *source = &world->sources[index];
-    contact_t entry = {.kind = CONTACT_WORLD, .body1 = source->body_a, .body2 = source->body_b,
+    /* A chain's segment is reported as its chain. */
+    contact_t entry = {.kind = CONTACT_WORLD,
+                       .body1 = body_public(source->body_a),
+                       .body2 = body_public(source->body_b),
                        .axis = c->normal, .point_count = (size_t)c->point_count};
     for (int j = 0; j < c->point_count; j++) {
         entry.points[j] = source->points[j];
@@ -30,9 +34,11 @@ contact_t world_get_contact(const world_t *world, size_t index) {
 void world_get_memory(const world_t *world, size_t index, scene_contact_memory_t *memory) {
     const solver_contact_t *c = &world->contacts[index];
     const contact_source_t *source = &world->sources[index];
+    const body_t *b = source->body_b;
     *memory = (scene_contact_memory_t){
         .body_a = source->body_a,
-        .body_b = source->body_b,
+        .body_b = body_public(source->body_b),
+        .segment = b->segment != NULL ? b->segment->index : 0,
         .normal = c->normal,
         .point_count = c->point_count,
         .flip = source->features.flip,
@@ -183,7 +189,42 @@ static size_t find_current(const world_t *world, const body_t *a, uint64_t key) 
     return find_in_step(world->sources, world->contact_count, world->step_number, a, key);
 }
 
+/* Whether contact x is a better one to report for a pair than y: touching
+ * first, then the deeper. */
+static bool better_contact(const contact_t *x, const contact_t *y) {
+    if (x->touching != y->touching) return x->touching;
+    double dx = INFINITY, dy = INFINITY;
+    for (size_t j = 0; j < x->point_count; j++) dx = fmin(dx, x->separation[j]);
+    for (size_t j = 0; j < y->point_count; j++) dy = fmin(dy, y->separation[j]);
+    return dx < dy;
+}
+
+/* A pair with a chain: the best contact of the other body with one of its
+ * segments (each pair's segment is its body b). */
+static bool chain_pair_contact(const world_t *world, body_t *body1, body_t *body2,
+                               contact_t *contact) {
+    bool chain_first = body1->kind == BODY_SHAPE_CHAIN;
+    body_t *chain = chain_first ? body1 : body2, *other = chain_first ? body2 : body1;
+    bool found = false;
+    for (size_t k = 0; k < chain->part_count; k++) {
+        size_t index = find_current(world, other, pair_key(other, chain->parts[k]));
+        if (index == SIZE_MAX) continue;
+        contact_t entry = world_get_contact(world, index);
+        if (!found || better_contact(&entry, contact)) *contact = entry;
+        found = true;
+    }
+    if (found && chain_first) {
+        contact->body1 = body1;
+        contact->body2 = body2;
+        contact->axis = vec_negate(contact->axis);
+    }
+    return found;
+}
+
 bool world_pair_contact(const world_t *world, body_t *body1, body_t *body2, contact_t *contact) {
+    if (body1->kind == BODY_SHAPE_CHAIN || body2->kind == BODY_SHAPE_CHAIN) {
+        return chain_pair_contact(world, body1, body2, contact);
+    }
     size_t index = find_current(world, body1, pair_key(body1, body2));
     if (index != SIZE_MAX) {
         *contact = world_get_contact(world, index);

@@ -1,0 +1,106 @@
+#include "collision/segment_manifold.h"
+#include <math.h>
+#include "base/scalar.h"
+#include "collision/round_manifold.h"
+
+/* A join whose directions differ by less than this sine is flat (as the
+ * chain's runs count it, body_chain.c). */
+static const double FLAT_SINE = 1e-9;
+
+/* A segment in the world: its ends, unit direction and free side's normal,
+ * and at each end (0: the start, 1: the end) whether a neighbour
+ * continues it, the neighbour's free side's normal, and whether the chain
+ * bends away from the free side there. */
+typedef struct {
+    vector_t p1, p2, e, n;
+    bool has[2], convex[2];
+    vector_t side[2];
+} segment_frame_t;
+
+static vector_t left_normal(vector_t d) {
+    return (vector_t){-d.y, d.x};
+}
+
+static segment_frame_t frame_of(const body_t *segment) {
+    const body_segment_t *s = segment->segment;
+    segment_frame_t f;
+    f.p1 = segment->world_vertices[0];
+    f.p2 = segment->world_vertices[1];
+    f.e = vec_normalize(vec_subtract(f.p2, f.p1));
+    f.n = body_rotate_vector(segment, s->normal);
+    for (int end = 0; end < 2; end++) {
+        f.has[end] = s->has_ghost[end];
+        f.convex[end] = false;
+        f.side[end] = f.n;
+        if (!f.has[end]) continue;
+        vector_t ghost = body_to_world(segment, s->ghost[end]);
+        vector_t d = end == 0 ? vec_subtract(f.p1, ghost) : vec_subtract(ghost, f.p2);
+        d = vec_normalize(d);
+        f.side[end] = left_normal(d);
+        /* Turning right, the chain bends away from its left (free) side. */
+        f.convex[end] = (end == 0 ? vec_cross(d, f.e) : vec_cross(f.e, d)) < -FLAT_SINE;
+    }
+    return f;
+}
+
+static manifold_t none(vector_t normal) {
+    return (manifold_t){normal, 0, {{VEC_ZERO, 0.0, 0}, {VEC_ZERO, 0.0, 0}}};
+}
+
+/* Whether a body centred at c lies behind the surface near the segment. */
+static bool behind(const segment_frame_t *f, vector_t c) {
+    if (vec_dot(f->n, vec_subtract(c, f->p1)) >= 0.0) return false;
+    if (f->convex[0] && vec_dot(f->side[0], vec_subtract(c, f->p1)) >= 0.0) return false;
+    if (f->convex[1] && vec_dot(f->side[1], vec_subtract(c, f->p2)) >= 0.0) return false;
+    return true;
+}
+
+/* The other shape against the segment's straight run, kept when the
+ * middle of its points lies on the segment's claim. */
+static manifold_t on_run(const body_t *segment, const segment_frame_t *f, const body_t *other,
+                         double margin, double *separation) {
+    const body_segment_t *s = segment->segment;
+    vector_t lo = vec_add(f->p1, vec_multiply(s->run_lo, f->e));
+    vector_t hi = vec_add(f->p1, vec_multiply(s->run_hi, f->e));
+    manifold_t m = round_manifold_on_face(lo, hi, f->n, other, false, margin);
+    if (m.point_count == 0) return m;
+    double middle = 0.0;
+    for (int i = 0; i < m.point_count; i++) {
+        middle += vec_dot(f->e, vec_subtract(m.points[i].point, f->p1));
+        *separation = min_of(*separation, m.points[i].separation);
+    }
+    middle /= m.point_count;
+    if (!(middle >= s->claim_lo && middle <= s->claim_hi)) return none(m.normal);
+    return m;
+}
+
+/* The segment's manifold with other, the normal from the segment. */
+static manifold_t segment_first(const body_t *segment, const body_t *other, double margin,
+                                double *separation) {
+    manifold_features_t found;
+    manifold_t raw = round_manifold_collide(segment, other, margin, &found, separation);
+    if (*separation > margin) return none(raw.normal);
+    segment_frame_t f = frame_of(segment);
+    if (behind(&f, other->centroid)) return none(raw.normal);
+    if (raw.point_count == 0) return on_run(segment, &f, other, margin, separation);
+    vector_t normal = raw.normal;
+    double along = vec_dot(normal, f.e);
+    int end = along < 0.0 ? 0 : along > 0.0 ? 1 : -1;
+    if (end < 0) return on_run(segment, &f, other, margin, separation);
+    if (!f.has[end]) return raw; /* an open chain's end: a free corner */
+    if (!f.convex[end]) return on_run(segment, &f, other, margin, separation);
+    /* A convex join: the corner's normals lie between the two faces'. */
+    double beyond = end == 0 ? vec_cross(f.side[0], normal) : vec_cross(normal, f.side[1]);
+    return beyond <= 0.0 ? raw : none(raw.normal);
+}
+
+manifold_t segment_manifold_collide(const body_t *a, const body_t *b, double margin,
+                                    manifold_features_t *features, double *separation) {
+    bool segment_is_b = b->kind == BODY_SHAPE_SEGMENT && a->kind != BODY_SHAPE_SEGMENT;
+    manifold_t m = segment_is_b ? segment_first(b, a, margin, separation)
+                                : segment_first(a, b, margin, separation);
+    if (segment_is_b) m.normal = vec_negate(m.normal);
+    *features = (manifold_features_t){.point_count = m.point_count};
+    for (int i = 0; i < m.point_count; i++) features->ids[i] = m.points[i].id;
+    return m;
+}
