@@ -22,6 +22,7 @@
 #include "jostle/scene_state.h"
 #include "base/stage_clock.h"
 #include "base/workers.h"
+#include "solver/joint_solver.h"
 
 typedef struct world world_t;
 
@@ -56,6 +57,8 @@ typedef struct {
     /* The stage times of the tick (NULL: not timed); the world laps its
      * stages from the moment it is called. */
     stage_clock_t *clock;
+    /* The scene's joints (joint.h), solved with the contacts. */
+    joint_step_t joints;
 } world_step_t;
 
 /* Wakes the sleeping islands that a body of bodies[0 .. count) changed

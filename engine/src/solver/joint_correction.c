@@ -1,0 +1,45 @@
+/* The position sweeps the rigid joints share (joint_types.h): each moves
+ * the bodies' displacements, not their velocities, toward the constraint
+ * at the poses the step has reached. */
+#include "solver/joint_types.h"
+
+void joint_current(const joint_t *joint, vector_t *r1, vector_t *r2, vector_t *delta,
+                   double *angle) {
+    joint_pose_t p1 = joint_pose(joint, true), p2 = joint_pose(joint, false);
+    *r1 = vec_rotate(joint->def.anchor1, p1.angle);
+    *r2 = vec_rotate(joint->def.anchor2, p2.angle);
+    *delta = vec_subtract(vec_add(p2.centroid, *r2), vec_add(p1.centroid, *r1));
+    *angle = p2.angle - p1.angle - joint->def.reference_angle;
+}
+
+void joint_correct_point(joint_t *joint) {
+    vector_t r1, r2, c;
+    double angle;
+    joint_current(joint, &r1, &r2, &c, &angle);
+    double length = vec_get_length(c);
+    if (length > JOINT_MAX_LINEAR_CORRECTION) {
+        c = vec_multiply(JOINT_MAX_LINEAR_CORRECTION / length, c);
+    }
+    double k11, k12, k22;
+    joint_point_mass(joint, r1, r2, &k11, &k12, &k22);
+    vector_t p = vec_negate(joint_solve22(k11, k12, k22, c));
+    joint_displace(joint, p, vec_cross(r1, p), vec_cross(r2, p));
+}
+
+void joint_correct_angle(joint_t *joint, double target) {
+    vector_t r1, r2, delta;
+    double angle;
+    joint_current(joint, &r1, &r2, &delta, &angle);
+    double c = joint_clamp(angle - target, -JOINT_MAX_ANGULAR_CORRECTION,
+                           JOINT_MAX_ANGULAR_CORRECTION);
+    double l = -joint_inverse(joint->i1 + joint->i2) * c;
+    joint_displace(joint, VEC_ZERO, l, l);
+}
+
+void joint_correct_axial(joint_t *joint, double c, vector_t direction, double a1, double a2) {
+    if (c >= 0.0) return;
+    c = c < -JOINT_MAX_LINEAR_CORRECTION ? -JOINT_MAX_LINEAR_CORRECTION : c;
+    double k = joint->m1 + joint->m2 + joint->i1 * a1 * a1 + joint->i2 * a2 * a2;
+    double impulse = -joint_inverse(k) * c;
+    joint_displace(joint, vec_multiply(impulse, direction), impulse * a1, impulse * a2);
+}
