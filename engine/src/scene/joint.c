@@ -289,13 +289,13 @@ static double angular_impulse(const joint_t *joint) {
 
 vector_t joint_get_force(const joint_t *joint) {
     REQUIRE_NOT_NULL(joint);
-    if (!joint->active || joint->impulse_dt == 0.0) return VEC_ZERO;
+    if (joint->impulse_dt == 0.0) return VEC_ZERO;
     return vec_multiply(1.0 / joint->impulse_dt, linear_impulse(joint));
 }
 
 double joint_get_torque(const joint_t *joint) {
     REQUIRE_NOT_NULL(joint);
-    if (!joint->active || joint->impulse_dt == 0.0) return 0.0;
+    if (joint->impulse_dt == 0.0) return 0.0;
     return angular_impulse(joint) / joint->impulse_dt;
 }
 

@@ -76,6 +76,12 @@ static void take_geometry(joint_t *joint) {
     joint->perp = vec_perpendicular(joint->axis);
 }
 
+/* Whether the body of the row turns by at most JOINT_EXACT_TURN in the
+ * step at its angular velocity now. */
+static bool slow_turn(const joint_t *joint, const solver_velocity_t *row, double spin) {
+    return fabs(joint->dt * (spin + joint->weight * row->w)) <= JOINT_EXACT_TURN;
+}
+
 void joint_solver_prepare(const joint_step_t *step, const solver_bodies_t *bodies,
                           const solver_settings_t *settings) {
     double dt = settings->dt;
@@ -89,6 +95,8 @@ void joint_solver_prepare(const joint_step_t *step, const solver_bodies_t *bodie
         joint->weight = settings->position_weight;
         carry_impulses(joint, dt, settings->warm_starting);
         take_geometry(joint);
+        joint->closes_gap = joint->weight > 0.0 && slow_turn(joint, joint->rows.v1, joint->spin1) &&
+                            slow_turn(joint, joint->rows.v2, joint->spin2);
         kind_of(joint)->prepare(joint);
     }
 }

@@ -50,6 +50,10 @@ struct joint {
      * (drift + weight v) and dt (spin + weight w) (integrator.h). */
     vector_t drift1, drift2;
     double spin1, spin2, weight;
+    /* Whether this step's rigid sweeps close the gap the step would end
+     * with (joint_closing_rate): while neither body turns by more than
+     * JOINT_EXACT_TURN over the step. */
+    bool closes_gap;
     double translation; /* along the axis (prismatic, wheel) or between the anchors (distance) */
     double dt;
     /* Prepared: effective masses (the point block's K as k11, k12, k22) and
@@ -170,8 +174,17 @@ static inline vector_t joint_predicted_gap(const joint_t *joint, double *angle) 
  * weight); or, for a scheme whose positions do not see this step's
  * velocity (weight 0), the rate itself. */
 static inline double joint_closing_rate(const joint_t *joint, double gap, double rate) {
-    return joint->weight > 0.0 ? gap / (joint->dt * joint->weight) : rate;
+    return joint->closes_gap ? gap / (joint->dt * joint->weight) : rate;
 }
+
+/* The largest turn of a body over a step (rad) at which the rigid sweeps
+ * close the predicted gap; past it they cancel the anchors' relative
+ * velocity only, and the position sweep closes the gap (dissipating as the
+ * centripetal term goes). The predicted gap is not linear in the angular
+ * velocity: at a fast turn (links of a chain spinning at 30 rad/s at 1/60
+ * s) the sweeps' linear solve overshoots and feeds the spin until the
+ * chain flies apart. */
+static const double JOINT_EXACT_TURN = 0.05;
 
 /* Solves the 2x2 symmetric K x = b. A singular K gives 0. */
 static inline vector_t joint_solve22(double k11, double k12, double k22, vector_t b) {
