@@ -247,7 +247,158 @@ static void hanging_mass_force_is_weight(void) {
     scene_free(scene);
 }
 
+/* A 1 m bar on a revolute joint with limits [-30, 30] degrees, released
+ * from the horizontal at 30 degrees above the lower limit's side: it
+ * stops at the lower limit within 0.5 degrees and never passes it by
+ * more. */
+static void limits_stop_at_their_angle(void) {
+    scene_t *scene = joint_scene(INTEGRATOR_SEED);
+    body_t *bar = body_init(polygon_make_box((vector_t){0.5, 0.0}, 0.5, 0.05), 1.0, GREY);
+    scene_add_body(scene, bar);
+    joint_def_t def = joint_def_revolute(NULL, bar, VEC_ZERO);
+    def.enable_limit = true;
+    def.lower_angle = -M_PI / 6.0;
+    def.upper_angle = M_PI / 6.0;
+    joint_t *joint = joint_create(scene, &def);
+    double lowest = 0.0;
+    for (int step = 0; step < 300; step++) {
+        scene_tick(scene, 1.0 / 60.0);
+        lowest = fmin(lowest, joint_get_angle(joint));
+    }
+    double degree = M_PI / 180.0;
+    printf("    lowest %.3f degrees, at rest %.3f degrees\n", lowest / degree,
+           joint_get_angle(joint) / degree);
+    CHECK(lowest >= -30.5 * degree);
+    CHECK_NEAR(joint_get_angle(joint), -30.0 * degree, 0.5 * degree);
+    CHECK(joint_get_torque(joint) > 0.0); /* the limit holds the bar up */
+    scene_free(scene);
+}
+
+/* Removing a body frees its joints at the end of the next tick; the
+ * other joints keep their order. */
+static void removing_a_body_removes_its_joints(void) {
+    scene_t *scene = joint_scene(INTEGRATOR_SEED);
+    body_t *a = add_ball(scene, (vector_t){0.0, -1.0}, 0.1, 1.0);
+    body_t *b = add_ball(scene, (vector_t){0.0, -2.0}, 0.1, 1.0);
+    body_t *c = add_ball(scene, (vector_t){3.0, -1.0}, 0.1, 1.0);
+    joint_def_t d1 = joint_def_revolute(NULL, a, VEC_ZERO);
+    joint_def_t d2 = joint_def_distance(a, b, (vector_t){0.0, -1.0}, (vector_t){0.0, -2.0});
+    joint_def_t d3 = joint_def_revolute(NULL, c, (vector_t){3.0, 0.0});
+    joint_create(scene, &d1);
+    joint_create(scene, &d2);
+    joint_t *kept = joint_create(scene, &d3);
+    CHECK(scene_joints(scene) == 3);
+    body_remove(b);
+    CHECK(scene_joints(scene) == 3); /* deferred, as bodies are */
+    scene_tick(scene, 1.0 / 60.0);
+    CHECK(scene_joints(scene) == 2);
+    body_remove(a);
+    scene_tick(scene, 0.0);
+    CHECK(scene_joints(scene) == 1);
+    CHECK(scene_get_joint(scene, 0) == kept);
+    joint_destroy(kept);
+    CHECK(scene_joints(scene) == 0);
+    scene_free(scene);
+    CHECK(test_no_leaks());
+}
+
+static scene_t *bad_scene;
+static body_t *bad_a, *bad_b;
+
+static void bad_setup(void) {
+    bad_scene = joint_scene(INTEGRATOR_SEED);
+    bad_a = add_ball(bad_scene, (vector_t){0.0, 0.0}, 0.1, 1.0);
+    bad_b = add_ball(bad_scene, (vector_t){1.0, 0.0}, 0.1, 1.0);
+}
+
+static void create_with_itself(void *unused) {
+    (void)unused;
+    bad_setup();
+    joint_def_t def = joint_def_revolute(bad_a, bad_a, VEC_ZERO);
+    joint_create(bad_scene, &def);
+}
+
+static void create_across_scenes(void *unused) {
+    (void)unused;
+    bad_setup();
+    scene_t *other = joint_scene(INTEGRATOR_SEED);
+    body_t *stranger = add_ball(other, (vector_t){5.0, 0.0}, 0.1, 1.0);
+    joint_def_t def = joint_def_revolute(bad_a, stranger, VEC_ZERO);
+    joint_create(bad_scene, &def);
+}
+
+static void create_outside_scene(void *unused) {
+    (void)unused;
+    bad_setup();
+    body_t *loose = body_init_circle((vector_t){5.0, 0.0}, 0.1, 1.0, GREY);
+    joint_def_t def = joint_def_revolute(bad_a, loose, VEC_ZERO);
+    joint_create(bad_scene, &def);
+}
+
+static void create_nan_anchor(void *unused) {
+    (void)unused;
+    bad_setup();
+    joint_def_t def = joint_def_revolute(bad_a, bad_b, VEC_ZERO);
+    def.anchor2.x = NAN;
+    joint_create(bad_scene, &def);
+}
+
+static void create_zero_length(void *unused) {
+    (void)unused;
+    bad_setup();
+    joint_def_t def = joint_def_distance(bad_a, bad_b, VEC_ZERO, (vector_t){1.0, 0.0});
+    def.length = 0.0;
+    joint_create(bad_scene, &def);
+}
+
+static void create_inverted_limit(void *unused) {
+    (void)unused;
+    bad_setup();
+    joint_def_t def = joint_def_revolute(bad_a, bad_b, VEC_ZERO);
+    def.lower_angle = 1.0;
+    def.upper_angle = -1.0;
+    joint_create(bad_scene, &def);
+}
+
+static void create_inverted_lengths(void *unused) {
+    (void)unused;
+    bad_setup();
+    joint_def_t def = joint_def_distance(bad_a, bad_b, VEC_ZERO, (vector_t){1.0, 0.0});
+    def.min_length = 2.0;
+    def.max_length = 1.0;
+    joint_create(bad_scene, &def);
+}
+
+static void create_contacts_off(void *unused) {
+    (void)unused;
+    bad_setup();
+    scene_set_contacts_enabled(bad_scene, false);
+    joint_def_t def = joint_def_revolute(bad_a, bad_b, VEC_ZERO);
+    joint_create(bad_scene, &def);
+}
+
+static void bad_definitions_stop_with_a_message(void) {
+    CHECK_DIES(create_with_itself, NULL, "engine error in joint_create:",
+               "body1 and body2 are the same body");
+    CHECK_DIES(create_across_scenes, NULL, "engine error in joint_create:",
+               "body2 belongs to another scene");
+    CHECK_DIES(create_outside_scene, NULL, "engine error in joint_create:",
+               "body2 is in no scene");
+    CHECK_DIES(create_nan_anchor, NULL, "engine error in joint_create:",
+               "def->anchor2 is not finite");
+    CHECK_DIES(create_zero_length, NULL, "engine error in joint_create:",
+               "length must be finite and > 0 (got 0)");
+    CHECK_DIES(create_inverted_limit, NULL, "engine error in joint_create:",
+               "def->lower_angle 1 is above def->upper_angle -1");
+    CHECK_DIES(create_inverted_lengths, NULL, "engine error in joint_create:",
+               "def->min_length 2 is above def->max_length 1");
+    CHECK_DIES(create_contacts_off, NULL, "engine error in joint_create:",
+               "world contacts are off");
+}
+
 TEST_SUITE(joints, TEST_CASE(pendulum_period_5_degrees), TEST_CASE(pendulum_period_45_degrees),
            TEST_CASE(pendulum_period_170_degrees), TEST_CASE(chain_keeps_its_length),
            TEST_CASE(heavy_load_on_light_chain), TEST_CASE(double_pendulum_conserves_energy),
-           TEST_CASE(hanging_mass_force_is_weight));
+           TEST_CASE(hanging_mass_force_is_weight), TEST_CASE(limits_stop_at_their_angle),
+           TEST_CASE(removing_a_body_removes_its_joints),
+           TEST_CASE(bad_definitions_stop_with_a_message));
