@@ -126,21 +126,42 @@ static void pendulum_period_170_degrees(void) {
 }
 
 /* A chain of `count` boxes of length `link` (m) and mass `mass` (kg),
- * hanging from the world at `top` and laid out to the right, joined end to
- * end by revolute joints; the links share a collision group so that
- * neighbours do not collide where they meet. */
-static void make_chain(scene_t *scene, vector_t top, int count, double link, double mass,
-                       body_t **links, joint_t **joints) {
+ * hanging from the world at `top` and laid out to the right (or straight
+ * down when `down`), joined end to end by revolute joints; the links share
+ * a collision group so that neighbours do not collide where they meet. */
+static void make_chain_along(scene_t *scene, vector_t top, int count, double link, double mass,
+                             bool down, body_t **links, joint_t **joints) {
     body_t *previous = NULL;
+    vector_t along = down ? (vector_t){0.0, -1.0} : (vector_t){1.0, 0.0};
     for (int i = 0; i < count; i++) {
-        vector_t centre = {top.x + (i + 0.5) * link, top.y};
-        links[i] = body_init(polygon_make_box(centre, link / 2.0, 0.05), mass, GREY);
+        vector_t centre = vec_add(top, vec_multiply((i + 0.5) * link, along));
+        vector_t half = down ? (vector_t){0.05, link / 2.0} : (vector_t){link / 2.0, 0.05};
+        list_t *shape = POLYGON({centre.x - half.x, centre.y - half.y},
+                                {centre.x + half.x, centre.y - half.y},
+                                {centre.x + half.x, centre.y + half.y},
+                                {centre.x - half.x, centre.y + half.y});
+        links[i] = body_init(shape, mass, GREY);
         body_set_collision_filter(links[i], 1, UINT32_MAX, 7);
         scene_add_body(scene, links[i]);
-        joint_def_t def = joint_def_revolute(previous, links[i], (vector_t){top.x + i * link, top.y});
+        joint_def_t def =
+            joint_def_revolute(previous, links[i], vec_add(top, vec_multiply(i * link, along)));
         joints[i] = joint_create(scene, &def);
         previous = links[i];
     }
+}
+
+static void make_chain(scene_t *scene, vector_t top, int count, double link, double mass,
+                       body_t **links, joint_t **joints) {
+    make_chain_along(scene, top, count, link, mass, false, links, joints);
+}
+
+static double stretch_of(joint_t *const *joints, int count) {
+    double stretch = 0.0;
+    for (int i = 0; i < count; i++) {
+        stretch += vec_get_length(vec_subtract(joint_get_anchor2(joints[i]),
+                                               joint_get_anchor1(joints[i])));
+    }
+    return stretch;
 }
 
 /* The largest gap (m) between the two anchors of any joint. */
@@ -153,11 +174,32 @@ static double widest_gap(joint_t *const *joints, int count) {
     return widest;
 }
 
-/* A 20-link chain of 10 m released horizontal swings for 60 s at 1/240 s
- * (default iterations): the sum of the gaps at its joints, its stretch,
- * stays under 0.5% of its length (measured 0.3%: the issue's 0.1% is not
- * yet met; at 1/60 s the stretch reaches 12% while the links whip). */
-static void chain_keeps_its_length(void) {
+/* A 20-link chain of 10 m hangs from a pin for 60 s at the sandbox's
+ * step (1/60 s, default iterations), its tip pushed sideways at 2 m/s at
+ * the start: the sum of the gaps at its joints, its stretch, stays under
+ * 0.6% of its length (0.49% measured, while it whips: the issue's 0.1% is
+ * not met yet; at rest it is 1e-6). */
+static void hanging_chain_keeps_its_length(void) {
+    scene_t *scene = joint_scene(INTEGRATOR_SEED);
+    body_t *links[20];
+    joint_t *joints[20];
+    make_chain_along(scene, VEC_ZERO, 20, 0.5, 1.0, true, links, joints);
+    body_set_velocity(links[19], (vector_t){2.0, 0.0});
+    double worst = 0.0;
+    for (int step = 0; step < 3600; step++) {
+        scene_tick(scene, 1.0 / 60.0);
+        worst = fmax(worst, stretch_of(joints, 20));
+    }
+    printf("    largest stretch %.3g m of 10 m\n", worst);
+    CHECK(worst <= 6e-3 * 10.0);
+    scene_free(scene);
+}
+
+/* The same chain released from the horizontal swings and whips for 60 s
+ * at 1/240 s: its stretch stays under 0.25% of its length (0.21%
+ * measured; at 1/60 s the whip stretches it by several per cent for a few
+ * steps). */
+static void swinging_chain_keeps_its_length(void) {
     scene_t *scene = joint_scene(INTEGRATOR_SEED);
     body_t *links[20];
     joint_t *joints[20];
@@ -165,23 +207,18 @@ static void chain_keeps_its_length(void) {
     double worst = 0.0;
     for (int step = 0; step < 60 * 240; step++) {
         scene_tick(scene, 1.0 / 240.0);
-        double stretch = 0.0;
-        for (int i = 0; i < 20; i++) {
-            stretch += vec_get_length(vec_subtract(joint_get_anchor2(joints[i]),
-                                                   joint_get_anchor1(joints[i])));
-        }
-        worst = fmax(worst, stretch);
+        worst = fmax(worst, stretch_of(joints, 20));
     }
-    printf("    largest stretch %.3g m of 10 m; tip at (%.3f, %.3f)\n", worst,
-           body_get_centroid(links[19]).x, body_get_centroid(links[19]).y);
-    CHECK(worst <= 5e-3 * 10.0);
+    printf("    largest stretch %.3g m of 10 m\n", worst);
+    CHECK(worst <= 2.5e-3 * 10.0);
     scene_free(scene);
 }
 
 /* A 100 kg ball hanging from a chain of ten 1 kg links, dropped from the
  * horizontal, at 1/240 s: after 30 s the chain is stretched by less than
- * 1% of its length (measured 0.5%). While it swings the stretch peaks far
- * higher (1.9 m measured): the issue's bound holds at rest only. */
+ * 1% of its length (2e-6 m measured). While the load swings on it the
+ * stretch peaks at 3% (0.16 m measured): the issue's 1% holds at rest
+ * only. */
 static void heavy_load_on_light_chain(void) {
     scene_t *scene = joint_scene(INTEGRATOR_SEED);
     body_t *links[10];
@@ -397,7 +434,8 @@ static void bad_definitions_stop_with_a_message(void) {
 }
 
 TEST_SUITE(joints, TEST_CASE(pendulum_period_5_degrees), TEST_CASE(pendulum_period_45_degrees),
-           TEST_CASE(pendulum_period_170_degrees), TEST_CASE(chain_keeps_its_length),
+           TEST_CASE(pendulum_period_170_degrees), TEST_CASE(hanging_chain_keeps_its_length),
+           TEST_CASE(swinging_chain_keeps_its_length),
            TEST_CASE(heavy_load_on_light_chain), TEST_CASE(double_pendulum_conserves_energy),
            TEST_CASE(hanging_mass_force_is_weight), TEST_CASE(limits_stop_at_their_angle),
            TEST_CASE(removing_a_body_removes_its_joints),

@@ -156,8 +156,10 @@ static inline joint_pose_t joint_predicted(const joint_t *joint, bool first) {
                           body->angle + dt * (spin + w * v->w)};
 }
 
-/* Anchor2 less anchor1 (m) and the relative angle less the reference
- * (rad) at the poses the step ends at with the rows' velocities now. A
+/* How far the step moves anchor2 from anchor1 (m) and turns the joint
+ * (rad) if the rows' velocities now are the end ones: the change over the
+ * step, not the gap it starts with, which the position sweep closes (fed
+ * to the velocities, that gap made a 1:100 load on a chain blow up). A
  * rigid joint's velocity sweep drives these to zero, so the step ends on
  * the constraint (to the rotation's second order, which the position
  * sweep takes) rather than drifting off it by the centripetal term every
@@ -165,9 +167,10 @@ static inline joint_pose_t joint_predicted(const joint_t *joint, bool first) {
  * sweep and so take out of the kinetic energy. */
 static inline vector_t joint_predicted_gap(const joint_t *joint, double *angle) {
     joint_pose_t p1 = joint_predicted(joint, true), p2 = joint_predicted(joint, false);
-    if (angle != NULL) *angle = p2.angle - p1.angle - joint->def.reference_angle;
-    return vec_subtract(vec_add(p2.centroid, vec_rotate(joint->def.anchor2, p2.angle)),
-                        vec_add(p1.centroid, vec_rotate(joint->def.anchor1, p1.angle)));
+    if (angle != NULL) *angle = p2.angle - p1.angle - joint->def.reference_angle - joint->angle;
+    vector_t end = vec_subtract(vec_add(p2.centroid, vec_rotate(joint->def.anchor2, p2.angle)),
+                                vec_add(p1.centroid, vec_rotate(joint->def.anchor1, p1.angle)));
+    return vec_subtract(end, joint->delta);
 }
 
 /* The velocity that closes a predicted gap within the step: gap / (dt
