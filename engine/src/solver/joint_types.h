@@ -218,6 +218,15 @@ void joint_correct_angle(joint_t *joint, double target);
 /* Position sweep of a one-sided limit along a world direction at the
  * current poses: error c (< 0 violates), lever terms a1, a2. */
 void joint_correct_axial(joint_t *joint, double c, vector_t direction, double a1, double a2);
+/* The point and angle block (revolute at a limit, weld): its 3x3 K for
+ * lever arms r1, r2 (rows: x, y, angle); K x = b solved by Cramer's rule
+ * (a singular K gives 0); and its position sweep toward gap 0 and angle
+ * error 0 together, since a correction of the angle alone moves the
+ * anchors apart, which the point's correction then turns back. */
+void joint_block_mass(const joint_t *joint, vector_t r1, vector_t r2, double k[3][3]);
+void joint_solve33(const double k[3][3], const double b[3], double x[3]);
+void joint_correct_block(joint_t *joint, vector_t r1, vector_t r2, vector_t gap,
+                         double angle_error);
 /* The current lever arms and anchor separation (anchor2 - anchor1) at the
  * position sweep's poses. */
 void joint_current(const joint_t *joint, vector_t *r1, vector_t *r2, vector_t *delta,
