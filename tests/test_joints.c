@@ -3,7 +3,11 @@
  * forces, removal with bodies, and the errors of bad definitions. */
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
 #include "jostle/jostle.h"
+#include "jostle/scene_file.h"
+#include "scene_file_check.h"
 #include "test.h"
 
 static const rgb_color_t GREY = {0.5, 0.5, 0.5};
@@ -607,6 +611,108 @@ static void bad_definitions_stop_with_a_message(void) {
                "world contacts are off");
 }
 
+/* Every joint type in a scene file, with values off their defaults: it
+ * loads, writes, loads again the same and writes the same text (the round
+ * trip of scene_file_check.h); a joint added by the API and one of a
+ * removed body are written and left out as they should be. */
+static const char JOINT_FILE[] =
+    "contacts on; gravity 0 -9.81\n"
+    "body floor { box 20 1; static; position 0 -0.5 }\n"
+    "body a { circle 0.2; position 0 3 }\n"
+    "body b { box 0.5 0.2; position 1 3 }\n"
+    "body c { circle 0.3; position 3 1; angle 0.25 }\n"
+    "joint revolute world 1 {\n anchor1 0 4\n anchor2 0 1\n limit on\n lower_angle -0.5\n"
+    " upper_angle 0.7\n motor on\n motor_speed 2\n max_motor_torque 10\n}\n"
+    "joint distance 1 2 { anchor2 0.1 0; length 1.5; min_length 0.5; max_length 2;"
+    " frequency 3; damping_ratio 0.2 }\n"
+    "joint mouse world 3 { target 3.5 1.5; max_force 300; frequency 4 }\n"
+    "joint weld 0 3 { anchor1 3 1.5; anchor2 0 0.5; reference_angle 0.25; frequency 12 }\n"
+    "joint prismatic 0 2 { axis 0 1; anchor1 1 3; limit on; lower_translation -1;"
+    " upper_translation 0.5; motor on; motor_speed -0.1; max_motor_force 1/3 }\n"
+    "joint wheel 2 3 { axis 0.6 0.8; frequency 5; damping_ratio 0.7; motor on;"
+    " motor_speed -3; max_motor_torque 7 }\n"
+    "joint motor 1 3 { linear_offset 1 -2; angular_offset 0.5; max_force 40;"
+    " max_torque 2; correction_factor 0.5 }\n";
+
+static void every_joint_round_trips_in_a_scene_file(void) {
+    char why[256] = "";
+    CHECK(scene_file_round_trip((const uint8_t *)JOINT_FILE, strlen(JOINT_FILE), "j.scene", why,
+                                sizeof why));
+    if (why[0] != '\0') printf("    %s\n", why);
+    scene_file_error_t error;
+    scene_file_t *file = scene_file_parse(JOINT_FILE, strlen(JOINT_FILE), "j.scene", &error);
+    CHECK(file != NULL);
+    if (file == NULL) return;
+    scene_t *scene = scene_file_get_scene(file);
+    CHECK(scene_joints(scene) == 7);
+    for (int t = 0; t < JOINT_TYPE_COUNT; t++) {
+        CHECK(joint_get_type(scene_get_joint(scene, (size_t)t)) == (joint_type_t)t);
+    }
+    joint_def_t prismatic = joint_get_def(scene_get_joint(scene, 4));
+    CHECK(prismatic.max_motor_force == 1.0 / 3.0);
+    CHECK(prismatic.body1 == scene_get_body(scene, 0));
+    /* Run it, add a joint through the API, remove a body: what is written
+     * is what the scene holds, and reads back the same. */
+    for (int step = 0; step < 30; step++) scene_tick(scene, 1.0 / 60.0);
+    joint_def_t rope = joint_def_distance(NULL, scene_get_body(scene, 2), (vector_t){1, 5},
+                                          body_get_centroid(scene_get_body(scene, 2)));
+    rope.min_length = 0.0;
+    joint_create(scene, &rope);
+    body_remove(scene_get_body(scene, 3));
+    size_t length;
+    char *text = scene_file_write(file, &length, NULL);
+    CHECK(strstr(text, "joint distance world 2 {") != NULL);
+    CHECK(strstr(text, "joint mouse") == NULL); /* its body is marked removed */
+    CHECK(scene_file_round_trip((const uint8_t *)text, length, "j.scene", why, sizeof why));
+    scene_file_t *again = scene_file_parse(text, length, "j.scene", &error);
+    CHECK(again != NULL && scene_file_same(file, again, why, sizeof why));
+    CHECK(again != NULL && scene_joints(scene_file_get_scene(again)) == 4);
+    free(text);
+    if (again != NULL) scene_file_free(again);
+    scene_file_free(file);
+}
+
+/* Each bad joint block is refused with FILE:LINE:COLUMN and a message. */
+static void bad_joint_blocks_name_their_place(void) {
+    static const struct {
+        const char *text, *message;
+    } CASES[] = {
+        {"contacts on\nbody a { circle 1 }\njoint hinge 0 0 {}\n",
+         "t.scene:3:7: expected a joint type"},
+        {"contacts on\nbody a { circle 1 }\njoint revolute 0 0 {}\n",
+         "t.scene:3:1: expected two different bodies, found 0 twice"},
+        {"contacts on\nbody a { circle 1 }\njoint revolute world 1 {}\n",
+         "t.scene:3:1: expected bodies numbered from 0 to 0"},
+        {"body a { circle 1 }\njoint revolute world 0 {}\n",
+         "t.scene:2:1: expected contacts on for a joint"},
+        {"contacts on\nbody a { circle 1 }\njoint revolute world 0 {\n  lower_angle 1\n"
+         "  upper_angle -1\n}\n",
+         "t.scene:3:1: expected lower_angle <= upper_angle, found 1 > -1"},
+        {"contacts on\nbody a { circle 1 }\njoint distance world 0 { length 0 }\n",
+         "t.scene:3:1: expected length and max_length > 0"},
+        {"contacts on\nbody a { circle 1 }\njoint weld world 0 { hinge 1 }\n",
+         "t.scene:3:22: expected a joint line"},
+        {"contacts on\nbody a { circle 1 }\njoint weld world 0 { frequency 1; frequency 2 }\n",
+         "t.scene:3:35: expected one frequency"},
+        {"contacts on\nbody a { circle 1 }\njoint prismatic world 0 { axis 0 0 }\n",
+         "t.scene:3:1: expected a non-zero axis"},
+    };
+    for (size_t i = 0; i < sizeof CASES / sizeof CASES[0]; i++) {
+        scene_file_error_t error;
+        scene_file_t *file =
+            scene_file_parse(CASES[i].text, strlen(CASES[i].text), "t.scene", &error);
+        CHECK(file == NULL);
+        if (file != NULL) {
+            scene_file_free(file);
+            continue;
+        }
+        if (strstr(error.message, CASES[i].message) != error.message) {
+            test_fail(__FILE__, __LINE__, "case %zu: got \"%s\", expected \"%s...\"", i,
+                      error.message, CASES[i].message);
+        }
+    }
+}
+
 TEST_SUITE(joints, TEST_CASE(pendulum_period_5_degrees), TEST_CASE(pendulum_period_45_degrees),
            TEST_CASE(pendulum_period_170_degrees), TEST_CASE(hanging_chain_keeps_its_length),
            TEST_CASE(swinging_chain_keeps_its_length),
@@ -616,4 +722,6 @@ TEST_SUITE(joints, TEST_CASE(pendulum_period_5_degrees), TEST_CASE(pendulum_peri
            TEST_CASE(wheel_rolls_at_motor_speed), TEST_CASE(weld_holds_a_beam),
            TEST_CASE(prismatic_slides_stops_and_drives), TEST_CASE(mouse_pulls_within_its_force),
            TEST_CASE(motor_joint_reaches_its_offset), TEST_CASE(rope_holds_at_its_length),
-           TEST_CASE(bad_definitions_stop_with_a_message));
+           TEST_CASE(bad_definitions_stop_with_a_message),
+           TEST_CASE(every_joint_round_trips_in_a_scene_file),
+           TEST_CASE(bad_joint_blocks_name_their_place));
