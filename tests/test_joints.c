@@ -517,6 +517,32 @@ static void rope_holds_at_its_length(void) {
     scene_free(scene);
 }
 
+/* A chain dropped on a pile of boxes under contacts: the same bits with 1
+ * and with 3 workers (the joints run on the calling thread, in order,
+ * between the colour sweeps). */
+static void joints_give_the_same_bits_on_any_workers(void) {
+    vector_t ends[2];
+    double spins[2];
+    for (int run = 0; run < 2; run++) {
+        scene_t *scene = joint_scene(INTEGRATOR_SEED);
+        scene_set_workers(scene, run == 0 ? 1 : 3);
+        add_box(scene, (vector_t){0.0, -5.5}, 20.0, 0.5, INFINITY);
+        for (int k = 0; k < 40; k++) {
+            add_box(scene, (vector_t){-4.0 + (k % 8) * 1.1, -4.5 + (k / 8) * 1.05}, 0.5, 0.5,
+                    1.0);
+        }
+        body_t *links[12];
+        joint_t *joints[12];
+        make_chain(scene, (vector_t){-3.0, 2.0}, 12, 0.5, 1.0, links, joints);
+        for (int step = 0; step < 240; step++) scene_tick(scene, 1.0 / 60.0);
+        ends[run] = body_get_centroid(links[11]);
+        spins[run] = body_get_angular_velocity(links[11]);
+        scene_free(scene);
+    }
+    CHECK(ends[0].x == ends[1].x && ends[0].y == ends[1].y);
+    CHECK(spins[0] == spins[1]);
+}
+
 static scene_t *bad_scene;
 static body_t *bad_a, *bad_b;
 
@@ -724,4 +750,5 @@ TEST_SUITE(joints, TEST_CASE(pendulum_period_5_degrees), TEST_CASE(pendulum_peri
            TEST_CASE(motor_joint_reaches_its_offset), TEST_CASE(rope_holds_at_its_length),
            TEST_CASE(bad_definitions_stop_with_a_message),
            TEST_CASE(every_joint_round_trips_in_a_scene_file),
-           TEST_CASE(bad_joint_blocks_name_their_place));
+           TEST_CASE(bad_joint_blocks_name_their_place),
+           TEST_CASE(joints_give_the_same_bits_on_any_workers));

@@ -61,9 +61,10 @@ typedef struct joint joint_t;
 
 typedef enum {
     /* A pin: anchor2 on body2 is held on anchor1 of body1; body2 turns
-     * freely about it, within [lower_angle, upper_angle] of the relative
-     * angle when enable_limit, driven at motor_speed (rad/s, body2 relative
-     * to body1) by at most max_motor_torque when enable_motor. */
+     * freely about it, its angle less body1's less reference_angle kept in
+     * [lower_angle, upper_angle] when enable_limit, driven at motor_speed
+     * (rad/s, body2 relative to body1) by at most max_motor_torque when
+     * enable_motor. */
     JOINT_REVOLUTE,
     /* The distance between the anchors: rigid at `length` (a rod), kept in
      * [min_length, max_length] (a rope: min_length 0), and pulled toward
@@ -110,7 +111,8 @@ typedef struct {
     body_t *body1, *body2;
     vector_t anchor1, anchor2; /* body frames (body1 NULL: anchor1 in the world) */
     vector_t axis;             /* prismatic, wheel: body1's frame, any length > 0 */
-    double reference_angle;    /* weld, prismatic: body2's angle less body1's to hold */
+    double reference_angle;    /* revolute (its limits' zero), weld, prismatic (the angle held):
+                                  body2's angle less body1's */
     /* distance */
     double length, min_length, max_length;
     /* distance, wheel, mouse, weld: soft constraint (Hz, ratio) */
@@ -198,8 +200,10 @@ void joint_enable_motor(joint_t *joint, bool enabled);
 /* The mouse joint's target (world); wakes body2. */
 void joint_set_target(joint_t *joint, vector_t target);
 
-/* body2's angle less body1's, and the prismatic or wheel joint's
- * translation (m, along the axis) at the bodies' current poses. */
+/* body2's angle less body1's less the reference angle, and the
+ * prismatic or wheel joint's translation (m, along the axis; for the
+ * others, the distance between the anchors) at the bodies' current
+ * poses. */
 double joint_get_angle(const joint_t *joint);
 double joint_get_translation(const joint_t *joint);
 
