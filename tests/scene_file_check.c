@@ -285,6 +285,51 @@ static bool same_contact_memory(scene_t *x, scene_t *y, char *why, size_t size) 
     return true;
 }
 
+/* The body's index among the scene's bodies not marked removed; -1 for
+ * NULL (the world) and for a body not found. */
+static long live_index(scene_t *scene, const body_t *body) {
+    long index = 0;
+    for (size_t i = 0; body != NULL && i < scene_bodies(scene); i++) {
+        body_t *other = scene_get_body(scene, i);
+        if (other == body) return index;
+        index += !body_is_removed(other);
+    }
+    return -1;
+}
+
+static bool same_def(const joint_def_t *d, const joint_def_t *e) {
+    return d->type == e->type && same_vector(d->anchor1, e->anchor1) &&
+           same_vector(d->anchor2, e->anchor2) && same_vector(d->axis, e->axis) &&
+           d->reference_angle == e->reference_angle && d->length == e->length &&
+           d->min_length == e->min_length && d->max_length == e->max_length &&
+           d->frequency == e->frequency && d->damping_ratio == e->damping_ratio &&
+           d->enable_limit == e->enable_limit && d->lower_angle == e->lower_angle &&
+           d->upper_angle == e->upper_angle && d->lower_translation == e->lower_translation &&
+           d->upper_translation == e->upper_translation && d->enable_motor == e->enable_motor &&
+           d->motor_speed == e->motor_speed && d->max_motor_torque == e->max_motor_torque &&
+           d->max_motor_force == e->max_motor_force && same_vector(d->target, e->target) &&
+           d->max_force == e->max_force && same_vector(d->linear_offset, e->linear_offset) &&
+           d->angular_offset == e->angular_offset && d->max_torque == e->max_torque &&
+           d->correction_factor == e->correction_factor;
+}
+
+/* The joints, in order, with the same definitions and bodies by index
+ * (those naming a body marked removed are not written: left out). */
+static bool same_joints(scene_t *x, scene_t *y, char *why, size_t size) {
+    size_t j = 0;
+    for (size_t i = 0; i < scene_joints(x); i++) {
+        joint_def_t d = joint_get_def(scene_get_joint(x, i));
+        if (body_is_removed(d.body2) || (d.body1 != NULL && body_is_removed(d.body1))) continue;
+        if (j == scene_joints(y)) return differ(why, size, "joint %zu is missing", i);
+        joint_def_t e = joint_get_def(scene_get_joint(y, j++));
+        if (!same_def(&d, &e) || live_index(x, d.body1) != live_index(y, e.body1) ||
+            live_index(x, d.body2) != live_index(y, e.body2))
+            return differ(why, size, "joint %zu differs", i);
+    }
+    if (j != scene_joints(y)) return differ(why, size, "the scenes hold different joints");
+    return true;
+}
+
 bool scene_file_same(scene_file_t *a, scene_file_t *b, char *why, size_t size) {
     if (!same_settings(a, b, why, size)) return false;
     scene_t *x = scene_file_get_scene(a), *y = scene_file_get_scene(b);
@@ -302,7 +347,8 @@ bool scene_file_same(scene_file_t *a, scene_file_t *b, char *why, size_t size) {
     }
     if (i != scene_bodies(x) || j != scene_bodies(y))
         return differ(why, size, "the scenes hold different numbers of bodies");
-    return same_contact_memory(x, y, why, size) && same_forces(a, b, false, why, size);
+    return same_contact_memory(x, y, why, size) && same_joints(x, y, why, size) &&
+           same_forces(a, b, false, why, size);
 }
 
 bool scene_file_same_forces_in_any_order(scene_file_t *a, scene_file_t *b, char *why, size_t size) {

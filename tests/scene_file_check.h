@@ -17,6 +17,7 @@
  * with every value the engine reports equal (pose, velocities, mass,
  * inertia, material, colour, world vertices, tag, filter, sleep timer,
  * sleeping island); the same contact memory (scene_state.h) by body index;
+ * the same joints in the same order (definition, bodies by index);
  * the same force creators in the same order (kind, constant, bodies by
  * index). Otherwise false, and why (the first difference) in `why`. */
 bool scene_file_same(scene_file_t *a, scene_file_t *b, char *why, size_t why_size);

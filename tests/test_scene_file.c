@@ -799,7 +799,7 @@ static const bad_file_t BAD_FILES[] = {
      "t.scene:1:1: expected a statement (body, template, group, gravity, contacts, integrator, "
      "iterations, warm_starting, restitution_threshold, sleep_tolerance, sleep_time, timestep, "
      "view, game, sleeping, sleep_phase, step_lengths, workers, stepping, category, note, spring, "
-     "newton, drag, collide, contact), found \"bdoy\""},
+     "newton, drag, collide, contact, joint), found \"bdoy\""},
     {"warm_starting maybe", "t.scene:1:15: expected on or off (warm starting), found \"maybe\""},
     {"warm_starting on\nwarm_starting off",
      "t.scene:2:1: expected one warm_starting statement per file, found a second (the first at "

@@ -514,11 +514,14 @@ static void apply_settings(scene_file_t *file) {
 }
 
 bool sf_build(scene_file_t *file, sf_lexer_t *lexer) {
-    if (!resolve(&file->doc, lexer) || !check_state(&file->doc, lexer)) return false;
+    if (!resolve(&file->doc, lexer) || !check_state(&file->doc, lexer) ||
+        !sf_check_joints(&file->doc, lexer))
+        return false;
     file->scene = scene_init();
     apply_settings(file);
     make_bodies(file);
     if (!make_forces(file, lexer)) return false;
+    sf_make_joints(file); /* before the sleep state: a new joint wakes its bodies */
     restore_state(file);
     return true;
 }

@@ -250,6 +250,10 @@ static bool parse_one(parser_t *p) {
         next(p);
         return sf_parse_contact(p, here);
     }
+    if (strcmp(keyword, "joint") == 0) {
+        next(p);
+        return sf_parse_joint(p, here);
+    }
     if (strcmp(keyword, "group") == 0) {
         next(p);
         size_t count = 0;
@@ -263,7 +267,7 @@ static bool parse_one(parser_t *p) {
                           "iterations, warm_starting, restitution_threshold, sleep_tolerance, "
                           "sleep_time, timestep, view, game, sleeping, sleep_phase, step_lengths, "
                           "workers, stepping, category, note, spring, newton, drag, collide, "
-                          "contact)");
+                          "contact, joint)");
 }
 
 bool sf_parse(sf_lexer_t *lexer, sf_doc_t *doc) {
@@ -295,6 +299,7 @@ void sf_doc_free(sf_doc_t *doc) {
     for (size_t i = 0; i < doc->statement_count; i++) free(doc->statements[i].refs);
     free(doc->statements);
     free(doc->contacts);
+    free(doc->joints);
     free(doc->names.slots);
     *doc = (sf_doc_t){0};
 }

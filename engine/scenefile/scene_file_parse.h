@@ -9,6 +9,7 @@
  *   scene_file_bodies.c          body and template blocks, checked and derived
  *   scene_file_forces.c          spring, newton, drag and collide
  *   scene_file_contact_memory.c  contact blocks: the world's contact memory
+ *   scene_file_joints.c          joint blocks: the joints (jostle/joint.h)
  * Each reads from the current token to the end of what it reads, and
  * returns false with the error set (sf_fail) at the first problem.
  */
@@ -118,5 +119,6 @@ bool sf_parse_setting(parser_t *p, const char *keyword, sf_where_t here);
 bool sf_parse_body(parser_t *p, bool is_template, sf_where_t here);
 bool sf_parse_statement(parser_t *p, const char *keyword, sf_where_t here);
 bool sf_parse_contact(parser_t *p, sf_where_t here);
+bool sf_parse_joint(parser_t *p, sf_where_t here);
 
 #endif // #ifndef SCENE_FILE_PARSE_H

@@ -252,6 +252,27 @@ typedef struct {
     scene_contact_memory_t memory; /* bodies NULL until built */
 } sf_contact_t;
 
+/* A `joint TYPE A B { ... }` block: a joint (jostle/joint.h) between the
+ * bodies the file makes A-th and B-th (A SF_WORLD: the world), its
+ * definition with the bodies left NULL until built. */
+#define SF_WORLD SIZE_MAX
+typedef struct {
+    sf_where_t where;
+    size_t body1, body2;
+    joint_def_t def;
+} sf_joint_t;
+
+/* The lines of a joint block, one per field of joint_def_t a file may
+ * give (scene_file_joints.c reads them, scene_file_write.c writes them). */
+typedef enum { SF_FIELD_NUMBER, SF_FIELD_VECTOR, SF_FIELD_FLAG } sf_field_kind_t;
+typedef struct {
+    const char *name;
+    sf_field_kind_t kind;
+    size_t offset;
+} sf_joint_field_t;
+extern const sf_joint_field_t SF_JOINT_FIELDS[];
+extern const size_t SF_JOINT_FIELD_COUNT;
+
 /* One name: a single body or a group. */
 typedef struct {
     sf_name_t key; /* a copy: the bodies and groups arrays move as they grow */
@@ -276,6 +297,8 @@ typedef struct {
     sf_names_t names;
     sf_contact_t *contacts;
     size_t contact_count, contact_capacity;
+    sf_joint_t *joints;
+    size_t joint_count, joint_capacity;
     sf_where_t first_island; /* the first `asleep`, for the message when sleeping is off */
     size_t total_bodies; /* bodies the blocks make, repeats counted */
     size_t total_vertices;
@@ -351,6 +374,12 @@ struct scene_file {
 /* Resolves names, checks the limits, and builds file->scene. False with the
  * error set when a name or a limit is refused; nothing is built then. */
 bool sf_build(scene_file_t *file, sf_lexer_t *lexer);
+
+/* The joint blocks (scene_file_joints.c): checked before anything is made
+ * (what joint_create would refuse, with the block's place), made after the
+ * bodies and forces. */
+bool sf_check_joints(const sf_doc_t *doc, sf_lexer_t *lexer);
+void sf_make_joints(scene_file_t *file);
 
 /* Whether a live record belongs to the set a reference names. */
 bool sf_in_ref(const scene_file_t *file, const sf_ref_t *ref, const sf_record_t *record);

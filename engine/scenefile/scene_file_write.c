@@ -524,6 +524,48 @@ static void put_contacts(out_t *out, scene_file_t *file, const bodies_t *bodies)
     free(contacts);
 }
 
+/* The joints of the scene, their bodies by their places in the file, each
+ * field that differs from the type's default (to the bit) on a line. */
+static void put_joint(out_t *out, const joint_t *joint, const bodies_t *bodies) {
+    joint_def_t def = joint_get_def(joint);
+    const written_t *b = find_written(bodies, def.body2);
+    const written_t *a = def.body1 != NULL ? find_written(bodies, def.body1) : NULL;
+    if (b == NULL || (def.body1 != NULL && a == NULL)) return; /* a body marked removed */
+    put(out, "joint %s ", joint_type_name(def.type));
+    if (a != NULL) {
+        put(out, "%zu", a->index);
+    } else {
+        put(out, "world");
+    }
+    put(out, " %zu {\n", b->index);
+    joint_def_t base = joint_def_default(def.type);
+    for (size_t i = 0; i < SF_JOINT_FIELD_COUNT; i++) {
+        const sf_joint_field_t *field = &SF_JOINT_FIELDS[i];
+        const char *value = (const char *)&def + field->offset;
+        const char *standard = (const char *)&base + field->offset;
+        size_t size = field->kind == SF_FIELD_VECTOR   ? sizeof(vector_t)
+                      : field->kind == SF_FIELD_NUMBER ? sizeof(double)
+                                                       : sizeof(bool);
+        if (memcmp(value, standard, size) == 0) continue;
+        put(out, "    %s", field->name);
+        if (field->kind == SF_FIELD_VECTOR) {
+            put_vector(out, *(const vector_t *)value);
+        } else if (field->kind == SF_FIELD_NUMBER) {
+            put_number(out, *(const double *)value);
+        } else {
+            put(out, *(const bool *)value ? " on" : " off");
+        }
+        put(out, "\n");
+    }
+    put(out, "}\n");
+}
+
+static void put_joints(out_t *out, scene_file_t *file, const bodies_t *bodies) {
+    size_t count = scene_joints(file->scene);
+    if (count > 0) put(out, "\n");
+    for (size_t i = 0; i < count; i++) put_joint(out, scene_get_joint(file->scene, i), bodies);
+}
+
 /* A reference is written unless it names a single body that is gone or
  * marked removed (its force creators go with it at the next tick). */
 static bool ref_alive(const sf_doc_t *doc, const sf_ref_t *ref) {
@@ -589,6 +631,7 @@ char *scene_file_write(scene_file_t *file, size_t *length, scene_file_error_t *e
     put_bodies(&out, file, &bodies);
     if (doc->statement_count > 0) put(&out, "\n");
     for (size_t i = 0; i < doc->statement_count; i++) put_statement(&out, doc, &doc->statements[i]);
+    put_joints(&out, file, &bodies);
     put_contacts(&out, file, &bodies);
     free(bodies.in_order);
     free(bodies.by_body);

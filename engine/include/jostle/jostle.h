@@ -13,6 +13,7 @@
 #include "color.h"
 #include "contact.h"
 #include "forces.h"
+#include "joint.h"
 #include "list.h"
 #include "polygon.h"
 #include "query.h"

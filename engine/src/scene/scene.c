@@ -11,6 +11,7 @@
 #include "base/stage_clock.h"
 #include "base/workers.h"
 #include "world/world.h"
+#include "solver/joint_list.h"
 
 /* A force creator, as scene_add_creator takes it (scene_private.h). */
 typedef scene_creator_t force_entry_t;
@@ -78,6 +79,8 @@ struct scene {
     uint64_t moves;
     void *queries;
     void (*free_queries)(void *queries);
+    /* The joints (joint.h), which the scene owns. */
+    joint_list_t joints;
 };
 
 scene_t *scene_init(void) {
@@ -143,6 +146,7 @@ void scene_free(scene_t *scene) {
     scene_require_idle(scene, __func__, "free the scene after scene_tick returns");
     scene->running = "scene_free";
     scene_install_world(scene, NULL, NULL);
+    joint_list_free(&scene->joints);
     release_unowned_bodies(scene);
     for (size_t i = 0; i < scene->force_count; i++) force_entry_free(scene->forces[i]);
     for (size_t i = 0; i < scene->body_count; i++) free_owned_body(scene->bodies[i]);
@@ -778,6 +782,7 @@ static void stage_reap(scene_t *scene) {
     scene->force_count = kept;
 
     forget_removed_in_record(scene);
+    joint_list_reap(&scene->joints);
     kept = 0;
     for (size_t i = 0; i < scene->body_count; i++) {
         body_t *body = scene->bodies[i];
@@ -827,7 +832,8 @@ static void tick(scene_t *scene, double dt) {
                                    scene->sleep_angular,
                                    scene->sleep_time,
                                    &scene->clock,
-                                   scene->chain_parts};
+                                   scene->chain_parts,
+                                   {scene->joints.joints, scene->joints.count}};
         scene->world_ops->step(scene->world, scene->bodies, scene->motions, scene->body_count,
                                &world_step, &scene->stats);
         scene->record_needs_world = true;
@@ -846,4 +852,8 @@ void scene_tick(scene_t *scene, double dt) {
     tick(scene, dt);
     scene->running = NULL;
     scene->moves++;
+}
+
+joint_list_t *scene_joint_list(scene_t *scene) {
+    return &scene->joints;
 }

@@ -9,6 +9,7 @@
 #include "base/workers.h"
 #include "dynamics/jacobian.h"
 #include "world/world.h"
+#include "solver/joint_list.h"
 
 /* Stops the program, naming `function`, when it was called back from
  * inside scene_tick or scene_free of this scene, which are still using it;
@@ -136,6 +137,9 @@ void *scene_query_state(scene_t *scene, void *(*init)(void), void (*freer)(void 
  * added or removed: a tick, a stage of one, a body added, a pose set on one
  * of its bodies (body_private.h's moves). */
 uint64_t scene_moves(const scene_t *scene);
+
+/* The scene's joints (joint.c creates and destroys them). */
+joint_list_t *scene_joint_list(scene_t *scene);
 
 /* The last tick's stage times and ran flags (the counts left 0). */
 scene_profile_t scene_stage_times(const scene_t *scene);

@@ -73,7 +73,8 @@ static void forget_impulses(solver_contact_t *contacts, size_t contact_count) {
 
 void solver_solve(solver_wide_t *wide, shock_t *shock, solver_contact_t *contacts,
                   const solver_anchor_t *anchors, size_t contact_count,
-                  const solver_bodies_t *bodies, const solver_settings_t *settings) {
+                  const solver_bodies_t *bodies, const solver_settings_t *settings,
+                  const joint_step_t *joints) {
     solver_velocity_t *velocities = bodies->velocities;
     solve_split_t split = {contacts, anchors, bodies, settings, {{false, false}}};
     if (!settings->warm_starting) forget_impulses(contacts, contact_count);
@@ -94,6 +95,9 @@ void solver_solve(solver_wide_t *wide, shock_t *shock, solver_contact_t *contact
     for (size_t i = 0; i < wide->loose_count; i++) {
         solver_warm_start(&contacts[wide->loose[i]], velocities);
     }
+    if (joints->count > 0) {
+        joint_solver_prepare(joints, bodies, settings);
+    }
     /* Shock propagation before the last iteration, which then spreads its
      * pushes back over both bodies of each contact (shock.h). */
     int shock_after = settings->velocity_iterations > 1 ? settings->velocity_iterations - 1 : 1;
@@ -102,6 +106,7 @@ void solver_solve(solver_wide_t *wide, shock_t *shock, solver_contact_t *contact
         for (size_t i = 0; i < wide->loose_count; i++) {
             solver_solve_velocity(&contacts[wide->loose[i]], velocities);
         }
+        if (joints->count > 0) joint_solver_iterate(joints);
         if (iteration == shock_after) {
             stage_clock_lap(settings->clock, SCENE_STAGE_SOLVER);
             shock_propagate(shock, wide, contacts, contact_count, velocities, bodies->body_count);
@@ -117,6 +122,7 @@ void solver_solve(solver_wide_t *wide, shock_t *shock, solver_contact_t *contact
         for (size_t i = 0; i < wide->loose_count; i++) {
             solver_solve_position(&contacts[wide->loose[i]], velocities, bodies->displacements);
         }
+        if (joints->count > 0) joint_solver_correct(joints);
     }
     for_bodies(wide->workers, &split, limit_chunk);
     stage_clock_lap(settings->clock, SCENE_STAGE_POSITION);

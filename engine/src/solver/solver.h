@@ -26,16 +26,19 @@
  */
 
 #include "solver/solver_types.h"
+#include "solver/joint_solver.h"
 #include "solver/shock.h"
 #include "solver/solver_wide.h"
 
 /* Everything after the narrowphase: prepare, warm start, velocity
  * iterations and position iterations (in colour batches, solver_wide.h,
- * whose arrays live in wide), advance. On entry each body's v, w are its
- * free velocities; on return they are its new velocities, and its
- * displacement is the one of the step. */
+ * whose arrays live in wide), advance, with the step's joints solved
+ * after the contacts in each iteration (joint_solver.h). On entry each
+ * body's v, w are its free velocities; on return they are its new
+ * velocities, and its displacement is the one of the step. */
 void solver_solve(solver_wide_t *wide, shock_t *shock, solver_contact_t *contacts,
                   const solver_anchor_t *anchors, size_t contact_count,
-                  const solver_bodies_t *bodies, const solver_settings_t *settings);
+                  const solver_bodies_t *bodies, const solver_settings_t *settings,
+                  const joint_step_t *joints);
 
 #endif // #ifndef SOLVER_H

@@ -116,6 +116,7 @@ static void build_islands(sleep_t *sleep, const sleep_step_t *step, const sleep_
         sleep->islands[i] = (struct sleep_island){true, false, false, NULL, NULL};
     }
     for (size_t k = 0; k < link_count; k++) {
+        if (links[k].b == SLEEP_WORLD) continue;
         body_t *a = step->bodies[links[k].a], *b = step->bodies[links[k].b];
         if (body_is_movable(a) && body_is_movable(b)) {
             uint32_t ra = find_root(sleep->parent, links[k].a);
@@ -124,6 +125,10 @@ static void build_islands(sleep_t *sleep, const sleep_step_t *step, const sleep_
         }
     }
     for (size_t k = 0; k < link_count; k++) {
+        if (links[k].b == SLEEP_WORLD) {
+            sleep->islands[find_root(sleep->parent, links[k].a)].supported = true;
+            continue;
+        }
         body_t *a = step->bodies[links[k].a], *b = step->bodies[links[k].b];
         /* Resting on a body that does not move (a floor, a wall). */
         if (body_is_movable(a) && !body_is_movable(b)) {

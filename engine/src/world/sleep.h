@@ -70,10 +70,13 @@ typedef struct {
     double linear_tolerance, angular_tolerance, time;
 } sleep_step_t;
 
-/* Two rows whose contact touches this step. */
+/* Two rows whose contact touches this step, or that a joint joins; b is
+ * SLEEP_WORLD for a joint that holds row a to the world (it supports a's
+ * island as a floor does). */
 typedef struct {
     uint32_t a, b;
 } sleep_link_t;
+#define SLEEP_WORLD UINT32_MAX
 
 /* Advances the sleep timer of each movable body of rows [begin, end);
  * returns how many of them have been slow for the step's sleep time. When none of all

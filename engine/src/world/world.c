@@ -228,6 +228,20 @@ static bool is_touching(const solver_contact_t *c) {
     return false;
 }
 
+/* The links of the joints solved this step: each joins its bodies'
+ * islands (a joint to the world holds its body as a floor does). */
+static size_t joint_links(const joint_step_t *joints, sleep_link_t *links) {
+    size_t count = 0;
+    for (size_t i = 0; i < joints->count; i++) {
+        const joint_t *joint = joints->joints[i];
+        if (!joint->active) continue;
+        const body_t *body1 = joint->def.body1;
+        uint32_t row1 = body1 != NULL ? body1->solver_index : SLEEP_WORLD;
+        links[count++] = (sleep_link_t){joint->def.body2->solver_index, row1};
+    }
+    return count;
+}
+
 /* The sleep timers over the workers, each chunk counting its ready bodies. */
 typedef struct {
     const sleep_step_t *step;
@@ -258,8 +272,8 @@ static void update_sleep(world_t *world, body_t **bodies, size_t count, const wo
                          ws->dt,          CONTACT_MARGIN,    ws->sleep_linear,
                          ws->sleep_angular, ws->sleep_time};
     if (time_bodies(world, &step) > 0 && sleep_is_check_step(&world->sleep)) {
-        memory_reserve((void **)&world->links, &world->link_capacity, world->contact_count,
-                       sizeof(sleep_link_t));
+        memory_reserve((void **)&world->links, &world->link_capacity,
+                       world->contact_count + ws->joints.count, sizeof(sleep_link_t));
         size_t link_count = 0;
         for (size_t i = 0; i < world->contact_count; i++) {
             const solver_contact_t *c = &world->contacts[i];
@@ -267,6 +281,7 @@ static void update_sleep(world_t *world, body_t **bodies, size_t count, const wo
                 world->links[link_count++] = (sleep_link_t){c->a, c->b};
             }
         }
+        link_count += joint_links(&ws->joints, world->links + link_count);
         sleep_islands(&world->sleep, &step, world->links, link_count);
     }
     sleep_wake_reached(&world->sleep, &step, all_bodies, all_count);
@@ -302,7 +317,7 @@ static void run_pipeline(world_t *world, body_t **bodies, integrator_motion_t *m
                                   clock};
     solver_bodies_t rows = {world->velocities, world->displacements, world->states, count};
     solver_solve(&world->wide, &world->shock, world->contacts, world->anchors,
-                 world->contact_count, &rows, &settings);
+                 world->contact_count, &rows, &settings, &step->joints);
     if (step->sleeping) {
         update_sleep(world, bodies, count, step, all_bodies, all_count);
         stage_clock_lap(step->clock, SCENE_STAGE_SLEEP);

@@ -22,6 +22,7 @@
 #include "jostle/scene_state.h"
 #include "base/stage_clock.h"
 #include "base/workers.h"
+#include "solver/joint_solver.h"
 
 typedef struct world world_t;
 
@@ -59,6 +60,8 @@ typedef struct {
     /* How many segments the chains among the bodies have (body.h): the
      * world collides those in their chains' place. */
     size_t chain_parts;
+    /* The scene's joints (joint.h), solved with the contacts. */
+    joint_step_t joints;
 } world_step_t;
 
 /* Wakes the sleeping islands that a body of bodies[0 .. count) changed

@@ -1,0 +1,68 @@
+/* The revolute joint (a pin): a rigid point constraint, an angular motor
+ * with a torque bound, and speculative angle limits. */
+#include "solver/joint_types.h"
+
+static void prepare(joint_t *joint) {
+    joint_point_mass(joint, joint->r1, joint->r2, &joint->k11, &joint->k12, &joint->k22);
+    joint->angular_mass = joint_inverse(joint->i1 + joint->i2);
+    if (!joint->def.enable_motor) joint->motor_impulse = 0.0;
+    if (!joint->def.enable_limit) joint->lower_impulse = joint->upper_impulse = 0.0;
+    vector_t p = joint->point_impulse;
+    double axial = joint->motor_impulse + joint->lower_impulse - joint->upper_impulse;
+    joint_apply(joint, p, vec_cross(joint->r1, p) + axial, vec_cross(joint->r2, p) + axial);
+}
+
+static double relative_spin(const joint_t *joint) {
+    return joint->rows.v2->w - joint->rows.v1->w;
+}
+
+static void solve_velocity(joint_t *joint) {
+    const joint_def_t *def = &joint->def;
+    if (def->enable_motor) {
+        double bound = def->max_motor_torque * joint->dt;
+        double old = joint->motor_impulse;
+        double impulse = -joint->angular_mass * (relative_spin(joint) - def->motor_speed);
+        joint->motor_impulse = joint_clamp(old + impulse, -bound, bound);
+        impulse = joint->motor_impulse - old;
+        joint_apply(joint, VEC_ZERO, impulse, impulse);
+    }
+    if (def->enable_limit) {
+        /* The step turns the joint by dt (drift + weight spin): the
+         * limit is reached when that closes the gap to it. */
+        double drift = joint->dt * (joint->spin2 - joint->spin1);
+        double reach = joint->weight > 0.0 ? joint->dt * joint->weight : joint->dt;
+        double impulse = joint_limit_impulse(joint->angular_mass,
+                                             joint->angle + drift - def->lower_angle,
+                                             relative_spin(joint), reach, &joint->lower_impulse);
+        joint_apply(joint, VEC_ZERO, impulse, impulse);
+        impulse = joint_limit_impulse(joint->angular_mass, def->upper_angle - joint->angle - drift,
+                                      -relative_spin(joint), reach, &joint->upper_impulse);
+        joint_apply(joint, VEC_ZERO, -impulse, -impulse);
+    }
+    vector_t gap = joint_predicted_gap(joint, NULL), rate = joint_relative_velocity(joint);
+    vector_t cdot = {joint_closing_rate(joint, gap.x, rate.x),
+                     joint_closing_rate(joint, gap.y, rate.y)};
+    vector_t p = vec_negate(joint_solve22(joint->k11, joint->k12, joint->k22, cdot));
+    joint->point_impulse = vec_add(joint->point_impulse, p);
+    joint_apply(joint, p, vec_cross(joint->r1, p), vec_cross(joint->r2, p));
+}
+
+static void solve_position(joint_t *joint) {
+    const joint_def_t *def = &joint->def;
+    if (def->enable_limit) {
+        vector_t r1, r2, gap;
+        double angle;
+        joint_current(joint, &r1, &r2, &gap, &angle);
+        if (angle < def->lower_angle) {
+            joint_correct_block(joint, r1, r2, gap, angle - def->lower_angle);
+            return;
+        }
+        if (angle > def->upper_angle) {
+            joint_correct_block(joint, r1, r2, gap, angle - def->upper_angle);
+            return;
+        }
+    }
+    joint_correct_point(joint);
+}
+
+const joint_kind_t JOINT_REVOLUTE_KIND = {prepare, solve_velocity, solve_position};
