@@ -13,8 +13,29 @@
 #include <unistd.h>
 
 const char *sandbox_path = "./sandbox";
+const char *app_tmp_dir = TMP_DIR;
 
 /* ---- running the sandbox ---- */
+
+int wait_for_child(pid_t child, const char *what, int timeout_s) {
+    int status = 0;
+    struct timespec pause = {0, 10 * 1000 * 1000};
+    for (int waited = 0;; waited++) {
+        if (waitpid(child, &status, WNOHANG) == child) break;
+        if (waited > timeout_s * 100) {
+            kill(child, SIGKILL);
+            waitpid(child, &status, 0);
+            app_fail("%s did not exit within %d s", what, timeout_s);
+            return -1;
+        }
+        nanosleep(&pause, NULL);
+    }
+    if (WIFSIGNALED(status)) {
+        app_fail("%s died with signal %d", what, WTERMSIG(status));
+        return -1;
+    }
+    return WEXITSTATUS(status);
+}
 
 
 /* Runs the sandbox with the given arguments (NULL-terminated), at most
@@ -60,25 +81,9 @@ void run_sandbox(run_t *run, int timeout_s, const char *const *args) {
     }
     run->output[size] = '\0';
     close(fds[0]);
-    /* The pipe closed: the child is exiting; wait with a deadline. */
-    int status = 0;
-    struct timespec pause = {0, 10 * 1000 * 1000};
-    for (int waited = 0;; waited++) {
-        pid_t done = waitpid(child, &status, WNOHANG);
-        if (done == child) break;
-        if (waited > timeout_s * 100) {
-            kill(child, SIGKILL);
-            waitpid(child, &status, 0);
-            app_fail("the sandbox did not exit within %d s", timeout_s);
-            return;
-        }
-        nanosleep(&pause, NULL);
-    }
-    if (WIFSIGNALED(status)) {
-        app_fail("the sandbox died with signal %d; output:\n%s", WTERMSIG(status), run->output);
-        return;
-    }
-    run->status = WEXITSTATUS(status);
+    /* The pipe closed: the child is exiting. */
+    run->status = wait_for_child(child, "the sandbox", timeout_s);
+    if (run->status < 0 && run->output[0] != '\0') app_fail("its output:\n%s", run->output);
 }
 
 
@@ -93,10 +98,12 @@ bool write_file(const char *path, const char *text) {
     return true;
 }
 
-/* A whole text file, NUL-terminated (free it), or NULL. */
 char *read_text_file(const char *path) {
     FILE *file = fopen(path, "rb");
-    if (file == NULL) return NULL;
+    if (file == NULL) {
+        app_fail("cannot read %s: %s", path, strerror(errno));
+        return NULL;
+    }
     fseek(file, 0, SEEK_END);
     long size = ftell(file);
     fseek(file, 0, SEEK_SET);
@@ -106,6 +113,7 @@ char *read_text_file(const char *path) {
     } else {
         free(text);
         text = NULL;
+        app_fail("cannot read %s", path);
     }
     fclose(file);
     return text;
@@ -178,7 +186,7 @@ const char *tmp_path(const char *name, const char *extension) {
     static char paths[4][256];
     static int next;
     char *path = paths[next++ % 4];
-    snprintf(path, 256, TMP_DIR "/%s%s", name, extension);
+    snprintf(path, 256, "%s/%s%s", app_tmp_dir, name, extension);
     return path;
 }
 

@@ -7,6 +7,7 @@
 
 #include <stdbool.h>
 #include <stddef.h>
+#include <sys/types.h>
 #include "app_image.h"
 #include "core/layout.h"
 #include "draw/palette.h"
@@ -21,6 +22,8 @@
 
 /* ./sandbox, or what SANDBOX names. */
 extern const char *sandbox_path;
+/* Where tmp_path puts files: TMP_DIR unless a program sets another. */
+extern const char *app_tmp_dir;
 
 typedef struct {
     int status;   /* exit status, or -1 when killed or not run */
@@ -42,8 +45,13 @@ void run_sandbox(run_t *run, int timeout_s, const char *const *args);
 /* Writes text to path; false (a failure counted) when it cannot. */
 bool write_file(const char *path, const char *text);
 
-/* A whole text file, NUL-terminated (free it), or NULL. */
+/* A whole text file, NUL-terminated (free it), or NULL (a failure counted). */
 char *read_text_file(const char *path);
+
+/* Waits at most timeout_s seconds for child (then kills it), naming it
+ * `what` in a failure; its exit status, or -1 (a failure counted) when it
+ * was killed or died of a signal. */
+int wait_for_child(pid_t child, const char *what, int timeout_s);
 
 /* Exactly one of the palette's body colours. */
 bool is_body_color(const unsigned char *p);
@@ -72,7 +80,7 @@ bool map_world(const image_t *image, world_map_t *map);
 int px_x(const world_map_t *map, double x);
 int px_y(const world_map_t *map, double y);
 
-/* TMP_DIR/name.extension, in one of four buffers used in turn. */
+/* app_tmp_dir/name.extension, in one of four buffers used in turn. */
 const char *tmp_path(const char *name, const char *extension);
 
 /* Runs a script headless (at `size`, NULL for 800x600) with up to four extra

@@ -164,8 +164,8 @@ web-bench-pages: web-check-deps $(WEB)/sandbox.html $(WEB)/bench_engine-simd.htm
 # is built (make web builds it once, about 6 minutes on 2 cores: too long
 # for every make check of a fresh clone); otherwise it says it skipped its
 # tests in one line.
-WEB_CHECK_SRC := tests/web/web_check.c tests/app_image.c app/core/layout.c
-build/tests/web_check: $(WEB_CHECK_SRC) tests/app_image.h tests/app_expect.h app/core/layout.h \
+WEB_CHECK_SRC := tests/web/web_check.c tests/app_run.c tests/app_image.c app/core/layout.c
+build/tests/web_check: $(WEB_CHECK_SRC) tests/app_run.h tests/app_image.h tests/app_expect.h app/core/layout.h \
 		app/draw/palette.h app/web/web.mk
 	@mkdir -p $(dir $@)
 	$(CC) $(CSTD) $(WARN) -O1 -g $(SAN) $(APP_SMOKE_DEFS) -Iapp -Itests $(WEB_CHECK_SRC) \

@@ -26,13 +26,11 @@
 #include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
-#include "app_image.h"
-#include "core/layout.h"
-#include "draw/palette.h"
+#include "app_run.h"
 
-#include "app_expect.h"
+int app_failures;
 
-#define TMP_DIR "build/tests/web_check.tmp"
+#define WEB_TMP_DIR "build/tests/web_check.tmp"
 #define PAGE "build/web/sandbox.html"
 #define SANDBOX "./sandbox"
 /* The page's bar above the canvas (app/web/shell.html), in CSS pixels. */
@@ -61,28 +59,14 @@ static pid_t start(const char *const *argv, const char *out_path) {
     return child;
 }
 
-/* Waits at most timeout_s seconds for child (started by start), named by
- * name; returns its exit status, or -1 (a failure said) when it could not
- * run, died or was killed. */
+/* Waits for child (started by start, named by name, its output in
+ * out_path) at most timeout_s seconds; its exit status, or -1 (a failure
+ * said). */
 static int finish(pid_t child, const char *name, const char *out_path, int timeout_s) {
     if (child < 0) return -1;
-    int status = 0;
-    struct timespec pause = {0, 20 * 1000 * 1000};
-    for (int waited = 0;; waited++) {
-        if (waitpid(child, &status, WNOHANG) == child) break;
-        if (waited > timeout_s * 50) {
-            kill(child, SIGKILL);
-            waitpid(child, &status, 0);
-            app_fail("%s did not finish within %d s (output in %s)", name, timeout_s, out_path);
-            return -1;
-        }
-        nanosleep(&pause, NULL);
-    }
-    if (WIFSIGNALED(status)) {
-        app_fail("%s died with signal %d (output in %s)", name, WTERMSIG(status), out_path);
-        return -1;
-    }
-    return WEXITSTATUS(status);
+    char what[512];
+    snprintf(what, sizeof what, "%s (output in %s)", name, out_path);
+    return wait_for_child(child, what, timeout_s);
 }
 
 /* Runs argv to its end (see start and finish). */
@@ -94,48 +78,6 @@ static bool have_command(const char *name) {
     char command[128];
     snprintf(command, sizeof command, "command -v %s >/dev/null 2>&1", name);
     return system(command) == 0;
-}
-
-static const char *tmp_path(const char *name, const char *extension) {
-    static char paths[8][256];
-    static int next;
-    char *path = paths[next++ % 8];
-    snprintf(path, 256, TMP_DIR "/%s%s", name, extension);
-    return path;
-}
-
-static bool write_file(const char *path, const char *text) {
-    FILE *file = fopen(path, "w");
-    if (file == NULL) {
-        app_fail("cannot write %s: %s", path, strerror(errno));
-        return false;
-    }
-    fputs(text, file);
-    fclose(file);
-    return true;
-}
-
-/* A whole text file, NUL-terminated (free it); NULL (a failure said) when it
- * cannot be read. */
-static char *read_file(const char *path) {
-    FILE *file = fopen(path, "rb");
-    if (file == NULL) {
-        app_fail("cannot read %s: %s", path, strerror(errno));
-        return NULL;
-    }
-    fseek(file, 0, SEEK_END);
-    long size = ftell(file);
-    fseek(file, 0, SEEK_SET);
-    char *text = malloc((size_t)size + 1);
-    if (text != NULL && fread(text, 1, (size_t)size, file) == (size_t)size) {
-        text[size] = '\0';
-    } else {
-        free(text);
-        text = NULL;
-        app_fail("cannot read %s", path);
-    }
-    fclose(file);
-    return text;
 }
 
 /* text with every byte but letters, digits and -._~ as %XX. */
@@ -163,7 +105,7 @@ typedef struct {
     bool ok;
 } runs_t;
 
-/* Runs script (TMP_DIR/name.txt) with `args` (space-separated sandbox
+/* Runs script (WEB_TMP_DIR/name.txt) with `args` (space-separated sandbox
  * options and a scene file, at size WxH) in the page and, when native,
  * in the native build (headless); the page runs with --headless's fixed
  * clock too unless choose is given: a file the page's file chooser gets
@@ -221,14 +163,14 @@ static bool run_both(const char *name, const char *args, int width, int height,
     free(url);
     if (native) {
         int native_status = finish(native_run, SANDBOX, native_out, 60);
-        r->native = read_file(native_out);
+        r->native = read_text_file(native_out);
         if (native_status != 0) {
             app_fail("the native sandbox exited with %d:\n%s", native_status,
                      r->native ? r->native : "");
             return false;
         }
     }
-    r->page = read_file(out);
+    r->page = read_text_file(out);
     if (status != 0 || r->page == NULL) {
         app_fail("the page run failed (status %d):\n%s", status, r->page ? r->page : "");
         return false;
@@ -358,19 +300,10 @@ static int read_number_after(const char *line, const char *label) {
 
 /* ---- the screenshot ---- */
 
-static bool same_color(const unsigned char *p, palette_rgb_t c) {
-    return p[0] == c.r && p[1] == c.g && p[2] == c.b;
-}
-
 /* Anything drawn in the view but its background, grid and container. */
 static bool is_scene_pixel(const unsigned char *p) {
     return !same_color(p, PALETTE_BACKGROUND) && !same_color(p, PALETTE_GRID) &&
            !same_color(p, PALETTE_STATIC);
-}
-
-static bool shows(const image_t *image, const char *text) {
-    int x0 = layout_of(image->width, image->height).sidebar.x;
-    return image_find_text(image, text, x0, 0, image->width, image->height, NULL, NULL, NULL);
 }
 
 /* Bodies in the view and the side bar's panels drawn. */
@@ -379,7 +312,8 @@ static void expect_arena_and_side_bar(const image_t *shot, long min_pixels) {
     long drawn = image_count(shot, is_scene_pixel, 0, 0, layout.view.w, shot->height);
     EXPECT(drawn >= min_pixels, "%ld pixels of bodies and overlays in the page's view, expected "
            "%ld or more", drawn, min_pixels);
-    EXPECT(shows(shot, "SIMULATION") && shows(shot, "ELASTICITY") && shows(shot, "INTEGRATOR"),
+    EXPECT(shows(shot, "SIMULATION", false) && shows(shot, "ELASTICITY", false) &&
+               shows(shot, "INTEGRATOR", false),
            "the side bar's SIMULATION, ELASTICITY and INTEGRATOR panels are not in the page's "
            "screenshot");
 }
@@ -410,7 +344,7 @@ static void test_drops_match_native(void) {
                "and 5 dropped), the page logged: %s", state);
         expect_bodies_close(&r, "drops, throw and grab, 356 frames", 8);
         expect_arena_and_side_bar(&r.shot, 300);
-        EXPECT(shows(&r.shot, "sandbox"), "the SCENE panel does not name the sandbox");
+        EXPECT(shows(&r.shot, "sandbox", false), "the SCENE panel does not name the sandbox");
     }
     runs_free(&r);
 }
@@ -419,7 +353,7 @@ static void test_drops_match_native(void) {
  * 30 s more of presses): the same bricks fall, the same score, the bodies
  * where the native build has them (to 1e-9 m). */
 static void test_breakout_minute_matches_native(void) {
-    char *first = read_file("app/scripts/breakout.txt");
+    char *first = read_text_file("app/scripts/breakout.txt");
     if (first == NULL) return;
     size_t size = strlen(first) + 2048;
     char *script = malloc(size);
@@ -440,7 +374,7 @@ static void test_breakout_minute_matches_native(void) {
         EXPECT(score > 0, "no brick was hit in a minute: %s", state);
         char words[32];
         snprintf(words, sizeof words, "score %d", score);
-        EXPECT(shows(&r.shot, "breakout") && shows(&r.shot, words),
+        EXPECT(shows(&r.shot, "breakout", false) && shows(&r.shot, words, false),
                "the SCENE panel does not show breakout and \"%s\"", words);
         expect_arena_and_side_bar(&r.shot, 2000);
     }
@@ -467,7 +401,7 @@ static void test_saving_downloads_the_scene(void) {
     const char *script = "click -3 6\nclick 3 9\nwait 60\nkey ctrl+s\nlog\n";
     runs_t r;
     if (run_both("save", "", 1280, 720, script, NULL, false, &r)) {
-        const char *saved = TMP_DIR "/save.downloads/saved-1.scene";
+        const char *saved = WEB_TMP_DIR "/save.downloads/saved-1.scene";
         char page_state[256], native_state[256];
         EXPECT(access(saved, R_OK) == 0, "no download %s", saved);
         EXPECT(state_line(r.page, page_state, sizeof page_state), "no state line from the page");
@@ -476,7 +410,7 @@ static void test_saving_downloads_the_scene(void) {
         if (app_failures == 0 && write_file(log_script, "log\n")) {
             const char *argv[] = {SANDBOX, "--headless", "--script", log_script, saved, NULL};
             int status = run(argv, out, 30);
-            char *native = read_file(out);
+            char *native = read_text_file(out);
             EXPECT(status == 0, "the native build refused the download (%d):\n%s", status,
                    native ? native : "");
             /* The page logged at frame 60, the file opens at frame 0: the
@@ -495,8 +429,8 @@ static void test_saving_downloads_the_scene(void) {
 /* A scene file given to the page's file chooser opens, as a file dropped
  * on the window does (the page's drop handler takes the same path). */
 static void test_chosen_scene_file_opens(void) {
-    char *cradle = read_file("assets/scenes/newtons_cradle.scene");
-    const char *chosen = TMP_DIR "/chosen.scene";
+    char *cradle = read_text_file("assets/scenes/newtons_cradle.scene");
+    const char *chosen = WEB_TMP_DIR "/chosen.scene";
     if (cradle == NULL || !write_file(chosen, cradle)) {
         free(cradle);
         return;
@@ -517,7 +451,7 @@ static void test_chosen_scene_file_opens(void) {
         if (write_file(log_script, "log\n")) {
             const char *argv[] = {SANDBOX, "--headless", "--script", log_script, chosen, NULL};
             int status = run(argv, out, 30);
-            char *native = read_file(out);
+            char *native = read_text_file(out);
             if (status == 0 && state_line(native, native_state, sizeof native_state) &&
                 state_line(r.page, page_state, sizeof page_state)) {
                 int want = read_number_after(native_state, "bodies ");
@@ -529,7 +463,7 @@ static void test_chosen_scene_file_opens(void) {
             }
             free(native);
         }
-        EXPECT(shows(&r.shot, "chosen"), "the SCENE panel does not name the chosen file");
+        EXPECT(shows(&r.shot, "chosen", false), "the SCENE panel does not name the chosen file");
         EXPECT(strstr(r.page, "cannot open") == NULL, "the page refused the file:\n%s", r.page);
     }
     runs_free(&r);
@@ -566,6 +500,7 @@ int main(int argc, char **argv) {
     }
     mkdir("build", 0755);
     mkdir("build/tests", 0755);
-    mkdir(TMP_DIR, 0755);
+    mkdir(WEB_TMP_DIR, 0755);
+    app_tmp_dir = WEB_TMP_DIR;
     return app_run_tests(TESTS, TEST_COUNT, filter);
 }
