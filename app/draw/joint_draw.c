@@ -83,7 +83,7 @@ static double body_angle(body_t *body) {
  * ray along body2's angle, from the pin. */
 static void revolute_limit(const pen_t *pen, joint_t *joint, const joint_def_t *def,
                            vector_t pin) {
-    double base = body_angle(def->body1);
+    double base = body_angle(def->body1) + def->reference_angle;
     double low = base + def->lower_angle, high = base + def->upper_angle;
     palette_rgb_t c = PALETTE_JOINT_LIMIT;
     line(pen, pin, vec_add(pin, vec_multiply(LIMIT_PIXELS, screen_direction(low))), 2, c);
