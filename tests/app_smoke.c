@@ -1513,11 +1513,15 @@ static void test_docs_pictures_regenerate(void) {
     check_doc_picture(doc, "--script app/scripts/demo.txt", NULL, NULL, "docs/sandbox.png");
     check_doc_picture(doc, "--script app/scripts/integrator.txt", NULL, NULL,
                       "docs/integrator.png");
-    /* The games, the browser, the settings, the stage chart and the tools:
+    /* The games, the browser, the settings, the stage chart, the tools and
+     * the joint presets:
      * app/scripts/NAME.txt draws docs/NAME.png (as docs-pictures.sh's list). */
-    static const char *const PAGES[] = {"breakout", "space_invaders", "pegs", "samples",
-                                        "solver",   "stages",         "ray",  "box",
-                                        "explode",  "inspect"};
+    static const char *const PAGES[] = {"breakout",     "space_invaders", "pegs",
+                                        "samples",      "solver",         "stages",
+                                        "ray",          "box",            "explode",
+                                        "inspect",      "joint_tool",     "joint_cradle",
+                                        "joint_bridge", "joint_double_pendulum",
+                                        "joint_ragdoll", "joint_crank",   "joint_car"};
     for (size_t i = 0; i < sizeof PAGES / sizeof PAGES[0]; i++) {
         char marker[96], picture[96];
         snprintf(marker, sizeof marker, "--script app/scripts/%s.txt", PAGES[i]);
