@@ -117,63 +117,74 @@ joint_def_t joint_def_motor(body_t *body1, body_t *body2) {
     return def;
 }
 
+/* The checks of joint_create's definition, which name joint_create. */
+#define CREATE_REQUIRE(condition, ...)                                                       \
+    do {                                                                                     \
+        if (!(condition)) engine_fail("joint_create", __VA_ARGS__);                          \
+    } while (0)
+#define CREATE_FINITE(value)                                                                 \
+    CREATE_REQUIRE(isfinite(value), "%s is not finite (%g)", #value, (double)(value))
+#define CREATE_FINITE_VECTOR(v)                                                              \
+    CREATE_REQUIRE(isfinite((v).x) && isfinite((v).y), "%s is not finite (%g, %g)", #v,     \
+                   (v).x, (v).y)
+
 /* A body a joint of scene may name. */
 static void check_body(const scene_t *scene, const body_t *body, const char *name) {
-    REQUIRE(body->in_scene, "%s is in no scene (add it with scene_add_body first)", name);
-    REQUIRE(body->scene == scene, "%s belongs to another scene", name);
-    REQUIRE(!body->removed, "%s is marked removed", name);
+    CREATE_REQUIRE(body->in_scene, "%s is in no scene (add it with scene_add_body first)", name);
+    CREATE_REQUIRE(body->scene == scene, "%s belongs to another scene", name);
+    CREATE_REQUIRE(!body->removed, "%s is marked removed", name);
 }
 
 #define REQUIRE_NOT_NEGATIVE(value)                                                         \
-    REQUIRE(isfinite(value) && (value) >= 0.0, "%s must be finite and >= 0 (got %g)", #value, \
+    CREATE_REQUIRE(isfinite(value) && (value) >= 0.0, "%s must be finite and >= 0 (got %g)", #value, \
             (double)(value))
 
 #define REQUIRE_ORDERED(low, high)                                                           \
-    REQUIRE((low) <= (high), "%s %g is above %s %g", #low, (double)(low), #high, (double)(high))
+    CREATE_REQUIRE((low) <= (high), "%s %g is above %s %g", #low, (double)(low), #high, (double)(high))
 
 static void check_numbers(const joint_def_t *def) {
-    REQUIRE_FINITE_VECTOR(def->anchor1);
-    REQUIRE_FINITE_VECTOR(def->anchor2);
-    REQUIRE_FINITE(def->reference_angle);
+    CREATE_FINITE_VECTOR(def->anchor1);
+    CREATE_FINITE_VECTOR(def->anchor2);
+    CREATE_FINITE(def->reference_angle);
     REQUIRE_NOT_NEGATIVE(def->frequency);
     REQUIRE_NOT_NEGATIVE(def->damping_ratio);
     switch (def->type) {
     case JOINT_DISTANCE:
-        REQUIRE(isfinite(def->length) && def->length > 0.0,
+        CREATE_REQUIRE(isfinite(def->length) && def->length > 0.0,
                 "length must be finite and > 0 (got %g)", def->length);
-        REQUIRE(isfinite(def->max_length) && def->max_length > 0.0,
+        CREATE_REQUIRE(isfinite(def->max_length) && def->max_length > 0.0,
                 "max_length must be finite and > 0 (got %g)", def->max_length);
         REQUIRE_NOT_NEGATIVE(def->min_length);
         REQUIRE_ORDERED(def->min_length, def->max_length);
         break;
     case JOINT_REVOLUTE:
-        REQUIRE_FINITE(def->lower_angle);
-        REQUIRE_FINITE(def->upper_angle);
+        CREATE_FINITE(def->lower_angle);
+        CREATE_FINITE(def->upper_angle);
         REQUIRE_ORDERED(def->lower_angle, def->upper_angle);
         break;
     case JOINT_PRISMATIC:
     case JOINT_WHEEL:
-        REQUIRE_FINITE_VECTOR(def->axis);
-        REQUIRE(vec_get_length(def->axis) > 0.0, "axis is zero");
-        REQUIRE_FINITE(def->lower_translation);
-        REQUIRE_FINITE(def->upper_translation);
+        CREATE_FINITE_VECTOR(def->axis);
+        CREATE_REQUIRE(vec_get_length(def->axis) > 0.0, "axis is zero");
+        CREATE_FINITE(def->lower_translation);
+        CREATE_FINITE(def->upper_translation);
         REQUIRE_ORDERED(def->lower_translation, def->upper_translation);
         break;
     case JOINT_MOUSE:
-        REQUIRE_FINITE_VECTOR(def->target);
+        CREATE_FINITE_VECTOR(def->target);
         break;
     case JOINT_MOTOR:
-        REQUIRE_FINITE_VECTOR(def->linear_offset);
-        REQUIRE_FINITE(def->angular_offset);
+        CREATE_FINITE_VECTOR(def->linear_offset);
+        CREATE_FINITE(def->angular_offset);
         REQUIRE_NOT_NEGATIVE(def->max_torque);
-        REQUIRE(isfinite(def->correction_factor) && def->correction_factor >= 0.0 &&
+        CREATE_REQUIRE(isfinite(def->correction_factor) && def->correction_factor >= 0.0 &&
                     def->correction_factor <= 1.0,
                 "correction_factor must be in [0, 1] (got %g)", def->correction_factor);
         break;
     default:
         break;
     }
-    REQUIRE_FINITE(def->motor_speed);
+    CREATE_FINITE(def->motor_speed);
     REQUIRE_NOT_NEGATIVE(def->max_motor_torque);
     REQUIRE_NOT_NEGATIVE(def->max_motor_force);
     REQUIRE_NOT_NEGATIVE(def->max_force);
@@ -289,13 +300,13 @@ static double angular_impulse(const joint_t *joint) {
 
 vector_t joint_get_force(const joint_t *joint) {
     REQUIRE_NOT_NULL(joint);
-    if (!joint->active || joint->impulse_dt == 0.0) return VEC_ZERO;
+    if (joint->impulse_dt == 0.0) return VEC_ZERO;
     return vec_multiply(1.0 / joint->impulse_dt, linear_impulse(joint));
 }
 
 double joint_get_torque(const joint_t *joint) {
     REQUIRE_NOT_NULL(joint);
-    if (!joint->active || joint->impulse_dt == 0.0) return 0.0;
+    if (joint->impulse_dt == 0.0) return 0.0;
     return angular_impulse(joint) / joint->impulse_dt;
 }
 

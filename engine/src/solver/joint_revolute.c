@@ -27,12 +27,16 @@ static void solve_velocity(joint_t *joint) {
         joint_apply(joint, VEC_ZERO, impulse, impulse);
     }
     if (def->enable_limit) {
-        double impulse = joint_limit_impulse(joint->angular_mass, joint->angle - def->lower_angle,
-                                             relative_spin(joint), joint->dt,
-                                             &joint->lower_impulse);
+        /* The step turns the joint by dt (drift + weight spin): the
+         * limit is reached when that closes the gap to it. */
+        double drift = joint->dt * (joint->spin2 - joint->spin1);
+        double reach = joint->weight > 0.0 ? joint->dt * joint->weight : joint->dt;
+        double impulse = joint_limit_impulse(joint->angular_mass,
+                                             joint->angle + drift - def->lower_angle,
+                                             relative_spin(joint), reach, &joint->lower_impulse);
         joint_apply(joint, VEC_ZERO, impulse, impulse);
-        impulse = joint_limit_impulse(joint->angular_mass, def->upper_angle - joint->angle,
-                                      -relative_spin(joint), joint->dt, &joint->upper_impulse);
+        impulse = joint_limit_impulse(joint->angular_mass, def->upper_angle - joint->angle - drift,
+                                      -relative_spin(joint), reach, &joint->upper_impulse);
         joint_apply(joint, VEC_ZERO, -impulse, -impulse);
     }
     vector_t gap = joint_predicted_gap(joint, NULL), rate = joint_relative_velocity(joint);
@@ -46,11 +50,17 @@ static void solve_velocity(joint_t *joint) {
 static void solve_position(joint_t *joint) {
     const joint_def_t *def = &joint->def;
     if (def->enable_limit) {
-        vector_t r1, r2, delta;
+        vector_t r1, r2, gap;
         double angle;
-        joint_current(joint, &r1, &r2, &delta, &angle);
-        if (angle < def->lower_angle) joint_correct_angle(joint, def->lower_angle);
-        if (angle > def->upper_angle) joint_correct_angle(joint, def->upper_angle);
+        joint_current(joint, &r1, &r2, &gap, &angle);
+        if (angle < def->lower_angle) {
+            joint_correct_block(joint, r1, r2, gap, angle - def->lower_angle);
+            return;
+        }
+        if (angle > def->upper_angle) {
+            joint_correct_block(joint, r1, r2, gap, angle - def->upper_angle);
+            return;
+        }
     }
     joint_correct_point(joint);
 }

@@ -50,6 +50,10 @@ struct joint {
      * (drift + weight v) and dt (spin + weight w) (integrator.h). */
     vector_t drift1, drift2;
     double spin1, spin2, weight;
+    /* Whether this step's rigid sweeps close the gap the step would end
+     * with (joint_closing_rate): while neither body turns by more than
+     * JOINT_EXACT_TURN over the step. */
+    bool closes_gap;
     double translation; /* along the axis (prismatic, wheel) or between the anchors (distance) */
     double dt;
     /* Prepared: effective masses (the point block's K as k11, k12, k22) and
@@ -152,8 +156,10 @@ static inline joint_pose_t joint_predicted(const joint_t *joint, bool first) {
                           body->angle + dt * (spin + w * v->w)};
 }
 
-/* Anchor2 less anchor1 (m) and the relative angle less the reference
- * (rad) at the poses the step ends at with the rows' velocities now. A
+/* How far the step moves anchor2 from anchor1 (m) and turns the joint
+ * (rad) if the rows' velocities now are the end ones: the change over the
+ * step, not the gap it starts with, which the position sweep closes (fed
+ * to the velocities, that gap made a 1:100 load on a chain blow up). A
  * rigid joint's velocity sweep drives these to zero, so the step ends on
  * the constraint (to the rotation's second order, which the position
  * sweep takes) rather than drifting off it by the centripetal term every
@@ -161,17 +167,27 @@ static inline joint_pose_t joint_predicted(const joint_t *joint, bool first) {
  * sweep and so take out of the kinetic energy. */
 static inline vector_t joint_predicted_gap(const joint_t *joint, double *angle) {
     joint_pose_t p1 = joint_predicted(joint, true), p2 = joint_predicted(joint, false);
-    if (angle != NULL) *angle = p2.angle - p1.angle - joint->def.reference_angle;
-    return vec_subtract(vec_add(p2.centroid, vec_rotate(joint->def.anchor2, p2.angle)),
-                        vec_add(p1.centroid, vec_rotate(joint->def.anchor1, p1.angle)));
+    if (angle != NULL) *angle = p2.angle - p1.angle - joint->def.reference_angle - joint->angle;
+    vector_t end = vec_subtract(vec_add(p2.centroid, vec_rotate(joint->def.anchor2, p2.angle)),
+                                vec_add(p1.centroid, vec_rotate(joint->def.anchor1, p1.angle)));
+    return vec_subtract(end, joint->delta);
 }
 
 /* The velocity that closes a predicted gap within the step: gap / (dt
  * weight); or, for a scheme whose positions do not see this step's
  * velocity (weight 0), the rate itself. */
 static inline double joint_closing_rate(const joint_t *joint, double gap, double rate) {
-    return joint->weight > 0.0 ? gap / (joint->dt * joint->weight) : rate;
+    return joint->closes_gap ? gap / (joint->dt * joint->weight) : rate;
 }
+
+/* The largest turn of a body over a step (rad) at which the rigid sweeps
+ * close the predicted gap; past it they cancel the anchors' relative
+ * velocity only, and the position sweep closes the gap (dissipating as the
+ * centripetal term goes). The predicted gap is not linear in the angular
+ * velocity: at a fast turn (links of a chain spinning at 30 rad/s at 1/60
+ * s) the sweeps' linear solve overshoots and feeds the spin until the
+ * chain flies apart. */
+static const double JOINT_EXACT_TURN = 0.05;
 
 /* Solves the 2x2 symmetric K x = b. A singular K gives 0. */
 static inline vector_t joint_solve22(double k11, double k12, double k22, vector_t b) {
@@ -202,6 +218,15 @@ void joint_correct_angle(joint_t *joint, double target);
 /* Position sweep of a one-sided limit along a world direction at the
  * current poses: error c (< 0 violates), lever terms a1, a2. */
 void joint_correct_axial(joint_t *joint, double c, vector_t direction, double a1, double a2);
+/* The point and angle block (revolute at a limit, weld): its 3x3 K for
+ * lever arms r1, r2 (rows: x, y, angle); K x = b solved by Cramer's rule
+ * (a singular K gives 0); and its position sweep toward gap 0 and angle
+ * error 0 together, since a correction of the angle alone moves the
+ * anchors apart, which the point's correction then turns back. */
+void joint_block_mass(const joint_t *joint, vector_t r1, vector_t r2, double k[3][3]);
+void joint_solve33(const double k[3][3], const double b[3], double x[3]);
+void joint_correct_block(joint_t *joint, vector_t r1, vector_t r2, vector_t gap,
+                         double angle_error);
 /* The current lever arms and anchor separation (anchor2 - anchor1) at the
  * position sweep's poses. */
 void joint_current(const joint_t *joint, vector_t *r1, vector_t *r2, vector_t *delta,

@@ -11,7 +11,25 @@ static void prepare(joint_t *joint) {
     joint_apply(joint, p, vec_cross(joint->r1, p) + l, vec_cross(joint->r2, p) + l);
 }
 
+/* Rigid: the point and the angle as one 3x3 block, which a cantilever of
+ * welds needs (solved one after the other, a ten-box beam folded). */
+static void solve_rigid(joint_t *joint) {
+    double k[3][3], x[3];
+    joint_block_mass(joint, joint->r1, joint->r2, k);
+    vector_t rate = joint_relative_velocity(joint);
+    double b[3] = {rate.x, rate.y, joint->rows.v2->w - joint->rows.v1->w};
+    joint_solve33(k, b, x);
+    vector_t p = {-x[0], -x[1]};
+    joint->point_impulse = vec_add(joint->point_impulse, p);
+    joint->angle_impulse -= x[2];
+    joint_apply(joint, p, vec_cross(joint->r1, p) - x[2], vec_cross(joint->r2, p) - x[2]);
+}
+
 static void solve_velocity(joint_t *joint) {
+    if (joint->def.frequency == 0.0) {
+        solve_rigid(joint);
+        return;
+    }
     const joint_soft_t *soft = &joint->soft;
     double spin = joint->rows.v2->w - joint->rows.v1->w;
     double l = -soft->mass_scale * joint->angular_mass * (spin + soft->bias_rate * joint->angle) -
@@ -30,8 +48,10 @@ static void solve_velocity(joint_t *joint) {
 
 static void solve_position(joint_t *joint) {
     if (joint->def.frequency > 0.0) return;
-    joint_correct_angle(joint, 0.0);
-    joint_correct_point(joint);
+    vector_t r1, r2, gap;
+    double angle;
+    joint_current(joint, &r1, &r2, &gap, &angle);
+    joint_correct_block(joint, r1, r2, gap, angle);
 }
 
 const joint_kind_t JOINT_WELD_KIND = {prepare, solve_velocity, solve_position};
