@@ -965,11 +965,17 @@ static void test_sleeping_bodies_drawn_dimmer(void) {
 
 /* Whether the file names a game that the player controls (the pegs board
  * takes no input: its keys stay the sandbox's). */
+/* Whether the file names a game that takes the player's keys: not the pegs
+ * board nor the joint presets' rigs but the car's (app/games/). */
 static bool is_scene_game(const char *path) {
+    static const char *const NO_INPUT[] = {"pegs",   "cradle",          "bridge",
+                                           "ragdoll", "double_pendulum", "crank"};
     scene_file_error_t error;
     scene_file_t *file = scene_file_load(path, &error);
-    bool game = file != NULL && scene_file_get_game(file)[0] != '\0' &&
-                strcmp(scene_file_get_game(file), "pegs") != 0;
+    bool game = file != NULL && scene_file_get_game(file)[0] != '\0';
+    for (size_t i = 0; game && i < sizeof NO_INPUT / sizeof NO_INPUT[0]; i++) {
+        game = strcmp(scene_file_get_game(file), NO_INPUT[i]) != 0;
+    }
     scene_file_free(file);
     return game;
 }

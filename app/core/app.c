@@ -122,10 +122,7 @@ static void scene_shown(app_t *app, bool another) {
     app->in_game = game;
     app->game_status = sandbox->game != NULL ? game_status(sandbox->game) : (game_status_t){0};
     app->totals = sandbox_totals(&app->sandbox);
-    if (game_plots_energy(sandbox->game)) {
-        plot_init(&app->plot, PLOT_ENERGY);
-        app->page = UI_PAGE_TOOLS;
-    }
+    if (game_plots_energy(sandbox->game)) plot_init(&app->plot, PLOT_ENERGY);
     stage_chart_init(&app->stages);
     app->scene_index = samples_find(&app->samples, sandbox->is_default ? NULL : sandbox->path);
     if (app->scene_index >= 0) app->scene_cursor = app->scene_index;

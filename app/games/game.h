@@ -63,8 +63,8 @@ typedef struct {
     /* Whether the player's input does anything (the pegs board ignores it):
      * the sandbox gives the game its keys only then. */
     bool takes_input;
-    /* Whether the sandbox opens it with its energy plotted (the TOOLS
-     * page's plot): the double pendulum's. */
+    /* Whether the sandbox opens it with its energy as the TOOLS page's
+     * plot (F5): the double pendulum's. */
     bool plots_energy;
 } game_rules_t;
 
