@@ -100,9 +100,9 @@ static void revolute_limit(const pen_t *pen, joint_t *joint, const joint_def_t *
 }
 
 /* The slider's axis through anchor1: between the limits with ticks, else
- * a metre past the anchors either way. */
+ * `pad` metres past the anchors either way. */
 static void slider_axis(const pen_t *pen, joint_t *joint, const joint_def_t *def,
-                        palette_rgb_t c) {
+                        palette_rgb_t c, double pad) {
     vector_t axis = vec_rotate(def->axis, body_angle(def->body1));
     double length = vec_get_length(axis);
     if (!(length > 0.0)) return;
@@ -114,8 +114,8 @@ static void slider_axis(const pen_t *pen, joint_t *joint, const joint_def_t *def
         high = def->upper_translation;
     } else {
         double t = joint_get_translation(joint);
-        low = fmin(0.0, t) - 1.0;
-        high = fmax(0.0, t) + 1.0;
+        low = fmin(0.0, t) - pad;
+        high = fmax(0.0, t) + pad;
     }
     vector_t a = pixel(pen, vec_add(origin, vec_multiply(low, axis)));
     vector_t b = pixel(pen, vec_add(origin, vec_multiply(high, axis)));
@@ -172,7 +172,7 @@ static void draw_one(const pen_t *pen, joint_t *joint, bool selected) {
                       draw_coord(a2.x + 5), draw_coord(a2.y + 5), c.r, c.g, c.b, 255);
         break;
     case JOINT_PRISMATIC:
-        slider_axis(pen, joint, &def, c);
+        slider_axis(pen, joint, &def, c, 1.0);
         line(pen, a1, a2, width, c);
         ring(pen, a2, ANCHOR_PIXELS, c);
         if (def.enable_motor && def.motor_speed != 0.0) {
@@ -188,7 +188,8 @@ static void draw_one(const pen_t *pen, joint_t *joint, bool selected) {
         }
         break;
     case JOINT_WHEEL:
-        slider_axis(pen, joint, &def, c);
+        /* A suspension's travel is short: a stub either side. */
+        slider_axis(pen, joint, &def, c, 0.15);
         line(pen, a1, a2, width, c);
         ring(pen, a2, ANCHOR_PIXELS, c);
         if (def.enable_motor) motor_arrow(pen, a2, def.motor_speed, PALETTE_JOINT_MOTOR);
