@@ -144,6 +144,61 @@ static void test_throw_carries_the_drag_velocity(void) {
     image_free(&image);
 }
 
+/* Near PALETTE_JOINT (the joints' lines are anti-aliased). */
+static bool is_joint_color(const unsigned char *p) {
+    palette_rgb_t c = PALETTE_JOINT;
+    return abs(p[0] - c.r) < 40 && abs(p[1] - c.g) < 40 && abs(p[2] - c.b) < 40 &&
+           p[1] > 160;
+}
+
+/* The joint tool: a box clicked, then a point above it, hangs from that point
+ * on a pin and swings below it, the pin drawn; D on the pin deletes the
+ * joint and the box falls to the floor. */
+static void test_joint_tool_pins_and_deletes(void) {
+    const char *pin = "key b\n"
+                      "click 4 6\n"
+                      "key space\n" /* paused: the box stays where it was dropped */
+                      "key w\n"
+                      "click 4 6\n"
+                      "click 2 8\n"
+                      "key space\n"
+                      "wait 3s\n";
+    const char *flags[] = {"--overlays", "none", "--elasticity", "0", NULL};
+    char script[512];
+    for (int deleted = 0; deleted < 2; deleted++) {
+        snprintf(script, sizeof script, "%s%s", pin,
+                 deleted ? "key space\nmove 2 8\nkey d\nkey space\nwait 3s\nmove px 5 5\n"
+                         : "move px 5 5\n");
+        const char *name = deleted ? "joint_deleted" : "joint_pinned";
+        run_t run;
+        image_t image;
+        world_map_t map;
+        if (!run_script(name, script, flags, &run) || !load_shot(name, &image)) return;
+        if (map_world(&image, &map)) {
+            /* Pinned 2.83 m from the box's centre: it swings between x = 0
+             * and 4 m, its centre no lower than 8 - 2.83 = 5.17 m. */
+            long hanging = image_count(&image, is_body_color, px_x(&map, -1), px_y(&map, 7),
+                                       px_x(&map, 5), px_y(&map, 4.3));
+            long low = image_count(&image, is_body_color, map.left, px_y(&map, 2), map.right,
+                                   px_y(&map, 0));
+            long joint = image_count(&image, is_joint_color, px_x(&map, -1), px_y(&map, 8.5),
+                                     px_x(&map, 5), px_y(&map, 4.3));
+            if (!deleted) {
+                EXPECT(hanging > 60 && low == 0 && joint > 10,
+                       "pinned: %ld body pixels where it hangs, %ld near the floor, %ld of the "
+                       "joint",
+                       hanging, low, joint);
+            } else {
+                EXPECT(hanging == 0 && low > 60 && joint == 0,
+                       "deleted: %ld body pixels where it hung, %ld near the floor, %ld of the "
+                       "joint",
+                       hanging, low, joint);
+            }
+        }
+        image_free(&image);
+    }
+}
+
 /* D with the cursor on a body deletes it, and says so. */
 static void test_delete_key_removes_body(void) {
     run_t run;
@@ -910,11 +965,17 @@ static void test_sleeping_bodies_drawn_dimmer(void) {
 
 /* Whether the file names a game that the player controls (the pegs board
  * takes no input: its keys stay the sandbox's). */
+/* Whether the file names a game that takes the player's keys: not the pegs
+ * board nor the joint presets' rigs but the car's (app/games/). */
 static bool is_scene_game(const char *path) {
+    static const char *const NO_INPUT[] = {"pegs",   "cradle",          "bridge",
+                                           "ragdoll", "double_pendulum", "crank"};
     scene_file_error_t error;
     scene_file_t *file = scene_file_load(path, &error);
-    bool game = file != NULL && scene_file_get_game(file)[0] != '\0' &&
-                strcmp(scene_file_get_game(file), "pegs") != 0;
+    bool game = file != NULL && scene_file_get_game(file)[0] != '\0';
+    for (size_t i = 0; game && i < sizeof NO_INPUT / sizeof NO_INPUT[0]; i++) {
+        game = strcmp(scene_file_get_game(file), NO_INPUT[i]) != 0;
+    }
     scene_file_free(file);
     return game;
 }
@@ -1458,11 +1519,15 @@ static void test_docs_pictures_regenerate(void) {
     check_doc_picture(doc, "--script app/scripts/demo.txt", NULL, NULL, "docs/sandbox.png");
     check_doc_picture(doc, "--script app/scripts/integrator.txt", NULL, NULL,
                       "docs/integrator.png");
-    /* The games, the browser, the settings, the stage chart and the tools:
+    /* The games, the browser, the settings, the stage chart, the tools and
+     * the joint presets:
      * app/scripts/NAME.txt draws docs/NAME.png (as docs-pictures.sh's list). */
-    static const char *const PAGES[] = {"breakout", "space_invaders", "pegs", "samples",
-                                        "solver",   "stages",         "ray",  "box",
-                                        "explode",  "inspect"};
+    static const char *const PAGES[] = {"breakout",     "space_invaders", "pegs",
+                                        "samples",      "solver",         "stages",
+                                        "ray",          "box",            "explode",
+                                        "inspect",      "joint_tool",     "joint_cradle",
+                                        "joint_bridge", "joint_double_pendulum",
+                                        "joint_ragdoll", "joint_crank",   "joint_car"};
     for (size_t i = 0; i < sizeof PAGES / sizeof PAGES[0]; i++) {
         char marker[96], picture[96];
         snprintf(marker, sizeof marker, "--script app/scripts/%s.txt", PAGES[i]);
@@ -1489,6 +1554,7 @@ static const app_test_t TESTS[] = {
     {"app_smoke.overlays_off_draw_nothing", test_overlays_off_draw_nothing},
     {"app_smoke.throw_carries_the_drag_velocity", test_throw_carries_the_drag_velocity},
     {"app_smoke.delete_key_removes_body", test_delete_key_removes_body},
+    {"app_smoke.joint_tool_pins_and_deletes", test_joint_tool_pins_and_deletes},
     {"app_smoke.default_view_shows_the_container_and_every_panel",
      test_default_view_shows_the_container_and_every_panel},
     {"app_smoke.panel_and_wall_clicks_drop_nothing", test_panel_and_wall_clicks_drop_nothing},

@@ -103,7 +103,10 @@ static void scene_shown(app_t *app, bool another) {
     energy_drift_set_step(&app->drift, sandbox->step);
     energy_drift_rereference(&app->drift);
     impulse_trail_clear(&app->trail);
-    if (app->drag == DRAG_GRAB || app->drag == DRAG_PAN) app->drag = DRAG_NONE;
+    if (app->drag == DRAG_GRAB || app->drag == DRAG_PAN || app->drag == DRAG_JOINT) {
+        app->drag = DRAG_NONE;
+    }
+    app->joint_pick.body = NULL;
     app->keys = (game_keys_t){0};
     /* A player wants the game, not the collision axes: the overlays drawn
      * over the bodies are off in a game, and back as they were after it. */
@@ -119,6 +122,7 @@ static void scene_shown(app_t *app, bool another) {
     app->in_game = game;
     app->game_status = sandbox->game != NULL ? game_status(sandbox->game) : (game_status_t){0};
     app->totals = sandbox_totals(&app->sandbox);
+    if (game_plots_energy(sandbox->game)) plot_init(&app->plot, PLOT_ENERGY);
     stage_chart_init(&app->stages);
     app->scene_index = samples_find(&app->samples, sandbox->is_default ? NULL : sandbox->path);
     if (app->scene_index >= 0) app->scene_cursor = app->scene_index;

@@ -45,7 +45,7 @@ typedef enum {
     UI_PAGE_COUNT
 } ui_page_t;
 
-/* What a left click in the view does (J, U, K, L, or a click in the TOOLS
+/* What a left click in the view does (J, U, K, L, W, or a click in the TOOLS
  * page; tools/tools.h). */
 typedef enum {
     TOOL_DROP = 0, /* drop the shape (Shift: throw it) */
@@ -53,6 +53,7 @@ typedef enum {
     TOOL_BOX,      /* drag a box: the bodies overlapping it (scene_query_box) */
     TOOL_EXPLODE,  /* an explosion at the cursor (scene_explode) */
     TOOL_INSPECT,  /* choose the body the inspector shows (scene_body_at) */
+    TOOL_JOINT,    /* join bodies: pins, ropes, rods, welds (tools/joint_tool.h) */
     TOOL_COUNT
 } tool_t;
 
@@ -63,6 +64,7 @@ typedef enum {
     DRAG_PAN,    /* middle anywhere, or right on empty space: moves the view */
     DRAG_SLIDER, /* left on the elasticity slider */
     DRAG_PROBE,  /* left with the ray or box tool: drawing the ray or the box */
+    DRAG_JOINT,  /* left with the joint tool: from the body pressed to the cursor */
 } drag_t;
 
 #define APP_MOTION_SAMPLES 16
@@ -145,6 +147,15 @@ typedef struct {
         tool_t tool; /* TOOL_RAY or TOOL_BOX */
         bool shown;
     } probe;
+    /* The joint tool's first end (tools/joint_tool.h): the body pressed
+     * and the world point pressed on it; after a click (no drag) it waits
+     * for the second click. Let go when the scene changes. */
+    struct {
+        body_t *body;    /* NULL: none */
+        vector_t point;  /* world (m) */
+        vector_t press;  /* pixels, to tell a click from a drag */
+        bool pending;    /* a click chose it: the next click pins it */
+    } joint_pick;
     plot_t plot;     /* the TOOLS page's plot of one quantity */
     stage_chart_t stages; /* the SOLVER page's chart of the step's stages */
     bool quit;

@@ -58,6 +58,11 @@ static const palette_rgb_t PALETTE_SPRING = {200, 200, 210};
 static const palette_rgb_t PALETTE_OFF = {96, 101, 114};      /* an overlay that is off */
 static const palette_rgb_t PALETTE_RULE = {44, 48, 58};       /* lines between panels */
 static const palette_rgb_t PALETTE_GRAB = {255, 255, 255};
+/* Joints (draw/joint_draw.c): the link and anchors, a limit's bounds, a
+ * motor's arrow; the joint under the cursor in PALETTE_ACCENT. */
+static const palette_rgb_t PALETTE_JOINT = {120, 225, 205};
+static const palette_rgb_t PALETTE_JOINT_LIMIT = {235, 120, 90};
+static const palette_rgb_t PALETTE_JOINT_MOTOR = {255, 220, 90};
 /* The step's stages in the STEP panel's chart, in scene_stage_t's order:
  * forces, broadphase, narrowphase, solver, shock, position, integrate,
  * sleep, removal. */

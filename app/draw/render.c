@@ -7,6 +7,8 @@
 #include "draw/edge_markers.h"
 #include "draw/focus.h"
 #include "tools/tools.h"
+#include "tools/joint_tool.h"
+#include "draw/joint_draw.h"
 #include "draw/raster.h"
 #include "draw/round_outline.h"
 
@@ -330,8 +332,10 @@ static void draw_probe(SDL_Renderer *renderer, app_t *app) {
               hit.fraction);
 }
 
+/* The grab as a spring, in a scene without world contacts (a mouse joint
+ * is drawn with the joints). */
 static void draw_grab(SDL_Renderer *renderer, app_t *app) {
-    if (app->sandbox.grab.body == NULL) return;
+    if (app->sandbox.grab.body == NULL || app->sandbox.grab.joint != NULL) return;
     vector_t from = camera_to_pixel(&app->camera, sandbox_grab_point(&app->sandbox));
     vector_t to = camera_to_pixel(&app->camera, app->sandbox.grab.target);
     aalineRGBA(renderer, draw_coord(from.x), draw_coord(from.y), draw_coord(to.x),
@@ -340,6 +344,19 @@ static void draw_grab(SDL_Renderer *renderer, app_t *app) {
                      PALETTE_GRAB.g, PALETTE_GRAB.b, 255);
     circleRGBA(renderer, draw_coord(to.x), draw_coord(to.y), 5, PALETTE_GRAB.r, PALETTE_GRAB.g,
                PALETTE_GRAB.b, 255);
+}
+
+/* The joint tool's first end, and a line from it to the cursor while
+ * the second is chosen. */
+static void draw_joint_pick(SDL_Renderer *renderer, app_t *app) {
+    vector_t from;
+    if (!joint_tool_pick(app, &from)) return;
+    vector_t a = camera_to_pixel(&app->camera, from), b = app->mouse;
+    palette_rgb_t c = PALETTE_ACCENT;
+    filledCircleRGBA(renderer, draw_coord(a.x), draw_coord(a.y), 4, c.r, c.g, c.b, 255);
+    if (!app->mouse_inside || !app_in_view(app, b)) return;
+    aalineRGBA(renderer, draw_coord(a.x), draw_coord(a.y), draw_coord(b.x), draw_coord(b.y), c.r,
+               c.g, c.b, 200);
 }
 
 static void draw_bounds(SDL_Renderer *renderer, app_t *app) {
@@ -535,6 +552,7 @@ double render_world(SDL_Renderer *renderer, SDL_Surface *canvas, app_t *app, bod
     draw_grid(renderer, &app->camera);
     draw_bodies(renderer, canvas, app, hovered);
     draw_springs(renderer, app);
+    joint_draw_all(renderer, app, joint_tool_hovered(app));
     SDL_RenderFlush(renderer);
     Uint64 overlays_start = SDL_GetPerformanceCounter();
     if (app->overlays[OVERLAY_BOUNDS]) draw_bounds(renderer, app);
@@ -562,6 +580,7 @@ double render_world(SDL_Renderer *renderer, SDL_Surface *canvas, app_t *app, bod
     double overlays_s = (double)(SDL_GetPerformanceCounter() - overlays_start) /
                         (double)SDL_GetPerformanceFrequency();
     draw_grab(renderer, app);
+    draw_joint_pick(renderer, app);
     draw_blast(renderer, app);
     draw_probe(renderer, app);
     draw_preview(renderer, app);

@@ -168,4 +168,4 @@ static game_status_t breakout_status(const void *state) {
 }
 
 const game_rules_t BREAKOUT_RULES = {"breakout", breakout_start, breakout_update, breakout_status,
-                                     free, true};
+                                     free, true, false};

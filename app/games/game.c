@@ -4,7 +4,9 @@
 #include <string.h>
 
 /* Every game this build knows. */
-static const game_rules_t *const GAMES[] = {&BREAKOUT_RULES, &SPACE_INVADERS_RULES, &PEGS_RULES};
+static const game_rules_t *const GAMES[] = {
+    &BREAKOUT_RULES, &SPACE_INVADERS_RULES, &PEGS_RULES,  &CRADLE_RULES, &BRIDGE_RULES,
+    &DOUBLE_PENDULUM_RULES, &RAGDOLL_RULES, &CRANK_RULES, &CAR_RULES};
 
 struct game {
     const game_rules_t *rules;
@@ -49,6 +51,10 @@ game_status_t game_status(const game_t *game) {
 
 bool game_takes_input(const game_t *game) {
     return game != NULL && game->rules->takes_input;
+}
+
+bool game_plots_energy(const game_t *game) {
+    return game != NULL && game->rules->plots_energy;
 }
 
 void game_free(game_t *game) {

@@ -63,11 +63,21 @@ typedef struct {
     /* Whether the player's input does anything (the pegs board ignores it):
      * the sandbox gives the game its keys only then. */
     bool takes_input;
+    /* Whether the sandbox opens it with its energy as the TOOLS page's
+     * plot (F5): the double pendulum's. */
+    bool plots_energy;
 } game_rules_t;
 
 extern const game_rules_t BREAKOUT_RULES;
 extern const game_rules_t SPACE_INVADERS_RULES;
 extern const game_rules_t PEGS_RULES;
+/* The joint presets' rigs (rigs.c): the joints of a sample's bodies. */
+extern const game_rules_t CRADLE_RULES;
+extern const game_rules_t BRIDGE_RULES;
+extern const game_rules_t DOUBLE_PENDULUM_RULES;
+extern const game_rules_t RAGDOLL_RULES;
+extern const game_rules_t CRANK_RULES;
+extern const game_rules_t CAR_RULES;
 
 typedef struct game game_t;
 
@@ -92,6 +102,9 @@ game_status_t game_status(const game_t *game);
 
 /* Whether the game reads game_input_t (its rules' takes_input). */
 bool game_takes_input(const game_t *game);
+
+/* Whether its rules ask for the energy plot (plots_energy); false for NULL. */
+bool game_plots_energy(const game_t *game);
 
 /* Frees the game's state (not the scene). NULL is allowed. */
 void game_free(game_t *game);

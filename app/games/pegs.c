@@ -143,4 +143,4 @@ static game_status_t pegs_status(const void *state) {
     return ((const pegs_t *)state)->status;
 }
 
-const game_rules_t PEGS_RULES = {"pegs", pegs_start, pegs_update, pegs_status, free, false};
+const game_rules_t PEGS_RULES = {"pegs", pegs_start, pegs_update, pegs_status, free, false, false};

@@ -239,4 +239,4 @@ static game_status_t invaders_status(const void *state) {
 }
 
 const game_rules_t SPACE_INVADERS_RULES = {"space_invaders", invaders_start, invaders_update,
-                                           invaders_status, free, true};
+                                           invaders_status, free, true, false};

@@ -3,6 +3,7 @@
 #include "scene/integrator_choice.h"
 #include "panels/ui.h"
 #include "tools/tools.h"
+#include "tools/joint_tool.h"
 
 static const double ELASTICITY_STEP = 0.05;
 static const double SIZE_FACTOR = 1.1;
@@ -14,9 +15,9 @@ static const double FRAME_MIN_SIZE = 6.0;
 const input_control_t INPUT_CONTROLS[] = {
     {"Left click", "drop the shape at the cursor (not inside a body)"},
     {"Shift + left drag", "throw it with the drag's velocity"},
-    {"Right drag on a body", "pull it with a spring to the cursor"},
+    {"Right drag on a body", "pull it to the cursor (a mouse joint)"},
     {"Right drag elsewhere, middle drag", "pan the view"},
-    {"Ctrl + left click, D, Del, Backspace", "delete the body under the cursor"},
+    {"Ctrl + left click, D, Del, Backspace", "delete the joint or body under the cursor"},
     {"3 4 5 6 7 8", "regular polygon with 3 to 8 sides"},
     {"1 / 2", "circle / capsule"},
     {"B / P / Tab", "box / random convex polygon / next shape"},
@@ -41,12 +42,13 @@ const input_control_t INPUT_CONTROLS[] = {
     {"PageDown / PageUp", "next / previous sample"},
     {"Ctrl + S", "save the scene to a new ./saved-N.scene"},
     {"A .scene file dropped on the window", "open it"},
-    {"Game: Left / Right, A / D", "move (instead of panning, the A and D keys)"},
+    {"Game: Left / Right, A / D", "move, drive (instead of panning, the A and D keys)"},
     {"Game: Space", "fire (instead of pausing: pause with Enter)"},
     {"Ctrl + wheel, + / -", "zoom about the cursor"},
     {"Left / Right, Ctrl + arrows", "pan the view (in a game Ctrl + Left / Right)"},
     {"J / U", "tool: ray cast / box query (drag)"},
     {"K / L", "tool: explosion / inspector (click)"},
+    {"W; drag, Shift / Alt + drag", "tool: joint (click a body, then a point: pin); rope / rod / weld"},
     {"F2 F3 F4 F5", "side bar: PLAY, SAMPLES, SOLVER, TOOLS"},
     {"F", "frame every body"},
     {"0, Home", "the default view: the whole container or the file's view"},
@@ -182,6 +184,7 @@ static void set_body_elasticity(app_t *app, bool all) {
 }
 
 static void delete_hovered(app_t *app) {
+    if (joint_tool_delete_hovered(app)) return;
     body_t *body = input_hovered_body(app);
     if (body == NULL) {
         app_status(app, "no body under the cursor to delete");
@@ -424,6 +427,9 @@ static void on_key(app_t *app, const SDL_KeyboardEvent *key) {
     case SDLK_l:
         tools_choose(app, TOOL_INSPECT);
         break;
+    case SDLK_w:
+        tools_choose(app, TOOL_JOINT);
+        break;
     case SDLK_ESCAPE:
         if (app->show_help) app->show_help = false;
         else app->quit = true;
@@ -496,6 +502,12 @@ static void on_button_up(app_t *app, const SDL_MouseButtonEvent *button) {
             app->drag = DRAG_NONE;
         }
         break;
+    case DRAG_JOINT:
+        if (button->button == SDL_BUTTON_LEFT) {
+            app->drag = DRAG_NONE;
+            joint_tool_release(app, input_cursor_world(app));
+        }
+        break;
     case DRAG_GRAB:
         if (button->button == SDL_BUTTON_RIGHT) {
             sandbox_release(&app->sandbox);
@@ -524,6 +536,8 @@ static void on_motion(app_t *app, const SDL_MouseMotionEvent *motion) {
         break;
     case DRAG_PROBE:
         tools_probe_move(app, input_cursor_world(app));
+        break;
+    case DRAG_JOINT:
         break;
     case DRAG_SLIDER:
         app_set_elasticity(app, ui_slider_value_at(app, app->mouse));

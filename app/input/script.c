@@ -23,7 +23,7 @@ const char SCRIPT_HELP[] =
     "                          tab, enter, escape, backspace, delete, up, down,\n"
     "                          left, right, home, pageup, pagedown, f1..f12,\n"
     "                          [ ] + - = , .\n"
-    "                          a prefix shift+ or ctrl+ holds that modifier\n"
+    "                          a prefix shift+, ctrl+ or alt+ holds that modifier\n"
     "  keydown NAME, keyup NAME  press or release a key (e.g. keydown shift)\n"
     "  move [px] X Y           move the mouse\n"
     "  click [px] X Y          left click (drops the current shape there)\n"
@@ -163,7 +163,7 @@ static const key_name_t KEY_NAMES[] = {
     {"right", SDLK_RIGHT},       {"home", SDLK_HOME},       {"shift", SDLK_LSHIFT},
     {"pageup", SDLK_PAGEUP},     {"pagedown", SDLK_PAGEDOWN}, {"pgup", SDLK_PAGEUP},
     {"pgdn", SDLK_PAGEDOWN},
-    {"ctrl", SDLK_LCTRL},        {"f1", SDLK_F1},           {"f2", SDLK_F2},
+    {"ctrl", SDLK_LCTRL},        {"alt", SDLK_LALT},        {"f1", SDLK_F1},           {"f2", SDLK_F2},
     {"f3", SDLK_F3},             {"f4", SDLK_F4},           {"f5", SDLK_F5},
     {"f6", SDLK_F6},             {"f7", SDLK_F7},           {"f8", SDLK_F8},
     {"f9", SDLK_F9},             {"f10", SDLK_F10},         {"f11", SDLK_F11},
@@ -177,7 +177,7 @@ static bool equals_ignoring_case(const char *a, const char *b) {
     return *a == *b;
 }
 
-/* A key name, optionally prefixed by shift+ and ctrl+ (any order). */
+/* A key name, optionally prefixed by shift+, ctrl+ and alt+ (any order). */
 static bool parse_key(parser_t *p, const char *token, SDL_Keycode *key, Uint16 *mod) {
     *mod = KMOD_NONE;
     *key = SDLK_UNKNOWN;
@@ -189,6 +189,9 @@ static bool parse_key(parser_t *p, const char *token, SDL_Keycode *key, Uint16 *
         } else if (strncmp(name, "ctrl+", 5) == 0 && name[5] != '\0') {
             *mod |= KMOD_LCTRL;
             name += 5;
+        } else if (strncmp(name, "alt+", 4) == 0 && name[4] != '\0') {
+            *mod |= KMOD_LALT;
+            name += 4;
         } else {
             break;
         }
@@ -209,6 +212,7 @@ static bool parse_key(parser_t *p, const char *token, SDL_Keycode *key, Uint16 *
 static Uint16 modifier_of(SDL_Keycode key) {
     if (key == SDLK_LSHIFT) return KMOD_LSHIFT;
     if (key == SDLK_LCTRL) return KMOD_LCTRL;
+    if (key == SDLK_LALT) return KMOD_LALT;
     return KMOD_NONE;
 }
 

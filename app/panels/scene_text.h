@@ -23,7 +23,8 @@ typedef enum { SCENE_TEXT_PLAYING = 0, SCENE_TEXT_WON, SCENE_TEXT_LOST } scene_t
 
 /* A game's status in one line: "score 3  lives 2  bricks 47" (what is left
  * named by the game: bricks, invaders; pegs counts the balls on the board and
- * those that landed), "WON  score 50  R: again", "LOST  score 12  R: again". */
+ * those that landed; a joint preset's rig, whose lives are -1, its joints:
+ * "joints 9"), "WON  score 50  R: again", "LOST  score 12  R: again". */
 void scene_text_game(const char *game, scene_text_outcome_t outcome, int score, int lives,
                      int remaining, char out[SCENE_TEXT_SIZE]);
 

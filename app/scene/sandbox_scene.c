@@ -5,11 +5,9 @@
 #include <string.h>
 #include "draw/palette.h"
 
-/* The grab spring: a damped spring from the grab point to the cursor whose
- * stiffness and damping scale with the body's mass, so that every body follows
- * the cursor alike (natural frequency GRAB_HZ, damping ratio GRAB_ZETA), plus
- * the body's weight so it hangs at the cursor rather than below it. The force
- * is capped so a grabbed body cannot be flung through a wall. */
+/* The grab (sandbox_scene.h): both forms follow the cursor at GRAB_HZ with
+ * damping ratio GRAB_ZETA, their force capped at GRAB_MAX_ACCELERATION
+ * times the body's mass. */
 static const double GRAB_HZ = 3.0;
 static const double GRAB_ZETA = 0.7;
 static const double GRAB_MAX_ACCELERATION = 300.0; /* m/s^2 */
@@ -33,9 +31,10 @@ static vector_t grab_world_point(const grab_t *grab) {
     return vec_add(body_get_centroid(body), vec_rotate(grab->local_point, body_get_rotation(body)));
 }
 
+/* The grab as a spring, in scenes without world contacts. */
 static void grab_force(void *aux) {
     grab_t *grab = aux;
-    if (grab->body == NULL) return;
+    if (grab->body == NULL || grab->joint != NULL) return;
     body_t *body = grab->body;
     double mass = body_get_mass(body);
     double omega = 2.0 * M_PI * GRAB_HZ;
@@ -210,6 +209,7 @@ void sandbox_free(sandbox_t *sandbox) {
     sandbox->file = NULL;
     sandbox->scene = NULL;
     sandbox->grab.body = NULL;
+    sandbox->grab.joint = NULL; /* freed with the scene */
     sandbox->inspected = NULL;
 }
 
@@ -227,7 +227,7 @@ bool sandbox_is_static(body_t *body) {
 }
 
 size_t sandbox_clear(sandbox_t *sandbox) {
-    sandbox->grab.body = NULL;
+    sandbox_release(sandbox);
     size_t removed = 0;
     for (size_t i = 0; i < scene_bodies(sandbox->scene); i++) {
         body_t *body = scene_get_body(sandbox->scene, i);
@@ -514,7 +514,7 @@ body_t *sandbox_body_at(sandbox_t *sandbox, vector_t point) {
 
 void sandbox_delete(sandbox_t *sandbox, body_t *body) {
     if (body == NULL || sandbox_is_static(body)) return;
-    if (sandbox->grab.body == body) sandbox->grab.body = NULL;
+    if (sandbox->grab.body == body) sandbox_release(sandbox);
     if (sandbox->inspected == body) sandbox->inspected = NULL;
     if (!body_is_removed(body)) sandbox->changes++;
     body_remove(body);
@@ -522,17 +522,28 @@ void sandbox_delete(sandbox_t *sandbox, body_t *body) {
 
 void sandbox_grab(sandbox_t *sandbox, body_t *body, vector_t point) {
     if (body == NULL || sandbox_is_static(body) || body_is_removed(body)) return;
+    sandbox_release(sandbox);
     sandbox->grab.body = body;
     sandbox->grab.local_point =
         vec_rotate(vec_subtract(point, body_get_centroid(body)), -body_get_rotation(body));
     sandbox->grab.target = point;
+    if (!scene_get_contacts_enabled(sandbox->scene)) return;
+    joint_def_t def = joint_def_mouse(body, point);
+    def.frequency = GRAB_HZ;
+    def.damping_ratio = GRAB_ZETA;
+    def.max_force = GRAB_MAX_ACCELERATION * body_get_mass(body);
+    sandbox->grab.joint = joint_create(sandbox->scene, &def);
 }
 
 void sandbox_grab_move(sandbox_t *sandbox, vector_t target) {
-    if (vec_is_finite(target)) sandbox->grab.target = target;
+    if (!vec_is_finite(target)) return;
+    sandbox->grab.target = target;
+    if (sandbox->grab.joint != NULL) joint_set_target(sandbox->grab.joint, target);
 }
 
 void sandbox_release(sandbox_t *sandbox) {
+    if (sandbox->grab.joint != NULL) joint_destroy(sandbox->grab.joint);
+    sandbox->grab.joint = NULL;
     sandbox->grab.body = NULL;
 }
 
@@ -623,6 +634,7 @@ void sandbox_step(sandbox_t *sandbox) {
      * else can be added where it was. */
     if (sandbox->grab.body != NULL && !in_scene(scene, sandbox->grab.body)) {
         sandbox->grab.body = NULL;
+        sandbox->grab.joint = NULL; /* reaped with its body */
     }
     if (sandbox->inspected != NULL && !in_scene(scene, sandbox->inspected)) {
         sandbox->inspected = NULL;
@@ -632,7 +644,7 @@ void sandbox_step(sandbox_t *sandbox) {
     game_update(sandbox->game, sandbox->input, sandbox->tick);
     remove_escaped(sandbox);
     if (sandbox->grab.body != NULL && body_is_removed(sandbox->grab.body)) {
-        sandbox->grab.body = NULL; /* the game removed it */
+        sandbox_release(sandbox); /* the game removed it */
     }
 }
 

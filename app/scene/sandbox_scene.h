@@ -13,6 +13,7 @@
 #include <stdbool.h>
 #include <stdint.h>
 #include "jostle/jostle.h"
+#include "jostle/joint.h"
 #include "games/game.h"
 #include "jostle/scene_file.h"
 
@@ -61,9 +62,16 @@ typedef struct {
 #define SHAPE_MIN_SIZE 0.1
 #define SHAPE_MAX_SIZE 3.0
 
-/* The grab spring's state, read by its force creator every tick. */
+/* The grab: a mouse joint (jostle/joint.h) from the grab point to the
+ * cursor, of natural frequency 3 Hz, damping ratio 0.7 and a force of at
+ * most 300 m/s^2 times the body's mass, so that every body follows the
+ * cursor alike and none is flung through a wall. Joints act only with world
+ * contacts: in a scene without them (springs, orbits) the grab is a damped
+ * spring of the same frequency, damping and cap (plus the body's weight),
+ * applied by a force creator. */
 typedef struct {
     body_t *body;         /* NULL when nothing is grabbed */
+    joint_t *joint;       /* the mouse joint; NULL without world contacts */
     vector_t local_point; /* grab point in the body's frame (relative to centroid, rotation 0) */
     vector_t target;      /* the cursor (world) */
     vector_t gravity;     /* the scene's gravity, which the spring holds up */

@@ -1,7 +1,8 @@
 #!/bin/sh
 # Redraws the pictures of docs/sandbox.md and docs/sandbox-reference.md
 # (docs/sandbox.png, docs/drop.png, docs/integrator.png, and docs/NAME.png
-# for each NAME of $PAGES below: the games, the samples browser, the
+# for each NAME of $PAGES below: the games, the samples browser, the joint
+# tool and the joint presets, the
 # settings, the stage chart and the tools) by running the very commands
 # docs/sandbox-reference.md shows, so the pictures and the text agree.
 # make check's smoke test app_smoke.docs_pictures_regenerate runs the same
@@ -9,7 +10,8 @@
 # when a change to the app or the engine changes them on purpose.
 # Usage (from the repository root, after make): app/scripts/docs-pictures.sh
 set -e
-PAGES="breakout space_invaders pegs samples solver stages ray box explode inspect"
+PAGES="breakout space_invaders pegs samples solver stages ray box explode inspect joint_tool
+joint_cradle joint_bridge joint_double_pendulum joint_ragdoll joint_crank joint_car"
 cd "$(dirname "$0")/../.."
 root=$(pwd)
 doc=docs/sandbox-reference.md

@@ -1,11 +1,13 @@
 #include "tools/tools.h"
+#include "tools/joint_tool.h"
 #include <math.h>
 #include <stdio.h>
 
-static const char *const NAMES[TOOL_COUNT] = {"drop", "ray", "box", "explode", "inspect"};
-static const char *const KEYS[TOOL_COUNT] = {"", "J", "U", "K", "L"};
+static const char *const NAMES[TOOL_COUNT] = {"drop", "ray", "box", "explode", "inspect",
+                                              "joint"};
+static const char *const KEYS[TOOL_COUNT] = {"", "J", "U", "K", "L", "W"};
 static const char *const WHAT[TOOL_COUNT] = {"drops a shape", "first hit", "bodies in it",
-                                             "a blast", "picks a body"};
+                                             "a blast", "picks a body", "pin, rope, rod"};
 
 const char *tools_name(tool_t tool) {
     return tool < TOOL_COUNT ? NAMES[tool] : "?";
@@ -27,6 +29,7 @@ void tools_choose(app_t *app, tool_t tool) {
     if (tool >= TOOL_COUNT) return;
     app->tool = app->tool == tool ? TOOL_DROP : tool;
     app->probe.shown = false;
+    app->joint_pick.body = NULL;
     switch (app->tool) {
     case TOOL_DROP:
         app_status(app, "tool: drop (click drops the shape)");
@@ -43,6 +46,10 @@ void tools_choose(app_t *app, tool_t tool) {
         break;
     case TOOL_INSPECT:
         app_status(app, "tool: inspect (click a body; TOOLS page shows it)");
+        break;
+    case TOOL_JOINT:
+        app_status(app, "tool: joint (click a body then a point: pin; drag: rope, "
+                        "Shift rod, Alt weld)");
         break;
     case TOOL_COUNT:
         break;
@@ -115,6 +122,8 @@ drag_t tools_press(app_t *app, vector_t at) {
     case TOOL_INSPECT:
         inspect(app, at);
         break;
+    case TOOL_JOINT:
+        return joint_tool_press(app, at);
     case TOOL_DROP:
     case TOOL_COUNT:
         break;

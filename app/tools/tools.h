@@ -8,7 +8,8 @@
  *   box (U)      drag a box: the bodies whose shapes overlap it;
  *   explode (K)  click: an impulse on the bodies within the radius drawn
  *                round the cursor, falling off with distance;
- *   inspect (L)  click a body: the TOOLS page shows it, live.
+ *   inspect (L)  click a body: the TOOLS page shows it, live;
+ *   joint (W)    pins, ropes, rods and welds between bodies (joint_tool.h).
  * Each is chosen by its key (the same key again goes back to dropping) or a
  * click in the TOOLS page, and says so on the status line.
  */
