@@ -185,6 +185,15 @@ static int b3_add_body(void *world, const bench_shape_t *shape, double x, double
     sdef.material.friction = (float)friction;
     sdef.material.restitution = (float)elasticity;
     if (!collides) sdef.filter.maskBits = 0;
+    if (shape->sides == BENCH_CIRCLE) {
+        b2Circle circle = {{0.0f, 0.0f}, (float)shape->radius};
+        return b3_add(w, body, b2CreateCircleShape(body, &sdef, &circle), mass);
+    }
+    if (shape->sides == BENCH_CAPSULE) {
+        b2Capsule capsule = {{(float)-shape->hx, 0.0f}, {(float)shape->hx, 0.0f},
+                             (float)shape->radius};
+        return b3_add(w, body, b2CreateCapsuleShape(body, &sdef, &capsule), mass);
+    }
     b2Polygon polygon = b3_polygon(shape);
     return b3_add(w, body, b2CreatePolygonShape(body, &sdef, &polygon), mass);
 }
@@ -249,13 +258,52 @@ static void b3_get_state(void *world, int body, bench_state_t *out) {
     out->omega = b2Body_GetAngularVelocity(b);
 }
 
-/* The deepest penetration of two polygon shapes at their bodies' current
+/* Box2D's order of shape types in a contact: the higher one is shape A. */
+static int b3_rank(b2ShapeType type) {
+    return type == b2_circleShape ? 0 : type == b2_capsuleShape ? 1 : 2;
+}
+
+/* The manifold of two shapes (circles, capsules, polygons) at their bodies'
+ * current transforms, a of the higher type (b3_rank). */
+static b2LocalManifold b3_collide(b2ShapeId a, b2ShapeId b) {
+    b2Transform xf = b2InvMulTransforms(b2Body_GetTransform(b2Shape_GetBody(a)),
+                                        b2Body_GetTransform(b2Shape_GetBody(b)));
+    b2ShapeType ta = b2Shape_GetType(a), tb = b2Shape_GetType(b);
+    if (ta == b2_circleShape) {
+        b2Circle ca = b2Shape_GetCircle(a), cb = b2Shape_GetCircle(b);
+        return b2CollideCircles(&ca, &cb, xf);
+    }
+    if (ta == b2_capsuleShape) {
+        b2Capsule ca = b2Shape_GetCapsule(a);
+        if (tb == b2_circleShape) {
+            b2Circle cb = b2Shape_GetCircle(b);
+            return b2CollideCapsuleAndCircle(&ca, &cb, xf);
+        }
+        b2Capsule cb = b2Shape_GetCapsule(b);
+        return b2CollideCapsules(&ca, &cb, xf);
+    }
+    b2Polygon pa = b2Shape_GetPolygon(a);
+    if (tb == b2_circleShape) {
+        b2Circle cb = b2Shape_GetCircle(b);
+        return b2CollidePolygonAndCircle(&pa, &cb, xf);
+    }
+    if (tb == b2_capsuleShape) {
+        b2Capsule cb = b2Shape_GetCapsule(b);
+        return b2CollidePolygonAndCapsule(&pa, &cb, xf);
+    }
+    b2Polygon pb = b2Shape_GetPolygon(b);
+    return b2CollidePolygons(&pa, &pb, xf);
+}
+
+/* The deepest penetration of two shapes at their bodies' current
  * transforms (0 when they do not overlap). */
 static double b3_shape_penetration(b2ShapeId a, b2ShapeId b) {
-    b2Polygon pa = b2Shape_GetPolygon(a), pb = b2Shape_GetPolygon(b);
-    b2Transform xa = b2Body_GetTransform(b2Shape_GetBody(a));
-    b2Transform xb = b2Body_GetTransform(b2Shape_GetBody(b));
-    b2LocalManifold m = b2CollidePolygons(&pa, &pb, b2InvMulTransforms(xa, xb));
+    if (b3_rank(b2Shape_GetType(a)) < b3_rank(b2Shape_GetType(b))) {
+        b2ShapeId t = a;
+        a = b;
+        b = t;
+    }
+    b2LocalManifold m = b3_collide(a, b);
     double pen = 0.0;
     for (int i = 0; i < m.pointCount; i++) {
         if (-m.points[i].separation > pen) pen = -m.points[i].separation;
