@@ -24,8 +24,9 @@
  * Penetration: v3's manifolds are computed at the start of a step (before
  * its solve) and keep speculative points up to 0.02 m apart, so they are not
  * read as they are: for every contact a dynamic body holds after the step
- * whose manifold has points, the two polygons are collided again at the
- * bodies' current transforms (b2CollidePolygons, radius 0) and the
+ * whose manifold has points, the two shapes are collided again at the
+ * bodies' current transforms (b2CollidePolygons for polygons of radius 0,
+ * and the collide function of each pair with a circle or a capsule) and the
  * penetration is the largest -separation of that manifold (0 when apart).
  *
  * Springs: b2DistanceJoint between the two centres as a spring of rest
@@ -75,7 +76,7 @@ static void b3_describe(FILE *out) {
             "kept: %d sub-steps, contact hertz %g, damping ratio %g, push-out speed %g m/s, "
             "restitution threshold %g m/s, continuous %s, maximum linear speed %g m/s, "
             "workers %d, body sleep threshold %g m/s, polygon radius 0; set: sleeping off "
-            "(default %s; box2d3-%s-sleeping keeps it on, pile only); penetration: polygons "
+            "(default %s; box2d3-%s-sleeping keeps it on, pile only); penetration: shapes "
             "collided again at the final transforms (no speculative margin, no skin)\n",
             BENCH_BOX2D3_BUILD, v.major, v.minor, v.revision, BENCH_BOX2D3_BUILD,
             b2IsDoublePrecision() ? "double" : "single", B3_SUBSTEPS, (double)def.contactHertz,

@@ -9,7 +9,8 @@
  *
  * Options:
  *   --scene NAME     pile, pyramid, bounce, cradle, orbit, stack2, tunnel,
- *                    overlap, column or all; repeatable or a comma list
+ *                    overlap, column, circlepile, capsulepile, mixedpile or
+ *                    all; repeatable or a comma list
  *   --size X         the scene's size (pile N, pyramid B, bounce e, cradle n,
  *                    stack2 r, tunnel v); repeatable or a comma list
  *   --dt X           step of bounce and orbit (e.g. 1/600 or 0.001);
@@ -32,7 +33,8 @@
  * Quality keys (figures of the first run; runs_differ=1 is added when a later
  * run gave different figures, i.e. the engine is not deterministic):
  *   pile     max_penetration (m, at step 600) outside (bodies whose centre
- *            is outside the container at step 600; must be 0)
+ *            is outside the container at step 600; must be 0); the same for
+ *            circlepile, capsulepile and mixedpile
  *   pyramid  top_drop (m: the top box's centre height at step 600 minus its
  *            initial height, negative = it came down; standing: > -0.5 and
  *            the top within 0.5 m sideways; Box2D's skins make its towers
@@ -1360,7 +1362,8 @@ static inline void bench_usage(FILE *out, const char *program) {
             "usage: %s [--scene NAME[,NAME]] [--size X[,X]] [--dt X[,X]] [--runs R] [--quick]\n"
             "          [--iterations N] [--variant NAME[,NAME]] [--steps N] [--layout-seed K]\n"
             "          [--wall] [--count-steps]\n"
-            "  scenes: pile pyramid bounce cradle orbit stack2 tunnel overlap column all\n"
+            "  scenes: pile pyramid bounce cradle orbit stack2 tunnel overlap column\n"
+            "  circlepile capsulepile mixedpile all\n"
             "  stability scenes: spring springpair chain heavytop headon tunnelmove bullet rod\n"
             "  drop coincide gas settle wallbounce scaled far\n"
             "  no --scene: pile 1000,4000,10000; pyramid 20,40; bounce 0.8 at dt 1/60,1/600;\n"
