@@ -160,8 +160,20 @@ void body_free(body_t *body) {
     memory_free(body);
 }
 
+void body_update_pose(body_t *body) {
+    if (body->world_valid != WORLD_STALE) return;
+    if (body->kind == BODY_SHAPE_POLYGON) {
+        body_update_world(body);
+        return;
+    }
+    body->rotation_cos = cos(body->angle);
+    body->rotation_sin = sin(body->angle);
+    body->bounds = body_round_bounds(body);
+    body->world_valid = WORLD_POSE;
+}
+
 void body_update_world(body_t *body) {
-    if (body->world_valid) return;
+    if (body->world_valid == WORLD_FULL) return;
     body->rotation_cos = cos(body->angle);
     body->rotation_sin = sin(body->angle);
     aabb_t bounds = {{INFINITY, INFINITY}, {-INFINITY, -INFINITY}};
@@ -175,7 +187,7 @@ void body_update_world(body_t *body) {
         bounds.max.y = max_of(bounds.max.y, p.y);
     }
     body->bounds = body->kind == BODY_SHAPE_POLYGON ? bounds : body_round_bounds(body);
-    body->world_valid = true;
+    body->world_valid = WORLD_FULL;
 }
 
 list_t *body_get_shape(body_t *body) {
