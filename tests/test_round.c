@@ -253,6 +253,33 @@ static void capsule_manifolds(void) {
     body_free(rod);
 }
 
+/* Two capsules lying one on the other, parallel and offset along their
+ * length: each has an end over the other's side, both as near. Turning the
+ * upper one by a millionth of a radian either way must not change which
+ * capsule's face the contact is built on (the ids the solver's warm start
+ * recognises), nor its normal: a pile of capsules otherwise never rests. */
+static void parallel_capsules_keep_their_reference_face(void) {
+    body_t *lower = body_init_capsule((vector_t){-1, 0}, (vector_t){1, 0}, 0.25, 1.0, GREY);
+    body_t *upper =
+        body_init_capsule((vector_t){-0.7, 0.499}, (vector_t){1.3, 0.499}, 0.25, 1.0, GREY);
+    double s;
+    manifold_t first = collide(lower, upper, 0.1, &s);
+    CHECK(first.point_count == 2);
+    for (int i = -10; i <= 10; i++) {
+        body_set_rotation(upper, 1e-7 * i);
+        manifold_t m = collide(lower, upper, 0.1, &s);
+        CHECK(m.point_count == 2);
+        CHECK_VEC(m.normal, first.normal.x, first.normal.y, 1e-5);
+        for (int p = 0; p < 2 && m.point_count == 2; p++) {
+            CHECK(m.points[p].id == first.points[p].id);
+            CHECK_NEAR(m.points[p].separation, -0.001, 1e-5);
+        }
+        if (test_failures > 0) break;
+    }
+    body_free(lower);
+    body_free(upper);
+}
+
 static scene_t *round_scene(double gravity) {
     scene_t *scene = scene_init();
     scene_set_gravity(scene, (vector_t){0.0, -gravity});
@@ -549,6 +576,7 @@ TEST_SUITE(round, TEST_CASE(circle_has_exact_mass_properties),
            TEST_CASE(capsule_has_exact_mass_properties), TEST_CASE(outline_and_point_test),
            TEST_CASE(bad_input_aborts_with_message), TEST_CASE(circle_circle_manifold),
            TEST_CASE(circle_polygon_manifold), TEST_CASE(capsule_manifolds),
+           TEST_CASE(parallel_capsules_keep_their_reference_face),
            TEST_CASE(head_on_equal_circles_swap_velocities),
            TEST_CASE(dropped_ball_rebounds_to_e_squared),
            TEST_CASE(frictionless_circle_slides_without_turning),
