@@ -153,29 +153,23 @@ int b2_add_body(void *world, const bench_shape_t *shape, double x, double y, dou
         fprintf(stderr, "bench_box2d: Box2D 2.4 has no capsule shape\n");
         exit(2);
     }
-    if (shape->sides == BENCH_CIRCLE) {
-        b2CircleShape circle;
-        circle.m_radius = (float)shape->radius;
-        b2FixtureDef fixture;
-        fixture.shape = &circle;
-        fixture.density = (float)(mass / bench_shape_area(shape));
-        fixture.friction = (float)friction;
-        fixture.restitution = (float)elasticity;
-        if (!collides) fixture.filter.maskBits = 0;
-        body->CreateFixture(&fixture);
-        return b2_add(w, body);
-    }
-    b2Vec2 verts[b2_maxPolygonVertices];
-    int n = bench_shape_vertex_count(shape);
-    for (int i = 0; i < n; i++) {
-        double vx, vy;
-        bench_shape_vertex(shape, i, &vx, &vy);
-        verts[i].Set((float)vx, (float)vy);
-    }
+    b2CircleShape circle;
     b2PolygonShape polygon;
-    polygon.Set(verts, n);
+    if (shape->sides == BENCH_CIRCLE) {
+        circle.m_radius = (float)shape->radius;
+    } else {
+        b2Vec2 verts[b2_maxPolygonVertices];
+        int n = bench_shape_vertex_count(shape);
+        for (int i = 0; i < n; i++) {
+            double vx, vy;
+            bench_shape_vertex(shape, i, &vx, &vy);
+            verts[i].Set((float)vx, (float)vy);
+        }
+        polygon.Set(verts, n);
+    }
     b2FixtureDef fixture;
-    fixture.shape = &polygon;
+    fixture.shape = shape->sides == BENCH_CIRCLE ? static_cast<b2Shape *>(&circle)
+                                                 : static_cast<b2Shape *>(&polygon);
     fixture.density = (float)(mass / bench_shape_area(shape));
     fixture.friction = (float)friction;
     fixture.restitution = (float)elasticity;
