@@ -98,6 +98,45 @@ static void breakout_is_won_by_a_paddle_under_the_ball(void) {
     CHECK(test_no_leaks());
 }
 
+/* The ball is a circle and keeps its speed (the rules serve it at 7.6 m/s
+ * and aim it off the paddle at that speed; walls, ceiling and bricks are
+ * elastic and immovable) through a minute of play, to 1e-9; off a side
+ * wall it comes back mirrored, its vertical velocity unchanged (a face
+ * meets a round ball along its normal). */
+static void breakout_ball_keeps_its_speed_and_bounces_off_the_walls_mirrored(void) {
+    scene_file_t *file = load("assets/scenes/breakout.scene");
+    scene_t *scene = scene_file_get_scene(file);
+    body_t *ball = scene_file_find_body(file, "ball");
+    CHECK(body_get_shape_kind(ball) == BODY_SHAPE_CIRCLE);
+    char error[256];
+    game_t *game = game_start(file, error, sizeof error);
+    CHECK(game != NULL);
+    if (game == NULL) return;
+    double dt = scene_file_get_timestep(file), speed = vec_get_length(body_get_velocity(ball));
+    int side_bounces = 0, lives = game_status(game).lives;
+    vector_t before = body_get_velocity(ball);
+    for (long step = 0; step < lround(60.0 / dt); step++) {
+        scene_tick(scene, dt);
+        game_update(game, breakout_player(file), dt);
+        if (game_status(game).outcome != GAME_PLAYING) break;
+        vector_t v = body_get_velocity(ball);
+        CHECK_RELATIVE(vec_get_length(v), speed, 1e-9);
+        CHECK(body_get_angular_velocity(ball) == 0.0);
+        bool served = game_status(game).lives != lives;
+        lives = game_status(game).lives;
+        if (!served && fabs(body_get_centroid(ball).x) > 6.75 && v.x * before.x < 0.0) {
+            CHECK_NEAR(v.x, -before.x, 1e-12);
+            CHECK_NEAR(v.y, before.y, 1e-12);
+            side_bounces++;
+        }
+        before = v;
+        if (test_failures > 0) break;
+    }
+    CHECK(side_bounces >= 3);
+    game_free(game);
+    scene_file_free(file);
+}
+
 static void breakout_is_lost_by_a_still_paddle(void) {
     scene_file_t *file = load("assets/scenes/breakout.scene");
     game_status_t status = play(file, idle, 600);
@@ -242,6 +281,7 @@ static void pegs_drops_a_ball_every_second_and_freezes_it_where_it_lands(void) {
     for (size_t i = 0; i < scene_bodies(scene); i++) {
         body_t *ball = scene_get_body(scene, i);
         if (!game_body_has_tag(ball, "ball")) continue;
+        CHECK(body_get_shape_kind(ball) == BODY_SHAPE_CIRCLE && body_get_round_radius(ball) == 1.0);
         CHECK(fabs(body_get_centroid(ball).x) <= 0.5);
         CHECK_NEAR(body_get_centroid(ball).y, 76.0, 1e-12);
         CHECK_VEC(body_get_velocity(ball), 0, -8, 0);
@@ -260,10 +300,11 @@ static void pegs_drops_a_ball_every_second_and_freezes_it_where_it_lands(void) {
     CHECK(status.score == frozen && status.remaining == falling + frozen);
     CHECK(falling + frozen == 31);
     CHECK(frozen >= 15);
-    const double radius = cos(M_PI / 20); /* the 20-gon's inner radius, 1 m balls */
+    const double radius = 1.0; /* the balls are circles of 1 m */
     for (size_t i = 0; i < scene_bodies(scene); i++) {
         body_t *ball = scene_get_body(scene, i);
         if (!game_body_has_tag(ball, "frozen")) continue;
+        CHECK(body_get_shape_kind(ball) == BODY_SHAPE_CIRCLE);
         CHECK(isinf(body_get_mass(ball)));
         CHECK_VEC(body_get_velocity(ball), 0, 0, 0);
         vector_t at = body_get_centroid(ball);
@@ -286,8 +327,8 @@ static void pegs_clears_a_full_board(void) {
      * so it is cleared at once; the next ball lands on the bare floor. */
     const char *text = "game pegs\nview 0 41 20 83\ngravity 0 -9.8\ncontacts on\n"
                        "body floor { box 20 1; static; position 0 72.5; tag floor }\n"
-                       "template ball { regular 20 1; mass 2; tag ball }\n"
-                       "template frozen { regular 20 1; static; tag frozen }\n";
+                       "template ball { circle 1; mass 2; tag ball }\n"
+                       "template frozen { circle 1; static; tag frozen }\n";
     scene_file_t *file = scene_file_parse(text, strlen(text), "t", NULL);
     CHECK(file != NULL);
     if (file == NULL) return;
@@ -353,6 +394,7 @@ static void games_refuse_scenes_they_cannot_play(void) {
 
 TEST_SUITE(games, TEST_CASE(breakout_is_won_by_a_paddle_under_the_ball),
            TEST_CASE(breakout_is_lost_by_a_still_paddle),
+           TEST_CASE(breakout_ball_keeps_its_speed_and_bounces_off_the_walls_mirrored),
            TEST_CASE(space_invaders_is_won_by_aimed_fire),
            TEST_CASE(space_invaders_is_lost_by_a_still_gun),
            TEST_CASE(space_invaders_gun_has_three_lives),

@@ -107,7 +107,7 @@ static void pegs_keep_every_ball_on_the_board(scene_file_t *file) {
     scene_t *scene = scene_file_get_scene(file);
     body_t *left = named(file, "left"), *right = named(file, "right");
     vector_t middle = {0, 40};
-    const double radius = 1.0 * cos(M_PI / 20), slack = 0.01; /* a 20-gon's inner radius */
+    const double radius = 1.0, slack = 0.01; /* the balls are circles of 1 m */
     double dt = scene_file_get_timestep(file), worst = INFINITY;
     int most_falling = 0, clears = 0, on_board = 0, failures = test_failures;
     long steps = lround(600.0 / dt), every = lround(0.1 / dt);

@@ -149,17 +149,27 @@ int b2_add_body(void *world, const bench_shape_t *shape, double x, double y, dou
     def.position.Set((float)x, (float)y);
     def.angle = (float)angle;
     b2Body *body = w->world.CreateBody(&def);
-    b2Vec2 verts[b2_maxPolygonVertices];
-    int n = bench_shape_vertex_count(shape);
-    for (int i = 0; i < n; i++) {
-        double vx, vy;
-        bench_shape_vertex(shape, i, &vx, &vy);
-        verts[i].Set((float)vx, (float)vy);
+    if (shape->sides == BENCH_CAPSULE) {
+        fprintf(stderr, "bench_box2d: Box2D 2.4 has no capsule shape\n");
+        exit(2);
     }
+    b2CircleShape circle;
     b2PolygonShape polygon;
-    polygon.Set(verts, n);
+    if (shape->sides == BENCH_CIRCLE) {
+        circle.m_radius = (float)shape->radius;
+    } else {
+        b2Vec2 verts[b2_maxPolygonVertices];
+        int n = bench_shape_vertex_count(shape);
+        for (int i = 0; i < n; i++) {
+            double vx, vy;
+            bench_shape_vertex(shape, i, &vx, &vy);
+            verts[i].Set((float)vx, (float)vy);
+        }
+        polygon.Set(verts, n);
+    }
     b2FixtureDef fixture;
-    fixture.shape = &polygon;
+    fixture.shape = shape->sides == BENCH_CIRCLE ? static_cast<b2Shape *>(&circle)
+                                                 : static_cast<b2Shape *>(&polygon);
     fixture.density = (float)(mass / bench_shape_area(shape));
     fixture.friction = (float)friction;
     fixture.restitution = (float)elasticity;
@@ -211,8 +221,11 @@ double b2_contact_penetration(b2Contact *c) {
     if (!c->IsTouching()) return 0.0;
     b2WorldManifold wm;
     c->GetWorldManifold(&wm);
-    double skins = (double)c->GetFixtureA()->GetShape()->m_radius +
-                   (double)c->GetFixtureB()->GetShape()->m_radius;
+    /* A polygon's radius is its skin, which its separation leaves out; a
+     * circle's is its size, already in it. */
+    b2Shape *sa = c->GetFixtureA()->GetShape(), *sb = c->GetFixtureB()->GetShape();
+    double skins = (sa->GetType() == b2Shape::e_polygon ? (double)sa->m_radius : 0.0) +
+                   (sb->GetType() == b2Shape::e_polygon ? (double)sb->m_radius : 0.0);
     for (int i = 0; i < c->GetManifold()->pointCount; i++) {
         double depth = -((double)wm.separations[i] + skins);
         if (depth > pen) pen = depth;

@@ -24,8 +24,9 @@
  * Penetration: v3's manifolds are computed at the start of a step (before
  * its solve) and keep speculative points up to 0.02 m apart, so they are not
  * read as they are: for every contact a dynamic body holds after the step
- * whose manifold has points, the two polygons are collided again at the
- * bodies' current transforms (b2CollidePolygons, radius 0) and the
+ * whose manifold has points, the two shapes are collided again at the
+ * bodies' current transforms (b2CollidePolygons for polygons of radius 0,
+ * and the collide function of each pair with a circle or a capsule) and the
  * penetration is the largest -separation of that manifold (0 when apart).
  *
  * Springs: b2DistanceJoint between the two centres as a spring of rest
@@ -75,7 +76,7 @@ static void b3_describe(FILE *out) {
             "kept: %d sub-steps, contact hertz %g, damping ratio %g, push-out speed %g m/s, "
             "restitution threshold %g m/s, continuous %s, maximum linear speed %g m/s, "
             "workers %d, body sleep threshold %g m/s, polygon radius 0; set: sleeping off "
-            "(default %s; box2d3-%s-sleeping keeps it on, pile only); penetration: polygons "
+            "(default %s; box2d3-%s-sleeping keeps it on, pile only); penetration: shapes "
             "collided again at the final transforms (no speculative margin, no skin)\n",
             BENCH_BOX2D3_BUILD, v.major, v.minor, v.revision, BENCH_BOX2D3_BUILD,
             b2IsDoublePrecision() ? "double" : "single", B3_SUBSTEPS, (double)def.contactHertz,
@@ -185,6 +186,15 @@ static int b3_add_body(void *world, const bench_shape_t *shape, double x, double
     sdef.material.friction = (float)friction;
     sdef.material.restitution = (float)elasticity;
     if (!collides) sdef.filter.maskBits = 0;
+    if (shape->sides == BENCH_CIRCLE) {
+        b2Circle circle = {{0.0f, 0.0f}, (float)shape->radius};
+        return b3_add(w, body, b2CreateCircleShape(body, &sdef, &circle), mass);
+    }
+    if (shape->sides == BENCH_CAPSULE) {
+        b2Capsule capsule = {{(float)-shape->hx, 0.0f}, {(float)shape->hx, 0.0f},
+                             (float)shape->radius};
+        return b3_add(w, body, b2CreateCapsuleShape(body, &sdef, &capsule), mass);
+    }
     b2Polygon polygon = b3_polygon(shape);
     return b3_add(w, body, b2CreatePolygonShape(body, &sdef, &polygon), mass);
 }
@@ -249,13 +259,52 @@ static void b3_get_state(void *world, int body, bench_state_t *out) {
     out->omega = b2Body_GetAngularVelocity(b);
 }
 
-/* The deepest penetration of two polygon shapes at their bodies' current
+/* Box2D's order of shape types in a contact: the higher one is shape A. */
+static int b3_rank(b2ShapeType type) {
+    return type == b2_circleShape ? 0 : type == b2_capsuleShape ? 1 : 2;
+}
+
+/* The manifold of two shapes (circles, capsules, polygons) at their bodies'
+ * current transforms, a of the higher type (b3_rank). */
+static b2LocalManifold b3_collide(b2ShapeId a, b2ShapeId b) {
+    b2Transform xf = b2InvMulTransforms(b2Body_GetTransform(b2Shape_GetBody(a)),
+                                        b2Body_GetTransform(b2Shape_GetBody(b)));
+    b2ShapeType ta = b2Shape_GetType(a), tb = b2Shape_GetType(b);
+    if (ta == b2_circleShape) {
+        b2Circle ca = b2Shape_GetCircle(a), cb = b2Shape_GetCircle(b);
+        return b2CollideCircles(&ca, &cb, xf);
+    }
+    if (ta == b2_capsuleShape) {
+        b2Capsule ca = b2Shape_GetCapsule(a);
+        if (tb == b2_circleShape) {
+            b2Circle cb = b2Shape_GetCircle(b);
+            return b2CollideCapsuleAndCircle(&ca, &cb, xf);
+        }
+        b2Capsule cb = b2Shape_GetCapsule(b);
+        return b2CollideCapsules(&ca, &cb, xf);
+    }
+    b2Polygon pa = b2Shape_GetPolygon(a);
+    if (tb == b2_circleShape) {
+        b2Circle cb = b2Shape_GetCircle(b);
+        return b2CollidePolygonAndCircle(&pa, &cb, xf);
+    }
+    if (tb == b2_capsuleShape) {
+        b2Capsule cb = b2Shape_GetCapsule(b);
+        return b2CollidePolygonAndCapsule(&pa, &cb, xf);
+    }
+    b2Polygon pb = b2Shape_GetPolygon(b);
+    return b2CollidePolygons(&pa, &pb, xf);
+}
+
+/* The deepest penetration of two shapes at their bodies' current
  * transforms (0 when they do not overlap). */
 static double b3_shape_penetration(b2ShapeId a, b2ShapeId b) {
-    b2Polygon pa = b2Shape_GetPolygon(a), pb = b2Shape_GetPolygon(b);
-    b2Transform xa = b2Body_GetTransform(b2Shape_GetBody(a));
-    b2Transform xb = b2Body_GetTransform(b2Shape_GetBody(b));
-    b2LocalManifold m = b2CollidePolygons(&pa, &pb, b2InvMulTransforms(xa, xb));
+    if (b3_rank(b2Shape_GetType(a)) < b3_rank(b2Shape_GetType(b))) {
+        b2ShapeId t = a;
+        a = b;
+        b = t;
+    }
+    b2LocalManifold m = b3_collide(a, b);
     double pen = 0.0;
     for (int i = 0; i < m.pointCount; i++) {
         if (-m.points[i].separation > pen) pen = -m.points[i].separation;

@@ -179,9 +179,30 @@ static int cp_add_static_box(void *world, double cx, double cy, double hx, doubl
     return cp_add(w, body);
 }
 
+/* A circle, or a capsule as Chipmunk's rounded segment; the exact moment
+ * of either (cpMomentForSegment leaves out the caps' share). */
+static int cp_add_round(cp_world_t *w, const bench_shape_t *shape, double x, double y,
+                        double angle, double mass, double friction, double elasticity,
+                        int collides) {
+    cpBody *body =
+        cpSpaceAddBody(w->space, cpBodyNew(mass, bench_shape_inertia(shape, mass)));
+    cpBodySetPosition(body, cpv(x, y));
+    cpBodySetAngle(body, angle);
+    cpShape *s = shape->sides == BENCH_CIRCLE
+                     ? cpCircleShapeNew(body, shape->radius, cpvzero)
+                     : cpSegmentShapeNew(body, cpv(-shape->hx, 0.0), cpv(shape->hx, 0.0),
+                                         shape->radius);
+    cpSpaceAddShape(w->space, s);
+    cpShapeSetFriction(s, friction);
+    cpShapeSetElasticity(s, elasticity);
+    if (!collides) cpShapeSetFilter(s, CP_SHAPE_FILTER_NONE);
+    return cp_add(w, body);
+}
+
 static int cp_add_body(void *world, const bench_shape_t *shape, double x, double y, double angle,
                        double mass, double friction, double elasticity, int collides) {
     cp_world_t *w = (cp_world_t *)world;
+    if (shape->sides < 0) return cp_add_round(w, shape, x, y, angle, mass, friction, elasticity, collides);
     cpVect verts[16];
     int n = bench_shape_vertex_count(shape);
     for (int i = 0; i < n; i++) {

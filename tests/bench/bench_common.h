@@ -245,7 +245,10 @@ static inline void bench_print_result(const char *engine, const char *scene, con
 /* A body shape, centred on its centroid in the body's own frame: sides == 0
  * is a box of half extents (hx, hy); sides >= 3 a regular polygon of
  * circumradius `radius` whose first vertex is at angle 0 (the body's angle
- * then turns it). */
+ * then turns it); BENCH_CIRCLE a circle of `radius`; BENCH_CAPSULE a capsule
+ * of end circles of `radius` centred at (-hx, 0) and (hx, 0). */
+#define BENCH_CIRCLE (-1)
+#define BENCH_CAPSULE (-2)
 typedef struct {
     int sides;
     double radius;
@@ -312,8 +315,11 @@ typedef struct bench_ops {
     int (*awake_bodies)(void *world);
 } bench_ops_t;
 
-/* Polygon area (m^2) of a shape: mass = area at density 1. */
+/* Area (m^2) of a shape: mass = area at density 1. */
 static inline double bench_shape_area(const bench_shape_t *shape) {
+    double r = shape->radius;
+    if (shape->sides == BENCH_CIRCLE) return M_PI * r * r;
+    if (shape->sides == BENCH_CAPSULE) return 4.0 * shape->hx * r + M_PI * r * r;
     if (shape->sides == 0) return 4.0 * shape->hx * shape->hy;
     return 0.5 * shape->sides * shape->radius * shape->radius * sin(2.0 * M_PI / shape->sides);
 }
@@ -338,6 +344,17 @@ static inline int bench_shape_vertex_count(const bench_shape_t *shape) {
 
 /* Moment of inertia about the centroid of a uniform shape of mass m. */
 static inline double bench_shape_inertia(const bench_shape_t *shape, double mass) {
+    double r = shape->radius;
+    if (shape->sides == BENCH_CIRCLE) return 0.5 * mass * r * r;
+    if (shape->sides == BENCH_CAPSULE) {
+        /* A 2 hx by 2 r rectangle and two half-discs, each moved from its
+         * own centroid (4 r / (3 pi) past its end) by the parallel-axis rule. */
+        double L = 2.0 * shape->hx, area = bench_shape_area(shape);
+        double box = mass * 2.0 * r * L / area, half = mass * 0.5 * M_PI * r * r / area;
+        double c = 4.0 * r / (3.0 * M_PI);
+        double half_moment = half * (0.5 * r * r - c * c) + half * (0.5 * L + c) * (0.5 * L + c);
+        return box * (L * L + 4.0 * r * r) / 12.0 + 2.0 * half_moment;
+    }
     if (shape->sides == 0) return mass * (4.0 * shape->hx * shape->hx + 4.0 * shape->hy * shape->hy) / 12.0;
     double s = 2.0 * M_PI / shape->sides;
     return mass * shape->radius * shape->radius * (2.0 + cos(s)) / 6.0;

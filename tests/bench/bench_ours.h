@@ -152,7 +152,16 @@ static int ours_add_body(void *world, const bench_shape_t *shape, double x, doub
     ours_world_t *w = (ours_world_t *)world;
     body_t *body;
     double angle0 = 0.0;
-    if (shape->sides == 0) {
+    if (shape->sides == BENCH_CIRCLE) {
+        body = body_init_circle((vector_t){x, y}, shape->radius, mass, grey);
+        angle0 = angle;
+    } else if (shape->sides == BENCH_CAPSULE) {
+        /* its ends turned by angle about (x, y) */
+        vector_t half = {shape->hx * cos(angle), shape->hx * sin(angle)};
+        body = body_init_capsule((vector_t){x - half.x, y - half.y},
+                                 (vector_t){x + half.x, y + half.y}, shape->radius, mass, grey);
+        angle0 = angle;
+    } else if (shape->sides == 0) {
         body = body_init(polygon_make_box((vector_t){x, y}, shape->hx, shape->hy), mass, grey);
         if (angle != 0.0) body_set_rotation(body, angle);
     } else {

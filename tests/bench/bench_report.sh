@@ -11,7 +11,9 @@
 # this engine and of Box2D v3 when its program is among PROGRAM.
 # Environment: BENCH_ROUNDS (default 7), BENCH_VARIANTS (the variants of
 # the speed table), BENCH_INSTRUCTIONS (cases, default "pile:1000
-# pyramid:20"), BENCH_CFLAGS (printed as the flags), BENCH_ARGS (more
+# pyramid:20 circlepile:1000"), BENCH_ROUND_SIZES (sizes of the round piles'
+# table, circlepile and mixedpile, default 1000,4000; empty leaves it out),
+# BENCH_CFLAGS (printed as the flags), BENCH_ARGS (more
 # options for the speed table's programs, e.g. --scene pile --size 1000),
 # BENCH_SEEDS_ARGS (options of seeds.sh, e.g. --quick: a trial run only),
 # BENCH_SCALE_SIZES (pile sizes of the scale fit, default
@@ -26,10 +28,11 @@ shift
 [ -n "$output" ] && [ $# -gt 0 ] || { echo "usage: $0 OUTPUT PROGRAM..." >&2; exit 2; }
 rounds=${BENCH_ROUNDS:-7}
 variants=${BENCH_VARIANTS:-ours,box2d3-sse2,box2d3-avx2,chipmunk,chipmunk-default,box2d-nosleep,box2d-matched}
-instructions=${BENCH_INSTRUCTIONS-pile:1000 pyramid:20}
+instructions=${BENCH_INSTRUCTIONS-pile:1000 pyramid:20 circlepile:1000}
 scale_sizes=${BENCH_SCALE_SIZES-1000,2000,4000,10000,20000}
 sleep_steps=${BENCH_SLEEP_STEPS:-1800}
 workers_size=${BENCH_WORKERS_SIZE:-10000}
+round_sizes=${BENCH_ROUND_SIZES-1000,4000}
 dir=$(dirname "$0")
 work=$(mktemp -d "${TMPDIR:-/tmp}/bench-report.XXXXXX") || exit 1
 trap 'rm -rf "$work"' EXIT INT TERM
@@ -78,6 +81,17 @@ if [ -n "$sleepers" ]; then
         "$p" --scene pile --size 4000 --runs 1 --steps "$sleep_steps" \
             --variant ours-sleeping,box2d3-sse2-sleeping,box2d3-avx2-sleeping | grep '^engine='
     done >"$work/asleep"
+fi
+# Round bodies: Box2D 2.4 (no capsule) is left out of both piles.
+round_programs=""
+for p in "$@"; do
+    [ "$(basename "$p")" = bench_box2d ] || round_programs="$round_programs $p"
+done
+if [ -n "$round_sizes" ]; then
+    echo "bench-report: round bodies, circlepile and mixedpile $round_sizes" >&2
+    # shellcheck disable=SC2086
+    sh "$dir/alternate.sh" -o "$work/round-raw" "$rounds" $round_programs -- --variant "$variants" \
+        --scene circlepile,mixedpile --size "$round_sizes" >"$work/round" || exit 1
 fi
 echo "bench-report: two workers, pile $workers_size (unpinned)" >&2
 for round in 1 2 3; do
@@ -167,6 +181,30 @@ Counted by callgrind inside the step calls only, one run each.
 \`\`\`
 $(cat "$work/instructions")
 \`\`\`
+EOF
+    fi
+    if [ -s "$work/round" ]; then
+        cat <<EOF
+
+## Round bodies: circlepile(N) and mixedpile(N), one core
+
+The pile with circles, and with squares, circles and capsules in turn
+(bench-scenes.md); Box2D 2.4 has no capsule and is left out. Times as in the
+speed table; then each engine's deepest penetration (m) and bodies outside
+the container at step 600, from the first round.
+
+\`\`\`
+$(grep -v '^#' "$work/round")
+\`\`\`
+
+| scene | size | engine | deepest penetration (m) | outside |
+|---|---|---|---|---|
+$(awk '$2 == "round=1" { e = ""; s = ""; n = ""; p = ""; o = ""
+        for (i = 3; i <= NF; i++) { split($i, kv, "=")
+            if (kv[1] == "engine") e = kv[2]; if (kv[1] == "scene") s = kv[2]
+            if (kv[1] == "size") n = kv[2]; if (kv[1] == "max_penetration") p = kv[2]
+            if (kv[1] == "outside") o = kv[2] }
+        printf "| %s | %s | %s | %s | %s |\n", s, n, e, p, o }' "$work/round-raw")
 EOF
     fi
     if [ -s "$work/sleeping" ]; then
@@ -294,6 +332,7 @@ EOF
     make bench-report     # this page; BENCH_ROUNDS, BENCH_VARIANTS and the rest: tests/bench/bench_report.sh
     make bench-compare    # the speed tables alone
     tests/bench/alternate.sh 7 build/bench/bench_engine build/bench/bench_box2d3-sse2 -- --scene pile --size 4000
+    tests/bench/alternate.sh 7 build/bench/bench_engine build/bench/bench_box2d3-sse2 -- --scene circlepile --size 4000
     tests/bench/instructions.sh -s "pile:1000" build/bench/bench_engine:ours build/bench/bench_box2d3-sse2:box2d3-sse2
     tests/bench/seeds.sh build/bench/bench_engine   # quality over the seeds; --judge OLD NEW V3 decides "no worse"
     valgrind --tool=callgrind build/bench/bench_engine --scene pile --size 1000 --runs 1

@@ -9,7 +9,8 @@
  *
  * Options:
  *   --scene NAME     pile, pyramid, bounce, cradle, orbit, stack2, tunnel,
- *                    overlap, column or all; repeatable or a comma list
+ *                    overlap, column, circlepile, capsulepile, mixedpile or
+ *                    all; repeatable or a comma list
  *   --size X         the scene's size (pile N, pyramid B, bounce e, cradle n,
  *                    stack2 r, tunnel v); repeatable or a comma list
  *   --dt X           step of bounce and orbit (e.g. 1/600 or 0.001);
@@ -32,7 +33,8 @@
  * Quality keys (figures of the first run; runs_differ=1 is added when a later
  * run gave different figures, i.e. the engine is not deterministic):
  *   pile     max_penetration (m, at step 600) outside (bodies whose centre
- *            is outside the container at step 600; must be 0)
+ *            is outside the container at step 600; must be 0); the same for
+ *            circlepile, capsulepile and mixedpile
  *   pyramid  top_drop (m: the top box's centre height at step 600 minus its
  *            initial height, negative = it came down; standing: > -0.5 and
  *            the top within 0.5 m sideways; Box2D's skins make its towers
@@ -98,6 +100,10 @@ typedef enum {
     SCENE_WALLBOUNCE,
     SCENE_SCALED,
     SCENE_FAR,
+    /* The pile of round and mixed bodies (docs/bench-scenes.md). */
+    SCENE_CIRCLEPILE,
+    SCENE_CAPSULEPILE,
+    SCENE_MIXEDPILE,
     SCENE_COUNT
 } bench_scene_id_t;
 
@@ -105,7 +111,8 @@ static const char *const bench_scene_names[SCENE_COUNT] = {
     "pile",     "pyramid",    "bounce", "cradle",   "orbit",    "stack2",
     "tunnel",   "overlap",    "column", "spring",   "springpair", "chain",
     "heavytop", "headon",     "tunnelmove", "bullet", "rod",    "drop",
-    "coincide", "gas",        "settle", "wallbounce", "scaled", "far"};
+    "coincide", "gas",        "settle", "wallbounce", "scaled", "far",
+    "circlepile", "capsulepile", "mixedpile"};
 
 /* --quick: smaller sweeps inside the scenes that sweep (spring, springpair,
  * chain). */
@@ -161,6 +168,12 @@ static inline bench_shape_t bench_regular_shape(int sides, double radius) {
     return shape;
 }
 
+static inline bench_shape_t bench_capsule_shape(double half_length, double radius) {
+    bench_shape_t shape = bench_regular_shape(BENCH_CAPSULE, radius);
+    shape.hx = half_length;
+    return shape;
+}
+
 /* ---- pile(N) ----
  * With --steps past 3600 (60 s), the pile's motion from 60 s on is measured
  * too: the largest total kinetic energy (J, translation and rotation) and
@@ -169,6 +182,22 @@ static inline bench_shape_t bench_regular_shape(int sides, double radius) {
  * 0.01 m/s and the largest speed. */
 #define PILE_LATE_FIRST 3600
 #define PILE_CREEP_SPEED 0.01
+
+/* Body i of a pile: pile, polygons of 3 to 8 sides on a circle of
+ * PILE_RADIUS; circlepile, circles of that radius; capsulepile, capsules as
+ * long (1 m end to end) and half as thick; mixedpile, a square on that
+ * circle, a circle and a capsule in turn. */
+static inline bench_shape_t pile_shape(bench_scene_id_t scene, int i) {
+    bench_shape_t circle = bench_regular_shape(BENCH_CIRCLE, PILE_RADIUS);
+    bench_shape_t capsule = bench_capsule_shape(0.5 * PILE_RADIUS, 0.5 * PILE_RADIUS);
+    switch (scene) {
+        case SCENE_CIRCLEPILE: return circle;
+        case SCENE_CAPSULEPILE: return capsule;
+        case SCENE_MIXEDPILE:
+            return i % 3 == 0 ? bench_regular_shape(4, PILE_RADIUS) : i % 3 == 1 ? circle : capsule;
+        default: return bench_regular_shape(pile_sides[i % 5], PILE_RADIUS);
+    }
+}
 
 static inline void pile_run(const bench_ops_t *ops, const bench_case_t *c, bench_run_t *out) {
     int n = (int)c->size;
@@ -182,7 +211,7 @@ static inline void pile_run(const bench_ops_t *ops, const bench_case_t *c, bench
     bench_rng_t rng;
     bench_rng_init(&rng);
     for (int i = 0; i < n; i++) {
-        bench_shape_t shape = bench_regular_shape(pile_sides[i % 5], PILE_RADIUS);
+        bench_shape_t shape = pile_shape(c->scene, i);
         int column = i % PILE_COLUMNS, row = i / PILE_COLUMNS;
         double u1 = bench_rng_next(&rng);
         double u2 = bench_rng_next(&rng);
@@ -208,7 +237,7 @@ static inline void pile_run(const bench_ops_t *ops, const bench_case_t *c, bench
             double ke = 0.0, px = 0.0, py = 0.0, vmax = 0.0;
             int fast = 0;
             for (int i = 0; i < n; i++) {
-                bench_shape_t shape = bench_regular_shape(pile_sides[i % 5], PILE_RADIUS);
+                bench_shape_t shape = pile_shape(c->scene, i);
                 double m = bench_shape_area(&shape);
                 bench_state_t s;
                 ops->get_state(w, ids[i], &s);
@@ -1200,6 +1229,11 @@ static inline void wallbounce_run(const bench_ops_t *ops, const bench_case_t *c,
     ops->world_free(w);
 }
 
+static inline int bench_scene_is_pile(bench_scene_id_t scene) {
+    return scene == SCENE_PILE || scene == SCENE_CIRCLEPILE || scene == SCENE_CAPSULEPILE ||
+           scene == SCENE_MIXEDPILE;
+}
+
 typedef void (*bench_run_fn)(const bench_ops_t *, const bench_case_t *, bench_run_t *);
 
 static const bench_run_fn bench_runners[SCENE_COUNT] = {
@@ -1207,7 +1241,8 @@ static const bench_run_fn bench_runners[SCENE_COUNT] = {
     stack2_run,     tunnel_run,    overlap_run,  column_run,    spring_run,
     springpair_run, chain_run,     heavytop_run, headon_run,    tunnelmove_run,
     bullet_run,     rod_run,       drop_run,     coincide_run,  gas_run,
-    settle_run,     wallbounce_run, scaled_run,  far_run};
+    settle_run,     wallbounce_run, scaled_run,  far_run,       pile_run,
+    pile_run,       pile_run};
 
 /* The scenes that print a summary line after their sizes (first speed that
  * tunnelled, largest return speed). */
@@ -1278,7 +1313,7 @@ static inline void bench_run_case(const bench_ops_t *ops, const bench_case_t *c,
                  bench_timed_steps);
     }
     bench_print_result(ops->name, bench_scene_names[c->scene], size, runs, ms,
-                       c->scene == SCENE_PILE ? settled : NULL, quality);
+                       bench_scene_is_pile(c->scene) ? settled : NULL, quality);
     if (bench_scene_has_summary(c->scene)) {
         if (first.tunnelled > 0 && (!*summary_tunnelled_v_found || c->size < *summary_first_v)) {
             *summary_tunnelled_v_found = 1;
@@ -1327,7 +1362,8 @@ static inline void bench_usage(FILE *out, const char *program) {
             "usage: %s [--scene NAME[,NAME]] [--size X[,X]] [--dt X[,X]] [--runs R] [--quick]\n"
             "          [--iterations N] [--variant NAME[,NAME]] [--steps N] [--layout-seed K]\n"
             "          [--wall] [--count-steps]\n"
-            "  scenes: pile pyramid bounce cradle orbit stack2 tunnel overlap column all\n"
+            "  scenes: pile pyramid bounce cradle orbit stack2 tunnel overlap column\n"
+            "  circlepile capsulepile mixedpile all\n"
             "  stability scenes: spring springpair chain heavytop headon tunnelmove bullet rod\n"
             "  drop coincide gas settle wallbounce scaled far\n"
             "  no --scene: pile 1000,4000,10000; pyramid 20,40; bounce 0.8 at dt 1/60,1/600;\n"
@@ -1378,6 +1414,9 @@ static inline void bench_default_sizes(bench_scene_id_t scene, int quick, double
         case SCENE_WALLBOUNCE: sizes[0] = 1.1; *count = 1; return;
         case SCENE_SCALED: list = scaled_sizes; n = 3; break;
         case SCENE_FAR: list = far_offsets; n = 2; break;
+        case SCENE_CIRCLEPILE:
+        case SCENE_CAPSULEPILE:
+        case SCENE_MIXEDPILE: list = quick ? pile_quick : pile_full; n = quick ? 1 : 2; break;
         default: break;
     }
     for (int i = 0; i < n; i++) sizes[i] = list[i];

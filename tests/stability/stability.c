@@ -904,9 +904,10 @@ static const char *pile_text(const char *line, int n, bool *ok) {
     if (ok) *ok = ke < 0.5 && p < 1.0 && num(line, "outside") == 0.0;
     snprintf(buffers[next], CELL,
              "KE up to %s J (%s J a body), momentum up to %s N s; at the end %s J, %s bodies "
-             "faster than 1 cm/s (most at one step %s), fastest %s m/s",
+             "faster than 1 cm/s (most at one step %s), fastest %s m/s, deepest penetration %s m",
              G(ke), G(ke / n), G(p), G(num(line, "ke_end")), G(num(line, "fast_end")),
-             G(num(line, "late_fast_max")), G(num(line, "vmax_end")));
+             G(num(line, "late_fast_max")), G(num(line, "vmax_end")),
+             G(num(line, "max_penetration")));
     return buffers[next];
 }
 
@@ -933,6 +934,41 @@ static const char *const PYRAMID_LIMIT_NOTE =
     "pile(10000) reads 0.27 to 0.36 m over seeds with the engine unchanged, so it cannot tell "
     "a better solver from a worse one.\n";
 
+/* The pile of circles and the pile of capsules, beside the polygon pile:
+ * the same layout, sizes, run and verdict. Box2D 2.4 has no capsule. */
+static void round_piles(table_t *t, int n) {
+    const struct {
+        const char *scene, *words;
+        bench_scene_id_t id;
+    } piles[2] = {{"circlepile", "circles", SCENE_CIRCLEPILE},
+                  {"capsulepile", "capsules", SCENE_CAPSULEPILE}};
+    for (int k = 0; k < 2; k++) {
+        progress("stacks: %s(%d), 70 s, sleeping off", piles[k].scene, n);
+        const char *line = run_ours(&ours_ops, piles[k].id, n, BENCH_DT, -1, 4200);
+        char id[64];
+        snprintf(id, sizeof id, "stacks.%s_%d", piles[k].scene, n);
+        row_t *r = new_row(t, id);
+        set_cell(r, 0, "%s(%d) of %s, 60-70 s, sleeping off", piles[k].scene, n, piles[k].words);
+        set_cell(r, 1, "%s", pile_text(line, n, &r->pass));
+        set_cell(r, 2, "%s", r->pass ? "settled" : "FAILS");
+        set_cell(r, 3, "%s", pile_text(find("chipmunk", piles[k].scene, n, NULL, NULL), n, NULL));
+        if (!r->pass && line != NULL) {
+            NOTE(t,
+                 "**Limit: %s(%d) still creeps at 60-70 s** (momentum up to %s N s, %s bodies "
+                 "faster than 1 cm/s at 70 s), as pile(4000) of polygons does (Open problems); "
+                 "the same pile of 500 settles (make check asserts it).\n",
+                 piles[k].scene, n, G(num(line, "late_p_max")), G(num(line, "fast_end")));
+        }
+        if (piles[k].id == SCENE_CAPSULEPILE) {
+            set_cell(r, 4, "%s", "(no capsule shape)");
+            set_cell(r, 5, "%s", "(no capsule shape)");
+            continue;
+        }
+        set_cell(r, 4, "%s", pile_text(find("box2d-nosleep", piles[k].scene, n, NULL, NULL), n, NULL));
+        set_cell(r, 5, "%s", pile_text(find("box2d", piles[k].scene, n, NULL, NULL), n, NULL));
+    }
+}
+
 static void stacks_section(void) {
     section_t *s = new_section("Stacks and piles", "");
     const int pyramid = 40, pile = 2000;
@@ -943,9 +979,12 @@ static void stacks_section(void) {
         "under 1e-6 J and the top drifted under 1 cm; the pyramid upright, its top within 1 cm "
         "of its height and the deepest penetration under 1 cm (asserted), at rest when its "
         "kinetic energy is under 1e-3 J (reported). `pile(N)`: the benchmark's pile (N polygons of 3 to 8 "
-        "sides dropped into a container) for 70 s: its motion from 60 s on; verdict: total "
+        "sides dropped into a container) for 70 s: its motion from 60 s on and the deepest "
+        "penetration at the end; verdict: total "
         "kinetic energy under 0.5 J and momentum under 1 N s, with sleeping off (with sleeping on "
-        "reported). `pile(10000)`: the deepest penetration at 10 s, at most 0.30 m.",
+        "reported). `circlepile(N)` and `capsulepile(N)`: the same with circles of the polygons' "
+        "0.5 m radius, or capsules 1 m long of radius 0.25 m, and the same verdict. "
+        "`pile(10000)`: the deepest penetration at 10 s, at most 0.30 m.",
         "case", "this engine", "verdict", "Chipmunk2D", "Box2D 2.4, no sleeping", "Box2D 2.4",
         NULL);
     progress("stacks: column(20), 60 s");
@@ -997,6 +1036,7 @@ static void stacks_section(void) {
     set_cell(r, 1, "%s", pile_text(line, pile, &settled));
     set_cell(r, 2, "%s", settled ? "settled (reported)" : "not settled (reported)");
     set_cell(r, 5, "%s", "(the column left: Box2D sleeps by default)");
+    round_piles(t, quick ? 500 : pile);
 
     if (!quick) {
         progress("stacks: pile(10000), 10 s");

@@ -50,6 +50,9 @@ run_peers() {
     run build/bench/bench_chipmunk --scene pile --size 2000 --steps 4200
     run build/bench/bench_box2d --variant box2d-nosleep --scene pile --size 2000 --steps 4200
     run build/bench/bench_box2d --variant box2d --scene pile --size 2000 --steps 4200
+    run build/bench/bench_chipmunk --scene circlepile,capsulepile --size 2000 --steps 4200
+    run build/bench/bench_box2d --variant box2d-nosleep --scene circlepile --size 2000 --steps 4200
+    run build/bench/bench_box2d --variant box2d --scene circlepile --size 2000 --steps 4200
     run build/bench/bench_chipmunk --scene pile --size 10000
     run build/bench/bench_box2d --variant box2d-discrete --scene pile --size 10000
     echo "# peers done" >>"$peers"

@@ -242,35 +242,64 @@ static bool cores_overlap(const core_t *a, const core_t *b, double sat, const cl
     return c->distance_squared == 0.0;
 }
 
+/* Two circles: the line of their centres, as the general search below finds
+ * it (the same numbers) without its loops: the pile of circles' common case. */
+static manifold_t circles_manifold(const core_t *a, const core_t *b, double margin,
+                                   double *separation) {
+    closest_t c = {vec_get_length_squared(vec_subtract(b->v[0], a->v[0])),
+                   {a->v[0], b->v[0]}, {-1, -1}, {0, 0}};
+    *separation = sqrt(c.distance_squared) - (a->radius + b->radius);
+    return *separation > margin ? no_manifold(VEC_ZERO) : vertex_manifold(a, b, &c, margin);
+}
+
+/* The manifold of two cores that do not overlap, from their nearest
+ * features: a face when a vertex lies nearest an edge's interior (which
+ * face, between two segments, by the faces' separations as for overlapping
+ * cores, so that two nearly parallel capsules keep one reference while
+ * their nearest vertex swaps sides), else the line between two vertices. */
+static manifold_t apart_manifold(const core_t *a, const core_t *b, const closest_t *c,
+                                 best_face_t face_a, best_face_t face_b, double margin) {
+    vector_t d = vec_subtract(c->p[1], c->p[0]);
+    if ((c->edge[0] >= 0 || c->edge[1] >= 0) && a->count == 2 && b->count == 2) {
+        bool flip = face_b.separation > face_a.separation + REFERENCE_TOLERANCE;
+        return flip ? face_manifold(b, face_b.face, a, true, margin)
+                    : face_manifold(a, face_a.face, b, false, margin);
+    }
+    if (c->edge[0] >= 0) return face_manifold(a, facing(a, c->edge[0], d), b, false, margin);
+    if (c->edge[1] >= 0)
+        return face_manifold(b, facing(b, c->edge[1], vec_negate(d)), a, true, margin);
+    return vertex_manifold(a, b, c, margin);
+}
+
+/* Any two cores: overlapping, on the face of least overlap; apart, from
+ * their nearest features. */
+static manifold_t cores_manifold(const core_t *a, const core_t *b, double margin,
+                                 double *separation) {
+    double radii = a->radius + b->radius;
+    best_face_t face_a = best_face(a, b), face_b = best_face(b, a);
+    closest_t c = {INFINITY, {VEC_ZERO, VEC_ZERO}, {-1, -1}, {-1, -1}};
+    vertices_against(a, b, 0, &c);
+    vertices_against(b, a, 1, &c);
+    if (a->faces + b->faces > 0 &&
+        cores_overlap(a, b, max_of(face_a.separation, face_b.separation), &c)) {
+        bool flip = face_b.separation > face_a.separation + REFERENCE_TOLERANCE;
+        *separation = (flip ? face_b.separation : face_a.separation) - radii;
+        return flip ? face_manifold(b, face_b.face, a, true, margin)
+                    : face_manifold(a, face_a.face, b, false, margin);
+    }
+    *separation = sqrt(c.distance_squared) - radii;
+    return *separation > margin ? no_manifold(VEC_ZERO)
+                                : apart_manifold(a, b, &c, face_a, face_b, margin);
+}
+
 manifold_t round_manifold_collide(const body_t *body_a, const body_t *body_b, double margin,
                                   manifold_features_t *features, double *separation) {
     core_t a, b;
     core_of(body_a, &a);
     core_of(body_b, &b);
-    double radii = a.radius + b.radius;
-    best_face_t face_a = best_face(&a, &b), face_b = best_face(&b, &a);
-    closest_t c = {INFINITY, {VEC_ZERO, VEC_ZERO}, {-1, -1}, {-1, -1}};
-    vertices_against(&a, &b, 0, &c);
-    vertices_against(&b, &a, 1, &c);
-    manifold_t manifold;
-    if (a.faces + b.faces > 0 && cores_overlap(&a, &b, max_of(face_a.separation, face_b.separation), &c)) {
-        bool flip = face_b.separation > face_a.separation + REFERENCE_TOLERANCE;
-        *separation = (flip ? face_b.separation : face_a.separation) - radii;
-        manifold = flip ? face_manifold(&b, face_b.face, &a, true, margin)
-                        : face_manifold(&a, face_a.face, &b, false, margin);
-    } else {
-        *separation = sqrt(c.distance_squared) - radii;
-        vector_t d = vec_subtract(c.p[1], c.p[0]);
-        if (*separation > margin) {
-            manifold = no_manifold(VEC_ZERO);
-        } else if (c.edge[0] >= 0) {
-            manifold = face_manifold(&a, facing(&a, c.edge[0], d), &b, false, margin);
-        } else if (c.edge[1] >= 0) {
-            manifold = face_manifold(&b, facing(&b, c.edge[1], vec_negate(d)), &a, true, margin);
-        } else {
-            manifold = vertex_manifold(&a, &b, &c, margin);
-        }
-    }
+    manifold_t manifold = a.count == 1 && b.count == 1
+                              ? circles_manifold(&a, &b, margin, separation)
+                              : cores_manifold(&a, &b, margin, separation);
     *features = (manifold_features_t){.point_count = manifold.point_count};
     for (int i = 0; i < manifold.point_count; i++) features->ids[i] = manifold.points[i].id;
     return manifold;

@@ -175,7 +175,7 @@ static void place_parts(body_t *body) {
         body_mark_changed(part); /* before: its box there is needed */
         part->angle = body->angle;
         part->centroid = body_to_world(body, part->segment->offset);
-        part->world_valid = false;
+        part->world_valid = WORLD_STALE;
     }
 }
 
@@ -205,8 +205,20 @@ static void require_still(const body_t *body, bool moving, const char *what,
     }
 }
 
+void body_update_pose(body_t *body) {
+    if (body->world_valid != WORLD_STALE) return;
+    if (body->kind != BODY_SHAPE_CIRCLE && body->kind != BODY_SHAPE_CAPSULE) {
+        body_update_world(body);
+        return;
+    }
+    body->rotation_cos = cos(body->angle);
+    body->rotation_sin = sin(body->angle);
+    body->bounds = body_round_bounds(body);
+    body->world_valid = WORLD_POSE;
+}
+
 void body_update_world(body_t *body) {
-    if (body->world_valid) return;
+    if (body->world_valid == WORLD_FULL) return;
     body->rotation_cos = cos(body->angle);
     body->rotation_sin = sin(body->angle);
     aabb_t bounds = {{INFINITY, INFINITY}, {-INFINITY, -INFINITY}};
@@ -221,7 +233,7 @@ void body_update_world(body_t *body) {
     }
     bool round = body->kind == BODY_SHAPE_CIRCLE || body->kind == BODY_SHAPE_CAPSULE;
     body->bounds = round ? body_round_bounds(body) : bounds;
-    body->world_valid = true;
+    body->world_valid = WORLD_FULL;
 }
 
 list_t *body_get_shape(body_t *body) {

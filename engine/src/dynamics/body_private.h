@@ -56,7 +56,9 @@ struct body {
     vector_t velocity;
     double angular_velocity;
     aabb_t bounds;
-    bool world_valid;
+    /* How much of the world shape is up to date with the pose: WORLD_STALE
+     * (a pose change sets it false), WORLD_POSE or WORLD_FULL (below). */
+    uint8_t world_valid;
     bool removed;
     /* Sleeping (sleep.c): asleep bodies are left out of the step; the
      * bodies of one sleeping island are linked in a circle by sleep_next
@@ -250,8 +252,19 @@ static inline bool body_is_movable(const body_t *body) {
     return body->inverse_mass > 0.0 || body->inverse_inertia > 0.0;
 }
 
+/* The levels of body->world_valid: nothing; the rotation's cosine and sine
+ * and the bounds (a polygon's world vertices and normals with them); those
+ * and a round body's world outline. */
+enum { WORLD_STALE = 0, WORLD_POSE = 1, WORLD_FULL = 2 };
+
 /* Recomputes the world vertices, normals and bounds if the pose changed. */
 void body_update_world(body_t *body);
+
+/* Recomputes what a step reads if the pose changed: the rotation, the
+ * bounds, a polygon's world vertices and normals. A round body's outline
+ * (its world vertices and normals) waits for body_update_world: contacts
+ * use its core and radius. */
+void body_update_pose(body_t *body);
 
 /* What a step starts from and the integrator clears, kept by whoever
  * integrates so that a step whose result does not fit a double can be

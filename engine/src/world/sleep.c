@@ -197,7 +197,7 @@ static void rebuild_index(sleep_t *sleep, body_t **bodies, size_t count, size_t 
     for (size_t i = 0; i < count; i++) {
         body_t *body = bodies[i];
         if (!body->asleep) continue;
-        body_update_world(body);
+        body_update_pose(body);
         sleep->entries[sleep->count++] = (struct sleep_entry){body->bounds.min.x, body};
         sleep->widest = fmax(sleep->widest, body->bounds.max.x - body->bounds.min.x);
     }
@@ -250,7 +250,7 @@ static double step_travel(const body_t *body, double dt, vector_t gravity) {
 
 void sleep_wake_changed(const sleep_t *sleep, body_t *body, double dt, vector_t gravity,
                         double margin) {
-    body_update_world(body);
+    body_update_pose(body);
     double grow = step_travel(body, dt, gravity) + margin;
     wake_within(sleep, grown(body->changed_bounds, grow));
     wake_within(sleep, grown(body->bounds, grow));
@@ -261,7 +261,7 @@ void sleep_wake_ahead(const sleep_t *sleep, body_t *body, double dt, vector_t gr
     bool moving = body->velocity.x != 0.0 || body->velocity.y != 0.0 ||
                   body->angular_velocity != 0.0;
     if (body->asleep || body->removed || !moving || body->sleep_time != 0.0) return;
-    body_update_world(body);
+    body_update_pose(body);
     wake_within(sleep, grown(body->bounds, step_travel(body, dt, gravity) + margin));
 }
 

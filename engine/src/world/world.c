@@ -113,7 +113,7 @@ WORLD_INLINE bool load_body(world_t *world, body_t *body, const integrator_motio
                       double dt) {
     body->solver_index = (uint32_t)i;
     body->changed = false; /* world_wake_changed has seen it */
-    body_update_world(body);
+    body_update_pose(body);
     solver_state_t *state = &world->states[i];
     solver_velocity_t *velocity = &world->velocities[i];
     state->v_start = body->velocity;
