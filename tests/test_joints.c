@@ -719,7 +719,8 @@ static void bad_joint_blocks_name_their_place(void) {
         {"contacts on\nbody a { circle 1 }\njoint weld world 0 { hinge 1 }\n",
          "t.scene:3:22: expected a joint line"},
         {"contacts on\nbody a { circle 1 }\njoint weld world 0 { frequency 1; frequency 2 }\n",
-         "t.scene:3:35: expected one frequency"},
+         "t.scene:3:35: expected one frequency line per joint block, found a second (the first "
+         "at line 3)"},
         {"contacts on\nbody a { circle 1 }\njoint prismatic world 0 { axis 0 0 }\n",
          "t.scene:3:1: expected a non-zero axis"},
     };

@@ -50,6 +50,19 @@ static bool read_type(parser_t *p, joint_type_t *type) {
                           "motor)");
 }
 
+/* A field may be given once in a block; the message names the block, as
+ * a joint's fields are not statements of the file. */
+static bool first_in_block(parser_t *p, sf_where_t *seen, const char *field, sf_where_t here) {
+    if (seen->line != 0) {
+        return sf_fail(p->lexer, here,
+                       "expected one %s line per joint block, found a second (the first at "
+                       "line %zu)",
+                       field, seen->line);
+    }
+    *seen = here;
+    return true;
+}
+
 /* One line: a field's name and its value. */
 static bool parse_joint_line(parser_t *p, sf_joint_t *joint, sf_where_t *seen) {
     sf_where_t here = p->token.where;
@@ -57,7 +70,7 @@ static bool parse_joint_line(parser_t *p, sf_joint_t *joint, sf_where_t *seen) {
         const sf_joint_field_t *field = &SF_JOINT_FIELDS[i];
         if (!sf_token_is(&p->token, field->name)) continue;
         next(p);
-        if (!sf_first_time(p, &seen[i], field->name, here)) return false;
+        if (!first_in_block(p, &seen[i], field->name, here)) return false;
         char *at = (char *)&joint->def + field->offset;
         quantity_t value = STATE_VALUE;
         value.what = field->name;
