@@ -310,7 +310,8 @@ static bool same_def(const joint_def_t *d, const joint_def_t *e) {
            d->max_motor_force == e->max_motor_force && same_vector(d->target, e->target) &&
            d->max_force == e->max_force && same_vector(d->linear_offset, e->linear_offset) &&
            d->angular_offset == e->angular_offset && d->max_torque == e->max_torque &&
-           d->correction_factor == e->correction_factor;
+           d->correction_factor == e->correction_factor &&
+           d->collide_connected == e->collide_connected;
 }
 
 /* The joints, in order, with the same definitions and bodies by index

@@ -421,6 +421,35 @@ static void weld_holds_a_beam(void) {
     scene_free(scene);
 }
 
+/* Two 1 m boxes overlapping by 0.2 m, pinned at the middle of their
+ * overlap, without gravity, and two more overlapping the same way that no
+ * joint joins: by default (collide_connected false) the pinned pair makes
+ * no contact and stays exactly where it was while the other pair still
+ * collides; with collide_connected on, the pinned pair makes its contact
+ * too. */
+static void joined_bodies_collide_only_when_asked(void) {
+    for (int connected = 0; connected <= 1; connected++) {
+        scene_t *scene = scene_init();
+        scene_set_contacts_enabled(scene, true);
+        body_t *a = add_box(scene, (vector_t){0.0, 0.0}, 0.5, 0.5, 1.0);
+        body_t *b = add_box(scene, (vector_t){0.8, 0.0}, 0.5, 0.5, 1.0);
+        body_t *c = add_box(scene, (vector_t){5.0, 0.0}, 0.5, 0.5, 1.0);
+        add_box(scene, (vector_t){5.8, 0.0}, 0.5, 0.5, 1.0);
+        joint_def_t def = joint_def_revolute(a, b, (vector_t){0.4, 0.0});
+        CHECK(!def.collide_connected);
+        def.collide_connected = connected == 1;
+        joint_create(scene, &def);
+        scene_tick(scene, 1.0 / 60.0);
+        CHECK(scene_body_contact_count(scene, a) == (size_t)connected);
+        CHECK(scene_body_contact_count(scene, c) == 1);
+        if (connected == 0) {
+            CHECK(body_get_centroid(a).x == 0.0 && body_get_centroid(a).y == 0.0);
+            CHECK(body_get_rotation(a) == 0.0);
+        }
+        scene_free(scene);
+    }
+}
+
 /* A 2 kg box on a vertical slider from the world, limits [-1, 0]: it
  * falls to the lower limit and rests there (to 1 mm) without moving
  * sideways or turning; then a motor at 1 m/s with 100 N (more than its
@@ -652,7 +681,8 @@ static const char JOINT_FILE[] =
     "joint distance 1 2 { anchor2 0.1 0; length 1.5; min_length 0.5; max_length 2;"
     " frequency 3; damping_ratio 0.2 }\n"
     "joint mouse world 3 { target 3.5 1.5; max_force 300; frequency 4 }\n"
-    "joint weld 0 3 { anchor1 3 1.5; anchor2 0 0.5; reference_angle 0.25; frequency 12 }\n"
+    "joint weld 0 3 { anchor1 3 1.5; anchor2 0 0.5; reference_angle 0.25; frequency 12;"
+    " collide_connected on }\n"
     "joint prismatic 0 2 { axis 0 1; anchor1 1 3; limit on; lower_translation -1;"
     " upper_translation 0.5; motor on; motor_speed -0.1; max_motor_force 1/3 }\n"
     "joint wheel 2 3 { axis 0.6 0.8; frequency 5; damping_ratio 0.7; motor on;"
@@ -747,6 +777,7 @@ TEST_SUITE(joints, TEST_CASE(pendulum_period_5_degrees), TEST_CASE(pendulum_peri
            TEST_CASE(hanging_mass_force_is_weight), TEST_CASE(limits_stop_at_their_angle),
            TEST_CASE(removing_a_body_removes_its_joints),
            TEST_CASE(wheel_rolls_at_motor_speed), TEST_CASE(weld_holds_a_beam),
+           TEST_CASE(joined_bodies_collide_only_when_asked),
            TEST_CASE(prismatic_slides_stops_and_drives), TEST_CASE(mouse_pulls_within_its_force),
            TEST_CASE(motor_joint_reaches_its_offset), TEST_CASE(rope_holds_at_its_length),
            TEST_CASE(bad_definitions_stop_with_a_message),

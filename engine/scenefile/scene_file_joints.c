@@ -35,6 +35,7 @@ const sf_joint_field_t SF_JOINT_FIELDS[] = {
     FIELD(angular_offset, SF_FIELD_NUMBER),
     FIELD(max_torque, SF_FIELD_NUMBER),
     FIELD(correction_factor, SF_FIELD_NUMBER),
+    {"collide_connected", SF_FIELD_FLAG, offsetof(joint_def_t, collide_connected)},
 };
 const size_t SF_JOINT_FIELD_COUNT = sizeof SF_JOINT_FIELDS / sizeof SF_JOINT_FIELDS[0];
 
@@ -87,7 +88,8 @@ static bool parse_joint_line(parser_t *p, sf_joint_t *joint, sf_where_t *seen) {
                           "min_length, max_length, frequency, damping_ratio, limit, lower_angle, "
                           "upper_angle, lower_translation, upper_translation, motor, "
                           "motor_speed, max_motor_torque, max_motor_force, target, max_force, "
-                          "linear_offset, angular_offset, max_torque, correction_factor) or '}'");
+                          "linear_offset, angular_offset, max_torque, correction_factor, "
+                          "collide_connected) or '}'");
 }
 
 bool sf_parse_joint(parser_t *p, sf_where_t here) {
