@@ -647,7 +647,30 @@ static void create_contacts_off(void *unused) {
     joint_create(bad_scene, &def);
 }
 
+static void state_negative_step(void *unused) {
+    (void)unused;
+    bad_setup();
+    joint_def_t def = joint_def_revolute(bad_a, bad_b, VEC_ZERO);
+    joint_state_t state = joint_get_state(joint_create(bad_scene, &def));
+    state.step_length = -1.0;
+    joint_set_state(scene_get_joint(bad_scene, 0), state);
+}
+
+static void state_nan_impulse(void *unused) {
+    (void)unused;
+    bad_setup();
+    joint_def_t def = joint_def_revolute(bad_a, bad_b, VEC_ZERO);
+    joint_t *joint = joint_create(bad_scene, &def);
+    joint_state_t state = joint_get_state(joint);
+    state.motor_impulse = NAN;
+    joint_set_state(joint, state);
+}
+
 static void bad_definitions_stop_with_a_message(void) {
+    CHECK_DIES(state_negative_step, NULL, "engine error in joint_set_state:",
+               "step_length must be finite and >= 0 (got -1)");
+    CHECK_DIES(state_nan_impulse, NULL, "engine error in joint_set_state:",
+               "state.motor_impulse is not finite");
     CHECK_DIES(create_with_itself, NULL, "engine error in joint_create:",
                "body1 and body2 are the same body");
     CHECK_DIES(create_across_scenes, NULL, "engine error in joint_create:",
@@ -728,6 +751,38 @@ static void every_joint_round_trips_in_a_scene_file(void) {
     scene_file_free(file);
 }
 
+/* A scene of every joint type, stepped 70 steps of 1/60 s, saved and
+ * loaded again: the copy goes on as the original does for 120 steps, every
+ * body the same to the bit, since the save carries each joint's
+ * accumulated impulses (the warm start of its next step). */
+static void saved_joints_continue_bit_for_bit(void) {
+    scene_file_error_t error;
+    scene_file_t *file = scene_file_parse(JOINT_FILE, strlen(JOINT_FILE), "j.scene", &error);
+    CHECK(file != NULL);
+    if (file == NULL) return;
+    scene_t *scene = scene_file_get_scene(file);
+    for (int step = 0; step < 70; step++) scene_tick(scene, 1.0 / 60.0);
+    size_t length;
+    char *text = scene_file_write(file, &length, NULL);
+    CHECK(strstr(text, "impulses") != NULL);
+    scene_file_t *again = scene_file_parse(text, length, "j.scene", &error);
+    free(text);
+    CHECK(again != NULL);
+    if (again == NULL) {
+        scene_file_free(file);
+        return;
+    }
+    char why[256] = "";
+    for (int step = 0; step < 120 && why[0] == '\0'; step++) {
+        scene_tick(scene, 1.0 / 60.0);
+        scene_tick(scene_file_get_scene(again), 1.0 / 60.0);
+        CHECK(scene_file_same(file, again, why, sizeof why));
+    }
+    if (why[0] != '\0') printf("    %s\n", why);
+    scene_file_free(again);
+    scene_file_free(file);
+}
+
 /* Each bad joint block is refused with FILE:LINE:COLUMN and a message. */
 static void bad_joint_blocks_name_their_place(void) {
     static const struct {
@@ -751,6 +806,12 @@ static void bad_joint_blocks_name_their_place(void) {
         {"contacts on\nbody a { circle 1 }\njoint weld world 0 { frequency 1; frequency 2 }\n",
          "t.scene:3:35: expected one frequency line per joint block, found a second (the first "
          "at line 3)"},
+        {"contacts on\nbody a { circle 1 }\njoint weld world 0 { impulses 1 2 3 4 5 6 7 8 -1 }\n",
+         "t.scene:3:47: expected the length of the step the impulses are of (s), a number >= 0"},
+        {"contacts on\nbody a { circle 1 }\njoint weld world 0 {\n impulses 0 0 0 0 0 0 0 0 0\n"
+         " impulses 0 0 0 0 0 0 0 0 0\n}\n",
+         "t.scene:5:2: expected one impulses line per joint block, found a second (the first "
+         "at line 4)"},
         {"contacts on\nbody a { circle 1 }\njoint prismatic world 0 { axis 0 0 }\n",
          "t.scene:3:1: expected a non-zero axis"},
     };
@@ -782,5 +843,6 @@ TEST_SUITE(joints, TEST_CASE(pendulum_period_5_degrees), TEST_CASE(pendulum_peri
            TEST_CASE(motor_joint_reaches_its_offset), TEST_CASE(rope_holds_at_its_length),
            TEST_CASE(bad_definitions_stop_with_a_message),
            TEST_CASE(every_joint_round_trips_in_a_scene_file),
+           TEST_CASE(saved_joints_continue_bit_for_bit),
            TEST_CASE(bad_joint_blocks_name_their_place),
            TEST_CASE(joints_give_the_same_bits_on_any_workers));
