@@ -310,19 +310,23 @@ static bool same_def(const joint_def_t *d, const joint_def_t *e) {
            d->max_motor_force == e->max_motor_force && same_vector(d->target, e->target) &&
            d->max_force == e->max_force && same_vector(d->linear_offset, e->linear_offset) &&
            d->angular_offset == e->angular_offset && d->max_torque == e->max_torque &&
-           d->correction_factor == e->correction_factor;
+           d->correction_factor == e->correction_factor &&
+           d->collide_connected == e->collide_connected;
 }
 
-/* The joints, in order, with the same definitions and bodies by index
- * (those naming a body marked removed are not written: left out). */
+/* The joints, in order, with the same definitions, bodies by index and
+ * impulses to the bit (those naming a body marked removed are not
+ * written: left out). */
 static bool same_joints(scene_t *x, scene_t *y, char *why, size_t size) {
     size_t j = 0;
     for (size_t i = 0; i < scene_joints(x); i++) {
         joint_def_t d = joint_get_def(scene_get_joint(x, i));
         if (body_is_removed(d.body2) || (d.body1 != NULL && body_is_removed(d.body1))) continue;
         if (j == scene_joints(y)) return differ(why, size, "joint %zu is missing", i);
+        joint_state_t s = joint_get_state(scene_get_joint(x, i));
+        joint_state_t t = joint_get_state(scene_get_joint(y, j));
         joint_def_t e = joint_get_def(scene_get_joint(y, j++));
-        if (!same_def(&d, &e) || live_index(x, d.body1) != live_index(y, e.body1) ||
+        if (!same_def(&d, &e) || memcmp(&s, &t, sizeof s) != 0 || live_index(x, d.body1) != live_index(y, e.body1) ||
             live_index(x, d.body2) != live_index(y, e.body2))
             return differ(why, size, "joint %zu differs", i);
     }

@@ -35,6 +35,7 @@ const sf_joint_field_t SF_JOINT_FIELDS[] = {
     FIELD(angular_offset, SF_FIELD_NUMBER),
     FIELD(max_torque, SF_FIELD_NUMBER),
     FIELD(correction_factor, SF_FIELD_NUMBER),
+    {"collide_connected", SF_FIELD_FLAG, offsetof(joint_def_t, collide_connected)},
 };
 const size_t SF_JOINT_FIELD_COUNT = sizeof SF_JOINT_FIELDS / sizeof SF_JOINT_FIELDS[0];
 
@@ -50,14 +51,50 @@ static bool read_type(parser_t *p, joint_type_t *type) {
                           "motor)");
 }
 
-/* One line: a field's name and its value. */
+/* A field may be given once in a block; the message names the block, as
+ * a joint's fields are not statements of the file. */
+static bool first_in_block(parser_t *p, sf_where_t *seen, const char *field, sf_where_t here) {
+    if (seen->line != 0) {
+        return sf_fail(p->lexer, here,
+                       "expected one %s line per joint block, found a second (the first at "
+                       "line %zu)",
+                       field, seen->line);
+    }
+    *seen = here;
+    return true;
+}
+
+/* `impulses PX PY ANGLE AXIAL SPRING MOTOR LOWER UPPER STEP`: the
+ * joint's state (joint_state_t), read exactly. */
+static bool read_state(parser_t *p, joint_state_t *state) {
+    quantity_t value = STATE_VALUE, step = DURATION;
+    value.what = "an impulse";
+    step.what = "the length of the step the impulses are of (s)";
+    return sf_read_vector(p, &value, &state->point_impulse) &&
+           sf_read_quantity(p, &value, &state->angle_impulse) &&
+           sf_read_quantity(p, &value, &state->axial_impulse) &&
+           sf_read_quantity(p, &value, &state->spring_impulse) &&
+           sf_read_quantity(p, &value, &state->motor_impulse) &&
+           sf_read_quantity(p, &value, &state->lower_impulse) &&
+           sf_read_quantity(p, &value, &state->upper_impulse) &&
+           sf_read_quantity(p, &step, &state->step_length);
+}
+
+/* One line: a field's name and its value (seen[SF_JOINT_FIELD_COUNT] is
+ * the impulses line's). */
 static bool parse_joint_line(parser_t *p, sf_joint_t *joint, sf_where_t *seen) {
     sf_where_t here = p->token.where;
+    if (sf_token_is(&p->token, "impulses")) {
+        next(p);
+        joint->has_state = true;
+        return first_in_block(p, &seen[SF_JOINT_FIELD_COUNT], "impulses", here) &&
+               read_state(p, &joint->state);
+    }
     for (size_t i = 0; i < SF_JOINT_FIELD_COUNT; i++) {
         const sf_joint_field_t *field = &SF_JOINT_FIELDS[i];
         if (!sf_token_is(&p->token, field->name)) continue;
         next(p);
-        if (!sf_first_time(p, &seen[i], field->name, here)) return false;
+        if (!first_in_block(p, &seen[i], field->name, here)) return false;
         char *at = (char *)&joint->def + field->offset;
         quantity_t value = STATE_VALUE;
         value.what = field->name;
@@ -74,7 +111,8 @@ static bool parse_joint_line(parser_t *p, sf_joint_t *joint, sf_where_t *seen) {
                           "min_length, max_length, frequency, damping_ratio, limit, lower_angle, "
                           "upper_angle, lower_translation, upper_translation, motor, "
                           "motor_speed, max_motor_torque, max_motor_force, target, max_force, "
-                          "linear_offset, angular_offset, max_torque, correction_factor) or '}'");
+                          "linear_offset, angular_offset, max_torque, correction_factor, "
+                          "collide_connected, impulses) or '}'");
 }
 
 bool sf_parse_joint(parser_t *p, sf_where_t here) {
@@ -101,7 +139,7 @@ bool sf_parse_joint(parser_t *p, sf_where_t here) {
     while (p->token.kind == TOKEN_NEWLINE) next(p);
     if (p->token.kind != TOKEN_OPEN) return sf_expected(p, "'{' to open the joint");
     next(p);
-    sf_where_t seen[sizeof SF_JOINT_FIELDS / sizeof SF_JOINT_FIELDS[0]] = {{0, 0}};
+    sf_where_t seen[sizeof SF_JOINT_FIELDS / sizeof SF_JOINT_FIELDS[0] + 1] = {{0, 0}};
     for (;;) {
         while (at_separator(p)) next(p);
         if (p->token.kind == TOKEN_CLOSE) break;
@@ -187,6 +225,7 @@ void sf_make_joints(scene_file_t *file) {
         joint_def_t def = j->def;
         def.body1 = j->body1 == SF_WORLD ? NULL : file->records[j->body1]->body;
         def.body2 = file->records[j->body2]->body;
-        joint_create(file->scene, &def);
+        joint_t *joint = joint_create(file->scene, &def);
+        if (j->has_state) joint_set_state(joint, j->state);
     }
 }

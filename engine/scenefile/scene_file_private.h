@@ -254,12 +254,15 @@ typedef struct {
 
 /* A `joint TYPE A B { ... }` block: a joint (jostle/joint.h) between the
  * bodies the file makes A-th and B-th (A SF_WORLD: the world), its
- * definition with the bodies left NULL until built. */
+ * definition with the bodies left NULL until built, and its impulses
+ * (scene_state.h) when the block gives them. */
 #define SF_WORLD SIZE_MAX
 typedef struct {
     sf_where_t where;
     size_t body1, body2;
     joint_def_t def;
+    bool has_state;
+    joint_state_t state;
 } sf_joint_t;
 
 /* The lines of a joint block, one per field of joint_def_t a file may

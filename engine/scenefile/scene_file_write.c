@@ -524,6 +524,23 @@ static void put_contacts(out_t *out, scene_file_t *file, const bodies_t *bodies)
     free(contacts);
 }
 
+/* The joint's impulses (scene_state.h), unless all are 0 (a joint not
+ * solved yet). */
+static void put_joint_state(out_t *out, joint_state_t state) {
+    const joint_state_t zero = {{0.0, 0.0}, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    if (memcmp(&state, &zero, sizeof state) == 0) return;
+    put(out, "    impulses");
+    put_vector(out, state.point_impulse);
+    put_number(out, state.angle_impulse);
+    put_number(out, state.axial_impulse);
+    put_number(out, state.spring_impulse);
+    put_number(out, state.motor_impulse);
+    put_number(out, state.lower_impulse);
+    put_number(out, state.upper_impulse);
+    put_number(out, state.step_length);
+    put(out, "\n");
+}
+
 /* The joints of the scene, their bodies by their places in the file, each
  * field that differs from the type's default (to the bit) on a line. */
 static void put_joint(out_t *out, const joint_t *joint, const bodies_t *bodies) {
@@ -557,6 +574,7 @@ static void put_joint(out_t *out, const joint_t *joint, const bodies_t *bodies) 
         }
         put(out, "\n");
     }
+    put_joint_state(out, joint_get_state(joint));
     put(out, "}\n");
 }
 

@@ -35,10 +35,10 @@
  *
  * Joints act only while world contacts are on (scene_set_contacts_enabled):
  * creating one in a scene whose contacts are off stops the program; turning
- * contacts off later keeps the joints but suspends them. Jointed bodies
- * still collide with each other: give them a common non-zero collision group
- * (body_set_collision_filter) when they overlap at the joint. Joined bodies
- * sleep and wake as one island.
+ * contacts off later keeps the joints but suspends them. Two bodies a joint
+ * joins make no contact with each other unless its collide_connected is
+ * set; each still collides with everything else its filter allows. Joined
+ * bodies sleep and wake as one island.
  *
  * Programmer errors stop with "engine error in FUNCTION: ...": a NULL scene,
  * definition or body2; body1 == body2; a body in no scene, marked removed or
@@ -130,13 +130,16 @@ typedef struct {
     /* motor joint */
     vector_t linear_offset;
     double angular_offset, max_torque, correction_factor;
+    /* Whether the two bodies still collide with each other (every type;
+     * default false: the world makes no contact between them). */
+    bool collide_connected;
 } joint_def_t;
 
 /* A definition of the type with the defaults: bodies NULL, anchors at the
  * centroids, axis (1, 0), length 1 with min and max lengths 1 (a rod),
  * frequency 0 but 5 Hz for the mouse joint, damping ratio 0.7, limits and
  * motor off, max forces and torques 0 but the mouse and motor joints' 1000
- * N and 1000 N m, correction factor 0.3. */
+ * N and 1000 N m, correction factor 0.3, collide_connected false. */
 joint_def_t joint_def_default(joint_type_t type);
 
 /* Definitions from world points at the bodies' current poses (body1 may be

@@ -7,7 +7,7 @@
  * phase of the island check, the lengths of the last two steps, and the
  * world's contact memory (last step's contacts, whose impulses warm-start
  * the next step's and whose features it reuses, with what the step before
- * left on the same points). A program that saves a scene and loads it into a new one
+ * left on the same points), and each joint's accumulated impulses. A program that saves a scene and loads it into a new one
  * (scene_file.h) reads these after a tick and hands them back before the
  * first tick of the new scene, which then continues bit for bit as the
  * saved one would have.
@@ -22,6 +22,7 @@
 #include <stddef.h>
 #include <stdint.h>
 #include "body.h"
+#include "joint.h"
 #include "scene.h"
 #include "vector.h"
 #include "export.h"
@@ -159,6 +160,26 @@ scene_contact_memory_t scene_get_contact_memory(scene_t *scene, size_t index);
  */
 void scene_restore_contact_memory(scene_t *scene, const scene_contact_memory_t *memories,
                                   size_t count);
+
+/* ---- Joint impulses ---------------------------------------------------------- */
+
+/* What a joint (joint.h) accumulated over the last step that solved it, and
+ * the next step starts from (warm starting, scaled by the ratio of the step
+ * lengths): the impulses (N s, N m s) of its point, angle, axial, spring,
+ * motor and limit rows (those its type does not use stay 0) and that
+ * step's length (s; 0 before any). joint_get_force and _torque read them. */
+typedef struct {
+    vector_t point_impulse;
+    double angle_impulse, axial_impulse, spring_impulse, motor_impulse;
+    double lower_impulse, upper_impulse;
+    double step_length;
+} joint_state_t;
+
+joint_state_t joint_get_state(const joint_t *joint);
+
+/* Sets them, between ticks, to continue a saved scene. Refused: a NULL
+ * joint, a value that is not finite, a negative step length. */
+void joint_set_state(joint_t *joint, joint_state_t state);
 
 JOSTLE_API_END
 

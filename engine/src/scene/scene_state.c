@@ -6,6 +6,7 @@
 #include "base/check.h"
 #include "base/memory.h"
 #include "scene/scene_private.h"
+#include "solver/joint_types.h"
 
 body_sleep_timer_t body_get_sleep_timer(body_t *body) {
     REQUIRE_NOT_NULL(body);
@@ -25,6 +26,34 @@ void body_set_sleep_timer(body_t *body, body_sleep_timer_t timer) {
     body->sleep_window = timer.window;
     body->sleep_anchor = timer.anchor;
     body->sleep_anchor_angle = timer.anchor_angle;
+}
+
+joint_state_t joint_get_state(const joint_t *joint) {
+    REQUIRE_NOT_NULL(joint);
+    return (joint_state_t){joint->point_impulse,  joint->angle_impulse, joint->axial_impulse,
+                           joint->spring_impulse, joint->motor_impulse, joint->lower_impulse,
+                           joint->upper_impulse,  joint->impulse_dt};
+}
+
+void joint_set_state(joint_t *joint, joint_state_t state) {
+    REQUIRE_NOT_NULL(joint);
+    REQUIRE_FINITE_VECTOR(state.point_impulse);
+    REQUIRE_FINITE(state.angle_impulse);
+    REQUIRE_FINITE(state.axial_impulse);
+    REQUIRE_FINITE(state.spring_impulse);
+    REQUIRE_FINITE(state.motor_impulse);
+    REQUIRE_FINITE(state.lower_impulse);
+    REQUIRE_FINITE(state.upper_impulse);
+    REQUIRE(isfinite(state.step_length) && state.step_length >= 0.0,
+            "step_length must be finite and >= 0 (got %g)", state.step_length);
+    joint->point_impulse = state.point_impulse;
+    joint->angle_impulse = state.angle_impulse;
+    joint->axial_impulse = state.axial_impulse;
+    joint->spring_impulse = state.spring_impulse;
+    joint->motor_impulse = state.motor_impulse;
+    joint->lower_impulse = state.lower_impulse;
+    joint->upper_impulse = state.upper_impulse;
+    joint->impulse_dt = state.step_length;
 }
 
 body_t *body_get_island_next(body_t *body) {

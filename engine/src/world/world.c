@@ -1,6 +1,7 @@
 #include "world/world.h"
 #include "world/world_types.h"
 #include <math.h>
+#include <stdlib.h>
 #include "base/memory.h"
 #include "base/scalar.h"
 #include "base/workers.h"
@@ -33,6 +34,8 @@ void world_free(world_t *world) {
     memory_free(world->sources);
     memory_free(world->old_contacts);
     memory_free(world->older_contacts);
+    memory_free(world->joined);
+    memory_free(world->kept_pairs);
     memory_free(world->old_sources);
     memory_free(world->gaps);
     memory_free(world->old_gaps);
@@ -287,6 +290,61 @@ static void update_sleep(world_t *world, body_t **bodies, size_t count, const wo
     sleep_wake_reached(&world->sleep, &step, all_bodies, all_count);
 }
 
+/* The index of the body among the step's bodies[0 .. count), or -1 when it
+ * is not one of them (the world, a sleeping body). */
+static int64_t step_index(const body_t *body, body_t *const *bodies, size_t count) {
+    if (body == NULL || body->solver_index >= count || bodies[body->solver_index] != body) {
+        return -1;
+    }
+    return body->solver_index;
+}
+
+static int compare_keys(const void *a, const void *b) {
+    uint64_t x = *(const uint64_t *)a, y = *(const uint64_t *)b;
+    return (x > y) - (x < y);
+}
+
+/* The keys of the step's body pairs that a joint joins without
+ * collide_connected (joint.h), sorted; returns how many. */
+static size_t joined_pairs(world_t *world, body_t *const *bodies, size_t count,
+                           const joint_step_t *joints) {
+    size_t n = 0;
+    for (size_t i = 0; i < joints->count; i++) {
+        const joint_def_t *def = &joints->joints[i]->def;
+        if (def->collide_connected) continue;
+        int64_t a = step_index(def->body1, bodies, count);
+        int64_t b = step_index(def->body2, bodies, count);
+        if (a < 0 || b < 0) continue;
+        uint64_t low = (uint64_t)(a < b ? a : b), high = (uint64_t)(a < b ? b : a);
+        memory_reserve((void **)&world->joined, &world->joined_capacity, n + 1,
+                       sizeof(uint64_t));
+        world->joined[n++] = low << 32 | high;
+    }
+    if (n > 1) qsort(world->joined, n, sizeof(uint64_t), compare_keys);
+    return n;
+}
+
+/* Drops from the broadphase's pairs those of bodies a joint joins (the
+ * one place the world decides which pairs collide beyond the filters);
+ * the order, grouped by body a, stays. Returns the pair count. */
+static size_t drop_joined_pairs(world_t *world, body_t *const *bodies, size_t count,
+                                const joint_step_t *joints, const broadphase_pair_t **pairs,
+                                size_t pair_count) {
+    size_t joined = joined_pairs(world, bodies, count, joints);
+    if (joined == 0) return pair_count;
+    memory_reserve((void **)&world->kept_pairs, &world->kept_capacity, pair_count,
+                   sizeof(broadphase_pair_t));
+    size_t kept = 0;
+    for (size_t i = 0; i < pair_count; i++) {
+        uint64_t key = (uint64_t)(*pairs)[i].a << 32 | (*pairs)[i].b;
+        if (bsearch(&key, world->joined, joined, sizeof(uint64_t), compare_keys) == NULL) {
+            world->kept_pairs[kept++] = (*pairs)[i];
+        }
+    }
+    *pairs = world->kept_pairs;
+    return kept;
+}
+
 /* The pipeline over bodies[0 .. count), which are all the scene's bodies
  * or, with sleeping, its awake ones. */
 static void run_pipeline(world_t *world, body_t **bodies, integrator_motion_t *motions,
@@ -304,6 +362,7 @@ static void run_pipeline(world_t *world, body_t **bodies, integrator_motion_t *m
     const broadphase_pair_t *pairs;
     size_t pair_count = broadphase_find_pairs(world->broadphase, world->proxies, count, &pairs,
                                               &stats->broadphase_tests);
+    pair_count = drop_joined_pairs(world, bodies, count, &step->joints, &pairs, pair_count);
     stage_clock_lap(clock, SCENE_STAGE_BROADPHASE);
     narrowphase_find_contacts(world, bodies, pairs, pair_count);
     impacts_take(world, step->dt, step->largest_polygon, step->restitution_threshold);

@@ -123,6 +123,14 @@ struct world {
      * older one. */
     uint64_t step_number;
 
+    /* The step's pairs of bodies a joint joins without collide_connected
+     * (smaller index in the high half, sorted), and the broadphase's pairs
+     * less those, when there are any. */
+    uint64_t *joined;
+    size_t joined_capacity;
+    broadphase_pair_t *kept_pairs;
+    size_t kept_capacity;
+
     /* Which static bodies lie flush (seams.h), found again when a static
      * body changes; with workers, each chunk of the loading says whether it
      * saw one change. */
