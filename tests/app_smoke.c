@@ -966,10 +966,9 @@ static void test_sleeping_bodies_drawn_dimmer(void) {
 /* Whether the file names a game that the player controls (the pegs board
  * takes no input: its keys stay the sandbox's). */
 /* Whether the file names a game that takes the player's keys: not the pegs
- * board nor the joint presets' rigs but the car's (app/games/). */
+ * board nor the double pendulum's plot but the car's (app/games/). */
 static bool is_scene_game(const char *path) {
-    static const char *const NO_INPUT[] = {"pegs",   "cradle",          "bridge",
-                                           "ragdoll", "double_pendulum", "crank"};
+    static const char *const NO_INPUT[] = {"pegs", "double_pendulum"};
     scene_file_error_t error;
     scene_file_t *file = scene_file_load(path, &error);
     bool game = file != NULL && scene_file_get_game(file)[0] != '\0';
