@@ -152,6 +152,18 @@ static bool is_joint_color(const unsigned char *p) {
            p[1] > 160;
 }
 
+/* The box of the joint tool's tests, pinned at (2, 8) 2.83 m from its
+ * centre: its pixels where it swings (x 0 to 4 m, its centre no lower than
+ * 8 - 2.83 = 5.17 m), near the floor, and the joint's pixels. */
+static void count_pinned_box(const image_t *image, const world_map_t *map, long *hanging,
+                             long *low, long *joint) {
+    *hanging = image_count(image, is_body_color, px_x(map, -1), px_y(map, 7), px_x(map, 5),
+                           px_y(map, 4.3));
+    *low = image_count(image, is_body_color, map->left, px_y(map, 2), map->right, px_y(map, 0));
+    *joint = image_count(image, is_joint_color, px_x(map, -1), px_y(map, 8.5), px_x(map, 5),
+                         px_y(map, 4.3));
+}
+
 /* The joint tool: a box clicked, then a point above it, hangs from that point
  * on a pin and swings below it, the pin drawn; D on the pin deletes the
  * joint and the box falls to the floor. */
@@ -176,14 +188,8 @@ static void test_joint_tool_pins_and_deletes(void) {
         world_map_t map;
         if (!run_script(name, script, flags, &run) || !load_shot(name, &image)) return;
         if (map_world(&image, &map)) {
-            /* Pinned 2.83 m from the box's centre: it swings between x = 0
-             * and 4 m, its centre no lower than 8 - 2.83 = 5.17 m. */
-            long hanging = image_count(&image, is_body_color, px_x(&map, -1), px_y(&map, 7),
-                                       px_x(&map, 5), px_y(&map, 4.3));
-            long low = image_count(&image, is_body_color, map.left, px_y(&map, 2), map.right,
-                                   px_y(&map, 0));
-            long joint = image_count(&image, is_joint_color, px_x(&map, -1), px_y(&map, 8.5),
-                                     px_x(&map, 5), px_y(&map, 4.3));
+            long hanging, low, joint;
+            count_pinned_box(&image, &map, &hanging, &low, &joint);
             if (!deleted) {
                 EXPECT(hanging > 60 && low == 0 && joint > 10,
                        "pinned: %ld body pixels where it hangs, %ld near the floor, %ld of the "
@@ -1239,12 +1245,8 @@ static void test_joint_tool_pin_is_saved_and_reloaded(void) {
     world_map_t map;
     if (!load_shot("joint_reloaded", &image)) return;
     if (map_world(&image, &map)) {
-        long hanging = image_count(&image, is_body_color, px_x(&map, -1), px_y(&map, 7),
-                                   px_x(&map, 5), px_y(&map, 4.3));
-        long low = image_count(&image, is_body_color, map.left, px_y(&map, 2), map.right,
-                               px_y(&map, 0));
-        long joint = image_count(&image, is_joint_color, px_x(&map, -1), px_y(&map, 8.5),
-                                 px_x(&map, 5), px_y(&map, 4.3));
+        long hanging, low, joint;
+        count_pinned_box(&image, &map, &hanging, &low, &joint);
         EXPECT(hanging > 60 && low == 0 && joint > 10,
                "reloaded: %ld body pixels where it hangs, %ld near the floor, %ld of the joint",
                hanging, low, joint);
