@@ -27,6 +27,7 @@
 #include <unistd.h>
 #include "app_run.h"
 #include "scene/samples.h"
+#include "jostle/joint.h"
 #include "jostle/scene_file.h"
 
 #ifndef APP_SMOKE_HAVE_SDL
@@ -151,6 +152,18 @@ static bool is_joint_color(const unsigned char *p) {
            p[1] > 160;
 }
 
+/* The box of the joint tool's tests, pinned at (2, 8) 2.83 m from its
+ * centre: its pixels where it swings (x 0 to 4 m, its centre no lower than
+ * 8 - 2.83 = 5.17 m), near the floor, and the joint's pixels. */
+static void count_pinned_box(const image_t *image, const world_map_t *map, long *hanging,
+                             long *low, long *joint) {
+    *hanging = image_count(image, is_body_color, px_x(map, -1), px_y(map, 7), px_x(map, 5),
+                           px_y(map, 4.3));
+    *low = image_count(image, is_body_color, map->left, px_y(map, 2), map->right, px_y(map, 0));
+    *joint = image_count(image, is_joint_color, px_x(map, -1), px_y(map, 8.5), px_x(map, 5),
+                         px_y(map, 4.3));
+}
+
 /* The joint tool: a box clicked, then a point above it, hangs from that point
  * on a pin and swings below it, the pin drawn; D on the pin deletes the
  * joint and the box falls to the floor. */
@@ -175,14 +188,8 @@ static void test_joint_tool_pins_and_deletes(void) {
         world_map_t map;
         if (!run_script(name, script, flags, &run) || !load_shot(name, &image)) return;
         if (map_world(&image, &map)) {
-            /* Pinned 2.83 m from the box's centre: it swings between x = 0
-             * and 4 m, its centre no lower than 8 - 2.83 = 5.17 m. */
-            long hanging = image_count(&image, is_body_color, px_x(&map, -1), px_y(&map, 7),
-                                       px_x(&map, 5), px_y(&map, 4.3));
-            long low = image_count(&image, is_body_color, map.left, px_y(&map, 2), map.right,
-                                   px_y(&map, 0));
-            long joint = image_count(&image, is_joint_color, px_x(&map, -1), px_y(&map, 8.5),
-                                     px_x(&map, 5), px_y(&map, 4.3));
+            long hanging, low, joint;
+            count_pinned_box(&image, &map, &hanging, &low, &joint);
             if (!deleted) {
                 EXPECT(hanging > 60 && low == 0 && joint > 10,
                        "pinned: %ld body pixels where it hangs, %ld near the floor, %ld of the "
@@ -966,10 +973,9 @@ static void test_sleeping_bodies_drawn_dimmer(void) {
 /* Whether the file names a game that the player controls (the pegs board
  * takes no input: its keys stay the sandbox's). */
 /* Whether the file names a game that takes the player's keys: not the pegs
- * board nor the joint presets' rigs but the car's (app/games/). */
+ * board nor the double pendulum's plot but the car's (app/games/). */
 static bool is_scene_game(const char *path) {
-    static const char *const NO_INPUT[] = {"pegs",   "cradle",          "bridge",
-                                           "ragdoll", "double_pendulum", "crank"};
+    static const char *const NO_INPUT[] = {"pegs", "double_pendulum"};
     scene_file_error_t error;
     scene_file_t *file = scene_file_load(path, &error);
     bool game = file != NULL && scene_file_get_game(file)[0] != '\0';
@@ -1020,10 +1026,14 @@ static void test_samples_open_from_the_command_line(void) {
                "%s: the SCENE panel does not say '%s'", path, position);
         long drawn = image_count(&image, is_drawn, 0, 0, layout_800().view.w, HEIGHT);
         EXPECT(drawn > 300, "%s: %ld pixels drawn in the view", path, drawn);
-        bool game = is_scene_game(path);
-        EXPECT(game == shows(&image, "GAME KEYS: Left/Right, A/D move", false),
-               "%s: %s game, and the side bar %s its keys", path,
-               game ? "a" : "no", game ? "does not show" : "shows");
+        bool game = is_scene_game(path), car = strstr(path, "joint_car") != NULL;
+        const char *keys = car ? "GAME KEYS: Left/Right, A/D drive" : "GAME KEYS: Left/Right, A/D move";
+        EXPECT(game == shows(&image, keys, false), "%s: %s game, and the side bar %s its keys",
+               path, game ? "a" : "no", game ? "does not show" : "shows");
+        /* The car has nothing to fire: its hint says what its keys do. */
+        EXPECT(!car || (shows(&image, "the wheels; Enter pauses", false) &&
+                        !shows(&image, "Space fires", false)),
+               "%s: the side bar does not say the car's keys drive its wheels", path);
         expect_text_inside(&image, name);
         image_free(&image);
     }
@@ -1195,6 +1205,53 @@ static void test_save_writes_scenes_that_load_back(void) {
                "no status line '... saved-3.scene (1 body, 54 static)'");
         image_free(&image);
     }
+}
+
+/* A pin made with the joint tool is saved by Ctrl+S: the file holds it
+ * (a revolute joint from the world at the clicked point (2, 8) to the box),
+ * and opened again the box hangs from it, swinging as it did, the pin
+ * drawn; without the joint it would lie on the floor. */
+static void test_joint_tool_pin_is_saved_and_reloaded(void) {
+    const char *dir = TMP_DIR "/joint_saves";
+    mkdir(dir, 0755);
+    char path[256];
+    snprintf(path, sizeof path, "%s/saved-1.scene", dir);
+    remove(path);
+    char script[1024];
+    snprintf(script, sizeof script,
+             "key b\nclick 4 6\nkey space\nkey w\nclick 4 6\nclick 2 8\nkey space\n"
+             "wait 30\nkey ctrl+s\nopen %s\nwait 3s\nmove px 5 5\n",
+             path);
+    const char *flags[] = {"--overlays", "none", "--elasticity", "0", "--save-dir", dir, NULL};
+    run_t run;
+    if (!run_script("joint_reloaded", script, flags, &run)) return;
+    scene_file_error_t error;
+    scene_file_t *file = scene_file_load(path, &error);
+    EXPECT(file != NULL, "the saved file does not load: %s", file ? "" : error.message);
+    if (file == NULL) return;
+    scene_t *scene = scene_file_get_scene(file);
+    EXPECT(scene_joints(scene) == 1, "the saved file holds %zu joints, not 1", scene_joints(scene));
+    if (scene_joints(scene) == 1) {
+        joint_t *joint = scene_get_joint(scene, 0);
+        joint_def_t def = joint_get_def(joint);
+        EXPECT(def.type == JOINT_REVOLUTE && def.body1 == NULL &&
+                   fabs(def.anchor1.x - 2.0) < 0.05 && fabs(def.anchor1.y - 8.0) < 0.05,
+               "the saved joint is a %s from %s at (%g, %g), not a pin from the world at (2, 8)",
+               joint_type_name(def.type), def.body1 == NULL ? "the world" : "a body",
+               def.anchor1.x, def.anchor1.y);
+    }
+    scene_file_free(file);
+    image_t image;
+    world_map_t map;
+    if (!load_shot("joint_reloaded", &image)) return;
+    if (map_world(&image, &map)) {
+        long hanging, low, joint;
+        count_pinned_box(&image, &map, &hanging, &low, &joint);
+        EXPECT(hanging > 60 && low == 0 && joint > 10,
+               "reloaded: %ld body pixels where it hangs, %ld near the floor, %ld of the joint",
+               hanging, low, joint);
+    }
+    image_free(&image);
 }
 
 /* Near a colour (the game bodies' colours go through rounding). */
@@ -1572,6 +1629,7 @@ static const app_test_t TESTS[] = {
      test_scene_keys_cycle_through_the_samples},
     {"app_smoke.bad_scene_files_are_refused", test_bad_scene_files_are_refused},
     {"app_smoke.save_writes_scenes_that_load_back", test_save_writes_scenes_that_load_back},
+    {"app_smoke.joint_tool_pin_is_saved_and_reloaded", test_joint_tool_pin_is_saved_and_reloaded},
     {"app_smoke.games_respond_to_their_keys", test_games_respond_to_their_keys},
     {"app_smoke.games_end_with_a_screen_over_the_field",
      test_games_end_with_a_screen_over_the_field},

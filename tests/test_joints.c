@@ -288,6 +288,35 @@ static void hanging_mass_force_is_weight(void) {
     scene_free(scene);
 }
 
+/* A static body as either end of a pin or a rod (not only the world):
+ * the ball hangs 1 m under it at rest, the joint holding its weight, in
+ * both orders. Static body2 once made the solver divide by its infinite
+ * mass ("velocity is not finite"). */
+static void hang_from_static(bool static_first, bool rod) {
+    scene_t *scene = joint_scene(INTEGRATOR_SEED);
+    body_t *post = body_init_circle((vector_t){0.0, 0.0}, 0.1, INFINITY, GREY);
+    scene_add_body(scene, post);
+    body_t *ball = add_ball(scene, (vector_t){0.0, -1.0}, 0.1, 2.0);
+    body_t *one = static_first ? post : ball, *two = static_first ? ball : post;
+    joint_def_t def = rod ? joint_def_distance(one, two, body_get_centroid(one),
+                                               body_get_centroid(two))
+                          : joint_def_revolute(one, two, VEC_ZERO);
+    joint_t *joint = joint_create(scene, &def);
+    for (int step = 0; step < 120; step++) scene_tick(scene, 1.0 / 60.0);
+    CHECK_VEC(body_get_centroid(ball), 0.0, -1.0, 1e-9);
+    CHECK_VEC(body_get_velocity(ball), 0.0, 0.0, 1e-9);
+    CHECK_VEC(body_get_centroid(post), 0.0, 0.0, 0.0);
+    CHECK_NEAR(vec_get_length(joint_get_force(joint)), 2.0 * G, 1e-9 * 2.0 * G);
+    scene_free(scene);
+}
+
+static void static_body_at_either_end(void) {
+    for (int order = 0; order < 2; order++) {
+        hang_from_static(order == 0, false);
+        hang_from_static(order == 0, true);
+    }
+}
+
 /* A 1 m bar on a revolute joint with limits [-30, 30] degrees, released
  * from the horizontal at 30 degrees above the lower limit's side: it
  * stops at the lower limit within 0.5 degrees and never passes it by
@@ -682,11 +711,35 @@ static void state_nan_impulse(void *unused) {
     joint_set_state(joint, state);
 }
 
+static void create_between_statics(void *unused) {
+    (void)unused;
+    bad_setup();
+    body_t *post1 = body_init_circle((vector_t){0.0, 2.0}, 0.1, INFINITY, GREY);
+    body_t *post2 = body_init_circle((vector_t){1.0, 2.0}, 0.1, INFINITY, GREY);
+    scene_add_body(bad_scene, post1);
+    scene_add_body(bad_scene, post2);
+    joint_def_t def = joint_def_revolute(post1, post2, (vector_t){0.5, 2.0});
+    joint_create(bad_scene, &def);
+}
+
+static void create_on_static_world(void *unused) {
+    (void)unused;
+    bad_setup();
+    body_t *post = body_init_circle((vector_t){0.0, 2.0}, 0.1, INFINITY, GREY);
+    scene_add_body(bad_scene, post);
+    joint_def_t def = joint_def_revolute(NULL, post, (vector_t){0.0, 2.0});
+    joint_create(bad_scene, &def);
+}
+
 static void bad_definitions_stop_with_a_message(void) {
     CHECK_DIES(state_negative_step, NULL, "engine error in joint_set_state:",
                "step_length must be finite and >= 0 (got -1)");
     CHECK_DIES(state_nan_impulse, NULL, "engine error in joint_set_state:",
                "state.motor_impulse is not finite");
+    CHECK_DIES(create_between_statics, NULL, "engine error in joint_create:",
+               "body1 and body2 are both static");
+    CHECK_DIES(create_on_static_world, NULL, "engine error in joint_create:",
+               "body1 and body2 are both static");
     CHECK_DIES(create_with_itself, NULL, "engine error in joint_create:",
                "body1 and body2 are the same body");
     CHECK_DIES(create_across_scenes, NULL, "engine error in joint_create:",
@@ -830,6 +883,8 @@ static void bad_joint_blocks_name_their_place(void) {
          "at line 4)"},
         {"contacts on\nbody a { circle 1 }\njoint prismatic world 0 { axis 0 0 }\n",
          "t.scene:3:1: expected a non-zero axis"},
+        {"contacts on\nbody a { circle 1; static }\njoint revolute world 0 { }\n",
+         "t.scene:3:1: expected a body that moves at one end, found two static ones"},
     };
     for (size_t i = 0; i < sizeof CASES / sizeof CASES[0]; i++) {
         scene_file_error_t error;
@@ -851,7 +906,8 @@ TEST_SUITE(joints, TEST_CASE(pendulum_period_5_degrees), TEST_CASE(pendulum_peri
            TEST_CASE(pendulum_period_170_degrees), TEST_CASE(hanging_chain_keeps_its_length),
            TEST_CASE(swinging_chain_keeps_its_length),
            TEST_CASE(heavy_load_on_light_chain), TEST_CASE(double_pendulum_conserves_energy),
-           TEST_CASE(hanging_mass_force_is_weight), TEST_CASE(limits_stop_at_their_angle),
+           TEST_CASE(hanging_mass_force_is_weight), TEST_CASE(static_body_at_either_end),
+           TEST_CASE(limits_stop_at_their_angle),
            TEST_CASE(removing_a_body_removes_its_joints),
            TEST_CASE(wheel_rolls_at_motor_speed), TEST_CASE(weld_holds_a_beam),
            TEST_CASE(joined_bodies_collide_only_when_asked),

@@ -447,13 +447,16 @@ static void ramp_ball_rolls_at_two_thirds_g_sin(scene_file_t *file) {
     CHECK(vec_get_length(body_get_velocity(ball)) < 0.05);
 }
 
-/* ---- The joint presets (their rigs: app/games/rigs.c) --------------------- */
+/* ---- The joint presets (their joints in the files; games: app/games/rigs.c) */
 
-/* Starts the file's rig; NULL (a failure) when it does not start. */
+/* Starts the file's game, NULL when it names none; a failure when it names
+ * one that does not start. */
 static game_t *start_rig(scene_file_t *file) {
     char error[256];
     game_t *rig = game_start(file, error, sizeof error);
-    if (rig == NULL) test_fail(__FILE__, __LINE__, "the rig did not start: %s", error);
+    if (rig == NULL && error[0] != '\0') {
+        test_fail(__FILE__, __LINE__, "the game did not start: %s", error);
+    }
     return rig;
 }
 
@@ -492,7 +495,7 @@ static double fastest(scene_t *scene) {
 /* Five balls 1 mm apart on pins: the last rises to the striker's height. */
 static void joint_cradle_swings_the_last_ball_to_the_striker_height(scene_file_t *file) {
     game_t *rig = start_rig(file);
-    if (rig == NULL) return;
+    CHECK(scene_joints(scene_file_get_scene(file)) == 5);
     body_t *balls[5];
     for (int i = 0; i < 5; i++) {
         char name[16];
@@ -527,7 +530,6 @@ static void joint_cradle_swings_the_last_ball_to_the_striker_height(scene_file_t
 /* The bridge holds three boxes, every pin together. */
 static void joint_bridge_holds_its_boxes(scene_file_t *file) {
     game_t *rig = start_rig(file);
-    if (rig == NULL) return;
     scene_t *scene = scene_file_get_scene(file);
     CHECK(scene_joints(scene) == 11);
     double widest = 0.0;
@@ -559,8 +561,8 @@ static double joint_energy(scene_t *scene, double g) {
 
 static void joint_double_pendulum_keeps_its_energy(scene_file_t *file) {
     game_t *rig = start_rig(file);
-    if (rig == NULL) return;
     scene_t *scene = scene_file_get_scene(file);
+    CHECK(scene_joints(scene) == 2);
     double start = joint_energy(scene, 9.8), worst = 0.0, mgl = 1.0 * 9.8 * 1.0;
     int steps = (int)lround(10.0 / scene_file_get_timestep(file));
     for (int step = 0; step < steps; step++) {
@@ -575,7 +577,7 @@ static void joint_double_pendulum_keeps_its_energy(scene_file_t *file) {
 
 static void joint_crank_follows_the_crank_slider_law(scene_file_t *file) {
     game_t *rig = start_rig(file);
-    if (rig == NULL) return;
+    CHECK(scene_joints(scene_file_get_scene(file)) == 4);
     body_t *crank = named(file, "crank"), *slider = named(file, "slider");
     double r = 0.5, length = 2.0, worst = 0.0, speed_error = 0.0;
     for (int step = 0; step < 6 * 120; step++) {
@@ -597,7 +599,6 @@ static void joint_crank_follows_the_crank_slider_law(scene_file_t *file) {
 
 static void joint_ragdoll_rests_within_its_limits(scene_file_t *file) {
     game_t *rig = start_rig(file);
-    if (rig == NULL) return;
     scene_t *scene = scene_file_get_scene(file);
     CHECK(scene_joints(scene) == 9);
     double beyond = 0.0;
@@ -621,14 +622,26 @@ static void joint_ragdoll_rests_within_its_limits(scene_file_t *file) {
 
 static void joint_car_rolls_without_slipping(scene_file_t *file) {
     game_t *rig = start_rig(file);
-    if (rig == NULL) return;
+    CHECK(rig != NULL && scene_joints(scene_file_get_scene(file)) == 2);
     body_t *chassis = named(file, "chassis"), *wheel = named(file, "rear_wheel");
     for (int step = 0; step < 3 * 120; step++) rig_step(file, rig, 1.0);
     double v = body_get_velocity(chassis).x, w = body_get_angular_velocity(wheel);
     CHECK_NEAR(w / -8.0, 1.0, 0.02);
     CHECK_NEAR(v / (-w * 0.4), 1.0, 0.02);
-    CHECK(body_get_centroid(chassis).x < 5.0); /* still on the flat, before the bump */
-    printf("    joint_car: %.3f m/s at %.3f rad/s (%.3f m/s rolling)\n", v, w, -w * 0.4);
+    CHECK(body_get_centroid(chassis).x < 5.0); /* still on the flat, before the bumps */
+    /* On over both bumps (the second ends at x = 11), upright. */
+    double tilt = 0.0;
+    int steps = 0;
+    while (body_get_centroid(chassis).x < 12.0 && steps < 6 * 120) {
+        rig_step(file, rig, 1.0);
+        tilt = fmax(tilt, fabs(body_get_rotation(chassis)));
+        steps++;
+    }
+    CHECK(body_get_centroid(chassis).x >= 12.0);
+    CHECK(tilt < 0.5);
+    printf("    joint_car: %.3f m/s at %.3f rad/s (%.3f m/s rolling); over the bumps in %.2f s, "
+           "tilted %.3f rad at most\n",
+           v, w, -w * 0.4, steps / 120.0, tilt);
     game_free(rig);
 }
 

@@ -168,7 +168,9 @@ static void count_words(const sandbox_totals_t *totals, char *out, size_t size) 
  * 1 static)". */
 static void say_opened(app_t *app) {
     const sandbox_t *sandbox = &app->sandbox;
-    if (app_game_mode(app)) {
+    if (app_game_mode(app) && strcmp(scene_file_get_game(sandbox->file), "car") == 0) {
+        app_status(app, "opened %s: Left/Right or A/D drive the wheels", sandbox->name);
+    } else if (app_game_mode(app)) {
         app_status(app, "opened %s: Left/Right or A/D move, Space fires", sandbox->name);
     } else if (sandbox->is_default) {
         app_status(app, "opened %s: the empty container", sandbox->name);

@@ -5,8 +5,7 @@
 
 /* Every game this build knows. */
 static const game_rules_t *const GAMES[] = {
-    &BREAKOUT_RULES, &SPACE_INVADERS_RULES, &PEGS_RULES,  &CRADLE_RULES, &BRIDGE_RULES,
-    &DOUBLE_PENDULUM_RULES, &RAGDOLL_RULES, &CRANK_RULES, &CAR_RULES};
+    &BREAKOUT_RULES, &SPACE_INVADERS_RULES, &PEGS_RULES, &DOUBLE_PENDULUM_RULES, &CAR_RULES};
 
 struct game {
     const game_rules_t *rules;

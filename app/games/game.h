@@ -71,12 +71,9 @@ typedef struct {
 extern const game_rules_t BREAKOUT_RULES;
 extern const game_rules_t SPACE_INVADERS_RULES;
 extern const game_rules_t PEGS_RULES;
-/* The joint presets' rigs (rigs.c): the joints of a sample's bodies. */
-extern const game_rules_t CRADLE_RULES;
-extern const game_rules_t BRIDGE_RULES;
+/* The joint presets' games (rigs.c): the car's controls, the double
+ * pendulum's energy plot; their files make the joints. */
 extern const game_rules_t DOUBLE_PENDULUM_RULES;
-extern const game_rules_t RAGDOLL_RULES;
-extern const game_rules_t CRANK_RULES;
 extern const game_rules_t CAR_RULES;
 
 typedef struct game game_t;

@@ -2,6 +2,7 @@
  * says why something was refused: a drop, a scene file with its line and
  * column) for APP_STATUS_SECONDS, else a hint; in a game, its keys. */
 #include <SDL2_gfxPrimitives.h>
+#include <string.h>
 #include "draw/draw.h"
 #include "panels/text.h"
 #include "panels/ui_section.h"
@@ -18,7 +19,11 @@ static void draw_status(SDL_Renderer *renderer, app_t *app, body_t *hovered, SDL
         /* A game's keys come first while it runs: say which. */
         static const char *const GAME_HINT[STATUS_LINES] = {
             "GAME KEYS: Left/Right, A/D move", "Space fires, Enter pauses", "H or F1: every key"};
-        const char *const *hint = app_game_mode(app)       ? GAME_HINT
+        static const char *const CAR_HINT[STATUS_LINES] = {
+            "GAME KEYS: Left/Right, A/D drive", "the wheels; Enter pauses", "H or F1: every key"};
+        bool car =
+            app_game_mode(app) && strcmp(scene_file_get_game(app->sandbox.file), "car") == 0;
+        const char *const *hint = app_game_mode(app)       ? (car ? CAR_HINT : GAME_HINT)
                                   : app->sandbox.is_default ? SANDBOX_HINT
                                                             : FILE_HINT;
         for (int i = 0; i < STATUS_LINES && hint[i] != NULL; i++) {

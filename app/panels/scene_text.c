@@ -39,7 +39,7 @@ void scene_text_game(const char *game, scene_text_outcome_t outcome, int score, 
     } else if (outcome == SCENE_TEXT_LOST) {
         snprintf(text, sizeof(text), "LOST  score %d  R: again", score);
     } else if (lives < 0) {
-        /* A joint preset's rig (app/games/rigs.c): nothing to win. */
+        /* A joint preset's game (app/games/rigs.c): nothing to win. */
         snprintf(text, sizeof(text), "joints %d", remaining);
     } else if (strcmp(game, "pegs") == 0) {
         snprintf(text, sizeof(text), "balls %d  landed %d", remaining, score);

@@ -521,7 +521,8 @@ bool sf_build(scene_file_t *file, sf_lexer_t *lexer) {
     apply_settings(file);
     make_bodies(file);
     if (!make_forces(file, lexer)) return false;
-    sf_make_joints(file); /* before the sleep state: a new joint wakes its bodies */
+    /* before the sleep state: a new joint wakes its bodies */
+    if (!sf_make_joints(file, lexer)) return false;
     restore_state(file);
     return true;
 }

@@ -4,6 +4,7 @@
  * `world`), each line one field of its definition; read exactly, checked
  * with the file's line and column, made after the bodies.
  */
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 #include "scene_file_parse.h"
@@ -218,14 +219,24 @@ bool sf_check_joints(const sf_doc_t *doc, sf_lexer_t *lexer) {
     return true;
 }
 
-void sf_make_joints(scene_file_t *file) {
+static bool moves(body_t *body) {
+    return body != NULL && (!isinf(body_get_mass(body)) || !isinf(body_get_inertia(body)));
+}
+
+bool sf_make_joints(scene_file_t *file, sf_lexer_t *lexer) {
     const sf_doc_t *doc = &file->doc;
     for (size_t i = 0; i < doc->joint_count; i++) {
         const sf_joint_t *j = &doc->joints[i];
         joint_def_t def = j->def;
         def.body1 = j->body1 == SF_WORLD ? NULL : file->records[j->body1]->body;
         def.body2 = file->records[j->body2]->body;
+        if (!moves(def.body1) && !moves(def.body2)) {
+            return sf_fail(lexer, j->where,
+                           "expected a body that moves at one end, found two static ones (the "
+                           "world is static)");
+        }
         joint_t *joint = joint_create(file->scene, &def);
         if (j->has_state) joint_set_state(joint, j->state);
     }
+    return true;
 }

@@ -382,7 +382,7 @@ bool sf_build(scene_file_t *file, sf_lexer_t *lexer);
  * (what joint_create would refuse, with the block's place), made after the
  * bodies and forces. */
 bool sf_check_joints(const sf_doc_t *doc, sf_lexer_t *lexer);
-void sf_make_joints(scene_file_t *file);
+bool sf_make_joints(scene_file_t *file, sf_lexer_t *lexer);
 
 /* Whether a live record belongs to the set a reference names. */
 bool sf_in_ref(const scene_file_t *file, const sf_ref_t *ref, const sf_record_t *record);

@@ -165,7 +165,9 @@ vector_t joint_local_point(body_t *body, vector_t world_point);
 vector_t joint_world_point(body_t *body, vector_t local_point);
 
 /* Adds a joint of def to the scene of its bodies (both must be the
- * scene's; body1 may be NULL) and wakes them. The scene owns it. */
+ * scene's; body1 may be NULL; at least one must move: two static ends,
+ * the world counting as static, are refused) and wakes them. The scene
+ * owns it. */
 joint_t *joint_create(scene_t *scene, const joint_def_t *def);
 
 /* Frees the joint now and wakes its bodies. */

@@ -203,6 +203,9 @@ joint_t *joint_create(scene_t *scene, const joint_def_t *def) {
     REQUIRE(def->body1 != def->body2, "body1 and body2 are the same body");
     if (def->type != JOINT_MOUSE && def->body1 != NULL) check_body(scene, def->body1, "body1");
     check_body(scene, def->body2, "body2");
+    bool fixed1 = def->type == JOINT_MOUSE || def->body1 == NULL || !body_is_movable(def->body1);
+    REQUIRE(!fixed1 || body_is_movable(def->body2),
+            "body1 and body2 are both static (the world counts as static): one must move");
     check_numbers(def);
     REQUIRE(scene_get_contacts_enabled(scene),
             "world contacts are off: joints are solved with them (call "
