@@ -20,11 +20,8 @@ static void prepare(joint_t *joint) {
     block_mass(joint, joint->s1, joint->s2, &joint->k11, &joint->k12, &joint->k22);
     if (!joint->def.enable_motor) joint->motor_impulse = 0.0;
     if (!joint->def.enable_limit) joint->lower_impulse = joint->upper_impulse = 0.0;
-    double axial = joint->motor_impulse + joint->lower_impulse - joint->upper_impulse;
-    double across = joint->point_impulse.x, turn = joint->angle_impulse;
-    vector_t p = vec_add(vec_multiply(axial, joint->axis), vec_multiply(across, joint->perp));
-    joint_apply(joint, p, axial * joint->a1 + across * joint->s1 + turn,
-                axial * joint->a2 + across * joint->s2 + turn);
+    joint_line_warm(joint, joint->motor_impulse + joint->lower_impulse - joint->upper_impulse,
+                    joint->point_impulse.x, joint->angle_impulse);
 }
 
 static void solve_velocity(joint_t *joint) {

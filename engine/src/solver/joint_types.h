@@ -272,6 +272,14 @@ static inline void joint_line_push(joint_t *joint, vector_t direction, double l1
     joint_apply(joint, vec_multiply(impulse, direction), impulse * l1, impulse * l2);
 }
 
+/* A line joint's warm start: impulses along the axis and across it, and
+ * an angular impulse turning both bodies. */
+static inline void joint_line_warm(joint_t *joint, double axial, double across, double turn) {
+    vector_t p = vec_add(vec_multiply(axial, joint->axis), vec_multiply(across, joint->perp));
+    joint_apply(joint, p, axial * joint->a1 + across * joint->s1 + turn,
+                axial * joint->a2 + across * joint->s2 + turn);
+}
+
 /* The position sweep's limits along a line: translation t in [lower,
  * upper] along axis with lever terms a1, a2. */
 static inline void joint_correct_line_limits(joint_t *joint, double t, vector_t axis, double a1,
