@@ -495,6 +495,25 @@ static void joined_bodies_collide_only_when_asked(void) {
     }
 }
 
+/* A chain collides through its segments, which stand in its place: a box
+ * pinned to a chain floor it rests on touches it only when asked. */
+static void a_chain_joined_to_a_body_collides_only_when_asked(void) {
+    for (int connected = 0; connected <= 1; connected++) {
+        scene_t *scene = scene_init();
+        scene_set_contacts_enabled(scene, true);
+        vector_t floor[] = {{-5.0, 0.0}, {-1.0, 0.0}, {1.0, 0.0}, {5.0, 0.0}};
+        body_t *chain = body_init_chain(floor, 4, false, (rgb_color_t){0.5, 0.5, 0.5});
+        scene_add_body(scene, chain);
+        body_t *box = add_box(scene, (vector_t){0.0, 0.24}, 0.25, 0.25, 1.0);
+        joint_def_t def = joint_def_revolute(chain, box, (vector_t){0.0, 0.5});
+        def.collide_connected = connected == 1;
+        joint_create(scene, &def);
+        scene_tick(scene, 1.0 / 60.0);
+        CHECK(scene_body_contact_count(scene, box) == (size_t)connected);
+        scene_free(scene);
+    }
+}
+
 /* A 2 kg box on a vertical slider from the world, limits [-1, 0]: it
  * falls to the lower limit and rests there (to 1 mm) without moving
  * sideways or turning; then a motor at 1 m/s with 100 N (more than its
@@ -911,6 +930,7 @@ TEST_SUITE(joints, TEST_CASE(pendulum_period_5_degrees), TEST_CASE(pendulum_peri
            TEST_CASE(removing_a_body_removes_its_joints),
            TEST_CASE(wheel_rolls_at_motor_speed), TEST_CASE(weld_holds_a_beam),
            TEST_CASE(joined_bodies_collide_only_when_asked),
+           TEST_CASE(a_chain_joined_to_a_body_collides_only_when_asked),
            TEST_CASE(prismatic_slides_stops_and_drives), TEST_CASE(mouse_pulls_within_its_force),
            TEST_CASE(motor_joint_reaches_its_offset), TEST_CASE(rope_holds_at_its_length),
            TEST_CASE(bad_definitions_stop_with_a_message),

@@ -37,8 +37,9 @@
  * creating one in a scene whose contacts are off stops the program; turning
  * contacts off later keeps the joints but suspends them. Two bodies a joint
  * joins make no contact with each other unless its collide_connected is
- * set; each still collides with everything else its filter allows. Joined
- * bodies sleep and wake as one island.
+ * set (a chain: on none of its segments); each still collides with
+ * everything else its filter allows. Joined bodies sleep and wake as one
+ * island.
  *
  * Programmer errors stop with "engine error in FUNCTION: ...": a NULL scene,
  * definition or body2; body1 == body2; a body in no scene, marked removed or

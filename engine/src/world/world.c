@@ -304,6 +304,16 @@ static int compare_keys(const void *a, const void *b) {
     return (x > y) - (x < y);
 }
 
+/* A joint's end as the world collides it: the body, or a chain's segment k
+ * (a chain collides through its segments, which stand in its place). */
+static size_t end_count(const body_t *body) {
+    return body != NULL && body->part_count > 0 ? body->part_count : 1;
+}
+
+static const body_t *end_part(const body_t *body, size_t k) {
+    return body != NULL && body->part_count > 0 ? body->parts[k] : body;
+}
+
 /* The keys of the step's body pairs that a joint joins without
  * collide_connected (joint.h), sorted; returns how many. */
 static size_t joined_pairs(world_t *world, body_t *const *bodies, size_t count,
@@ -312,13 +322,17 @@ static size_t joined_pairs(world_t *world, body_t *const *bodies, size_t count,
     for (size_t i = 0; i < joints->count; i++) {
         const joint_def_t *def = &joints->joints[i]->def;
         if (def->collide_connected) continue;
-        int64_t a = step_index(def->body1, bodies, count);
-        int64_t b = step_index(def->body2, bodies, count);
-        if (a < 0 || b < 0) continue;
-        uint64_t low = (uint64_t)(a < b ? a : b), high = (uint64_t)(a < b ? b : a);
-        memory_reserve((void **)&world->joined, &world->joined_capacity, n + 1,
-                       sizeof(uint64_t));
-        world->joined[n++] = low << 32 | high;
+        for (size_t p = 0; p < end_count(def->body1); p++) {
+            for (size_t q = 0; q < end_count(def->body2); q++) {
+                int64_t a = step_index(end_part(def->body1, p), bodies, count);
+                int64_t b = step_index(end_part(def->body2, q), bodies, count);
+                if (a < 0 || b < 0) continue;
+                uint64_t low = (uint64_t)(a < b ? a : b), high = (uint64_t)(a < b ? b : a);
+                memory_reserve((void **)&world->joined, &world->joined_capacity, n + 1,
+                               sizeof(uint64_t));
+                world->joined[n++] = low << 32 | high;
+            }
+        }
     }
     if (n > 1) qsort(world->joined, n, sizeof(uint64_t), compare_keys);
     return n;
