@@ -188,7 +188,7 @@ static void draw_one(const pen_t *pen, joint_t *joint, bool selected) {
         }
         break;
     case JOINT_WHEEL:
-        /* A suspension's travel is short: a stub either side. */
+        /* A suspension's travel is short: a short tick either side. */
         slider_axis(pen, joint, &def, c, 0.15);
         line(pen, a1, a2, width, c);
         ring(pen, a2, ANCHOR_PIXELS, c);

@@ -33,28 +33,6 @@ static body_t *body_at_except(scene_t *scene, vector_t point, body_t *except) {
     return NULL;
 }
 
-/* Bodies pinned or welded together overlap at the joint: they stop
- * colliding by sharing a group (the one either has, else a new one). */
-static void share_group(scene_t *scene, body_t *a, body_t *b) {
-    if (a == NULL || b == NULL || sandbox_is_static(a) || sandbox_is_static(b)) return;
-    uint32_t category, mask, group_a, group_b, highest = 0;
-    body_get_collision_filter(a, NULL, NULL, &group_a);
-    body_get_collision_filter(b, NULL, NULL, &group_b);
-    uint32_t group = group_a != 0 ? group_a : group_b;
-    if (group == 0) {
-        for (size_t i = 0; i < scene_bodies(scene); i++) {
-            uint32_t g;
-            body_get_collision_filter(scene_get_body(scene, i), NULL, NULL, &g);
-            if (g > highest) highest = g;
-        }
-        group = highest + 1;
-    }
-    body_get_collision_filter(a, &category, &mask, NULL);
-    body_set_collision_filter(a, category, mask, group);
-    body_get_collision_filter(b, &category, &mask, NULL);
-    body_set_collision_filter(b, category, mask, group);
-}
-
 /* The joint's bodies in the engine's order: body2 must be a body of finite
  * mass when there is one (body1 may be the world, NULL). False when both
  * ends are static or the world. */
@@ -82,20 +60,24 @@ static void made(app_t *app, const joint_def_t *def, const char *what) {
     app_status(app, "joint: %s from %s to %s", what, words, other);
 }
 
+/* The picked body and the body at `at` (or the world), in order (order),
+ * the pick cleared; false (said) when both ends are static. */
+static bool take_ends(app_t *app, vector_t at, body_t **body1, body_t **body2, bool *swapped) {
+    body_t *picked = app->joint_pick.body;
+    body_t *other = body_at_except(app->sandbox.scene, at, picked);
+    app->joint_pick.body = NULL;
+    if (order(picked, other, body1, body2, swapped)) return true;
+    app_warn(app, "joint: both ends are static");
+    return false;
+}
+
 /* The second click of a pin: the picked body pinned at `at` to the body
  * there, or to the world. */
 static void pin(app_t *app, vector_t at) {
-    scene_t *scene = app->sandbox.scene;
-    body_t *picked = app->joint_pick.body, *other = body_at_except(scene, at, picked);
-    app->joint_pick.body = NULL;
     body_t *body1, *body2;
     bool swapped;
-    if (!order(picked, other, &body1, &body2, &swapped)) {
-        app_warn(app, "joint: both ends are static");
-        return;
-    }
+    if (!take_ends(app, at, &body1, &body2, &swapped)) return;
     joint_def_t def = joint_def_revolute(body1, body2, at);
-    share_group(scene, body1, body2);
     made(app, &def, "pin");
 }
 
@@ -126,19 +108,12 @@ drag_t joint_tool_press(app_t *app, vector_t at) {
 /* A drag from the picked body to `at`: a rope, a rod (Shift) or a weld
  * (Alt) to the body there, or to the world. */
 static void link(app_t *app, vector_t at) {
-    scene_t *scene = app->sandbox.scene;
-    body_t *picked = app->joint_pick.body, *other = body_at_except(scene, at, picked);
     vector_t point = app->joint_pick.point;
-    app->joint_pick.body = NULL;
     body_t *body1, *body2;
     bool swapped;
-    if (!order(picked, other, &body1, &body2, &swapped)) {
-        app_warn(app, "joint: both ends are static");
-        return;
-    }
+    if (!take_ends(app, at, &body1, &body2, &swapped)) return;
     if (app->mods & KMOD_ALT) {
         joint_def_t def = joint_def_weld(body1, body2, vec_multiply(0.5, vec_add(point, at)));
-        share_group(scene, body1, body2);
         made(app, &def, "weld");
         return;
     }
