@@ -26,7 +26,8 @@
 
 BENCH_ARGS ?=
 BENCH_DIR := build/bench
-BENCH_HDR := tests/bench/bench_common.h tests/bench/bench_scenes.h tests/bench/bench_ours.h
+BENCH_HDR := tests/bench/bench_common.h tests/bench/bench_scenes.h tests/bench/bench_ours.h \
+	tests/bench/bench_joint_scenes.h
 BENCH_CFLAGS := $(CSTD) $(WARN) -O2
 BENCH_CXXFLAGS := -std=c++17 -Wall -Wextra -Werror -Wshadow -O2
 # Recursive (=): evaluated only when a bench rule runs.
