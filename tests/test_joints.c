@@ -466,6 +466,22 @@ static void weld_holds_a_beam(void) {
     CHECK(end <= 2.30 + 0.1);
 }
 
+/* joint_def_revolute counts the joint's angle from the pose it was made in
+ * (jostle/joint.h): bodies turned by 0.3 and 1.0 rad get reference angle
+ * 0.7 and read angle 0 (it set 0 and read 0.7 while the header said so). */
+static void revolute_counts_its_angle_from_the_pose_it_was_made_in(void) {
+    scene_t *scene = joint_scene(INTEGRATOR_SEED);
+    body_t *a = add_box(scene, (vector_t){0.0, 0.0}, 0.5, 0.1, 1.0);
+    body_t *b = add_box(scene, (vector_t){1.0, 0.0}, 0.5, 0.1, 1.0);
+    body_set_rotation(a, 0.3);
+    body_set_rotation(b, 1.0);
+    joint_def_t def = joint_def_revolute(a, b, (vector_t){0.5, 0.0});
+    CHECK_NEAR(def.reference_angle, 0.7, 1e-12);
+    joint_t *joint = joint_create(scene, &def);
+    CHECK_NEAR(joint_get_angle(joint), 0.0, 1e-12);
+    scene_free(scene);
+}
+
 /* Two 1 m boxes overlapping by 0.2 m, pinned at the middle of their
  * overlap, without gravity, and two more overlapping the same way that no
  * joint joins: by default (collide_connected false) the pinned pair makes
@@ -927,6 +943,7 @@ TEST_SUITE(joints, TEST_CASE(pendulum_period_5_degrees), TEST_CASE(pendulum_peri
            TEST_CASE(heavy_load_on_light_chain), TEST_CASE(double_pendulum_conserves_energy),
            TEST_CASE(hanging_mass_force_is_weight), TEST_CASE(static_body_at_either_end),
            TEST_CASE(limits_stop_at_their_angle),
+           TEST_CASE(revolute_counts_its_angle_from_the_pose_it_was_made_in),
            TEST_CASE(removing_a_body_removes_its_joints),
            TEST_CASE(wheel_rolls_at_motor_speed), TEST_CASE(weld_holds_a_beam),
            TEST_CASE(joined_bodies_collide_only_when_asked),

@@ -3,10 +3,12 @@
 # this engine, build/bench/bench_engine, each twice (--runs 2: the figures
 # must come out the same, runs_differ absent):
 #   jointchain(20): the chain's stretch at the end under 0.5%;
-#   jointchain(100), the benchmark's size: the chain whole at the end (the
-#     sum of the joint gaps under the chain's length);
+#   jointchain(100), the benchmark's size: the chain's stretch at the end
+#     under 10% (the sum of the joint gaps over the chain's length; 5.9%
+#     measured, Box2D v3 6.0%);
 #   ragdolls(20): no body below the floor or outside the box at the end,
-#     every pin within 1 cm.
+#     every pin within 1 cm, and at most 10 of the 200 bodies still moving
+#     (7 measured).
 # Ends with "N passed, N failed".
 program=build/bench/bench_engine
 passed=0
@@ -30,8 +32,8 @@ check() {
 }
 
 check jointchain_20_holds_its_length jointchain 20 'num("end_stretch") < 0.005'
-check jointchain_100_stays_whole jointchain 100 'num("end_stretch") < 1'
+check jointchain_100_holds_its_length jointchain 100 'num("end_stretch") < 0.1'
 check ragdolls_stay_in_the_box ragdolls 20 \
-    'v["below"] == "0" && v["outside"] == "0" && num("end_gap") < 0.01'
+    'v["below"] == "0" && v["outside"] == "0" && num("end_gap") < 0.01 && num("moving_end") <= 10'
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

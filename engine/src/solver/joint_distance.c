@@ -82,4 +82,4 @@ static void solve_position(joint_t *joint) {
     joint_correct_axial(joint, def->max_length - length, vec_negate(u), -a1, -a2);
 }
 
-const joint_kind_t JOINT_DISTANCE_KIND = {prepare, solve_velocity, solve_position};
+const joint_kind_t JOINT_DISTANCE_KIND = {prepare, solve_velocity, solve_position, NULL};

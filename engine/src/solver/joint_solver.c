@@ -123,3 +123,11 @@ void joint_solver_correct(const joint_step_t *step) {
         }
     }
 }
+
+void joint_solver_settle(const joint_step_t *step) {
+    for (size_t i = 0; i < step->count; i++) {
+        joint_t *joint = step->joints[i];
+        const joint_kind_t *kind = kind_of(joint);
+        if (joint->active && kind->settle_velocity != NULL) kind->settle_velocity(joint);
+    }
+}

@@ -72,11 +72,14 @@ struct joint {
 
 /* Each type's part: prepare (lever arms and rows are set; also applies
  * the warm-start impulses), one velocity sweep, one position sweep (NULL
- * for the soft types, which correct through their bias). */
+ * for the soft types, which correct through their bias), and the end
+ * velocities made consistent once the step's displacements are fixed
+ * (NULL where the velocity sweep already targets the rate). */
 typedef struct {
     void (*prepare)(joint_t *joint);
     void (*solve_velocity)(joint_t *joint);
     void (*solve_position)(joint_t *joint);
+    void (*settle_velocity)(joint_t *joint);
 } joint_kind_t;
 
 extern const joint_kind_t JOINT_REVOLUTE_KIND, JOINT_DISTANCE_KIND, JOINT_MOUSE_KIND,

@@ -54,4 +54,4 @@ static void solve_position(joint_t *joint) {
     joint_correct_block(joint, r1, r2, gap, angle);
 }
 
-const joint_kind_t JOINT_WELD_KIND = {prepare, solve_velocity, solve_position};
+const joint_kind_t JOINT_WELD_KIND = {prepare, solve_velocity, solve_position, NULL};

@@ -68,4 +68,4 @@ static void solve_position(joint_t *joint) {
     }
 }
 
-const joint_kind_t JOINT_WHEEL_KIND = {prepare, solve_velocity, solve_position};
+const joint_kind_t JOINT_WHEEL_KIND = {prepare, solve_velocity, solve_position, NULL};
