@@ -511,6 +511,34 @@ static void joined_bodies_collide_only_when_asked(void) {
     }
 }
 
+/* Joined bodies do not collide for the seed's collision force creators
+ * either: create_collision between them never fires unless the joint's
+ * collide_connected is set (docs/api.md, Collisions). */
+static int joined_hits;
+static void count_joined_hit(body_t *body1, body_t *body2, vector_t axis, void *aux,
+                             double force_const) {
+    (void)body1, (void)body2, (void)axis, (void)aux, (void)force_const;
+    joined_hits++;
+}
+
+static void seed_collisions_between_joined_bodies_follow_collide_connected(void) {
+    for (int connected = 0; connected <= 1; connected++) {
+        scene_t *scene = scene_init();
+        scene_set_contacts_enabled(scene, true);
+        body_t *a = add_box(scene, (vector_t){0.0, 0.0}, 0.5, 0.5, 1.0);
+        body_t *b = add_box(scene, (vector_t){0.8, 0.0}, 0.5, 0.5, 1.0);
+        joint_def_t def = joint_def_revolute(a, b, (vector_t){0.4, 0.0});
+        def.collide_connected = connected == 1;
+        joint_create(scene, &def);
+        joined_hits = 0;
+        create_collision(scene, a, b, count_joined_hit, NULL, 0.0);
+        for (int step = 0; step < 3; step++) scene_tick(scene, 1.0 / 60.0);
+        printf("    collide_connected %d: %d hits\n", connected, joined_hits);
+        CHECK(joined_hits == connected);
+        scene_free(scene);
+    }
+}
+
 /* A chain collides through its segments, which stand in its place: a box
  * pinned to a chain floor it rests on touches it only when asked. */
 static void a_chain_joined_to_a_body_collides_only_when_asked(void) {
@@ -948,6 +976,7 @@ TEST_SUITE(joints, TEST_CASE(pendulum_period_5_degrees), TEST_CASE(pendulum_peri
            TEST_CASE(wheel_rolls_at_motor_speed), TEST_CASE(weld_holds_a_beam),
            TEST_CASE(joined_bodies_collide_only_when_asked),
            TEST_CASE(a_chain_joined_to_a_body_collides_only_when_asked),
+           TEST_CASE(seed_collisions_between_joined_bodies_follow_collide_connected),
            TEST_CASE(prismatic_slides_stops_and_drives), TEST_CASE(mouse_pulls_within_its_force),
            TEST_CASE(motor_joint_reaches_its_offset), TEST_CASE(rope_holds_at_its_length),
            TEST_CASE(bad_definitions_stop_with_a_message),
