@@ -74,6 +74,20 @@ static manifold_t on_run(const body_t *segment, const segment_frame_t *f, const 
     return m;
 }
 
+/* Whether a normal leaning toward the convex join at `end` is this
+ * segment's: one beyond the neighbour's face normal is the neighbour's
+ * face's; one between the two faces' normals is the corner's, and belongs
+ * to the segment whose face normal is nearer it (the one that starts there
+ * on a tie). The two segments weigh the same numbers (both faces' normals
+ * from the join's directions), so exactly one keeps a corner contact. */
+static bool corner_is_mine(const segment_frame_t *f, int end, vector_t normal) {
+    vector_t mine = left_normal(f->e), theirs = f->side[end];
+    double beyond = end == 0 ? vec_cross(theirs, normal) : vec_cross(normal, theirs);
+    if (beyond > 0.0) return false;
+    double nearer_mine = vec_dot(normal, mine), nearer_theirs = vec_dot(normal, theirs);
+    return end == 0 ? nearer_mine >= nearer_theirs : nearer_mine > nearer_theirs;
+}
+
 /* The segment's manifold with other, the normal from the segment. */
 static manifold_t segment_first(const body_t *segment, const body_t *other, double margin,
                                 double *separation) {
@@ -89,9 +103,7 @@ static manifold_t segment_first(const body_t *segment, const body_t *other, doub
     if (end < 0) return on_run(segment, &f, other, margin, separation);
     if (!f.has[end]) return raw; /* an open chain's end: a free corner */
     if (!f.convex[end]) return on_run(segment, &f, other, margin, separation);
-    /* A convex join: the corner's normals lie between the two faces'. */
-    double beyond = end == 0 ? vec_cross(f.side[0], normal) : vec_cross(normal, f.side[1]);
-    return beyond <= 0.0 ? raw : none(raw.normal);
+    return corner_is_mine(&f, end, normal) ? raw : none(raw.normal);
 }
 
 manifold_t segment_manifold_collide(const body_t *a, const body_t *b, double margin,

@@ -15,8 +15,10 @@
  *   toward the free side (a concave join) is the segment's face normal
  *   instead: the contact is the other shape against the face;
  * - at a convex join, a normal between the two segments' face normals is
- *   the corner's, and the segment that starts there keeps it; one beyond
- *   them belongs to the neighbour's face, and the segment makes none;
+ *   the corner's, and the segment whose face normal is nearer it keeps it
+ *   (the one that starts there on a tie), so the corner gives one contact;
+ *   one beyond them belongs to the neighbour's face, and the segment makes
+ *   none;
  * - a face contact clips the other shape to the whole straight run of
  *   segments the face belongs to, and the segment whose stretch holds the
  *   middle of the points keeps it, so a run acts as one long segment;
