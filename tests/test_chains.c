@@ -339,6 +339,53 @@ static void box_slides_over_a_convex_join_as_over_a_corner(void) {
     }
 }
 
+/* A frictionless box sliding at 0.5 to 20 m/s across the join of a chain
+ * and what continues it flush on its left, a static box's top or another
+ * chain, either way (the seams' rule across the join): its height within
+ * 1 mm of resting and its rotation under 1e-6 rad, and it keeps its
+ * speed. */
+static void box_glides_from_a_static_box_onto_a_chain(void) {
+    for (int run = 0; run < 4 * SPEED_COUNT; run++) {
+        double speed0 = SPEEDS[run % SPEED_COUNT];
+        bool left_is_chain = run / SPEED_COUNT % 2 == 1, leftward = run / SPEED_COUNT >= 2;
+        scene_t *scene = chain_scene();
+        vector_t left_points[2] = {{-4, 0}, {0, 0}};
+        body_t *left = left_is_chain
+                           ? body_init_chain(left_points, 2, false, GREY)
+                           : body_init(polygon_make_box((vector_t){-2.0, -0.5}, 2.0, 0.5),
+                                       INFINITY, GREY);
+        body_set_friction(left, 0.0);
+        scene_add_body(scene, left);
+        vector_t points[5] = {{0, 0}, {1, 0}, {2, 0}, {3, 0}, {4, 0}};
+        body_t *floor = body_init_chain(points, 5, false, GREY);
+        body_set_friction(floor, 0.0);
+        scene_add_body(scene, floor);
+        double sign = leftward ? -1.0 : 1.0;
+        body_t *box = add_box(scene, -3.0 * sign, 0.0);
+        body_set_velocity(box, (vector_t){sign * speed0, 0.0});
+        double height = 0.0, angle = 0.0, speed = 0.0;
+        int steps = 0;
+        while (sign * body_get_centroid(box).x < 3.0 && steps < 2000) {
+            scene_tick(scene, DT);
+            steps++;
+            height = fmax(height, fabs(body_get_centroid(box).y - 0.25));
+            angle = fmax(angle, fabs(body_get_rotation(box)));
+            speed = fmax(speed, fabs(sign * body_get_velocity(box).x - speed0));
+        }
+        CHECK(sign * body_get_centroid(box).x >= 3.0);
+        CHECK(height <= HEIGHT_TOLERANCE);
+        CHECK(angle < ANGLE_TOLERANCE);
+        CHECK(speed <= 1e-3 * speed0);
+        if (!(height <= HEIGHT_TOLERANCE && angle < ANGLE_TOLERANCE && speed <= 1e-3 * speed0)) {
+            printf("  from a %s, %s at %g m/s: height %.3g m, angle %.3g rad, speed off by %.3g "
+                   "m/s\n",
+                   left_is_chain ? "chain" : "static box", leftward ? "leftward" : "rightward",
+                   speed0, height, angle, speed);
+        }
+        scene_free(scene);
+    }
+}
+
 BAD_CALL(too_few_points, body_init_chain((vector_t[]){{0, 0}}, 1, false, GREY))
 BAD_CALL(loop_of_two, body_init_chain((vector_t[]){{0, 0}, {1, 0}}, 2, true, GREY))
 BAD_CALL(null_points, body_init_chain(NULL, 3, false, GREY))
@@ -546,4 +593,5 @@ TEST_SUITE(chains, TEST_CASE(box_glides_over_a_segment_floor),
            TEST_CASE(time_of_impact_is_exact_for_round_shapes),
            TEST_CASE(seed_collision_handlers_take_a_chain),
            TEST_CASE(convex_join_gives_one_corner_contact),
-           TEST_CASE(box_slides_over_a_convex_join_as_over_a_corner));
+           TEST_CASE(box_slides_over_a_convex_join_as_over_a_corner),
+           TEST_CASE(box_glides_from_a_static_box_onto_a_chain));

@@ -22,7 +22,10 @@
  * - a face contact clips the other shape to the whole straight run of
  *   segments the face belongs to, and the segment whose stretch holds the
  *   middle of the points keeps it, so a run acts as one long segment;
- * - an open chain's ends are free corners.
+ * - an open chain's ends are free corners, but where a static polygon's
+ *   face (or another chain) continues the segment flush (seams.h): that
+ *   end is a flat join, the run reaches over the neighbour's face and the
+ *   claim there is shared with it, as between flush static boxes.
  *
  * The manifold_collide contract: the normal points from a toward b;
  * *separation is the segment's distance from the other shape less its
