@@ -326,6 +326,33 @@ static void stacked_capsules_touch_at_both_ends(void) {
     body_free(upper);
 }
 
+/* The same pair rocked 2 mrad either way: the lower capsule's face is the
+ * reference one way, the upper one's the other (their separations differ
+ * by more than the 0.5 mm that keeps a's), and each point keeps its id
+ * across the swap, so the solver's warm start follows it. */
+static void rocking_capsules_keep_their_ids(void) {
+    body_t *lower = body_init_capsule((vector_t){-1, 0}, (vector_t){1, 0}, 0.25, 1.0, GREY);
+    body_t *upper =
+        body_init_capsule((vector_t){-0.7, 0.499}, (vector_t){1.3, 0.499}, 0.25, 1.0, GREY);
+    double s;
+    manifold_t m[2];
+    for (int k = 0; k < 2; k++) {
+        body_set_rotation(upper, k == 0 ? 2e-3 : -2e-3);
+        m[k] = collide(lower, upper, 0.01, &s);
+        CHECK(m[k].point_count == 2);
+    }
+    CHECK(fabs(m[0].normal.x) < 1e-6);   /* the lower one's face */
+    CHECK(fabs(m[1].normal.x) > 1.9e-3); /* the upper one's */
+    for (int p = 0; p < 2 && m[0].point_count == 2 && m[1].point_count == 2; p++) {
+        int q = fabs(m[0].points[p].point.x - m[1].points[0].point.x) < 0.01 ? 0 : 1;
+        CHECK_NEAR(m[0].points[p].point.x, m[1].points[q].point.x, 0.01);
+        CHECK(m[0].points[p].id == m[1].points[q].id);
+    }
+    CHECK(m[0].points[0].id != m[0].points[1].id);
+    body_free(lower);
+    body_free(upper);
+}
+
 static scene_t *round_scene(double gravity) {
     scene_t *scene = scene_init();
     scene_set_gravity(scene, (vector_t){0.0, -gravity});
@@ -624,6 +651,7 @@ TEST_SUITE(round, TEST_CASE(circle_has_exact_mass_properties),
            TEST_CASE(circle_polygon_manifold), TEST_CASE(capsule_manifolds),
            TEST_CASE(parallel_capsules_keep_their_reference_face),
            TEST_CASE(stacked_capsules_touch_at_both_ends),
+           TEST_CASE(rocking_capsules_keep_their_ids),
            TEST_CASE(head_on_equal_circles_swap_velocities),
            TEST_CASE(dropped_ball_rebounds_to_e_squared),
            TEST_CASE(frictionless_circle_slides_without_turning),

@@ -5,8 +5,10 @@
 /* As manifold.c: a's face is the reference unless b's is clearly better. */
 static const double REFERENCE_TOLERANCE = 0.0005;
 
-/* Id bits: a point of a reference face, a point between two vertices. */
-static const uint32_t FACE_ID = 0x40000000u, VERTEX_ID = 0x60000000u;
+/* Id bits: a point of a reference face, a point between two vertices, a
+ * point between two segments (capsules side by side, or a body on a
+ * chain's run), named by its place along a's core (name_along). */
+static const uint32_t FACE_ID = 0x40000000u, VERTEX_ID = 0x60000000u, ALONG_ID = 0x50000000u;
 
 /* A shape's core in the world: count vertices, faces from v[i] to
  * v[i + 1] with outward normals n[i] (a segment has two, one per side; a
@@ -169,6 +171,33 @@ static manifold_t no_manifold(vector_t normal) {
     return (manifold_t){normal, 0, {{VEC_ZERO, 0.0, 0}, {VEC_ZERO, 0.0, 0}}};
 }
 
+/*
+ * Names the points between two segments a and b by their order along a's
+ * core (a lone point: by which side of the middle of the cores' overlap it
+ * lies on), the same whichever core's face is the reference: two capsules
+ * lying one on the other whose relative tilt rocks about nothing swap
+ * reference faces, and with ids of the reference they lost their warm
+ * start at every swap (a pile of capsules kept creeping).
+ */
+static void name_along(manifold_t *m, const core_t *a, const core_t *b) {
+    vector_t d = vec_subtract(a->v[1], a->v[0]);
+    double s[2] = {0.0, 0.0};
+    for (int i = 0; i < m->point_count; i++) {
+        s[i] = vec_dot(d, vec_subtract(m->points[i].point, a->v[0]));
+    }
+    bool high[2] = {false, true};
+    if (m->point_count == 2) {
+        high[0] = s[0] > s[1];
+        high[1] = !high[0];
+    } else if (m->point_count == 1) {
+        double t0 = vec_dot(d, vec_subtract(b->v[0], a->v[0]));
+        double t1 = vec_dot(d, vec_subtract(b->v[1], a->v[0]));
+        double lo = max_of(0.0, min_of(t0, t1)), hi = min_of(vec_dot(d, d), max_of(t0, t1));
+        high[0] = s[0] > 0.5 * (lo + hi);
+    }
+    for (int i = 0; i < m->point_count; i++) m->points[i].id = ALONG_ID | (high[i] ? 1u : 0u);
+}
+
 /* The manifold on face f of core r (b's when flip): the incident core's
  * centre, or its edge most opposed to the face clipped to the face's side
  * planes. */
@@ -209,6 +238,7 @@ static manifold_t face_manifold(const core_t *r, size_t f, const core_t *in, boo
             vec_subtract(points[i].p, vec_multiply(in->radius + 0.5 * separation, normal));
         point->id = base | (points[i].feature & 0xff);
     }
+    if (r->count == 2 && in->count == 2) name_along(&manifold, flip ? in : r, flip ? r : in);
     return manifold;
 }
 

@@ -20,7 +20,9 @@
  * face (or vertex) less the radii, exact; the point lies midway between
  * the surfaces. Points are kept while their separation is at most margin
  * (speculative contacts), with ids naming their features (a point cut
- * by clipping, the end it cuts off). The normal points from a toward b.
+ * by clipping, the end it cuts off), or, between two segments (capsules,
+ * a chain's run), their order along a's core, whichever face is the
+ * reference. The normal points from a toward b.
  *
  * A chain's segment (BODY_SHAPE_SEGMENT) is a core of one face, its free
  * side's; segment_manifold.h applies its chain's rules on top.
