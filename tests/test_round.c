@@ -280,6 +280,79 @@ static void parallel_capsules_keep_their_reference_face(void) {
     body_free(upper);
 }
 
+/* Two equal capsules stacked end over end, the upper one 1 mm along and
+ * turned 4 mrad so that its low end and the lower one's end lie just beyond
+ * each other's cores (the nearest features are two ends): one lies on the
+ * other, so the contact has two points, one at each end, 0.0015 deep and
+ * 0.0005 apart; a point at the low end alone lets the upper one rock from
+ * end to end (the capsule pile's late creep). Turned a millionth of a
+ * radian either way about a pose with the ends exactly over each other, the
+ * points keep their ids, whether or not clipping cuts the ends. */
+static void stacked_capsules_touch_at_both_ends(void) {
+    body_t *lower = body_init_capsule((vector_t){-0.25, 0}, (vector_t){0.25, 0}, 0.25, 1.0, GREY);
+    body_t *upper =
+        body_init_capsule((vector_t){-0.25, 0.4995}, (vector_t){0.25, 0.4995}, 0.25, 1.0, GREY);
+    body_set_centroid(upper, (vector_t){0.001, 0.4995});
+    body_set_rotation(upper, -0.004);
+    double s;
+    manifold_t m = collide(lower, upper, 0.01, &s);
+    CHECK(m.point_count == 2);
+    CHECK(fabs(m.normal.x) < 0.0041 && m.normal.y > 0.0);
+    double deep = fmin(m.points[0].separation, m.points[1].separation);
+    double shallow = fmax(m.points[0].separation, m.points[1].separation);
+    CHECK_NEAR(deep, -0.0015, 1e-5);
+    CHECK_NEAR(shallow, 0.0005, 1e-5);
+    CHECK_NEAR(fabs(m.points[0].point.x - m.points[1].point.x), 0.5, 0.002);
+    manifold_t swapped = collide(upper, lower, 0.01, &s);
+    CHECK(swapped.point_count == 2);
+    CHECK(swapped.normal.y < 0.0);
+
+    body_set_centroid(upper, (vector_t){0.0, 0.4995});
+    body_set_rotation(upper, 0.0);
+    manifold_t first = collide(lower, upper, 0.01, &s);
+    CHECK(first.point_count == 2);
+    for (int i = -10; i <= 10 && first.point_count == 2; i++) {
+        body_set_rotation(upper, 1e-7 * i);
+        m = collide(lower, upper, 0.01, &s);
+        CHECK(m.point_count == 2);
+        CHECK_VEC(m.normal, first.normal.x, first.normal.y, 1e-6);
+        for (int p = 0; p < 2 && m.point_count == 2; p++) {
+            CHECK(m.points[p].id == first.points[p].id);
+            CHECK_NEAR(m.points[p].separation, -0.0005, 1e-6);
+        }
+        if (test_failures > 0) break;
+    }
+    body_free(lower);
+    body_free(upper);
+}
+
+/* The same pair rocked 2 mrad either way: the lower capsule's face is the
+ * reference one way, the upper one's the other (their separations differ
+ * by more than the 0.5 mm that keeps a's), and each point keeps its id
+ * across the swap, so the solver's warm start follows it. */
+static void rocking_capsules_keep_their_ids(void) {
+    body_t *lower = body_init_capsule((vector_t){-1, 0}, (vector_t){1, 0}, 0.25, 1.0, GREY);
+    body_t *upper =
+        body_init_capsule((vector_t){-0.7, 0.499}, (vector_t){1.3, 0.499}, 0.25, 1.0, GREY);
+    double s;
+    manifold_t m[2];
+    for (int k = 0; k < 2; k++) {
+        body_set_rotation(upper, k == 0 ? 2e-3 : -2e-3);
+        m[k] = collide(lower, upper, 0.01, &s);
+        CHECK(m[k].point_count == 2);
+    }
+    CHECK(fabs(m[0].normal.x) < 1e-6);   /* the lower one's face */
+    CHECK(fabs(m[1].normal.x) > 1.9e-3); /* the upper one's */
+    for (int p = 0; p < 2 && m[0].point_count == 2 && m[1].point_count == 2; p++) {
+        int q = fabs(m[0].points[p].point.x - m[1].points[0].point.x) < 0.01 ? 0 : 1;
+        CHECK_NEAR(m[0].points[p].point.x, m[1].points[q].point.x, 0.01);
+        CHECK(m[0].points[p].id == m[1].points[q].id);
+    }
+    CHECK(m[0].points[0].id != m[0].points[1].id);
+    body_free(lower);
+    body_free(upper);
+}
+
 static scene_t *round_scene(double gravity) {
     scene_t *scene = scene_init();
     scene_set_gravity(scene, (vector_t){0.0, -gravity});
@@ -577,6 +650,8 @@ TEST_SUITE(round, TEST_CASE(circle_has_exact_mass_properties),
            TEST_CASE(bad_input_aborts_with_message), TEST_CASE(circle_circle_manifold),
            TEST_CASE(circle_polygon_manifold), TEST_CASE(capsule_manifolds),
            TEST_CASE(parallel_capsules_keep_their_reference_face),
+           TEST_CASE(stacked_capsules_touch_at_both_ends),
+           TEST_CASE(rocking_capsules_keep_their_ids),
            TEST_CASE(head_on_equal_circles_swap_velocities),
            TEST_CASE(dropped_ball_rebounds_to_e_squared),
            TEST_CASE(frictionless_circle_slides_without_turning),

@@ -5,10 +5,10 @@
 /* As manifold.c: a's face is the reference unless b's is clearly better. */
 static const double REFERENCE_TOLERANCE = 0.0005;
 
-/* Id bits: a point of a reference face, a point between two vertices. */
-static const uint32_t FACE_ID = 0x40000000u, VERTEX_ID = 0x60000000u;
-/* The feature of a point made by a clipping cut (one per side plane). */
-static const uint32_t CUT_FEATURE[2] = {0x80u, 0x81u};
+/* Id bits: a point of a reference face, a point between two vertices, a
+ * point between two segments (capsules side by side, or a body on a
+ * chain's run), named by its place along a's core (name_along). */
+static const uint32_t FACE_ID = 0x40000000u, VERTEX_ID = 0x60000000u, ALONG_ID = 0x50000000u;
 
 /* A shape's core in the world: count vertices, faces from v[i] to
  * v[i + 1] with outward normals n[i] (a segment has two, one per side; a
@@ -140,9 +140,12 @@ typedef struct {
     uint32_t feature;
 } clip_point_t;
 
-/* Keeps the part of in[0..n) where dot(direction, p) <= offset. */
+/* Keeps the part of in[0..n) where dot(direction, p) <= offset, in order.
+ * A cut point takes the place and the feature of the end it cuts off, so a
+ * point keeps its id while an end that lies on the side plane crosses it
+ * (one capsule stacked end over end on another). */
 static int clip(const clip_point_t *in, int n, clip_point_t out[2], vector_t direction,
-                double offset, uint32_t cut_feature) {
+                double offset) {
     if (n < 2) {
         if (n == 1 && vec_dot(direction, in[0].p) <= offset) {
             out[0] = in[0];
@@ -150,22 +153,49 @@ static int clip(const clip_point_t *in, int n, clip_point_t out[2], vector_t dir
         }
         return 0;
     }
-    double d0 = vec_dot(direction, in[0].p) - offset;
-    double d1 = vec_dot(direction, in[1].p) - offset;
+    double d[2] = {vec_dot(direction, in[0].p) - offset, vec_dot(direction, in[1].p) - offset};
     int k = 0;
-    if (d0 <= 0.0) out[k++] = in[0];
-    if (d1 <= 0.0) out[k++] = in[1];
-    if (d0 * d1 < 0.0) {
-        double t = d0 / (d0 - d1);
-        out[k].p = vec_add(in[0].p, vec_multiply(t, vec_subtract(in[1].p, in[0].p)));
-        out[k].feature = cut_feature;
-        k++;
+    for (int i = 0; i < 2; i++) {
+        if (d[i] <= 0.0) {
+            out[k++] = in[i];
+        } else if (d[1 - i] < 0.0) {
+            double t = d[0] / (d[0] - d[1]);
+            out[k].p = vec_add(in[0].p, vec_multiply(t, vec_subtract(in[1].p, in[0].p)));
+            out[k++].feature = in[i].feature;
+        }
     }
     return k;
 }
 
 static manifold_t no_manifold(vector_t normal) {
     return (manifold_t){normal, 0, {{VEC_ZERO, 0.0, 0}, {VEC_ZERO, 0.0, 0}}};
+}
+
+/*
+ * Names the points between two segments a and b by their order along a's
+ * core (a lone point: by which side of the middle of the cores' overlap it
+ * lies on), the same whichever core's face is the reference: two capsules
+ * lying one on the other whose relative tilt rocks about nothing swap
+ * reference faces, and with ids of the reference they lost their warm
+ * start at every swap (a pile of capsules kept creeping).
+ */
+static void name_along(manifold_t *m, const core_t *a, const core_t *b) {
+    vector_t d = vec_subtract(a->v[1], a->v[0]);
+    double s[2] = {0.0, 0.0};
+    for (int i = 0; i < m->point_count; i++) {
+        s[i] = vec_dot(d, vec_subtract(m->points[i].point, a->v[0]));
+    }
+    bool high[2] = {false, true};
+    if (m->point_count == 2) {
+        high[0] = s[0] > s[1];
+        high[1] = !high[0];
+    } else if (m->point_count == 1) {
+        double t0 = vec_dot(d, vec_subtract(b->v[0], a->v[0]));
+        double t1 = vec_dot(d, vec_subtract(b->v[1], a->v[0]));
+        double lo = max_of(0.0, min_of(t0, t1)), hi = min_of(vec_dot(d, d), max_of(t0, t1));
+        high[0] = s[0] > 0.5 * (lo + hi);
+    }
+    for (int i = 0; i < m->point_count; i++) m->points[i].id = ALONG_ID | (high[i] ? 1u : 0u);
 }
 
 /* The manifold on face f of core r (b's when flip): the incident core's
@@ -193,8 +223,8 @@ static manifold_t face_manifold(const core_t *r, size_t f, const core_t *in, boo
         clip_point_t edge[2] = {{in->v[incident], (uint32_t)incident}, {in->v[next], (uint32_t)next}};
         vector_t tangent = vec_normalize(vec_subtract(v2, v1));
         clip_point_t once[2];
-        int k = clip(edge, 2, once, vec_negate(tangent), -vec_dot(tangent, v1), CUT_FEATURE[0]);
-        n = clip(once, k, points, tangent, vec_dot(tangent, v2), CUT_FEATURE[1]);
+        int k = clip(edge, 2, once, vec_negate(tangent), -vec_dot(tangent, v1));
+        n = clip(once, k, points, tangent, vec_dot(tangent, v2));
     }
     double radii = r->radius + in->radius;
     uint32_t base = FACE_ID | (flip ? 1u << 24 : 0u) | ((uint32_t)f & 0xff) << 16 |
@@ -208,6 +238,7 @@ static manifold_t face_manifold(const core_t *r, size_t f, const core_t *in, boo
             vec_subtract(points[i].p, vec_multiply(in->radius + 0.5 * separation, normal));
         point->id = base | (points[i].feature & 0xff);
     }
+    if (r->count == 2 && in->count == 2) name_along(&manifold, flip ? in : r, flip ? r : in);
     return manifold;
 }
 
@@ -252,22 +283,46 @@ static manifold_t circles_manifold(const core_t *a, const core_t *b, double marg
     return *separation > margin ? no_manifold(VEC_ZERO) : vertex_manifold(a, b, &c, margin);
 }
 
+/* The manifold on the face that separates the cores most: a's, unless b's
+ * is clearly better. */
+static manifold_t reference_manifold(const core_t *a, const core_t *b, best_face_t face_a,
+                                     best_face_t face_b, double margin) {
+    bool flip = face_b.separation > face_a.separation + REFERENCE_TOLERANCE;
+    return flip ? face_manifold(b, face_b.face, a, true, margin)
+                : face_manifold(a, face_a.face, b, false, margin);
+}
+
+/* The least separation of a manifold's points (INFINITY: none). */
+static double least_separation(const manifold_t *m) {
+    double least = INFINITY;
+    for (int i = 0; i < m->point_count; i++) least = min_of(least, m->points[i].separation);
+    return least;
+}
+
 /* The manifold of two cores that do not overlap, from their nearest
  * features: a face when a vertex lies nearest an edge's interior (which
  * face, between two segments, by the faces' separations as for overlapping
  * cores, so that two nearly parallel capsules keep one reference while
- * their nearest vertex swaps sides), else the line between two vertices. */
+ * their nearest vertex swaps sides). Two vertices nearest: the line between
+ * them, unless both cores have edges and the best face's clipped points
+ * come as near (to REFERENCE_TOLERANCE): then the ends lie over each other
+ * (a capsule stacked end over end on another, or on a face that ends
+ * under its end) and the face's two points hold it, where one point at an
+ * end would let it rock. */
 static manifold_t apart_manifold(const core_t *a, const core_t *b, const closest_t *c,
                                  best_face_t face_a, best_face_t face_b, double margin) {
     vector_t d = vec_subtract(c->p[1], c->p[0]);
     if ((c->edge[0] >= 0 || c->edge[1] >= 0) && a->count == 2 && b->count == 2) {
-        bool flip = face_b.separation > face_a.separation + REFERENCE_TOLERANCE;
-        return flip ? face_manifold(b, face_b.face, a, true, margin)
-                    : face_manifold(a, face_a.face, b, false, margin);
+        return reference_manifold(a, b, face_a, face_b, margin);
     }
     if (c->edge[0] >= 0) return face_manifold(a, facing(a, c->edge[0], d), b, false, margin);
     if (c->edge[1] >= 0)
         return face_manifold(b, facing(b, c->edge[1], vec_negate(d)), a, true, margin);
+    if (a->count >= 2 && b->count >= 2) {
+        manifold_t face = reference_manifold(a, b, face_a, face_b, margin);
+        double ends = sqrt(c->distance_squared) - a->radius - b->radius;
+        if (least_separation(&face) <= ends + REFERENCE_TOLERANCE) return face;
+    }
     return vertex_manifold(a, b, c, margin);
 }
 
@@ -284,8 +339,7 @@ static manifold_t cores_manifold(const core_t *a, const core_t *b, double margin
         cores_overlap(a, b, max_of(face_a.separation, face_b.separation), &c)) {
         bool flip = face_b.separation > face_a.separation + REFERENCE_TOLERANCE;
         *separation = (flip ? face_b.separation : face_a.separation) - radii;
-        return flip ? face_manifold(b, face_b.face, a, true, margin)
-                    : face_manifold(a, face_a.face, b, false, margin);
+        return reference_manifold(a, b, face_a, face_b, margin);
     }
     *separation = sqrt(c.distance_squared) - radii;
     return *separation > margin ? no_manifold(VEC_ZERO)

@@ -12,13 +12,17 @@
  * and the other core's edge most opposed to it, clipped to the face's side
  * planes, gives up to two points (a capsule lying on a face or a capsule);
  * two vertices (core ends, circle centres, polygon corners) give one point
- * on the line between them. Cores overlapping: the face of either core
+ * on the line between them, unless both cores have edges and the face
+ * that separates most clips the other to points as near (ends lying over
+ * each other: two points). Cores overlapping: the face of either core
  * that separates the other's vertices most is the reference, as for
  * polygons. Each point's separation is its distance from the reference
  * face (or vertex) less the radii, exact; the point lies midway between
  * the surfaces. Points are kept while their separation is at most margin
- * (speculative contacts), with ids naming their features. The normal
- * points from a toward b.
+ * (speculative contacts), with ids naming their features (a point cut
+ * by clipping, the end it cuts off), or, between two segments (capsules,
+ * a chain's run), their order along a's core, whichever face is the
+ * reference. The normal points from a toward b.
  *
  * A chain's segment (BODY_SHAPE_SEGMENT) is a core of one face, its free
  * side's; segment_manifold.h applies its chain's rules on top.

@@ -63,6 +63,11 @@ static void join_runs(size_t *parent, size_t a, size_t b) {
     if (a != b) parent[a > b ? a : b] = a < b ? a : b;
 }
 
+/* Whether edge i of a static body is a segment's back (seams_is_static). */
+static bool is_back(const body_t *body, size_t i) {
+    return body->kind == BODY_SHAPE_SEGMENT && i == 0;
+}
+
 /* What the edges of neighbour (whose first edge is seams->edges[other])
  * do to the edges of body (first: seams->edges[first]): covers where they
  * lie opposite, runs where they continue each other. */
@@ -70,10 +75,12 @@ static void match_edges(seams_t *seams, const body_t *body, size_t first, const 
                         size_t other) {
     size_t n = body->count, m = neighbour->count;
     for (size_t i = 0; i < n; i++) {
+        if (is_back(body, i)) continue;
         edge_line_t line = edge_line(body, i);
         vector_t normal = body->world_normals[i];
         seam_edge_t *edge = &seams->edges[first + i];
         for (size_t j = 0; j < m; j++) {
+            if (is_back(neighbour, j)) continue;
             vector_t q0 = neighbour->world_vertices[j], q1 = neighbour->world_vertices[(j + 1) % m];
             double tolerance =
                 edge_tolerance(min_of(line.length, vec_get_length(vec_subtract(q1, q0))));

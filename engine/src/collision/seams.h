@@ -11,8 +11,9 @@
  * segment neighbours.
  *
  * This module finds, for each static body, what its flush static neighbours
- * do to its edges; the narrowphase (manifold.c) reads the result and keeps
- * contact normals to faces of the combined surface. Two edges of two static
+ * do to its edges; the narrowphase (manifold.c, and segment_manifold.c at
+ * a chain's open ends) reads the result and keeps contact normals to faces
+ * of the combined surface. Two edges of two static
  * bodies are flush when both ends of each lie within SEAM_TOLERANCE of the
  * other's line (1 micrometre, or a thousandth of the shorter edge when that
  * is less). Then:
@@ -108,11 +109,15 @@ typedef struct {
 
 void seams_free(seams_t *seams);
 
-/* Whether the body counts as static for the seams: a polygon (a chain's
- * segments know their neighbours themselves, segment_manifold.h, and a
- * round body has no flat faces). */
+/* Whether the body counts as static for the seams: a polygon, or a
+ * chain's segment by its free face (its edge 1, from its end back to its
+ * start; its edge 0 is its back and takes no part), so that a chain that
+ * continues a static polygon's face flush joins its run (segment_manifold.h
+ * reads the seams at the chain's open ends; the chain's own joins it knows
+ * itself). A round body has no flat faces. */
 static inline bool seams_is_static(const body_t *body) {
-    return body->kind == BODY_SHAPE_POLYGON && body->inverse_mass == 0.0 &&
+    return (body->kind == BODY_SHAPE_POLYGON || body->kind == BODY_SHAPE_SEGMENT) &&
+           body->inverse_mass == 0.0 &&
            body->inverse_inertia == 0.0 && !body->removed &&
            body->velocity.x == 0.0 && body->velocity.y == 0.0 && body->angular_velocity == 0.0;
 }

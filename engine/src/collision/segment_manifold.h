@@ -15,12 +15,17 @@
  *   toward the free side (a concave join) is the segment's face normal
  *   instead: the contact is the other shape against the face;
  * - at a convex join, a normal between the two segments' face normals is
- *   the corner's, and the segment that starts there keeps it; one beyond
- *   them belongs to the neighbour's face, and the segment makes none;
+ *   the corner's, and the segment whose face normal is nearer it keeps it
+ *   (the one that starts there on a tie), so the corner gives one contact;
+ *   one beyond them belongs to the neighbour's face, and the segment makes
+ *   none;
  * - a face contact clips the other shape to the whole straight run of
  *   segments the face belongs to, and the segment whose stretch holds the
  *   middle of the points keeps it, so a run acts as one long segment;
- * - an open chain's ends are free corners.
+ * - an open chain's ends are free corners, but where a static polygon's
+ *   face (or another chain) continues the segment flush (seams.h): that
+ *   end is a flat join, the run reaches over the neighbour's face and the
+ *   claim there is shared with it, as between flush static boxes.
  *
  * The manifold_collide contract: the normal points from a toward b;
  * *separation is the segment's distance from the other shape less its
