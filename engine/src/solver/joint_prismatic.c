@@ -43,18 +43,27 @@ static void solve_velocity(joint_t *joint) {
                 impulse.x * joint->s1 + impulse.y, impulse.x * joint->s2 + impulse.y);
 }
 
-static void solve_position(joint_t *joint) {
-    vector_t r1, r2, d;
+/* The errors across the axis and of the angle at the position pass's
+ * poses (bounded), with the axis there and the current lever arms. */
+static vector_t line_error(const joint_t *joint, vector_t *r1, vector_t *r2, vector_t *d,
+                           vector_t *axis, vector_t *perp) {
     double angle;
-    joint_current(joint, &r1, &r2, &d, &angle);
-    vector_t axis = vec_rotate(vec_normalize(joint->def.axis), joint_pose(joint, true).angle);
-    vector_t perp = vec_perpendicular(axis);
+    joint_current(joint, r1, r2, d, &angle);
+    *axis = vec_rotate(vec_normalize(joint->def.axis), joint_pose(joint, true).angle);
+    *perp = vec_perpendicular(*axis);
+    return (vector_t){joint_clamp(vec_dot(*perp, *d), -JOINT_MAX_LINEAR_CORRECTION,
+                                  JOINT_MAX_LINEAR_CORRECTION),
+                      joint_clamp(angle, -JOINT_MAX_ANGULAR_CORRECTION,
+                                  JOINT_MAX_ANGULAR_CORRECTION)};
+}
+
+static void solve_position(joint_t *joint) {
+    vector_t r1, r2, d, axis, perp;
+    double angle;
+    vector_t c = line_error(joint, &r1, &r2, &d, &axis, &perp);
     double a1, a2, s1, s2, k11, k12, k22;
     joint_line_terms(d, r1, r2, axis, perp, &a1, &a2, &s1, &s2);
     block_mass(joint, s1, s2, &k11, &k12, &k22);
-    vector_t c = {joint_clamp(vec_dot(perp, d), -JOINT_MAX_LINEAR_CORRECTION,
-                              JOINT_MAX_LINEAR_CORRECTION),
-                  joint_clamp(angle, -JOINT_MAX_ANGULAR_CORRECTION, JOINT_MAX_ANGULAR_CORRECTION)};
     vector_t impulse = vec_negate(joint_solve22(k11, k12, k22, c));
     joint_displace(joint, vec_multiply(impulse.x, perp), impulse.x * s1 + impulse.y,
                    impulse.x * s2 + impulse.y);
@@ -65,4 +74,31 @@ static void solve_position(joint_t *joint) {
     }
 }
 
-const joint_kind_t JOINT_PRISMATIC_KIND = {prepare, solve_velocity, solve_position};
+/* The tree takes a slider without a motor or limits: across the axis and
+ * the angle. */
+static int tree_rows(const joint_t *joint, double j1[][3], double j2[][3]) {
+    if (joint->def.enable_motor || joint->def.enable_limit) return 0;
+    joint_tree_line(j1[0], j2[0], joint->perp, joint->s1, joint->s2);
+    joint_tree_angle(j1[1], j2[1]);
+    return 2;
+}
+
+static void tree_velocity_error(const joint_t *joint, double error[]) {
+    error[0] = joint_line_rate(joint, joint->perp, joint->s1, joint->s2);
+    error[1] = joint->rows.v2->w - joint->rows.v1->w;
+}
+
+static void tree_position_error(const joint_t *joint, double error[]) {
+    vector_t r1, r2, d, axis, perp;
+    vector_t c = line_error(joint, &r1, &r2, &d, &axis, &perp);
+    error[0] = c.x, error[1] = c.y;
+}
+
+static void tree_add(joint_t *joint, const double impulse[]) {
+    joint->point_impulse.x += impulse[0];
+    joint->angle_impulse += impulse[1];
+}
+
+const joint_kind_t JOINT_PRISMATIC_KIND = {prepare,   solve_velocity,      solve_position,
+                                           tree_rows, tree_velocity_error, tree_position_error,
+                                           tree_add};

@@ -16,6 +16,14 @@ static double relative_spin(const joint_t *joint) {
     return joint->rows.v2->w - joint->rows.v1->w;
 }
 
+/* What the point's rows drive to zero: the rate that closes the predicted
+ * gap within the step, or the anchors' relative velocity. */
+static vector_t point_rate(const joint_t *joint) {
+    vector_t gap = joint_predicted_gap(joint, NULL), rate = joint_relative_velocity(joint);
+    return (vector_t){joint_closing_rate(joint, gap.x, rate.x),
+                      joint_closing_rate(joint, gap.y, rate.y)};
+}
+
 static void solve_velocity(joint_t *joint) {
     const joint_def_t *def = &joint->def;
     if (def->enable_motor) {
@@ -39,10 +47,7 @@ static void solve_velocity(joint_t *joint) {
                                       -relative_spin(joint), reach, &joint->upper_impulse);
         joint_apply(joint, VEC_ZERO, -impulse, -impulse);
     }
-    vector_t gap = joint_predicted_gap(joint, NULL), rate = joint_relative_velocity(joint);
-    vector_t cdot = {joint_closing_rate(joint, gap.x, rate.x),
-                     joint_closing_rate(joint, gap.y, rate.y)};
-    vector_t p = vec_negate(joint_solve22(joint->k11, joint->k12, joint->k22, cdot));
+    vector_t p = vec_negate(joint_solve22(joint->k11, joint->k12, joint->k22, point_rate(joint)));
     joint->point_impulse = vec_add(joint->point_impulse, p);
     joint_apply(joint, p, vec_cross(joint->r1, p), vec_cross(joint->r2, p));
 }
@@ -65,4 +70,30 @@ static void solve_position(joint_t *joint) {
     joint_correct_point(joint);
 }
 
-const joint_kind_t JOINT_REVOLUTE_KIND = {prepare, solve_velocity, solve_position};
+/* The tree takes the point of a pin without a motor or limits. */
+static int tree_rows(const joint_t *joint, double j1[][3], double j2[][3]) {
+    if (joint->def.enable_motor || joint->def.enable_limit) return 0;
+    joint_tree_point(j1, j2, joint->r1, joint->r2);
+    return 2;
+}
+
+static void tree_velocity_error(const joint_t *joint, double error[]) {
+    vector_t rate = point_rate(joint);
+    error[0] = rate.x, error[1] = rate.y;
+}
+
+static void tree_position_error(const joint_t *joint, double error[]) {
+    vector_t r1, r2, gap;
+    double angle;
+    joint_current(joint, &r1, &r2, &gap, &angle);
+    gap = joint_bounded_gap(gap);
+    error[0] = gap.x, error[1] = gap.y;
+}
+
+static void tree_add(joint_t *joint, const double impulse[]) {
+    joint->point_impulse = vec_add(joint->point_impulse, (vector_t){impulse[0], impulse[1]});
+}
+
+const joint_kind_t JOINT_REVOLUTE_KIND = {prepare,   solve_velocity,      solve_position,
+                                          tree_rows, tree_velocity_error, tree_position_error,
+                                          tree_add};

@@ -4,12 +4,22 @@
 /*
  * The joints' part of the solver (solver.c calls it at three points):
  * joint_solver_prepare after the contacts are warm-started, prepares every
- * joint of the step and applies its warm-start impulses;
+ * joint of the step and applies its warm-start impulses, and factors the
+ * tree solve (joint_tree.h) of the joints' rigid rows at the step's start;
  * joint_solver_iterate after each velocity sweep of the contacts, one
- * velocity sweep of the joints; joint_solver_correct after each position
- * sweep of the contacts, one position sweep of the rigid joints. Joints
- * run one after another in the order given, on the calling thread, so the
- * result is the same bits for any worker count.
+ * velocity sweep of the joints the tree does not take, then the tree's
+ * exact solve of its rows (the impulses added to the accumulated ones);
+ * joint_solver_correct after each position sweep of the contacts, the
+ * position sweeps of the rigid joints the tree does not take, then
+ * JOINT_TREE_NEWTON_STEPS projections of the tree's rows onto their
+ * position errors with the same factorization.
+ *
+ * The tree takes, in the joints' order, each rigid joint without a
+ * spring, limit, motor or force bound (revolute: its point; weld: point
+ * and angle; prismatic: across and angle; wheel: across; a distance rod)
+ * unless it would close a cycle among moving bodies; that one, and the
+ * rest, are swept one at a time. Everything runs on the calling thread in
+ * the order given, so the result is the same bits for any worker count.
  *
  * A joint takes part when both its bodies are in the step's rows (body1
  * may be NULL, the world) and neither is asleep or marked removed; its rows
@@ -20,15 +30,17 @@
 #include <stddef.h>
 #include "solver/joint_types.h"
 
-/* The joints of a step and what they solve on. */
+/* The joints of a step, and the tree solve's arrays (the world's, reused
+ * from step to step; NULL where no step is solved). */
 typedef struct {
     joint_t *const *joints;
     size_t count;
+    joint_tree_t *tree;
 } joint_step_t;
 
 void joint_solver_prepare(const joint_step_t *step, const solver_bodies_t *bodies,
                           const solver_settings_t *settings);
-void joint_solver_iterate(const joint_step_t *step);
-void joint_solver_correct(const joint_step_t *step);
+void joint_solver_iterate(const joint_step_t *step, const solver_bodies_t *bodies);
+void joint_solver_correct(const joint_step_t *step, const solver_bodies_t *bodies);
 
 #endif // #ifndef JOINT_SOLVER_H

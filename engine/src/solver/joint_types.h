@@ -12,6 +12,7 @@
 #include <stdbool.h>
 #include "jostle/joint.h"
 #include "dynamics/body_private.h"
+#include "solver/joint_tree.h"
 #include "solver/solver_types.h"
 
 /* A soft constraint's coefficients for a step (an implicit spring of
@@ -35,6 +36,9 @@ struct joint {
     struct scene *scene;
     /* Whether this step solves it (both bodies in the step, none removed). */
     bool active;
+    /* Its edge in the step's tree solve (joint_tree.h), or JOINT_TREE_NONE
+     * when the sweeps solve it. */
+    uint32_t tree_edge;
     joint_rows_t rows;
     solver_velocity_t ground_velocity;
     solver_displacement_t ground_displacement;
@@ -72,11 +76,26 @@ struct joint {
 
 /* Each type's part: prepare (lever arms and rows are set; also applies
  * the warm-start impulses), one velocity sweep, one position sweep (NULL
- * for the soft types, which correct through their bias). */
+ * for the soft types, which correct through their bias).
+ *
+ * And its part in the tree solve (joint_tree.h; NULL for the mouse and
+ * motor joints, which it never takes): tree_rows gives the joint's rigid
+ * rows at the start of the step, their terms on body1's and body2's
+ * (vx, vy, w), and how many: 0 when the joint has a spring, a limit, a
+ * motor or soft rows and stays in the sweeps. tree_velocity_error gives
+ * what the velocity iterations drive to zero on those rows now (their
+ * rates, or the rate closing the predicted gap), tree_position_error the
+ * rows' errors at the position pass's poses (m, rad, bounded as a sweep
+ * bounds them), and tree_add adds a solve's impulses to the accumulated
+ * ones. */
 typedef struct {
     void (*prepare)(joint_t *joint);
     void (*solve_velocity)(joint_t *joint);
     void (*solve_position)(joint_t *joint);
+    int (*tree_rows)(const joint_t *joint, double j1[][3], double j2[][3]);
+    void (*tree_velocity_error)(const joint_t *joint, double error[]);
+    void (*tree_position_error)(const joint_t *joint, double error[]);
+    void (*tree_add)(joint_t *joint, const double impulse[]);
 } joint_kind_t;
 
 extern const joint_kind_t JOINT_REVOLUTE_KIND, JOINT_DISTANCE_KIND, JOINT_MOUSE_KIND,
@@ -188,6 +207,31 @@ static inline double joint_closing_rate(const joint_t *joint, double gap, double
  * s) the sweeps' linear solve overshoots and feeds the spin until the
  * chain flies apart. */
 static const double JOINT_EXACT_TURN = 0.05;
+
+/* A tree row's terms for a rate along direction u with lever terms l1,
+ * l2 (u . (v2 - v1) + l2 w2 - l1 w1); the point's x and y rows for lever
+ * arms r1, r2; the relative angle's row. */
+static inline void joint_tree_line(double j1[3], double j2[3], vector_t u, double l1, double l2) {
+    j1[0] = -u.x, j1[1] = -u.y, j1[2] = -l1;
+    j2[0] = u.x, j2[1] = u.y, j2[2] = l2;
+}
+
+static inline void joint_tree_point(double j1[][3], double j2[][3], vector_t r1, vector_t r2) {
+    joint_tree_line(j1[0], j2[0], (vector_t){1.0, 0.0}, -r1.y, -r2.y);
+    joint_tree_line(j1[1], j2[1], (vector_t){0.0, 1.0}, r1.x, r2.x);
+}
+
+static inline void joint_tree_angle(double j1[3], double j2[3]) {
+    joint_tree_line(j1, j2, VEC_ZERO, 1.0, 1.0);
+}
+
+/* A point error bounded to JOINT_MAX_LINEAR_CORRECTION in length. */
+static inline vector_t joint_bounded_gap(vector_t gap) {
+    double length = vec_get_length(gap);
+    return length > JOINT_MAX_LINEAR_CORRECTION
+               ? vec_multiply(JOINT_MAX_LINEAR_CORRECTION / length, gap)
+               : gap;
+}
 
 /* Solves the 2x2 symmetric K x = b. A singular K gives 0. */
 static inline vector_t joint_solve22(double k11, double k12, double k22, vector_t b) {

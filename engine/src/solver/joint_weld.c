@@ -54,4 +54,33 @@ static void solve_position(joint_t *joint) {
     joint_correct_block(joint, r1, r2, gap, angle);
 }
 
-const joint_kind_t JOINT_WELD_KIND = {prepare, solve_velocity, solve_position};
+/* The tree takes a rigid weld's point and angle. */
+static int tree_rows(const joint_t *joint, double j1[][3], double j2[][3]) {
+    if (joint->def.frequency > 0.0) return 0;
+    joint_tree_point(j1, j2, joint->r1, joint->r2);
+    joint_tree_angle(j1[2], j2[2]);
+    return 3;
+}
+
+static void tree_velocity_error(const joint_t *joint, double error[]) {
+    vector_t rate = joint_relative_velocity(joint);
+    error[0] = rate.x, error[1] = rate.y, error[2] = joint->rows.v2->w - joint->rows.v1->w;
+}
+
+static void tree_position_error(const joint_t *joint, double error[]) {
+    vector_t r1, r2, gap;
+    double angle;
+    joint_current(joint, &r1, &r2, &gap, &angle);
+    gap = joint_bounded_gap(gap);
+    error[0] = gap.x, error[1] = gap.y;
+    error[2] = joint_clamp(angle, -JOINT_MAX_ANGULAR_CORRECTION, JOINT_MAX_ANGULAR_CORRECTION);
+}
+
+static void tree_add(joint_t *joint, const double impulse[]) {
+    joint->point_impulse = vec_add(joint->point_impulse, (vector_t){impulse[0], impulse[1]});
+    joint->angle_impulse += impulse[2];
+}
+
+const joint_kind_t JOINT_WELD_KIND = {prepare,   solve_velocity,      solve_position,
+                                      tree_rows, tree_velocity_error, tree_position_error,
+                                      tree_add};

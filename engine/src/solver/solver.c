@@ -106,7 +106,7 @@ void solver_solve(solver_wide_t *wide, shock_t *shock, solver_contact_t *contact
         for (size_t i = 0; i < wide->loose_count; i++) {
             solver_solve_velocity(&contacts[wide->loose[i]], velocities);
         }
-        if (joints->count > 0) joint_solver_iterate(joints);
+        if (joints->count > 0) joint_solver_iterate(joints, bodies);
         if (iteration == shock_after) {
             stage_clock_lap(settings->clock, SCENE_STAGE_SOLVER);
             shock_propagate(shock, wide, contacts, contact_count, velocities, bodies->body_count);
@@ -122,7 +122,7 @@ void solver_solve(solver_wide_t *wide, shock_t *shock, solver_contact_t *contact
         for (size_t i = 0; i < wide->loose_count; i++) {
             solver_solve_position(&contacts[wide->loose[i]], velocities, bodies->displacements);
         }
-        if (joints->count > 0) joint_solver_correct(joints);
+        if (joints->count > 0) joint_solver_correct(joints, bodies);
     }
     for_bodies(wide->workers, &split, limit_chunk);
     stage_clock_lap(settings->clock, SCENE_STAGE_POSITION);
