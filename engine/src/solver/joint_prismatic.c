@@ -76,22 +76,21 @@ static void solve_position(joint_t *joint) {
 
 /* The tree takes a slider without a motor or limits: across the axis and
  * the angle. */
-static int tree_rows(const joint_t *joint, double j1[][3], double j2[][3]) {
+static int tree_rows(const joint_t *joint, joint_pose_t p1, joint_pose_t p2, double error[],
+                     double j1[][3], double j2[][3]) {
     if (joint->def.enable_motor || joint->def.enable_limit) return 0;
-    joint_tree_line(j1[0], j2[0], joint->perp, joint->s1, joint->s2);
-    joint_tree_angle(j1[1], j2[1]);
+    vector_t r1, r2, d = joint_separation(joint, p1, p2, &r1, &r2);
+    vector_t axis = vec_rotate(vec_normalize(joint->def.axis), p1.angle);
+    vector_t perp = vec_perpendicular(axis);
+    error[0] = vec_dot(perp, d);
+    error[1] = p2.angle - p1.angle - joint->def.reference_angle;
+    if (j1 != NULL) {
+        double a1, a2, s1, s2;
+        joint_line_terms(d, r1, r2, axis, perp, &a1, &a2, &s1, &s2);
+        joint_tree_line(j1[0], j2[0], perp, s1, s2);
+        joint_tree_angle(j1[1], j2[1]);
+    }
     return 2;
-}
-
-static void tree_velocity_error(const joint_t *joint, double error[]) {
-    error[0] = joint_line_rate(joint, joint->perp, joint->s1, joint->s2);
-    error[1] = joint->rows.v2->w - joint->rows.v1->w;
-}
-
-static void tree_position_error(const joint_t *joint, double error[]) {
-    vector_t r1, r2, d, axis, perp;
-    vector_t c = line_error(joint, &r1, &r2, &d, &axis, &perp);
-    error[0] = c.x, error[1] = c.y;
 }
 
 static void tree_add(joint_t *joint, const double impulse[]) {
@@ -99,6 +98,5 @@ static void tree_add(joint_t *joint, const double impulse[]) {
     joint->angle_impulse += impulse[1];
 }
 
-const joint_kind_t JOINT_PRISMATIC_KIND = {prepare,   solve_velocity,      solve_position,
-                                           tree_rows, tree_velocity_error, tree_position_error,
+const joint_kind_t JOINT_PRISMATIC_KIND = {prepare, solve_velocity, solve_position, tree_rows,
                                            tree_add};

@@ -76,30 +76,26 @@ static void take_geometry(joint_t *joint) {
     joint->perp = vec_perpendicular(joint->axis);
 }
 
-/* Whether the body of the row turns by at most `most` (rad) in the step at
- * its angular velocity now. */
-static bool slow_turn(const joint_t *joint, const solver_velocity_t *row, double spin,
-                      double most) {
-    return fabs(joint->dt * (spin + joint->weight * row->w)) <= most;
+/* Whether the body of the row turns by at most JOINT_EXACT_TURN in the
+ * step at its angular velocity now. */
+static bool slow_turn(const joint_t *joint, const solver_velocity_t *row, double spin) {
+    return fabs(joint->dt * (spin + joint->weight * row->w)) <= JOINT_EXACT_TURN;
 }
 
-/* Whether the joint's rigid rows close the gap the step would end with
- * (joint_types.h's JOINT_EXACT_TURN; the tree's exact solve converges
- * on the predicted gap at turns up to JOINT_TREE_EXACT_TURN). */
-static bool closes_gap(const joint_t *joint, double most) {
-    return joint->weight > 0.0 && slow_turn(joint, joint->rows.v1, joint->spin1, most) &&
-           slow_turn(joint, joint->rows.v2, joint->spin2, most);
-}
-static const double JOINT_TREE_EXACT_TURN = 10.0;
+/* The most Newton steps of the tree's projection after the bound on the
+ * step's corrections (joint_solver_project), which stop once every row's
+ * error is within JOINT_TREE_TOLERANCE (m or rad). The bound reopens what
+ * the passes closed in a chain whipping at 1/60 s (links turning 1 rad a
+ * step): 7e-5 m are left after two steps, 1e-9 after three, rounding after
+ * four. */
+static const int JOINT_TREE_FINAL_STEPS = 4;
+static const double JOINT_TREE_TOLERANCE = 1e-12;
 
 /* Position sweeps of the joints per position iteration of the contacts:
  * a chain passes its correction one link per sweep, and joints are few
  * beside contacts, so they get more (a 20-link chain swinging at 1/240 s
  * stretched 0.44% with one, 0.16% with four). */
 static const int JOINT_POSITION_SWEEPS = 4;
-
-/* Newton steps of the tree's position projection per position pass. */
-static const int JOINT_TREE_NEWTON_STEPS = 4;
 
 /* The tree's row of a joint's body: the world and static bodies are
  * ground. */
@@ -110,18 +106,25 @@ static uint32_t tree_row(const body_t *body, const solver_bodies_t *bodies) {
     return (uint32_t)body->solver_index;
 }
 
-/* Offers the joint's rigid rows to the tree; notes its edge. */
+/* A body's pose at the start of the step; the world's is the origin. */
+static joint_pose_t start_pose(const body_t *body) {
+    return body == NULL ? (joint_pose_t){VEC_ZERO, 0.0}
+                        : (joint_pose_t){body->centroid, body->angle};
+}
+
+/* Offers the joint's rigid rows at the step's start to the tree; notes
+ * its edge. */
 static void offer_to_tree(joint_t *joint, joint_tree_t *tree, const solver_bodies_t *bodies) {
     const joint_kind_t *kind = kind_of(joint);
-    joint_tree_block_t block = {0};
     if (kind->tree_rows == NULL) return;
-    block.rows = kind->tree_rows(joint, block.j1, block.j2);
+    joint_tree_block_t block = {0};
     block.row1 = tree_row(joint->def.body1, bodies);
     block.row2 = tree_row(joint->def.body2, bodies);
-    if (block.rows == 0 || (block.row1 == JOINT_TREE_GROUND && block.row2 == JOINT_TREE_GROUND)) {
-        return;
-    }
-    joint->tree_edge = joint_tree_add(tree, &block);
+    if (block.row1 == JOINT_TREE_GROUND && block.row2 == JOINT_TREE_GROUND) return;
+    double error[JOINT_TREE_ROWS];
+    block.rows = kind->tree_rows(joint, start_pose(joint->def.body1),
+                                 start_pose(joint->def.body2), error, block.j1, block.j2);
+    if (block.rows > 0) joint->tree_edge = joint_tree_add(tree, &block);
 }
 
 void joint_solver_prepare(const joint_step_t *step, const solver_bodies_t *bodies,
@@ -139,12 +142,10 @@ void joint_solver_prepare(const joint_step_t *step, const solver_bodies_t *bodie
         joint->weight = settings->position_weight;
         carry_impulses(joint, dt, settings->warm_starting);
         take_geometry(joint);
-        joint->closes_gap = closes_gap(joint, JOINT_EXACT_TURN);
+        joint->closes_gap = joint->weight > 0.0 && slow_turn(joint, joint->rows.v1, joint->spin1) &&
+                            slow_turn(joint, joint->rows.v2, joint->spin2);
         kind_of(joint)->prepare(joint);
         offer_to_tree(joint, step->tree, bodies);
-        if (joint->tree_edge != JOINT_TREE_NONE) {
-            joint->closes_gap = closes_gap(joint, JOINT_TREE_EXACT_TURN);
-        }
     }
     if (step->tree->edge_count > 0) joint_tree_factor(step->tree, bodies->velocities);
 }
@@ -153,38 +154,36 @@ static bool swept(const joint_t *joint) {
     return joint->active && joint->tree_edge == JOINT_TREE_NONE;
 }
 
-/* One solve of the tree for each joint's rows' errors (error reads them):
- * the impulses that zero them, applied to the joints' accumulated impulses
- * when `accumulate`, and the bodies' changes, returned by the tree. */
-static void solve_tree(const joint_step_t *step,
-                       void (*error_of)(const joint_kind_t *, const joint_t *, double *),
-                       bool accumulate) {
-    joint_tree_t *tree = step->tree;
-    for (size_t i = 0; i < step->count; i++) {
-        const joint_t *joint = step->joints[i];
-        if (!joint->active || joint->tree_edge == JOINT_TREE_NONE) continue;
-        double error[JOINT_TREE_ROWS];
-        error_of(kind_of(joint), joint, error);
-        double *rhs = joint_tree_rhs(tree, joint->tree_edge);
-        for (int r = 0; r < JOINT_TREE_ROWS; r++) rhs[r] = -error[r];
-    }
-    joint_tree_solve(tree);
-    if (!accumulate) return;
-    for (size_t i = 0; i < step->count; i++) {
-        joint_t *joint = step->joints[i];
-        if (!joint->active || joint->tree_edge == JOINT_TREE_NONE) continue;
-        kind_of(joint)->tree_add(joint, joint_tree_impulse(tree, joint->tree_edge));
-    }
+static bool in_tree(const joint_t *joint) {
+    return joint->active && joint->tree_edge != JOINT_TREE_NONE;
 }
 
-static void velocity_error(const joint_kind_t *kind, const joint_t *joint, double *error) {
-    error[0] = error[1] = error[2] = 0.0;
-    kind->tree_velocity_error(joint, error);
-}
-
-static void position_error(const joint_kind_t *kind, const joint_t *joint, double *error) {
-    error[0] = error[1] = error[2] = 0.0;
-    kind->tree_position_error(joint, error);
+/* Minus what the velocity iterations drive to zero on a joint's tree
+ * rows: while the joint closes its gap (closes_gap), the rate that
+ * closes within the step the change of the rows' errors the step
+ * predicts for the velocities now, as a sweep of the joint does (the
+ * error the step starts with is the position pass's); otherwise the
+ * rows' rates. */
+static void velocity_error(const joint_t *joint, const joint_tree_t *tree, double *rhs) {
+    const joint_tree_block_t *block = joint_tree_block(tree, joint->tree_edge);
+    if (joint->closes_gap) {
+        double start[JOINT_TREE_ROWS], end[JOINT_TREE_ROWS];
+        const joint_kind_t *kind = kind_of(joint);
+        kind->tree_rows(joint, start_pose(joint->def.body1), start_pose(joint->def.body2), start,
+                        NULL, NULL);
+        kind->tree_rows(joint, joint_predicted(joint, true), joint_predicted(joint, false), end,
+                        NULL, NULL);
+        for (int r = 0; r < block->rows; r++) {
+            rhs[r] = -(end[r] - start[r]) / (joint->dt * joint->weight);
+        }
+        return;
+    }
+    const solver_velocity_t *v1 = joint->rows.v1, *v2 = joint->rows.v2;
+    for (int r = 0; r < block->rows; r++) {
+        const double *a = block->j1[r], *b = block->j2[r];
+        rhs[r] = -(a[0] * v1->v.x + a[1] * v1->v.y + a[2] * v1->w + b[0] * v2->v.x +
+                   b[1] * v2->v.y + b[2] * v2->w);
+    }
 }
 
 void joint_solver_iterate(const joint_step_t *step, const solver_bodies_t *bodies) {
@@ -194,13 +193,57 @@ void joint_solver_iterate(const joint_step_t *step, const solver_bodies_t *bodie
     }
     joint_tree_t *tree = step->tree;
     if (tree->edge_count == 0) return;
-    solve_tree(step, velocity_error, true);
+    for (size_t i = 0; i < step->count; i++) {
+        const joint_t *joint = step->joints[i];
+        if (in_tree(joint)) velocity_error(joint, tree, joint_tree_rhs(tree, joint->tree_edge));
+    }
+    joint_tree_solve(tree);
+    for (size_t i = 0; i < step->count; i++) {
+        joint_t *joint = step->joints[i];
+        if (in_tree(joint)) kind_of(joint)->tree_add(joint, joint_tree_impulse(tree, joint->tree_edge));
+    }
     for (size_t k = 0; k < joint_tree_body_count(tree); k++) {
         solver_velocity_t *row = &bodies->velocities[joint_tree_body_row(tree, k)];
         const double *change = joint_tree_body_change(tree, k);
         row->v = vec_add(row->v, (vector_t){change[0], change[1]});
         row->w += change[2];
     }
+}
+
+/* One Newton step of the tree's rows toward their positions, or none when
+ * they are there (returns whether it took one): the rows'
+ * errors and derivatives at the poses the position pass has reached,
+ * factored there (the step's start is off by the step's turn: a chain
+ * whipping at 60 rad/s at 1/60 s turns its links by 1 rad a step, and
+ * steps on the start's slope flung it apart), then the displacements that
+ * zero the errors, each bounded to JOINT_MAX_LINEAR_CORRECTION (m or rad)
+ * so that a joint pulled far apart closes over several steps. */
+static bool project_tree(const joint_step_t *step, const solver_bodies_t *bodies) {
+    joint_tree_t *tree = step->tree;
+    double largest = 0.0;
+    for (size_t i = 0; i < step->count; i++) {
+        const joint_t *joint = step->joints[i];
+        if (!in_tree(joint)) continue;
+        joint_tree_block_t *block = joint_tree_rows(tree, joint->tree_edge);
+        double *rhs = joint_tree_rhs(tree, joint->tree_edge);
+        kind_of(joint)->tree_rows(joint, joint_pose(joint, true), joint_pose(joint, false), rhs,
+                                  block->j1, block->j2);
+        for (int r = 0; r < block->rows; r++) {
+            largest = fmax(largest, fabs(rhs[r]));
+            rhs[r] = -joint_clamp(rhs[r], -JOINT_MAX_LINEAR_CORRECTION,
+                                  JOINT_MAX_LINEAR_CORRECTION);
+        }
+    }
+    if (largest <= JOINT_TREE_TOLERANCE) return false;
+    joint_tree_factor(tree, bodies->velocities);
+    joint_tree_solve(tree);
+    for (size_t k = 0; k < joint_tree_body_count(tree); k++) {
+        solver_displacement_t *row = &bodies->displacements[joint_tree_body_row(tree, k)];
+        const double *change = joint_tree_body_change(tree, k);
+        row->dx = vec_add(row->dx, (vector_t){change[0], change[1]});
+        row->dtheta += change[2];
+    }
+    return true;
 }
 
 void joint_solver_correct(const joint_step_t *step, const solver_bodies_t *bodies) {
@@ -211,14 +254,11 @@ void joint_solver_correct(const joint_step_t *step, const solver_bodies_t *bodie
             if (swept(joint) && kind->solve_position != NULL) kind->solve_position(joint);
         }
     }
-    joint_tree_t *tree = step->tree;
-    for (int newton = 0; newton < JOINT_TREE_NEWTON_STEPS && tree->edge_count > 0; newton++) {
-        solve_tree(step, position_error, false);
-        for (size_t k = 0; k < joint_tree_body_count(tree); k++) {
-            solver_displacement_t *row = &bodies->displacements[joint_tree_body_row(tree, k)];
-            const double *change = joint_tree_body_change(tree, k);
-            row->dx = vec_add(row->dx, (vector_t){change[0], change[1]});
-            row->dtheta += change[2];
-        }
+    if (step->tree->edge_count > 0) project_tree(step, bodies);
+}
+
+void joint_solver_project(const joint_step_t *step, const solver_bodies_t *bodies) {
+    for (int newton = 0; newton < JOINT_TREE_FINAL_STEPS && step->tree->edge_count > 0; newton++) {
+        if (!project_tree(step, bodies)) return;
     }
 }

@@ -42,5 +42,6 @@ void joint_solver_prepare(const joint_step_t *step, const solver_bodies_t *bodie
                           const solver_settings_t *settings);
 void joint_solver_iterate(const joint_step_t *step, const solver_bodies_t *bodies);
 void joint_solver_correct(const joint_step_t *step, const solver_bodies_t *bodies);
+void joint_solver_project(const joint_step_t *step, const solver_bodies_t *bodies);
 
 #endif // #ifndef JOINT_SOLVER_H

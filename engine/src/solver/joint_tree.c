@@ -162,6 +162,7 @@ void joint_tree_reset(joint_tree_t *tree, size_t row_count) {
         for (size_t i = old; i < tree->row_capacity; i++) tree->node_of_row[i] = JOINT_TREE_NONE;
     }
     tree->node_count = tree->edge_count = 0;
+    tree->ordered = false;
 }
 
 static uint32_t find_set(joint_tree_t *tree, uint32_t node) {
@@ -232,6 +233,7 @@ uint32_t joint_tree_add(joint_tree_t *tree, const joint_tree_block_t *block) {
     edge->holder = ground1 ? node2 : (ground2 ? node1 : JOINT_TREE_NONE);
     edge->offset = offset;
     edge->parent = JOINT_TREE_NONE;
+    tree->ordered = false;
     return index;
 }
 
@@ -382,8 +384,11 @@ static void factor_edge(joint_tree_t *tree, uint32_t n) {
 }
 
 void joint_tree_factor(joint_tree_t *tree, const solver_velocity_t *velocities) {
-    build_adjacency(tree);
-    order_nodes(tree);
+    if (!tree->ordered) {
+        build_adjacency(tree);
+        order_nodes(tree);
+        tree->ordered = true;
+    }
     for (size_t i = 0; i < tree->node_count; i++) {
         joint_tree_node_t *node = &tree->nodes[i];
         const solver_velocity_t *row = &velocities[node->row];
@@ -419,6 +424,14 @@ static void node_apply_inverse(joint_tree_node_t *node, const double bv[3]) {
         for (int i = 0; i < g; i++) u[r] -= node->jg[i][r] * node->xg[i];
     }
     mul33(node->wx, u, node->xv);
+}
+
+const joint_tree_block_t *joint_tree_block(const joint_tree_t *tree, uint32_t edge) {
+    return &tree->edges[edge].block;
+}
+
+joint_tree_block_t *joint_tree_rows(joint_tree_t *tree, uint32_t edge) {
+    return &tree->edges[edge].block;
 }
 
 double *joint_tree_rhs(joint_tree_t *tree, uint32_t edge) {

@@ -33,6 +33,7 @@
  * same bits each run.
  */
 
+#include <stdbool.h>
 #include <stddef.h>
 #include <stdint.h>
 #include "solver/solver_types.h"
@@ -63,6 +64,7 @@ typedef struct {
     uint32_t *order;       /* nodes, every parent before its children */
     uint32_t *adjacency;   /* per node, its edges between moving bodies */
     size_t node_count, edge_count;
+    bool ordered; /* the order is the graph's */
     size_t node_capacity, edge_capacity, row_capacity, order_capacity, adjacency_capacity;
 } joint_tree_t;
 
@@ -72,9 +74,14 @@ void joint_tree_reset(joint_tree_t *tree, size_t row_count);
  * JOINT_TREE_NONE when it would close a cycle or overload a body's world
  * rows. Asserts 1 <= rows <= JOINT_TREE_ROWS and rows below row_count. */
 uint32_t joint_tree_add(joint_tree_t *tree, const joint_tree_block_t *block);
-/* Orders the trees and factors the matrix for the inverse masses of the
- * rows (velocities[row].inverse_mass, inverse_inertia). */
+/* Factors the matrix for the blocks' rows and the inverse masses of the
+ * solver rows (velocities[row].inverse_mass, inverse_inertia); orders the
+ * trees first when the graph has changed since the last call. */
 void joint_tree_factor(joint_tree_t *tree, const solver_velocity_t *velocities);
+/* An edge's block as taken; and its rows, to change them before factoring
+ * again (the graph stays). */
+const joint_tree_block_t *joint_tree_block(const joint_tree_t *tree, uint32_t edge);
+joint_tree_block_t *joint_tree_rows(joint_tree_t *tree, uint32_t edge);
 /* The right-hand side of an edge's rows (set before joint_tree_solve). */
 double *joint_tree_rhs(joint_tree_t *tree, uint32_t edge);
 /* Solves for the right-hand sides; then the impulses of an edge's rows and

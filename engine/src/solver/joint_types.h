@@ -74,27 +74,30 @@ struct joint {
     double impulse_dt;
 };
 
+/* A body's pose during the position sweeps: where the step has it now. */
+typedef struct {
+    vector_t centroid;
+    double angle;
+} joint_pose_t;
+
 /* Each type's part: prepare (lever arms and rows are set; also applies
  * the warm-start impulses), one velocity sweep, one position sweep (NULL
  * for the soft types, which correct through their bias).
  *
  * And its part in the tree solve (joint_tree.h; NULL for the mouse and
- * motor joints, which it never takes): tree_rows gives the joint's rigid
- * rows at the start of the step, their terms on body1's and body2's
- * (vx, vy, w), and how many: 0 when the joint has a spring, a limit, a
- * motor or soft rows and stays in the sweeps. tree_velocity_error gives
- * what the velocity iterations drive to zero on those rows now (their
- * rates, or the rate closing the predicted gap), tree_position_error the
- * rows' errors at the position pass's poses (m, rad, bounded as a sweep
- * bounds them), and tree_add adds a solve's impulses to the accumulated
- * ones. */
+ * motor joints, which it never takes): tree_rows gives how many rigid
+ * rows the joint has (0 when it has a spring, a limit, a motor or soft
+ * rows, and stays in the sweeps), their errors (m, rad) with body1 and
+ * body2 at poses p1 and p2, and, unless j1 is NULL, their derivatives
+ * there by each body's displacement (dx, dy, dtheta), which are also the
+ * rows' terms on its velocity (vx, vy, w). tree_add adds a solve's
+ * impulses to the accumulated ones. */
 typedef struct {
     void (*prepare)(joint_t *joint);
     void (*solve_velocity)(joint_t *joint);
     void (*solve_position)(joint_t *joint);
-    int (*tree_rows)(const joint_t *joint, double j1[][3], double j2[][3]);
-    void (*tree_velocity_error)(const joint_t *joint, double error[]);
-    void (*tree_position_error)(const joint_t *joint, double error[]);
+    int (*tree_rows)(const joint_t *joint, joint_pose_t p1, joint_pose_t p2, double error[],
+                     double j1[][3], double j2[][3]);
     void (*tree_add)(joint_t *joint, const double impulse[]);
 } joint_kind_t;
 
@@ -147,12 +150,6 @@ static inline vector_t joint_relative_velocity(const joint_t *joint) {
     return vec_subtract(vec_add(v2->v, vec_cross_scalar(v2->w, joint->r2)),
                         vec_add(v1->v, vec_cross_scalar(v1->w, joint->r1)));
 }
-
-/* A body's pose during the position sweeps: where the step has it now. */
-typedef struct {
-    vector_t centroid;
-    double angle;
-} joint_pose_t;
 
 /* The pose of the joint's body (body1 when first) within the step; the
  * world's is the origin. */
@@ -225,12 +222,13 @@ static inline void joint_tree_angle(double j1[3], double j2[3]) {
     joint_tree_line(j1, j2, VEC_ZERO, 1.0, 1.0);
 }
 
-/* A point error bounded to JOINT_MAX_LINEAR_CORRECTION in length. */
-static inline vector_t joint_bounded_gap(vector_t gap) {
-    double length = vec_get_length(gap);
-    return length > JOINT_MAX_LINEAR_CORRECTION
-               ? vec_multiply(JOINT_MAX_LINEAR_CORRECTION / length, gap)
-               : gap;
+/* The lever arms and anchor separation (anchor2 - anchor1) of the joint
+ * with its bodies at poses p1, p2. */
+static inline vector_t joint_separation(const joint_t *joint, joint_pose_t p1, joint_pose_t p2,
+                                        vector_t *r1, vector_t *r2) {
+    *r1 = vec_rotate(joint->def.anchor1, p1.angle);
+    *r2 = vec_rotate(joint->def.anchor2, p2.angle);
+    return vec_subtract(vec_add(p2.centroid, *r2), vec_add(p1.centroid, *r1));
 }
 
 /* Solves the 2x2 symmetric K x = b. A singular K gives 0. */

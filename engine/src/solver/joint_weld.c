@@ -55,25 +55,17 @@ static void solve_position(joint_t *joint) {
 }
 
 /* The tree takes a rigid weld's point and angle. */
-static int tree_rows(const joint_t *joint, double j1[][3], double j2[][3]) {
+static int tree_rows(const joint_t *joint, joint_pose_t p1, joint_pose_t p2, double error[],
+                     double j1[][3], double j2[][3]) {
     if (joint->def.frequency > 0.0) return 0;
-    joint_tree_point(j1, j2, joint->r1, joint->r2);
-    joint_tree_angle(j1[2], j2[2]);
-    return 3;
-}
-
-static void tree_velocity_error(const joint_t *joint, double error[]) {
-    vector_t rate = joint_relative_velocity(joint);
-    error[0] = rate.x, error[1] = rate.y, error[2] = joint->rows.v2->w - joint->rows.v1->w;
-}
-
-static void tree_position_error(const joint_t *joint, double error[]) {
-    vector_t r1, r2, gap;
-    double angle;
-    joint_current(joint, &r1, &r2, &gap, &angle);
-    gap = joint_bounded_gap(gap);
+    vector_t r1, r2, gap = joint_separation(joint, p1, p2, &r1, &r2);
     error[0] = gap.x, error[1] = gap.y;
-    error[2] = joint_clamp(angle, -JOINT_MAX_ANGULAR_CORRECTION, JOINT_MAX_ANGULAR_CORRECTION);
+    error[2] = p2.angle - p1.angle - joint->def.reference_angle;
+    if (j1 != NULL) {
+        joint_tree_point(j1, j2, r1, r2);
+        joint_tree_angle(j1[2], j2[2]);
+    }
+    return 3;
 }
 
 static void tree_add(joint_t *joint, const double impulse[]) {
@@ -81,6 +73,5 @@ static void tree_add(joint_t *joint, const double impulse[]) {
     joint->angle_impulse += impulse[2];
 }
 
-const joint_kind_t JOINT_WELD_KIND = {prepare,   solve_velocity,      solve_position,
-                                      tree_rows, tree_velocity_error, tree_position_error,
+const joint_kind_t JOINT_WELD_KIND = {prepare, solve_velocity, solve_position, tree_rows,
                                       tree_add};

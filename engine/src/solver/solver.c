@@ -125,5 +125,8 @@ void solver_solve(solver_wide_t *wide, shock_t *shock, solver_contact_t *contact
         if (joints->count > 0) joint_solver_correct(joints, bodies);
     }
     for_bodies(wide->workers, &split, limit_chunk);
+    /* After the bound on the corrections, which is the contacts' (joints
+     * held by it reopened by the centripetal drift of a whipping chain). */
+    if (joints->count > 0) joint_solver_project(joints, bodies);
     stage_clock_lap(settings->clock, SCENE_STAGE_POSITION);
 }
