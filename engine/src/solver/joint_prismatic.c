@@ -43,27 +43,18 @@ static void solve_velocity(joint_t *joint) {
                 impulse.x * joint->s1 + impulse.y, impulse.x * joint->s2 + impulse.y);
 }
 
-/* The errors across the axis and of the angle at the position pass's
- * poses (bounded), with the axis there and the current lever arms. */
-static vector_t line_error(const joint_t *joint, vector_t *r1, vector_t *r2, vector_t *d,
-                           vector_t *axis, vector_t *perp) {
-    double angle;
-    joint_current(joint, r1, r2, d, &angle);
-    *axis = vec_rotate(vec_normalize(joint->def.axis), joint_pose(joint, true).angle);
-    *perp = vec_perpendicular(*axis);
-    return (vector_t){joint_clamp(vec_dot(*perp, *d), -JOINT_MAX_LINEAR_CORRECTION,
-                                  JOINT_MAX_LINEAR_CORRECTION),
-                      joint_clamp(angle, -JOINT_MAX_ANGULAR_CORRECTION,
-                                  JOINT_MAX_ANGULAR_CORRECTION)};
-}
-
 static void solve_position(joint_t *joint) {
-    vector_t r1, r2, d, axis, perp;
+    vector_t r1, r2, d;
     double angle;
-    vector_t c = line_error(joint, &r1, &r2, &d, &axis, &perp);
+    joint_current(joint, &r1, &r2, &d, &angle);
+    vector_t axis = vec_rotate(vec_normalize(joint->def.axis), joint_pose(joint, true).angle);
+    vector_t perp = vec_perpendicular(axis);
     double a1, a2, s1, s2, k11, k12, k22;
     joint_line_terms(d, r1, r2, axis, perp, &a1, &a2, &s1, &s2);
     block_mass(joint, s1, s2, &k11, &k12, &k22);
+    vector_t c = {joint_clamp(vec_dot(perp, d), -JOINT_MAX_LINEAR_CORRECTION,
+                              JOINT_MAX_LINEAR_CORRECTION),
+                  joint_clamp(angle, -JOINT_MAX_ANGULAR_CORRECTION, JOINT_MAX_ANGULAR_CORRECTION)};
     vector_t impulse = vec_negate(joint_solve22(k11, k12, k22, c));
     joint_displace(joint, vec_multiply(impulse.x, perp), impulse.x * s1 + impulse.y,
                    impulse.x * s2 + impulse.y);

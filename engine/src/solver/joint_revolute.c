@@ -16,14 +16,6 @@ static double relative_spin(const joint_t *joint) {
     return joint->rows.v2->w - joint->rows.v1->w;
 }
 
-/* What the point's rows drive to zero: the rate that closes the predicted
- * gap within the step, or the anchors' relative velocity. */
-static vector_t point_rate(const joint_t *joint) {
-    vector_t gap = joint_predicted_gap(joint, NULL), rate = joint_relative_velocity(joint);
-    return (vector_t){joint_closing_rate(joint, gap.x, rate.x),
-                      joint_closing_rate(joint, gap.y, rate.y)};
-}
-
 static void solve_velocity(joint_t *joint) {
     const joint_def_t *def = &joint->def;
     if (def->enable_motor) {
@@ -47,7 +39,10 @@ static void solve_velocity(joint_t *joint) {
                                       -relative_spin(joint), reach, &joint->upper_impulse);
         joint_apply(joint, VEC_ZERO, -impulse, -impulse);
     }
-    vector_t p = vec_negate(joint_solve22(joint->k11, joint->k12, joint->k22, point_rate(joint)));
+    vector_t gap = joint_predicted_gap(joint, NULL), rate = joint_relative_velocity(joint);
+    vector_t cdot = {joint_closing_rate(joint, gap.x, rate.x),
+                     joint_closing_rate(joint, gap.y, rate.y)};
+    vector_t p = vec_negate(joint_solve22(joint->k11, joint->k12, joint->k22, cdot));
     joint->point_impulse = vec_add(joint->point_impulse, p);
     joint_apply(joint, p, vec_cross(joint->r1, p), vec_cross(joint->r2, p));
 }

@@ -91,10 +91,9 @@ static bool slow_turn(const joint_t *joint, const solver_velocity_t *row, double
 static const int JOINT_TREE_FINAL_STEPS = 4;
 static const double JOINT_TREE_TOLERANCE = 1e-12;
 
-/* Position sweeps of the joints per position iteration of the contacts:
- * a chain passes its correction one link per sweep, and joints are few
- * beside contacts, so they get more (a 20-link chain swinging at 1/240 s
- * stretched 0.44% with one, 0.16% with four). */
+/* Position sweeps of the joints the tree does not take, per position
+ * iteration of the contacts: a chain of them passes its correction one
+ * link per sweep, and joints are few beside contacts, so they get more. */
 static const int JOINT_POSITION_SWEEPS = 4;
 
 /* The tree's row of a joint's body: the world and static bodies are

@@ -74,7 +74,8 @@ struct joint {
     double impulse_dt;
 };
 
-/* A body's pose during the position sweeps: where the step has it now. */
+/* A body's pose: where the step has it at some point (its start, its
+ * predicted end, the position sweeps' current pose). */
 typedef struct {
     vector_t centroid;
     double angle;
