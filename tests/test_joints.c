@@ -467,6 +467,28 @@ static void weld_holds_a_beam(void) {
     CHECK(fabs(end) <= 1e-9);
 }
 
+/* A 2 kg ball soft-welded at its centre to the world (2 Hz, damping ratio
+ * 1), solved by the tree: at rest it hangs g / omega^2 below its anchor,
+ * the static sag of the implicit spring k = m omega^2 (to 1e-9 m after
+ * 5 s), its weld holding its weight. */
+static void soft_weld_sags_by_its_frequency(void) {
+    scene_t *scene = joint_scene(INTEGRATOR_SEED);
+    body_t *ball = add_ball(scene, (vector_t){0.0, -1.0}, 0.1, 2.0);
+    joint_def_t def = joint_def_weld(NULL, ball, (vector_t){0.0, -1.0});
+    def.frequency = 2.0;
+    def.damping_ratio = 1.0;
+    joint_t *weld = joint_create(scene, &def);
+    scene_set_sleeping(scene, false); /* asleep, it would stop short of rest */
+    for (int step = 0; step < 300; step++) scene_tick(scene, 1.0 / 60.0);
+    double omega = 2.0 * M_PI * 2.0;
+    printf("    sag %.9f m (g / omega^2 %.9f m)\n", -1.0 - body_get_centroid(ball).y,
+           G / (omega * omega));
+    CHECK(weld->tree_edge != JOINT_TREE_NONE);
+    CHECK_NEAR(body_get_centroid(ball).y, -1.0 - G / (omega * omega), 1e-9);
+    CHECK_VEC(joint_get_force(weld), 0.0, 2.0 * G, 1e-9 * 2.0 * G);
+    scene_free(scene);
+}
+
 /* A square of four 1 m bars pinned at its corners, the top bar pinned to
  * the world at its middle, released with the square sheared by 0.3 rad:
  * the pin that closes the loop cannot join the tree solve (it would close
@@ -978,7 +1000,7 @@ TEST_SUITE(joints, TEST_CASE(pendulum_period_5_degrees), TEST_CASE(pendulum_peri
            TEST_CASE(limits_stop_at_their_angle),
            TEST_CASE(removing_a_body_removes_its_joints),
            TEST_CASE(wheel_rolls_at_motor_speed), TEST_CASE(weld_holds_a_beam),
-           TEST_CASE(a_loop_of_links_holds),
+           TEST_CASE(soft_weld_sags_by_its_frequency), TEST_CASE(a_loop_of_links_holds),
            TEST_CASE(joined_bodies_collide_only_when_asked),
            TEST_CASE(a_chain_joined_to_a_body_collides_only_when_asked),
            TEST_CASE(prismatic_slides_stops_and_drives), TEST_CASE(mouse_pulls_within_its_force),

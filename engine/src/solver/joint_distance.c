@@ -100,5 +100,5 @@ static void tree_add(joint_t *joint, const double impulse[]) {
     joint->axial_impulse += impulse[0];
 }
 
-const joint_kind_t JOINT_DISTANCE_KIND = {prepare, solve_velocity, solve_position, tree_rows,
-                                          tree_add};
+const joint_kind_t JOINT_DISTANCE_KIND = {prepare,   solve_velocity, solve_position,
+                                          tree_rows, NULL,           tree_add};

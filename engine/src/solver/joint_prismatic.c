@@ -89,5 +89,5 @@ static void tree_add(joint_t *joint, const double impulse[]) {
     joint->angle_impulse += impulse[1];
 }
 
-const joint_kind_t JOINT_PRISMATIC_KIND = {prepare, solve_velocity, solve_position, tree_rows,
-                                           tree_add};
+const joint_kind_t JOINT_PRISMATIC_KIND = {prepare,   solve_velocity, solve_position,
+                                           tree_rows, NULL,           tree_add};

@@ -79,5 +79,5 @@ static void tree_add(joint_t *joint, const double impulse[]) {
     joint->point_impulse = vec_add(joint->point_impulse, (vector_t){impulse[0], impulse[1]});
 }
 
-const joint_kind_t JOINT_REVOLUTE_KIND = {prepare, solve_velocity, solve_position, tree_rows,
-                                          tree_add};
+const joint_kind_t JOINT_REVOLUTE_KIND = {prepare,   solve_velocity, solve_position,
+                                          tree_rows, NULL,           tree_add};

@@ -1,5 +1,6 @@
 #include "solver/joint_solver.h"
 #include <math.h>
+#include <string.h>
 
 static const joint_kind_t *kind_of(const joint_t *joint) {
     static const joint_kind_t *const KINDS[JOINT_TYPE_COUNT] = {
@@ -111,7 +112,14 @@ static joint_pose_t start_pose(const body_t *body) {
                         : (joint_pose_t){body->centroid, body->angle};
 }
 
-/* Offers the joint's rigid rows at the step's start to the tree; notes
+/* Whether the joint's tree rows are soft this step; then their compliance
+ * and velocity bias. */
+static bool soft_rows(const joint_t *joint, double c[][JOINT_TREE_ROWS], double *bias) {
+    const joint_kind_t *kind = kind_of(joint);
+    return kind->tree_soft != NULL && kind->tree_soft(joint, c, bias);
+}
+
+/* Offers the joint's equality rows at the step's start to the tree; notes
  * its edge. */
 static void offer_to_tree(joint_t *joint, joint_tree_t *tree, const solver_bodies_t *bodies) {
     const joint_kind_t *kind = kind_of(joint);
@@ -123,6 +131,7 @@ static void offer_to_tree(joint_t *joint, joint_tree_t *tree, const solver_bodie
     double error[JOINT_TREE_ROWS];
     block.rows = kind->tree_rows(joint, start_pose(joint->def.body1),
                                  start_pose(joint->def.body2), error, block.j1, block.j2);
+    soft_rows(joint, block.c, error);
     if (block.rows > 0) joint->tree_edge = joint_tree_add(tree, &block);
 }
 
@@ -158,14 +167,16 @@ static bool in_tree(const joint_t *joint) {
 }
 
 /* Minus what the velocity iterations drive to zero on a joint's tree
- * rows: while the joint closes its gap (closes_gap), the rate that
- * closes within the step the change of the rows' errors the step
- * predicts for the velocities now, as a sweep of the joint does (the
- * error the step starts with is the position pass's); otherwise the
- * rows' rates. */
+ * rows: soft rows' rates with their bias; while a rigid joint closes its
+ * gap (closes_gap), the rate that closes within the step the change of
+ * the rows' errors the step predicts for the velocities now, as a sweep of
+ * the joint does (the error the step starts with is the position pass's);
+ * otherwise the rows' rates. */
 static void velocity_error(const joint_t *joint, const joint_tree_t *tree, double *rhs) {
     const joint_tree_block_t *block = joint_tree_block(tree, joint->tree_edge);
-    if (joint->closes_gap) {
+    double c[JOINT_TREE_ROWS][JOINT_TREE_ROWS], bias[JOINT_TREE_ROWS] = {0.0, 0.0, 0.0};
+    bool soft = soft_rows(joint, c, bias);
+    if (!soft && joint->closes_gap) {
         double start[JOINT_TREE_ROWS], end[JOINT_TREE_ROWS];
         const joint_kind_t *kind = kind_of(joint);
         kind->tree_rows(joint, start_pose(joint->def.body1), start_pose(joint->def.body2), start,
@@ -181,7 +192,7 @@ static void velocity_error(const joint_t *joint, const joint_tree_t *tree, doubl
     for (int r = 0; r < block->rows; r++) {
         const double *a = block->j1[r], *b = block->j2[r];
         rhs[r] = -(a[0] * v1->v.x + a[1] * v1->v.y + a[2] * v1->w + b[0] * v2->v.x +
-                   b[1] * v2->v.y + b[2] * v2->w);
+                   b[1] * v2->v.y + b[2] * v2->w + bias[r]);
     }
 }
 
@@ -227,6 +238,12 @@ static bool project_tree(const joint_step_t *step, const solver_bodies_t *bodies
         double *rhs = joint_tree_rhs(tree, joint->tree_edge);
         kind_of(joint)->tree_rows(joint, joint_pose(joint, true), joint_pose(joint, false), rhs,
                                   block->j1, block->j2);
+        double c[JOINT_TREE_ROWS][JOINT_TREE_ROWS], bias[JOINT_TREE_ROWS];
+        if (soft_rows(joint, c, bias)) { /* a spring: no position correction */
+            memset(block->j1, 0, sizeof block->j1);
+            memset(block->j2, 0, sizeof block->j2);
+            memset(rhs, 0, sizeof(double) * JOINT_TREE_ROWS);
+        }
         for (int r = 0; r < block->rows; r++) {
             largest = fmax(largest, fabs(rhs[r]));
             rhs[r] = -joint_clamp(rhs[r], -JOINT_MAX_LINEAR_CORRECTION,

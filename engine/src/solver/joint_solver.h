@@ -2,24 +2,28 @@
 #define JOINT_SOLVER_H
 
 /*
- * The joints' part of the solver (solver.c calls it at three points):
+ * The joints' part of the solver (solver.c calls it at four points):
  * joint_solver_prepare after the contacts are warm-started, prepares every
- * joint of the step and applies its warm-start impulses, and factors the
- * tree solve (joint_tree.h) of the joints' rigid rows at the step's start;
+ * joint of the step, applies its warm-start impulses, and factors the tree
+ * solve (joint_tree.h) of the joints' equality rows at the step's start;
  * joint_solver_iterate after each velocity sweep of the contacts, one
  * velocity sweep of the joints the tree does not take, then the tree's
  * exact solve of its rows (the impulses added to the accumulated ones);
  * joint_solver_correct after each position sweep of the contacts, the
- * position sweeps of the rigid joints the tree does not take, then
- * JOINT_TREE_NEWTON_STEPS projections of the tree's rows onto their
- * position errors with the same factorization.
+ * position sweeps of the rigid joints the tree does not take, then one
+ * Newton step of the tree's rigid rows onto their positions (factored at
+ * the poses reached); joint_solver_project after the bound on the step's
+ * corrections (solver_limit_corrections, the contacts'), Newton steps
+ * until the tree's rows are within 1e-12 of their positions.
  *
- * The tree takes, in the joints' order, each rigid joint without a
- * spring, limit, motor or force bound (revolute: its point; weld: point
- * and angle; prismatic: across and angle; wheel: across; a distance rod)
- * unless it would close a cycle among moving bodies; that one, and the
- * rest, are swept one at a time. Everything runs on the calling thread in
- * the order given, so the result is the same bits for any worker count.
+ * The tree takes, in the joints' order, each joint without a spring,
+ * limit, motor or force bound (revolute: its point; weld, rigid or soft:
+ * point and angle; prismatic: across and angle; wheel: across; a distance
+ * rod) unless it would close a cycle among moving bodies; that one, and
+ * the rest, are swept one at a time. A soft weld's rows take no position
+ * step (a spring corrects through its bias). Everything runs on the
+ * calling thread in the order given, so the result is the same bits for
+ * any worker count.
  *
  * A joint takes part when both its bodies are in the step's rows (body1
  * may be NULL, the world) and neither is asleep or marked removed; its rows

@@ -86,19 +86,23 @@ typedef struct {
  * for the soft types, which correct through their bias).
  *
  * And its part in the tree solve (joint_tree.h; NULL for the mouse and
- * motor joints, which it never takes): tree_rows gives how many rigid
- * rows the joint has (0 when it has a spring, a limit, a motor or soft
- * rows, and stays in the sweeps), their errors (m, rad) with body1 and
+ * motor joints, which it never takes): tree_rows gives how many equality
+ * rows the joint has (0 when it has a spring, a limit, a motor or a force
+ * bound, and stays in the sweeps), their errors (m, rad) with body1 and
  * body2 at poses p1 and p2, and, unless j1 is NULL, their derivatives
  * there by each body's displacement (dx, dy, dtheta), which are also the
- * rows' terms on its velocity (vx, vy, w). tree_add adds a solve's
- * impulses to the accumulated ones. */
+ * rows' terms on its velocity (vx, vy, w). tree_soft (NULL when the type
+ * has no soft rows) says whether the rows are soft this step and then
+ * gives their compliance C and velocity bias (with C times the
+ * accumulated impulses). tree_add adds a solve's impulses to the
+ * accumulated ones. */
 typedef struct {
     void (*prepare)(joint_t *joint);
     void (*solve_velocity)(joint_t *joint);
     void (*solve_position)(joint_t *joint);
     int (*tree_rows)(const joint_t *joint, joint_pose_t p1, joint_pose_t p2, double error[],
                      double j1[][3], double j2[][3]);
+    bool (*tree_soft)(const joint_t *joint, double c[][JOINT_TREE_ROWS], double bias[]);
     void (*tree_add)(joint_t *joint, const double impulse[]);
 } joint_kind_t;
 

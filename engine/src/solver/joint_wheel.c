@@ -90,5 +90,5 @@ static void tree_add(joint_t *joint, const double impulse[]) {
     joint->point_impulse.x += impulse[0];
 }
 
-const joint_kind_t JOINT_WHEEL_KIND = {prepare, solve_velocity, solve_position, tree_rows,
-                                       tree_add};
+const joint_kind_t JOINT_WHEEL_KIND = {prepare,   solve_velocity, solve_position,
+                                       tree_rows, NULL,           tree_add};
