@@ -10,11 +10,12 @@
  * velocity sweep of the joints the tree does not take, then the tree's
  * exact solve of its rows (the impulses added to the accumulated ones);
  * joint_solver_correct after each position sweep of the contacts, the
- * position sweeps of the rigid joints the tree does not take, then one
- * Newton step of the tree's rigid rows onto their positions (factored at
- * the poses reached); joint_solver_project after the bound on the step's
- * corrections (solver_limit_corrections, the contacts'), Newton steps
- * until the tree's rows are within 1e-12 of their positions.
+ * position sweeps of the rigid joints the tree does not take;
+ * joint_solver_project after the bound on the step's corrections
+ * (solver_limit_corrections, the contacts'), Newton steps of the tree's
+ * rigid rows onto their positions, each factored at the poses reached,
+ * until they are within 1e-12 (m, rad), at most 8 (then position sweeps
+ * of those joints too).
  *
  * The tree takes, in the joints' order, each joint without a spring,
  * limit, motor or force bound (revolute: its point; weld, rigid or soft:
@@ -45,7 +46,7 @@ typedef struct {
 void joint_solver_prepare(const joint_step_t *step, const solver_bodies_t *bodies,
                           const solver_settings_t *settings);
 void joint_solver_iterate(const joint_step_t *step, const solver_bodies_t *bodies);
-void joint_solver_correct(const joint_step_t *step, const solver_bodies_t *bodies);
+void joint_solver_correct(const joint_step_t *step);
 void joint_solver_project(const joint_step_t *step, const solver_bodies_t *bodies);
 
 #endif // #ifndef JOINT_SOLVER_H

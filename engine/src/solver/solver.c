@@ -122,11 +122,12 @@ void solver_solve(solver_wide_t *wide, shock_t *shock, solver_contact_t *contact
         for (size_t i = 0; i < wide->loose_count; i++) {
             solver_solve_position(&contacts[wide->loose[i]], velocities, bodies->displacements);
         }
-        if (joints->count > 0) joint_solver_correct(joints, bodies);
+        if (joints->count > 0) joint_solver_correct(joints);
     }
     for_bodies(wide->workers, &split, limit_chunk);
-    /* After the bound on the corrections, which is the contacts' (joints
-     * held by it reopened by the centripetal drift of a whipping chain). */
+    /* The tree's projection after the bound on the corrections, which is
+     * the contacts': held by it, a whipping chain's joints stayed open by
+     * the step's centripetal drift. */
     if (joints->count > 0) joint_solver_project(joints, bodies);
     stage_clock_lap(settings->clock, SCENE_STAGE_POSITION);
 }
