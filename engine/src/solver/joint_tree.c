@@ -3,8 +3,8 @@
 #include "base/check.h"
 #include "base/memory.h"
 
-/* A pivot at most this share of its row's diagonal is taken for zero: the
- * row depends on the others before it, and takes no impulse. */
+/* A pivot at most this share of its row's scale (ldl_factor) is taken for
+ * zero: the row depends on the others before it, and takes no impulse. */
 static const double JOINT_TREE_PIVOT = 1e-12;
 /* A joint between two moving bodies whose child end cannot move along some
  * of its rows (its subtree is held by the world: the far half of a bridge
@@ -51,7 +51,6 @@ struct joint_tree_edge {
     int offset;
     uint32_t parent;        /* between moving bodies: the end nearer the root */
     ldl_t s;                /* C + Jc P Jc^T, Jc the child end's rows */
-    double smallest_pivot;  /* of s, as a share of its diagonal */
     double rhs[JOINT_TREE_ROWS], b[JOINT_TREE_ROWS], x[JOINT_TREE_ROWS];
     double impulse[JOINT_TREE_ROWS];
 };
