@@ -379,7 +379,7 @@ static void test_layout_scales_the_ui_with_the_window(void) {
 
 /* Frames of 2 steps (1/60 s) at a constant energy of `energy` J. */
 static void drift_frames(energy_drift_t *drift, int frames, double energy, unsigned long changes) {
-    for (int i = 0; i < frames; i++) energy_drift_sample(drift, 2, energy, 3, changes);
+    for (int i = 0; i < frames; i++) energy_drift_sample(drift, 2, energy, 0.0, 3, changes);
 }
 
 /* The drift is measured from the first energy after each change: a body added
@@ -388,7 +388,7 @@ static void drift_frames(energy_drift_t *drift, int frames, double energy, unsig
 static void test_energy_drift_from_its_reference(void) {
     static energy_drift_t drift;
     energy_drift_init(&drift);
-    energy_drift_sample(&drift, 2, 0.0, 0, 1);
+    energy_drift_sample(&drift, 2, 0.0, 0.0, 0, 1);
     EXPECT(!drift.valid, "a drift with no bodies");
     drift_frames(&drift, 1, 200.0, 2);
     EXPECT(drift.valid && drift.drift == 0.0, "the first energy is not the reference (%g)",
@@ -421,14 +421,38 @@ static void test_energy_drift_from_its_reference(void) {
     /* Paused: no column moves, but a body deleted meanwhile is a new reference. */
     size_t head = drift.head;
     double elapsed = drift.elapsed;
-    energy_drift_sample(&drift, 0, 400.0, 2, 4);
+    energy_drift_sample(&drift, 0, 400.0, 0.0, 2, 4);
     EXPECT(drift.head == head && drift.elapsed == elapsed, "a paused frame moved the chart");
     EXPECT(drift.reference == 400.0 && drift.drift == 0.0, "paused deletion: reference %g J",
            drift.reference);
     /* No energy to compare with (gravity off, all at rest). */
     energy_drift_rereference(&drift);
-    energy_drift_sample(&drift, 2, 0.0, 3, 4);
+    energy_drift_sample(&drift, 2, 0.0, 0.0, 3, 4);
     EXPECT(!drift.valid, "a drift relative to 0 J");
+}
+
+/* A pendulum released at the height of its pivot has E_ref near 0 J (here
+ * 1e-5 J, rounding): its drift is measured against the kinetic energy the
+ * swing reaches (10 J), so a 0.1 J error reads 1%, not 10000%. Before any
+ * motion the scale is |E_ref|. */
+static void test_energy_drift_scale_is_the_motion_when_e_ref_is_near_zero(void) {
+    static energy_drift_t drift;
+    energy_drift_init(&drift);
+    energy_drift_sample(&drift, 2, 1e-5, 0.0, 2, 1);
+    energy_drift_sample(&drift, 2, 2e-5, 0.0, 2, 1);
+    EXPECT(drift.valid && fabs(drift.drift - 1.0) < 1e-9, "before motion: drift %g of |E_ref|",
+           drift.drift);
+    energy_drift_sample(&drift, 2, 0.05, 10.0, 2, 1);
+    EXPECT(fabs(drift.drift - (0.05 - 1e-5) / 10.0) < 1e-12, "swinging: drift %g", drift.drift);
+    energy_drift_sample(&drift, 2, -0.1, 4.0, 2, 1);
+    EXPECT(fabs(drift.drift - (-0.1 - 1e-5) / 10.0) < 1e-12,
+           "the peak is kept as the swing slows: drift %g", drift.drift);
+    /* A new reference forgets the peak. */
+    energy_drift_rereference(&drift);
+    energy_drift_sample(&drift, 2, 100.0, 1.0, 2, 1);
+    energy_drift_sample(&drift, 2, 99.0, 1.0, 2, 1);
+    EXPECT(fabs(drift.drift + 0.01) < 1e-12, "|E_ref| 100 J over a peak of 1 J: drift %g",
+           drift.drift);
 }
 
 /* The chart holds the last 5 s: 200 columns of 3 steps; frames of 4 steps
@@ -438,7 +462,7 @@ static void test_energy_drift_chart_window_and_scale(void) {
     energy_drift_init(&drift);
     /* 10 s of a drift rising 0.1% a second. */
     for (int frame = 0; frame <= 600; frame++) {
-        energy_drift_sample(&drift, 2, 1000.0 * (1.0 + 0.001 * frame / 60.0), 3, 1);
+        energy_drift_sample(&drift, 2, 1000.0 * (1.0 + 0.001 * frame / 60.0), 0.0, 3, 1);
     }
     const drift_column_t *oldest = energy_drift_column(&drift, DRIFT_COLUMNS - 1);
     const drift_column_t *newest = energy_drift_column(&drift, 0);
@@ -448,7 +472,7 @@ static void test_energy_drift_chart_window_and_scale(void) {
            newest->high);
     EXPECT(fabs(energy_drift_scale(&drift) - 0.01) < 1e-12, "scale %g for 1%%",
            energy_drift_scale(&drift));
-    for (int frame = 0; frame < 200; frame++) energy_drift_sample(&drift, 4, 1000.0, 3, 2);
+    for (int frame = 0; frame < 200; frame++) energy_drift_sample(&drift, 4, 1000.0, 0.0, 3, 2);
     size_t gaps = 0;
     for (size_t age = 0; age < DRIFT_COLUMNS; age++) gaps += !energy_drift_column(&drift, age)->filled;
     EXPECT(gaps == 0, "%zu empty columns after frames of 4 steps", gaps);
@@ -482,7 +506,7 @@ static void test_energy_drift_columns_follow_the_step(void) {
         double frame_time = per_frame * steps[i];
         /* 10 s of a drift rising 0.1% a second. */
         for (double t = 0.0; t <= 10.0 + 1e-9; t += frame_time) {
-            energy_drift_sample(&drift, per_frame, 1000.0 * (1.0 + 0.001 * t), 3, 1);
+            energy_drift_sample(&drift, per_frame, 1000.0 * (1.0 + 0.001 * t), 0.0, 3, 1);
         }
         const drift_column_t *oldest = energy_drift_column(&drift, DRIFT_COLUMNS - 1);
         EXPECT(oldest->filled && fabs(oldest->low - 0.005) < 0.0002,
@@ -1258,6 +1282,8 @@ static const app_test_t TESTS[] = {
     {"app_units.layout_scales_the_ui_with_the_window", test_layout_scales_the_ui_with_the_window},
     {"app_units.energy_drift_from_its_reference", test_energy_drift_from_its_reference},
     {"app_units.energy_drift_chart_window_and_scale", test_energy_drift_chart_window_and_scale},
+    {"app_units.energy_drift_scale_is_the_motion_when_e_ref_is_near_zero",
+     test_energy_drift_scale_is_the_motion_when_e_ref_is_near_zero},
     {"app_units.energy_drift_text_fits", test_energy_drift_text_fits},
     {"app_units.integrators_by_name", test_integrators_by_name},
     {"app_units.clock_follows_the_scene_timestep", test_clock_follows_the_scene_timestep},

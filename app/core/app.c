@@ -419,7 +419,7 @@ void app_frame_done(app_t *app, int steps) {
     announce_removals(app);
     announce_game(app);
     energy_drift_sample(&app->drift, steps, app->totals.kinetic + app->totals.potential,
-                        app->totals.bodies, app->sandbox.changes);
+                        app->totals.kinetic, app->totals.bodies, app->sandbox.changes);
 }
 
 void app_set_integrator(app_t *app, integrator_t integrator) {

@@ -56,8 +56,8 @@ static void advance(energy_drift_t *drift, int steps) {
     }
 }
 
-void energy_drift_sample(energy_drift_t *drift, int steps, double energy, size_t bodies,
-                         unsigned long changes) {
+void energy_drift_sample(energy_drift_t *drift, int steps, double energy, double kinetic,
+                         size_t bodies, unsigned long changes) {
     if (steps > 0) advance(drift, steps);
     drift_column_t *column = &drift->columns[drift->head];
     bool retake = !drift->have_reference || changes != drift->changes;
@@ -68,12 +68,15 @@ void energy_drift_sample(energy_drift_t *drift, int steps, double energy, size_t
             column->filled = false;
         }
         drift->reference = energy;
+        drift->kinetic_peak = 0.0;
         drift->have_reference = true;
         drift->changes = changes;
     }
+    if (isfinite(kinetic)) drift->kinetic_peak = fmax(drift->kinetic_peak, kinetic);
+    double scale = fmax(fabs(drift->reference), drift->kinetic_peak);
     drift->valid = bodies > 0 && isfinite(energy) && isfinite(drift->reference) &&
-                   fabs(drift->reference) >= DRIFT_MIN_ENERGY;
-    drift->drift = drift->valid ? (energy - drift->reference) / fabs(drift->reference) : 0.0;
+                   scale >= DRIFT_MIN_ENERGY;
+    drift->drift = drift->valid ? (energy - drift->reference) / scale : 0.0;
     if (drift->valid && steps > 0) put(column, drift->drift);
 }
 

@@ -5,10 +5,14 @@
  * The scene's relative energy drift over the last few seconds of simulated
  * time, for the INTEGRATOR panel's strip chart:
  *
- *     drift = (E - E_ref) / |E_ref|
+ *     drift = (E - E_ref) / max(|E_ref|, K_peak)
  *
  * E is what the caller measures after each frame's steps (the sandbox: the
- * kinetic plus gravitational potential energy of every body of finite mass).
+ * kinetic plus gravitational potential energy of every body of finite mass)
+ * and K_peak the largest kinetic energy since E_ref. The potential's zero
+ * is arbitrary, so |E_ref| alone can be as near 0 as it likes (a pendulum
+ * released at the height of its pivot); the energy the motion exchanges is
+ * then the scale that means something.
  * E_ref is the first E after a change that is not the integrator's doing:
  * bodies added or removed (the caller's change counter moves), or a
  * rereference asked for (the integrator switched, gravity toggled, a grab let
@@ -32,7 +36,8 @@
 /* The vertical scale: 1, 2, 5 times a power of ten, from 0.01% to 1000%. */
 #define DRIFT_MIN_SCALE 1e-4
 #define DRIFT_MAX_SCALE 10.0
-/* Below this |E_ref| (J) a relative drift means nothing: none is shown. */
+/* Below this scale, max(|E_ref|, K_peak) (J), a relative drift means
+ * nothing: none is shown. */
 #define DRIFT_MIN_ENERGY 1e-6
 
 typedef struct {
@@ -47,10 +52,11 @@ typedef struct {
     double elapsed;         /* simulated seconds into the newest column */
     double step;            /* seconds per step */
     double reference;       /* E_ref (J) */
+    double kinetic_peak;    /* K_peak (J) */
     bool have_reference;    /* false: the next sample takes one */
     unsigned long changes;  /* the caller's change counter at E_ref */
     double drift;           /* the latest drift */
-    bool valid;             /* whether `drift` means anything (bodies, |E_ref| large enough) */
+    bool valid;             /* whether `drift` means anything (bodies, a scale large enough) */
 } energy_drift_t;
 
 /* Empty, for steps of DRIFT_DEFAULT_STEP; the first sample takes the
@@ -64,13 +70,13 @@ void energy_drift_set_step(energy_drift_t *drift, double step);
 void energy_drift_rereference(energy_drift_t *drift);
 
 /*
- * After a frame in which `steps` physics steps ran, the energy then (J), how
- * many bodies it counts, and the caller's change counter (bodies added or
- * removed move it). A frame without steps (paused) records nothing on the
+ * After a frame in which `steps` physics steps ran, the energy then and the
+ * kinetic part of it (J), how many bodies it counts, and the caller's change
+ * counter (bodies added or removed move it). A frame without steps (paused) records nothing on the
  * chart but may still take a new reference (a body dropped while paused).
  */
-void energy_drift_sample(energy_drift_t *drift, int steps, double energy, size_t bodies,
-                         unsigned long changes);
+void energy_drift_sample(energy_drift_t *drift, int steps, double energy, double kinetic,
+                         size_t bodies, unsigned long changes);
 
 /* A column by age: 0 the newest, DRIFT_COLUMNS - 1 the oldest. */
 const drift_column_t *energy_drift_column(const energy_drift_t *drift, size_t age);

@@ -12,6 +12,9 @@
 #                       instructions per step, the sleeping pile and the
 #                       quality figures over the layout seeds (tens of minutes;
 #                       run it on an idle machine)
+#   make bench-joints   the joints section of docs/bench.md alone (jointchain
+#                       and ragdolls: this engine, Box2D v3 SSE2 and Chipmunk2D
+#                       when built; a few minutes), the rest of the page kept
 #   make bench-instructions  instructions per step under callgrind
 #                       (BENCH_INSTRUCTIONS="pile:1000 pyramid:20")
 #   make bench-build    builds whichever of the programs can be built
@@ -26,7 +29,8 @@
 
 BENCH_ARGS ?=
 BENCH_DIR := build/bench
-BENCH_HDR := tests/bench/bench_common.h tests/bench/bench_scenes.h tests/bench/bench_ours.h
+BENCH_HDR := tests/bench/bench_common.h tests/bench/bench_scenes.h tests/bench/bench_ours.h \
+	tests/bench/bench_joint_scenes.h
 BENCH_CFLAGS := $(CSTD) $(WARN) -O2
 BENCH_CXXFLAGS := -std=c++17 -Wall -Wextra -Werror -Wshadow -O2
 # Recursive (=): evaluated only when a bench rule runs.
@@ -54,7 +58,7 @@ BENCH_PROGRAMS = $(BENCH_DIR)/bench_engine $(BOX2D3_PROGRAMS) \
 	$(if $(BENCH_HAVE_BOX2D),$(BENCH_DIR)/bench_box2d)
 
 .PHONY: bench bench-compare bench-compare-run bench-build bench-stages bench-scale bench-seeds \
-	bench-report bench-report-run bench-instructions
+	bench-report bench-report-run bench-instructions bench-joints
 
 comma := ,
 # Which program each variant of BENCH_VARIANTS belongs to (bench-instructions).
@@ -143,6 +147,13 @@ bench-report-run: $(BENCH_PROGRAMS)
 	@CC="$(CC)" PROVENANCE_FLAGS="$(BENCH_CFLAGS)" \
 		tests/provenance.sh stamp docs/bench.md build/bench/report.provenance
 
+# The joints section alone: only the programs it compares.
+BENCH_JOINT_PROGRAMS = $(BENCH_DIR)/bench_engine $(if $(BOX2D3_TREE),$(BENCH_DIR)/bench_box2d3-sse2) \
+	$(if $(BENCH_HAVE_CHIPMUNK),$(BENCH_DIR)/bench_chipmunk)
+bench-joints: $(BENCH_JOINT_PROGRAMS)
+	@$(if $(BOX2D3_NOTE),echo "$(BOX2D3_NOTE)")
+	sh tests/bench/bench_report.sh --section joints docs/bench.md $(BENCH_JOINT_PROGRAMS)
+
 # make bench-stages: what a scene pays for the stages it does not use
 # (docs/leave-out.md, about a minute and a half).
 $(BENCH_DIR)/bench_stages: tests/bench/bench_stages.c build/libjostle.a
@@ -154,6 +165,11 @@ bench-stages: $(BENCH_DIR)/bench_stages
 	$(BENCH_DIR)/bench_stages docs/leave-out.md
 	@CC="$(CC)" PROVENANCE_FLAGS="$(BENCH_CFLAGS)" \
 		tests/provenance.sh stamp docs/leave-out.md build/bench/stages.provenance
+
+# make check: the joint scenes on this engine hold their bounds and repeat
+# bit for bit (tests/bench/check_joints.sh, a few seconds).
+CHECK_PROGRAMS += tests/bench/check_joints.sh
+check: $(BENCH_DIR)/bench_engine
 
 # make check: the leave-out page's figures that are not timings (what each
 # scene runs, bodies asleep) come out the same from the sources.

@@ -27,6 +27,10 @@
  *                   list for every time-of-impact event, which dominates a
  *                   large pile (83% of the time at N = 10000 under perf).
  *
+ * Joints: b2RevoluteJoint (b2RevoluteJointDef::Initialize at the scene's
+ * world point, to a static body at the origin for the world); groups: a
+ * negative groupIndex.
+ *
  * Penetration: on the scene's polygons, without Box2D's skins. The
  * separations of b2WorldManifold (the contact's manifold at the bodies'
  * transforms after the step) are between the polygons grown by their skins
@@ -59,6 +63,7 @@ struct B2World {
     std::vector<b2Body *> bodies;
     std::vector<GravityPair> pairs;
     int position_iterations = 3;
+    b2Body *ground = nullptr; /* the world's end of joints, made when needed */
     explicit B2World(double gy) : world(b2Vec2(0.0f, (float)gy)) {}
 };
 
@@ -279,6 +284,35 @@ void b2_set_angular_velocity(void *world, int body, double omega) {
     w->bodies[(size_t)body]->SetAngularVelocity((float)omega);
 }
 
+/* b2RevoluteJointDef::Initialize at the world point (reference angle the
+ * bodies' relative angle now), a static body at the origin standing for
+ * the world, the limits when asked. */
+void b2_add_revolute(void *world, int body1, int body2, double x, double y, int limit,
+                     double lower, double upper) {
+    B2World *w = static_cast<B2World *>(world);
+    if (body1 < 0 && w->ground == nullptr) {
+        b2BodyDef def;
+        w->ground = w->world.CreateBody(&def);
+    }
+    b2Body *a = body1 >= 0 ? w->bodies[(size_t)body1] : w->ground;
+    b2RevoluteJointDef def;
+    def.Initialize(a, w->bodies[(size_t)body2], b2Vec2((float)x, (float)y));
+    def.enableLimit = limit != 0;
+    def.lowerAngle = (float)lower;
+    def.upperAngle = (float)upper;
+    w->world.CreateJoint(&def);
+}
+
+/* A negative groupIndex: never collide within the group. */
+void b2_set_group(void *world, int body, int group) {
+    B2World *w = static_cast<B2World *>(world);
+    for (b2Fixture *f = w->bodies[(size_t)body]->GetFixtureList(); f; f = f->GetNext()) {
+        b2Filter filter = f->GetFilterData();
+        filter.groupIndex = (int16)-group;
+        f->SetFilterData(filter);
+    }
+}
+
 const bench_ops_t box2d_ops = {
     "box2d",         NULL,          0,
     0,               b2_describe,   b2_world_new,
@@ -286,6 +320,7 @@ const bench_ops_t box2d_ops = {
     b2_set_velocity, b2_add_gravity_pair, b2_step,
     b2_get_state,    b2_max_penetration, b2_pair_penetration,
     b2_add_spring,   b2_set_angular_velocity, 1.0, NULL,
+    b2_add_revolute, b2_set_group,
 };
 
 const bench_ops_t box2d_nosleep_ops = {
@@ -295,6 +330,7 @@ const bench_ops_t box2d_nosleep_ops = {
     b2_set_velocity,   b2_add_gravity_pair,           b2_step,
     b2_get_state,      b2_max_penetration,            b2_pair_penetration,
     b2_add_spring,     b2_set_angular_velocity,       1.0, NULL,
+    b2_add_revolute, b2_set_group,
 };
 
 const bench_ops_t box2d_matched_ops = {
@@ -304,6 +340,7 @@ const bench_ops_t box2d_matched_ops = {
     b2_set_velocity,   b2_add_gravity_pair,           b2_step,
     b2_get_state,      b2_max_penetration,            b2_pair_penetration,
     b2_add_spring,     b2_set_angular_velocity,       1.0, NULL,
+    b2_add_revolute, b2_set_group,
 };
 
 const bench_ops_t box2d_discrete_ops = {
@@ -313,6 +350,7 @@ const bench_ops_t box2d_discrete_ops = {
     b2_set_velocity,  b2_add_gravity_pair, b2_step,
     b2_get_state,     b2_max_penetration, b2_pair_penetration,
     b2_add_spring,    b2_set_angular_velocity, 1.0, NULL,
+    b2_add_revolute, b2_set_group,
 };
 
 } // namespace

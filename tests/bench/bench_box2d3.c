@@ -35,6 +35,13 @@
  * v3's joint sees along the line of centres), so that the spring's force is
  * k (length - rest) + c (rate of change of length); v3 solves it as a soft
  * constraint inside its sub-steps.
+ *
+ * Joints: b2RevoluteJoint from b2DefaultRevoluteJointDef (its joint
+ * softness, printed by describe(), kept), the
+ * local frames at the scene's world point, body B's frame turned so that
+ * the angle and its limits count from the pose the joint is made in; a
+ * joint to the world is made to a static body at the origin. Groups: a
+ * negative filter.groupIndex (b2Shape_SetFilter).
  */
 
 #include "box2d/box2d.h"
@@ -65,17 +72,21 @@ typedef struct {
     int pair_count;
     b2ContactData *contacts; /* scratch for the penetration queries */
     int contact_capacity;
+    b2BodyId ground; /* a static body at the origin for joints to the world; made when needed */
+    int has_ground;
 } b3_world_t;
 
 static void b3_describe(FILE *out) {
     b2Version v = b2GetVersion();
     b2WorldDef def = b2DefaultWorldDef();
     b2BodyDef body = b2DefaultBodyDef();
+    b2RevoluteJointDef joint = b2DefaultRevoluteJointDef();
     fprintf(out,
             "# box2d3-%s: Box2D v3 %d.%d.%d (source 617d32ab, %s build, %s precision); defaults "
             "kept: %d sub-steps, contact hertz %g, damping ratio %g, push-out speed %g m/s, "
             "restitution threshold %g m/s, continuous %s, maximum linear speed %g m/s, "
-            "workers %d, body sleep threshold %g m/s, polygon radius 0; set: sleeping off "
+            "workers %d, body sleep threshold %g m/s, polygon radius 0, joint softness %g Hz "
+            "damping ratio %g; set: sleeping off "
             "(default %s; box2d3-%s-sleeping keeps it on, pile only); penetration: shapes "
             "collided again at the final transforms (no speculative margin, no skin)\n",
             BENCH_BOX2D3_BUILD, v.major, v.minor, v.revision, BENCH_BOX2D3_BUILD,
@@ -83,7 +94,9 @@ static void b3_describe(FILE *out) {
             (double)def.contactDampingRatio, (double)def.contactSpeed,
             (double)def.restitutionThreshold, def.enableContinuous ? "on" : "off",
             (double)def.maximumLinearSpeed, def.workerCount < 1 ? 1 : def.workerCount,
-            (double)body.sleepThreshold, def.enableSleep ? "on" : "off", BENCH_BOX2D3_BUILD);
+            (double)body.sleepThreshold, (double)joint.base.constraintHertz,
+            (double)joint.base.constraintDampingRatio, def.enableSleep ? "on" : "off",
+            BENCH_BOX2D3_BUILD);
 }
 
 static void b3_describe_none(FILE *out) {
@@ -376,6 +389,44 @@ static void b3_add_spring(void *world, int body1, int body2, double k, double da
     b2CreateDistanceJoint(w->world, &def);
 }
 
+/* The static body at the origin that stands for the world in joints. */
+static b2BodyId b3_ground(b3_world_t *w) {
+    if (!w->has_ground) {
+        b2BodyDef def = b2DefaultBodyDef();
+        w->ground = b2CreateBody(w->world, &def);
+        w->has_ground = 1;
+    }
+    return w->ground;
+}
+
+/* b2RevoluteJointDef from b2DefaultRevoluteJointDef: each body's local
+ * frame at the world point, body B's turned by A's angle less B's so that
+ * the joint's angle (and its limits) count from the pose now. */
+static void b3_add_revolute(void *world, int body1, int body2, double x, double y, int limit,
+                            double lower, double upper) {
+    b3_world_t *w = (b3_world_t *)world;
+    b2BodyId a = body1 >= 0 ? w->bodies[body1] : b3_ground(w), b = w->bodies[body2];
+    b2Pos point = {(float)x, (float)y};
+    b2RevoluteJointDef def = b2DefaultRevoluteJointDef();
+    def.base.bodyIdA = a;
+    def.base.bodyIdB = b;
+    def.base.localFrameA.p = b2Body_GetLocalPoint(a, point);
+    def.base.localFrameB.p = b2Body_GetLocalPoint(b, point);
+    def.base.localFrameB.q = b2InvMulRot(b2Body_GetRotation(b), b2Body_GetRotation(a));
+    def.enableLimit = limit != 0;
+    def.lowerAngle = (float)lower;
+    def.upperAngle = (float)upper;
+    b2CreateRevoluteJoint(w->world, &def);
+}
+
+/* A negative group index: never collide within the group. */
+static void b3_set_group(void *world, int body, int group) {
+    b3_world_t *w = (b3_world_t *)world;
+    b2Filter filter = b2Shape_GetFilter(w->shapes[body]);
+    filter.groupIndex = -group;
+    b2Shape_SetFilter(w->shapes[body], filter);
+}
+
 #define B3_OPS(name, only, describe, world_new, awake)                                                  \
     {name,                                                                                         \
      only,                                                                                         \
@@ -395,7 +446,9 @@ static void b3_add_spring(void *world, int body1, int body2, double k, double da
      b3_add_spring,                                                                                \
      b3_set_angular_velocity,                                                                      \
      B3_SPRING_REST,                                                                               \
-     awake}
+     awake,                                                                                        \
+     b3_add_revolute,                                                                              \
+     b3_set_group}
 
 static const bench_ops_t box2d3_ops =
     B3_OPS("box2d3-" BENCH_BOX2D3_BUILD, NULL, b3_describe, b3_world_new, NULL);

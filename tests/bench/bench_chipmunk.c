@@ -22,6 +22,9 @@
  * --iterations N sets both variants' iterations.
  * Bodies get the scene's mass and cpMomentForPoly's moment; static boxes are
  * static bodies of their own at the box's centre.
+ * Joints: cpPivotJoint at the scene's world point (the space's static body
+ * for the world) and, for limits, cpRotaryLimitJoint; groups: the shapes'
+ * filter group.
  * Penetration: -distance of the points of cpArbiterGetContactPointSet over
  * the arbiters of the dynamic bodies after the step (Chipmunk moves bodies,
  * then collides, then solves, so these are the current positions'; its
@@ -324,18 +327,55 @@ static double cp_pair_penetration(void *world, int body1, int body2) {
  * the step's velocity update (Chipmunk moves the bodies first), its
  * damping solved with the velocity iterations (an exponential decay of the
  * relative velocity along the spring). */
-static void cp_add_spring(void *world, int body1, int body2, double k, double damping,
-                          double rest) {
-    cp_world_t *w = (cp_world_t *)world;
-    cpConstraint *spring = cpSpaceAddConstraint(
-        w->space, cpDampedSpringNew(w->bodies[body1], w->bodies[body2], cpvzero, cpvzero, rest,
-                                    k, damping));
+/* Adds a constraint to the space and keeps it for cp_world_free. */
+static void cp_keep(cp_world_t *w, cpConstraint *constraint) {
+    cpSpaceAddConstraint(w->space, constraint);
     if (w->constraint_count == w->constraint_capacity) {
         w->constraint_capacity = w->constraint_capacity ? 2 * w->constraint_capacity : 8;
         w->constraints = (cpConstraint **)realloc(
             w->constraints, sizeof(cpConstraint *) * (size_t)w->constraint_capacity);
     }
-    w->constraints[w->constraint_count++] = spring;
+    w->constraints[w->constraint_count++] = constraint;
+}
+
+static void cp_add_spring(void *world, int body1, int body2, double k, double damping,
+                          double rest) {
+    cp_world_t *w = (cp_world_t *)world;
+    cp_keep(w, cpDampedSpringNew(w->bodies[body1], w->bodies[body2], cpvzero, cpvzero, rest, k,
+                                 damping));
+}
+
+/* cpPivotJoint at the world point (to the space's static body for the
+ * world) and, with limits, a cpRotaryLimitJoint, whose bounds are on the
+ * bodies' relative angle itself: the scene's limits moved by the relative
+ * angle now. Neither lets the two bodies collide. */
+static void cp_add_revolute(void *world, int body1, int body2, double x, double y, int limit,
+                            double lower, double upper) {
+    cp_world_t *w = (cp_world_t *)world;
+    cpBody *a = body1 >= 0 ? w->bodies[body1] : cpSpaceGetStaticBody(w->space);
+    cpBody *b = w->bodies[body2];
+    cpConstraint *pivot = cpPivotJointNew(a, b, cpv(x, y));
+    cpConstraintSetCollideBodies(pivot, cpFalse);
+    cp_keep(w, pivot);
+    if (limit) {
+        double angle = cpBodyGetAngle(b) - cpBodyGetAngle(a);
+        cpConstraint *rotary = cpRotaryLimitJointNew(a, b, angle + lower, angle + upper);
+        cpConstraintSetCollideBodies(rotary, cpFalse);
+        cp_keep(w, rotary);
+    }
+}
+
+static void cp_group_shape(cpBody *body, cpShape *shape, void *data) {
+    (void)body;
+    cpShapeFilter filter = cpShapeGetFilter(shape);
+    filter.group = (cpGroup)(size_t)data;
+    cpShapeSetFilter(shape, filter);
+}
+
+/* The shapes' filter group: shapes of one non-zero group never collide. */
+static void cp_set_group(void *world, int body, int group) {
+    cp_world_t *w = (cp_world_t *)world;
+    cpBodyEachShape(w->bodies[body], cp_group_shape, (void *)(size_t)group);
 }
 
 static void cp_set_angular_velocity(void *world, int body, double omega) {
@@ -350,6 +390,7 @@ static const bench_ops_t chipmunk_ops = {
     cp_step,             cp_get_state,   cp_max_penetration,
     cp_pair_penetration, cp_add_spring,  cp_set_angular_velocity,
     1.0,                 NULL,
+    cp_add_revolute,     cp_set_group,
 };
 
 static const bench_ops_t chipmunk_default_ops = {
@@ -359,6 +400,7 @@ static const bench_ops_t chipmunk_default_ops = {
     cp_step,              cp_get_state,   cp_max_penetration,
     cp_pair_penetration,  cp_add_spring,  cp_set_angular_velocity,
     1.0,                 NULL,
+    cp_add_revolute,     cp_set_group,
 };
 
 int main(int argc, char **argv) {

@@ -313,6 +313,18 @@ typedef struct bench_ops {
     /* How many movable bodies are awake; NULL for an engine whose
      * variants all run with sleeping off. */
     int (*awake_bodies)(void *world);
+    /* A revolute joint (a pin): body2's point at the world point (x, y)
+     * held on body1's point there (body1 -1: the world), both taken at the
+     * bodies' current poses; the two bodies make no contact with each other.
+     * With limit, body2's angle less body1's, counted from their relative
+     * angle now, is kept in [lower, upper] (rad, lower <= 0 <= upper, within
+     * +-0.99 pi). NULL for an engine without joints: the scenes that need
+     * them are skipped with a note. */
+    void (*add_revolute)(void *world, int body1, int body2, double x, double y, int limit,
+                         double lower, double upper);
+    /* Bodies given the same group (> 0) make no contact with one another;
+     * their other contacts are kept. Needed with add_revolute. */
+    void (*set_group)(void *world, int body, int group);
 } bench_ops_t;
 
 /* Area (m^2) of a shape: mass = area at density 1. */

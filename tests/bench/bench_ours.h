@@ -21,8 +21,13 @@
  * record is made by the narrowphase of that tick, i.e. before its solve and
  * integration (the positions one step earlier than the other engines' ones).
  *
+ * Joints: joint_def_revolute at the scene's world point, reference angle
+ * the bodies' relative angle then, its limits when asked; a group is the
+ * collision filter's group (body_set_collision_filter).
+ *
  * Variants: "ours" (world contacts, every scene), "ours-seed" (cradle
- * only, as the scene asks for seed-style elastic collisions): contacts off
+ * only, as the scene asks for seed-style elastic collisions; no joints, as
+ * they need world contacts): contacts off
  * and create_physics_collision(scene, a, b, e) for every pair of bodies,
  * with e the larger of the two elasticities (1 in cradle); "ours-symplectic"
  * (orbit only): INTEGRATOR_SYMPLECTIC_EULER instead of the default seed
@@ -261,13 +266,36 @@ static void ours_set_angular_velocity(void *world, int body, double omega) {
     body_set_angular_velocity(w->bodies[body], omega);
 }
 
+/* joint_def_revolute at the world point, its reference angle the bodies'
+ * relative angle now, with the limits when asked. */
+static void ours_add_revolute(void *world, int body1, int body2, double x, double y, int limit,
+                              double lower, double upper) {
+    ours_world_t *w = (ours_world_t *)world;
+    body_t *b1 = body1 >= 0 ? w->bodies[body1] : NULL, *b2 = w->bodies[body2];
+    joint_def_t def = joint_def_revolute(b1, b2, (vector_t){x, y});
+    /* joint_def_revolute leaves it 0; the limits count from the pose now */
+    def.reference_angle = body_get_rotation(b2) - (b1 != NULL ? body_get_rotation(b1) : 0.0);
+    def.enable_limit = limit != 0;
+    def.lower_angle = lower;
+    def.upper_angle = upper;
+    joint_create(w->scene, &def);
+}
+
+/* The body's filter with its group replaced. */
+static void ours_set_group(void *world, int body, int group) {
+    ours_world_t *w = (ours_world_t *)world;
+    uint32_t category, mask;
+    body_get_collision_filter(w->bodies[body], &category, &mask, NULL);
+    body_set_collision_filter(w->bodies[body], category, mask, (uint32_t)group);
+}
+
 static const bench_ops_t ours_ops = {
     "ours",          NULL,           0, 0, ours_describe,
     ours_world_new,  ours_world_free, ours_add_static_box,
     ours_add_body,   ours_set_velocity, ours_add_gravity_pair,
     ours_step,       ours_get_state, ours_max_penetration,
     ours_pair_penetration, ours_add_spring, ours_set_angular_velocity, 0.0,
-    NULL,
+    NULL,                  ours_add_revolute, ours_set_group,
 };
 
 static const bench_ops_t ours_seed_ops = {
@@ -276,7 +304,7 @@ static const bench_ops_t ours_seed_ops = {
     ours_add_body,       ours_set_velocity, ours_add_gravity_pair,
     ours_step,           ours_get_state,  ours_max_penetration,
     ours_pair_penetration, ours_add_spring, ours_set_angular_velocity, 0.0,
-    NULL,
+    NULL,                  NULL,              NULL,
 };
 
 static const bench_ops_t ours_symplectic_ops = {
@@ -285,7 +313,7 @@ static const bench_ops_t ours_symplectic_ops = {
     ours_add_body,             ours_set_velocity, ours_add_gravity_pair,
     ours_step,                 ours_get_state,  ours_max_penetration,
     ours_pair_penetration, ours_add_spring, ours_set_angular_velocity, 0.0,
-    NULL,
+    NULL,                  ours_add_revolute, ours_set_group,
 };
 
 static const bench_ops_t ours_sleeping_ops = {
@@ -294,7 +322,7 @@ static const bench_ops_t ours_sleeping_ops = {
     ours_add_body,           ours_set_velocity, ours_add_gravity_pair,
     ours_step,               ours_get_state,  ours_max_penetration,
     ours_pair_penetration, ours_add_spring, ours_set_angular_velocity, 0.0,
-    ours_awake_bodies,
+    ours_awake_bodies,     ours_add_revolute, ours_set_group,
 };
 
 #endif // #ifndef BENCH_OURS_H

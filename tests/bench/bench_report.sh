@@ -1,5 +1,5 @@
 #!/bin/sh
-# usage: tests/bench/bench_report.sh OUTPUT PROGRAM...
+# usage: tests/bench/bench_report.sh [--section joints] OUTPUT PROGRAM...
 #
 # Writes the benchmark page (docs/bench.md, `make bench-report`) from one
 # run: the provenance (commit, compiler and flags, CPU, load before and
@@ -22,10 +22,25 @@
 # 1800 steps = 30 s). The page is rewritten whole but for a block between
 # the lines <!-- web:begin --> and <!-- web:end -->, which another program
 # writes (browser figures): it is kept as it was.
+#
+# The joints section (jointchain and ragdolls, bench-scenes.md: this
+# engine, Box2D v3's SSE2 build and Chipmunk2D where their programs are
+# among PROGRAM; BENCH_JOINT_VARIANTS, default ours,box2d3-sse2,chipmunk)
+# lies between the lines <!-- joints:begin --> and <!-- joints:end -->.
+# With --section joints only it is run (a few minutes, `make
+# bench-joints`) and only that block of OUTPUT is replaced (put before the
+# browser block or the Commands when OUTPUT has none), the rest of the page
+# kept as it was; the block states its own run (commit, time, load).
 # POSIX sh and awk only.
+section=""
+if [ "$1" = "--section" ]; then
+    section=$2
+    shift 2
+    [ "$section" = joints ] || { echo "$0: unknown section '$section' (joints)" >&2; exit 2; }
+fi
 output=$1
 shift
-[ -n "$output" ] && [ $# -gt 0 ] || { echo "usage: $0 OUTPUT PROGRAM..." >&2; exit 2; }
+[ -n "$output" ] && [ $# -gt 0 ] || { echo "usage: $0 [--section joints] OUTPUT PROGRAM..." >&2; exit 2; }
 rounds=${BENCH_ROUNDS:-7}
 variants=${BENCH_VARIANTS:-ours,box2d3-sse2,box2d3-avx2,chipmunk,chipmunk-default,box2d-nosleep,box2d-matched}
 instructions=${BENCH_INSTRUCTIONS-pile:1000 pyramid:20 circlepile:1000}
@@ -33,6 +48,7 @@ scale_sizes=${BENCH_SCALE_SIZES-1000,2000,4000,10000,20000}
 sleep_steps=${BENCH_SLEEP_STEPS:-1800}
 workers_size=${BENCH_WORKERS_SIZE:-10000}
 round_sizes=${BENCH_ROUND_SIZES-1000,4000}
+joint_variants=${BENCH_JOINT_VARIANTS:-ours,box2d3-sse2,chipmunk}
 dir=$(dirname "$0")
 work=$(mktemp -d "${TMPDIR:-/tmp}/bench-report.XXXXXX") || exit 1
 trap 'rm -rf "$work"' EXIT INT TERM
@@ -64,6 +80,147 @@ cpu=$(sed -n 's/^model name[^:]*: *//p' /proc/cpuinfo 2>/dev/null | head -n 1)
 cores=$(getconf _NPROCESSORS_ONLN 2>/dev/null || echo "?")
 load_start=$(cut -d' ' -f1-3 /proc/loadavg 2>/dev/null || echo unknown)
 started=$(date -u '+%Y-%m-%d %H:%M UTC')
+
+# The joints section into $work/joints.md: the joint scenes alternated over
+# the rounds, their instructions per step, and one table per scene of the
+# times, the counts and the quality figures of the first round.
+joints_part() {
+    jprograms=""
+    for p in "$@"; do
+        case $(basename "$p") in
+            bench_engine | bench_box2d3-sse2 | bench_chipmunk) jprograms="$jprograms $p" ;;
+        esac
+    done
+    jstarted=$(date -u '+%Y-%m-%d %H:%M UTC')
+    jload_start=$(cut -d' ' -f1-3 /proc/loadavg 2>/dev/null || echo unknown)
+    echo "bench-report: joints, $rounds rounds" >&2
+    # shellcheck disable=SC2086
+    sh "$dir/alternate.sh" -o "$work/joints-raw" "$rounds" $jprograms -- \
+        --variant "$joint_variants" --scene jointchain,ragdolls >"$work/joints-speed" || return 1
+    : >"$work/joints-instructions"
+    if command -v valgrind >/dev/null 2>&1; then
+        echo "bench-report: joints, instructions" >&2
+        jtargets=""
+        for p in $jprograms; do
+            for v in $(echo "$joint_variants" | tr , ' '); do
+                grep -q "^$p round=1 engine=$v " "$work/joints-raw" && jtargets="$jtargets $p:$v"
+            done
+        done
+        # shellcheck disable=SC2086
+        sh "$dir/instructions.sh" -s "jointchain:100 ragdolls:20" $jtargets \
+            >"$work/joints-instructions" || return 1
+    fi
+    jload_end=$(cut -d' ' -f1-3 /proc/loadavg 2>/dev/null || echo unknown)
+    {
+        cat <<JOINTS
+<!-- joints:begin -->
+## Joints: jointchain(100) and ragdolls(20), one core
+
+The joint scenes of [bench-scenes.md](bench-scenes.md): a chain of 100
+pinned links released from the horizontal, and 20 ragdolls dropped in a
+pile. Run $jstarted at commit $commit ($state), apart from the rest of
+this page (\`make bench-joints\`); load average (1, 5, 15 min)
+$jload_start at the start, $jload_end at the end, on $cores cores shared
+with other programs, so the times move with the load: the instruction
+counts (callgrind, inside the step calls, one run) do not. Times: ms per
+step, median over $rounds alternated rounds, pinned, CPU time, with the
+least and largest. The quality figures are the first round's. Stretch: the
+sum of the joints' gaps over the chain's length; a gap: the distance
+between a pin's two anchors (m).
+
+JOINTS
+        awk '
+        function field(line, name,    i, n, parts, k) {
+            n = split(line, parts, " ")
+            for (i = 1; i <= n; i++) {
+                k = index(parts[i], "=")
+                if (k > 0 && substr(parts[i], 1, k - 1) == name) return substr(parts[i], k + 1)
+            }
+            return "-"
+        }
+        function sort_values(a, n,    i, j, t) {
+            for (i = 2; i <= n; i++) for (j = i; j > 1 && a[j - 1] > a[j]; j--) { t = a[j]; a[j] = a[j - 1]; a[j - 1] = t }
+        }
+        function times(s, e,    k, a) {
+            for (k = 1; k <= n[s, e]; k++) a[k] = ms[s, e, k]
+            k = n[s, e]
+            sort_values(a, k)
+            return sprintf("%.4g (%.4g-%.4g)", k % 2 ? a[(k + 1) / 2] : (a[k / 2] + a[k / 2 + 1]) / 2, a[1], a[k])
+        }
+        function count(s, e) {
+            return ((s, e) in instr) ? sprintf("%.3g M", instr[s, e] / 1e6) : "-"
+        }
+        FNR == 1 { file++ }
+        file == 1 { if ($0 !~ /^#/ && NF >= 6) instr[$1, $4] = $5; next }
+        {
+            e = field($0, "engine"); s = field($0, "scene"); r = $2; sub(/^round=/, "", r)
+            if (!((s, e) in n)) { engines[s, ++ne[s]] = e; size[s] = field($0, "size") }
+            k = ++n[s, e]; ms[s, e, k] = field($0, "median_ms") + 0
+            if (r == 1) first[s, e] = $0
+        }
+        END {
+            s = "jointchain"
+            if (ne[s] > 0) {
+                printf "### jointchain(%s)\n\n", size[s]
+                print "| engine | ms per step | instructions per step | largest stretch | final stretch | widest gap (m) | lowest tip (m) |"
+                print "|---|---|---|---|---|---|---|"
+                for (i = 1; i <= ne[s]; i++) { e = engines[s, i]; l = first[s, e]
+                    printf "| %s | %s | %s | %s | %s | %s | %s |\n", e, times(s, e), count(s, e),
+                        field(l, "max_stretch"), field(l, "end_stretch"), field(l, "max_gap"), field(l, "tip_min_y") }
+                print ""
+            }
+            s = "ragdolls"
+            if (ne[s] > 0) {
+                printf "### ragdolls(%s)\n\n", size[s]
+                print "| engine | ms per step | instructions per step | widest gap (m) | widest gap at the end (m) | past a limit (rad) | deepest penetration (m) | below the floor | moving at the end |"
+                print "|---|---|---|---|---|---|---|---|---|"
+                for (i = 1; i <= ne[s]; i++) { e = engines[s, i]; l = first[s, e]
+                    printf "| %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", e, times(s, e), count(s, e),
+                        field(l, "max_gap"), field(l, "end_gap"), field(l, "max_past_limit"),
+                        field(l, "max_penetration"), field(l, "below"), field(l, "moving_end") }
+                print ""
+            }
+        }' "$work/joints-instructions" "$work/joints-raw"
+        if grep -q 'runs_differ=1' "$work/joints-raw"; then
+            echo "**A program gave different figures when a run was repeated (runs_differ=1).**"
+            echo
+        fi
+        echo "Largest stretch and widest gap: over the 600 steps; at the end: step"
+        echo "600; past a limit: the farthest any joint's angle went beyond its limits,"
+        echo "any step; lowest tip: the last link's centre (-50 m for a chain that keeps"
+        echo "its length); moving at the end: bodies faster than 0.1 m/s (of the 200). The"
+        echo "alternation, with this engine's time over each other's:"
+        echo
+        echo '```'
+        grep -v '^#' "$work/joints-speed"
+        echo '```'
+        echo "<!-- joints:end -->"
+    } >"$work/joints.md"
+}
+
+if [ "$section" = joints ]; then
+    joints_part "$@" || exit 1
+    [ -f "$output" ] || : >"$output"
+    # The old block out and the new one in its place; without one, before the
+    # browser block or the Commands, or at the end.
+    had=$(grep -c '^<!-- joints:begin -->$' "$output")
+    awk -v block="$work/joints.md" -v had="$had" '
+        function put(   line) {
+            if (done) return
+            while ((getline line < block) > 0) print line
+            print ""
+            done = 1
+        }
+        /^<!-- joints:begin -->$/ { put(); skip = 1; next }
+        skip == 1 { if ($0 == "<!-- joints:end -->") skip = 2; next }
+        skip == 2 { skip = 0; if ($0 == "") next }
+        had == 0 && (/^<!-- web:begin -->$/ || /^## Commands$/) { put() }
+        { print }
+        END { put() }' "$output" >"$work/page"
+    mv "$work/page" "$output"
+    echo "bench-report: wrote the joints section of $output" >&2
+    exit 0
+fi
 
 echo "bench-report: speed, $rounds rounds" >&2
 # shellcheck disable=SC2086
@@ -127,6 +284,7 @@ if [ -n "$v3" ]; then
 else
     : >"$work/seeds-v3"
 fi
+joints_part "$@" || exit 1
 load_end=$(cut -d' ' -f1-3 /proc/loadavg 2>/dev/null || echo unknown)
 
 {
@@ -321,6 +479,8 @@ EOF
             printf "| %s | %s | %s |\n", f, ours[f], (f in v3) ? v3[f] : "-"
         }
     }' "$work/seeds-ours" "$work/seeds-v3"
+    echo
+    cat "$work/joints.md"
     if [ -s "$work/web" ]; then
         echo
         cat "$work/web"
@@ -331,6 +491,7 @@ EOF
 
     make bench-report     # this page; BENCH_ROUNDS, BENCH_VARIANTS and the rest: tests/bench/bench_report.sh
     make bench-compare    # the speed tables alone
+    make bench-joints     # the joints section alone (tests/bench/bench_report.sh --section joints)
     tests/bench/alternate.sh 7 build/bench/bench_engine build/bench/bench_box2d3-sse2 -- --scene pile --size 4000
     tests/bench/alternate.sh 7 build/bench/bench_engine build/bench/bench_box2d3-sse2 -- --scene circlepile --size 4000
     tests/bench/instructions.sh -s "pile:1000" build/bench/bench_engine:ours build/bench/bench_box2d3-sse2:box2d3-sse2

@@ -9,10 +9,11 @@
  *
  * Options:
  *   --scene NAME     pile, pyramid, bounce, cradle, orbit, stack2, tunnel,
- *                    overlap, column, circlepile, capsulepile, mixedpile or
- *                    all; repeatable or a comma list
+ *                    overlap, column, circlepile, capsulepile, mixedpile,
+ *                    jointchain, ragdolls or all; repeatable or a comma list
  *   --size X         the scene's size (pile N, pyramid B, bounce e, cradle n,
- *                    stack2 r, tunnel v); repeatable or a comma list
+ *                    stack2 r, tunnel v, jointchain links,
+ *                    ragdolls count); repeatable or a comma list
  *   --dt X           step of bounce and orbit (e.g. 1/600 or 0.001);
  *                    repeatable or a comma list
  *   --runs R         runs of each scene (default 5); the median is reported
@@ -60,6 +61,7 @@
  *            moves, position corrections included), in_bounds (1 when every
  *            box stayed within x in [-20, 20], y >= 0 at every step),
  *            max_penetration (m, at step 300)
+ *   jointchain, ragdolls  see bench_joint_scenes.h
  *   column   top_drift (m: the top box's |x - x0| at step 3600), top_drop (m:
  *            its height change, negative = down), max_tilt (rad: the largest
  *            |angle| of any box at step 3600), standing (1 when the top box
@@ -104,6 +106,9 @@ typedef enum {
     SCENE_CIRCLEPILE,
     SCENE_CAPSULEPILE,
     SCENE_MIXEDPILE,
+    /* Joints (bench_joint_scenes.h): run by the engines with add_revolute. */
+    SCENE_JOINTCHAIN,
+    SCENE_RAGDOLLS,
     SCENE_COUNT
 } bench_scene_id_t;
 
@@ -112,7 +117,7 @@ static const char *const bench_scene_names[SCENE_COUNT] = {
     "tunnel",   "overlap",    "column", "spring",   "springpair", "chain",
     "heavytop", "headon",     "tunnelmove", "bullet", "rod",    "drop",
     "coincide", "gas",        "settle", "wallbounce", "scaled", "far",
-    "circlepile", "capsulepile", "mixedpile"};
+    "circlepile", "capsulepile", "mixedpile", "jointchain", "ragdolls"};
 
 /* --quick: smaller sweeps inside the scenes that sweep (spring, springpair,
  * chain). */
@@ -1229,6 +1234,13 @@ static inline void wallbounce_run(const bench_ops_t *ops, const bench_case_t *c,
     ops->world_free(w);
 }
 
+#include "bench_joint_scenes.h"
+
+/* The scenes an engine runs only with joints (bench_ops_t's add_revolute). */
+static inline int bench_scene_needs_joints(bench_scene_id_t scene) {
+    return scene == SCENE_JOINTCHAIN || scene == SCENE_RAGDOLLS;
+}
+
 static inline int bench_scene_is_pile(bench_scene_id_t scene) {
     return scene == SCENE_PILE || scene == SCENE_CIRCLEPILE || scene == SCENE_CAPSULEPILE ||
            scene == SCENE_MIXEDPILE;
@@ -1242,7 +1254,7 @@ static const bench_run_fn bench_runners[SCENE_COUNT] = {
     springpair_run, chain_run,     heavytop_run, headon_run,    tunnelmove_run,
     bullet_run,     rod_run,       drop_run,     coincide_run,  gas_run,
     settle_run,     wallbounce_run, scaled_run,  far_run,       pile_run,
-    pile_run,       pile_run};
+    pile_run,       pile_run,      jointchain_run, ragdolls_run};
 
 /* The scenes that print a summary line after their sizes (first speed that
  * tunnelled, largest return speed). */
@@ -1363,7 +1375,7 @@ static inline void bench_usage(FILE *out, const char *program) {
             "          [--iterations N] [--variant NAME[,NAME]] [--steps N] [--layout-seed K]\n"
             "          [--wall] [--count-steps]\n"
             "  scenes: pile pyramid bounce cradle orbit stack2 tunnel overlap column\n"
-            "  circlepile capsulepile mixedpile all\n"
+            "  circlepile capsulepile mixedpile jointchain ragdolls all\n"
             "  stability scenes: spring springpair chain heavytop headon tunnelmove bullet rod\n"
             "  drop coincide gas settle wallbounce scaled far\n"
             "  no --scene: pile 1000,4000,10000; pyramid 20,40; bounce 0.8 at dt 1/60,1/600;\n"
@@ -1417,6 +1429,8 @@ static inline void bench_default_sizes(bench_scene_id_t scene, int quick, double
         case SCENE_CIRCLEPILE:
         case SCENE_CAPSULEPILE:
         case SCENE_MIXEDPILE: list = quick ? pile_quick : pile_full; n = quick ? 1 : 2; break;
+        case SCENE_JOINTCHAIN: sizes[0] = 100; *count = 1; return;
+        case SCENE_RAGDOLLS: sizes[0] = 20; *count = 1; return;
         default: break;
     }
     for (int i = 0; i < n; i++) sizes[i] = list[i];
@@ -1589,6 +1603,11 @@ static inline int bench_main(int argc, char **argv, const bench_ops_t *const *op
         for (int k = 0; k < ops_count; k++) {
             if (!bench_ops_runs(ops[k], scene)) continue;
             if (bench_variant != NULL && !bench_list_has(bench_variant, ops[k]->name)) continue;
+            if (bench_scene_needs_joints(scene) && ops[k]->add_revolute == NULL) {
+                printf("# %s: no joints in this driver: %s skipped\n", ops[k]->name,
+                       bench_scene_names[scene]);
+                continue;
+            }
             int found = 0;
             double first_v = 0.0, back = 0.0;
             for (int s = 0; s < ncase_sizes; s++) {

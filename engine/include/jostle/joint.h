@@ -37,8 +37,9 @@
  * creating one in a scene whose contacts are off stops the program; turning
  * contacts off later keeps the joints but suspends them. Two bodies a joint
  * joins make no contact with each other unless its collide_connected is
- * set (a chain: on none of its segments); each still collides with
- * everything else its filter allows. Joined bodies sleep and wake as one
+ * set (a chain: on none of its segments), and a seed collision force
+ * creator between them (create_collision, ...) does not fire either; each
+ * still collides with everything else its filter allows. Joined bodies sleep and wake as one
  * island.
  *
  * Programmer errors stop with "engine error in FUNCTION: ...": a NULL scene,

@@ -66,9 +66,7 @@ static joint_def_t pinned(joint_type_t type, body_t *body1, body_t *body2, vecto
 }
 
 joint_def_t joint_def_revolute(body_t *body1, body_t *body2, vector_t anchor) {
-    joint_def_t def = pinned(JOINT_REVOLUTE, body1, body2, anchor);
-    def.reference_angle = 0.0;
-    return def;
+    return pinned(JOINT_REVOLUTE, body1, body2, anchor);
 }
 
 joint_def_t joint_def_weld(body_t *body1, body_t *body2, vector_t anchor) {

@@ -101,4 +101,4 @@ static void tree_add(joint_t *joint, const double impulse[]) {
 }
 
 const joint_kind_t JOINT_DISTANCE_KIND = {prepare,   solve_velocity, solve_position,
-                                          tree_rows, NULL,           tree_add};
+                                          NULL, tree_rows, NULL, tree_add};

@@ -331,3 +331,47 @@ void joint_solver_project(const joint_step_t *step, const solver_bodies_t *bodie
         }
     }
 }
+
+/* The tree's rows made to hold at the velocities, with their derivatives
+ * at the poses the position pass has reached: not accumulated (the next
+ * step starts from these velocities). A soft weld's rows are a spring's
+ * (zero rows). */
+static void settle_tree(const joint_step_t *step, const solver_bodies_t *bodies) {
+    joint_tree_t *tree = step->tree;
+    for (size_t i = 0; i < step->count; i++) {
+        const joint_t *joint = step->joints[i];
+        if (!in_tree(joint)) continue;
+        joint_tree_block_t *block = joint_tree_rows(tree, joint->tree_edge);
+        double error[JOINT_TREE_ROWS], c[JOINT_TREE_ROWS][JOINT_TREE_ROWS], bias[JOINT_TREE_ROWS];
+        kind_of(joint)->tree_rows(joint, joint_pose(joint, true), joint_pose(joint, false), error,
+                                  block->j1, block->j2);
+        if (soft_rows(joint, c, bias)) {
+            memset(block->j1, 0, sizeof block->j1);
+            memset(block->j2, 0, sizeof block->j2);
+        }
+        const solver_velocity_t *v1 = joint->rows.v1, *v2 = joint->rows.v2;
+        double *rhs = joint_tree_rhs(tree, joint->tree_edge);
+        for (int r = 0; r < block->rows; r++) {
+            const double *a = block->j1[r], *b = block->j2[r];
+            rhs[r] = -(a[0] * v1->v.x + a[1] * v1->v.y + a[2] * v1->w + b[0] * v2->v.x +
+                       b[1] * v2->v.y + b[2] * v2->w);
+        }
+    }
+    joint_tree_factor(tree, bodies->velocities);
+    joint_tree_solve(tree);
+    for (size_t k = 0; k < joint_tree_body_count(tree); k++) {
+        solver_velocity_t *row = &bodies->velocities[joint_tree_body_row(tree, k)];
+        const double *change = joint_tree_body_change(tree, k);
+        row->v = vec_add(row->v, (vector_t){change[0], change[1]});
+        row->w += change[2];
+    }
+}
+
+void joint_solver_settle(const joint_step_t *step, const solver_bodies_t *bodies) {
+    for (size_t i = 0; i < step->count; i++) {
+        joint_t *joint = step->joints[i];
+        const joint_kind_t *kind = kind_of(joint);
+        if (swept(joint) && kind->settle_velocity != NULL) kind->settle_velocity(joint);
+    }
+    if (step->tree->edge_count > 0) settle_tree(step, bodies);
+}

@@ -2,11 +2,12 @@
 #define JOINT_SOLVER_H
 
 /*
- * The joints' part of the solver (solver.c calls it at four points):
+ * The joints' part of the solver (solver.c calls it at five points):
  * joint_solver_prepare after the contacts are warm-started, prepares every
  * joint of the step, applies its warm-start impulses, and factors the tree
  * solve (joint_tree.h) of the joints' equality rows at the step's start;
  * joint_solver_iterate after each velocity sweep of the contacts, one
+void joint_solver_settle(const joint_step_t *step, const solver_bodies_t *bodies);
  * velocity sweep of the joints the tree does not take, then the tree's
  * exact solve of its rows (the impulses added to the accumulated ones);
  * joint_solver_correct after each position sweep of the contacts, the
@@ -47,6 +48,7 @@ void joint_solver_prepare(const joint_step_t *step, const solver_bodies_t *bodie
                           const solver_settings_t *settings);
 void joint_solver_iterate(const joint_step_t *step, const solver_bodies_t *bodies);
 void joint_solver_correct(const joint_step_t *step);
+void joint_solver_settle(const joint_step_t *step, const solver_bodies_t *bodies);
 void joint_solver_project(const joint_step_t *step, const solver_bodies_t *bodies);
 
 #endif // #ifndef JOINT_SOLVER_H

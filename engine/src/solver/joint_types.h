@@ -83,7 +83,9 @@ typedef struct {
 
 /* Each type's part: prepare (lever arms and rows are set; also applies
  * the warm-start impulses), one velocity sweep, one position sweep (NULL
- * for the soft types, which correct through their bias).
+ * for the soft types, which correct through their bias), and the end
+ * velocities made consistent once the step's displacements are fixed
+ * (NULL where the velocity sweep already targets the rate).
  *
  * And its part in the tree solve (joint_tree.h; NULL for the mouse and
  * motor joints, which it never takes): tree_rows gives how many equality
@@ -100,6 +102,7 @@ typedef struct {
     void (*prepare)(joint_t *joint);
     void (*solve_velocity)(joint_t *joint);
     void (*solve_position)(joint_t *joint);
+    void (*settle_velocity)(joint_t *joint);
     int (*tree_rows)(const joint_t *joint, joint_pose_t p1, joint_pose_t p2, double error[],
                      double j1[][3], double j2[][3]);
     bool (*tree_soft)(const joint_t *joint, double c[][JOINT_TREE_ROWS], double bias[]);

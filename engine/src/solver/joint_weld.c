@@ -96,4 +96,4 @@ static void tree_add(joint_t *joint, const double impulse[]) {
 }
 
 const joint_kind_t JOINT_WELD_KIND = {prepare,   solve_velocity, solve_position,
-                                      tree_rows, tree_soft,      tree_add};
+                                      NULL, tree_rows, tree_soft, tree_add};

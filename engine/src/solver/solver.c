@@ -117,6 +117,7 @@ void solver_solve(solver_wide_t *wide, shock_t *shock, solver_contact_t *contact
     if (any_impact) solver_mark_impacts(contacts, contact_count, velocities, bodies->states);
     stage_clock_lap(settings->clock, SCENE_STAGE_SOLVER);
     for_bodies(wide->workers, &split, advance_chunk);
+    if (joints->count > 0) joint_solver_settle(joints, bodies);
     for (int iteration = 0; iteration < settings->position_iterations; iteration++) {
         solver_split_correct_positions(wide, bodies->displacements, iteration % 2 == 1);
         for (size_t i = 0; i < wide->loose_count; i++) {
