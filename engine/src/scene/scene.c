@@ -833,7 +833,7 @@ static void tick(scene_t *scene, double dt) {
                                    scene->sleep_time,
                                    &scene->clock,
                                    scene->chain_parts,
-                                   {scene->joints.joints, scene->joints.count}};
+                                   {scene->joints.joints, scene->joints.count, NULL}};
         scene->world_ops->step(scene->world, scene->bodies, scene->motions, scene->body_count,
                                &world_step, &scene->stats);
         scene->record_needs_world = true;

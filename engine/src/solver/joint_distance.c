@@ -82,4 +82,23 @@ static void solve_position(joint_t *joint) {
     joint_correct_axial(joint, def->max_length - length, vec_negate(u), -a1, -a2);
 }
 
-const joint_kind_t JOINT_DISTANCE_KIND = {prepare, solve_velocity, solve_position, NULL};
+/* The tree takes a rod: its row along the anchors' line. */
+static int tree_rows(const joint_t *joint, joint_pose_t p1, joint_pose_t p2, double error[],
+                     double j1[][3], double j2[][3]) {
+    if (!is_rod(&joint->def)) return 0;
+    vector_t r1, r2, d = joint_separation(joint, p1, p2, &r1, &r2);
+    double length = vec_get_length(d);
+    error[0] = length - joint->def.min_length;
+    if (j1 != NULL) {
+        vector_t u = length > 0.0 ? vec_multiply(1.0 / length, d) : (vector_t){1.0, 0.0};
+        joint_tree_line(j1[0], j2[0], u, vec_cross(r1, u), vec_cross(r2, u));
+    }
+    return 1;
+}
+
+static void tree_add(joint_t *joint, const double impulse[]) {
+    joint->axial_impulse += impulse[0];
+}
+
+const joint_kind_t JOINT_DISTANCE_KIND = {prepare,   solve_velocity, solve_position,
+                                          NULL, tree_rows, NULL, tree_add};

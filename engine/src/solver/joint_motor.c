@@ -37,4 +37,4 @@ static void solve_velocity(joint_t *joint) {
     joint_apply(joint, vec_subtract(total, before), 0.0, 0.0);
 }
 
-const joint_kind_t JOINT_MOTOR_KIND = {prepare, solve_velocity, NULL, NULL};
+const joint_kind_t JOINT_MOTOR_KIND = {prepare, solve_velocity, NULL, NULL, NULL, NULL, NULL};

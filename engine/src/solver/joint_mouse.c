@@ -33,4 +33,4 @@ static void solve_velocity(joint_t *joint) {
     joint_apply(joint, p, 0.0, vec_cross(joint->r2, p));
 }
 
-const joint_kind_t JOINT_MOUSE_KIND = {prepare, solve_velocity, NULL, NULL};
+const joint_kind_t JOINT_MOUSE_KIND = {prepare, solve_velocity, NULL, NULL, NULL, NULL, NULL};

@@ -65,4 +65,29 @@ static void solve_position(joint_t *joint) {
     }
 }
 
-const joint_kind_t JOINT_PRISMATIC_KIND = {prepare, solve_velocity, solve_position, NULL};
+/* The tree takes a slider without a motor or limits: across the axis and
+ * the angle. */
+static int tree_rows(const joint_t *joint, joint_pose_t p1, joint_pose_t p2, double error[],
+                     double j1[][3], double j2[][3]) {
+    if (joint->def.enable_motor || joint->def.enable_limit) return 0;
+    vector_t r1, r2, d = joint_separation(joint, p1, p2, &r1, &r2);
+    vector_t axis = vec_rotate(vec_normalize(joint->def.axis), p1.angle);
+    vector_t perp = vec_perpendicular(axis);
+    error[0] = vec_dot(perp, d);
+    error[1] = p2.angle - p1.angle - joint->def.reference_angle;
+    if (j1 != NULL) {
+        double a1, a2, s1, s2;
+        joint_line_terms(d, r1, r2, axis, perp, &a1, &a2, &s1, &s2);
+        joint_tree_line(j1[0], j2[0], perp, s1, s2);
+        joint_tree_angle(j1[1], j2[1]);
+    }
+    return 2;
+}
+
+static void tree_add(joint_t *joint, const double impulse[]) {
+    joint->point_impulse.x += impulse[0];
+    joint->angle_impulse += impulse[1];
+}
+
+const joint_kind_t JOINT_PRISMATIC_KIND = {prepare,   solve_velocity, solve_position,
+                                           NULL, tree_rows, NULL, tree_add};

@@ -88,5 +88,20 @@ static void settle_velocity(joint_t *joint) {
     joint_apply(joint, p, vec_cross(r1, p), vec_cross(r2, p));
 }
 
-const joint_kind_t JOINT_REVOLUTE_KIND = {prepare, solve_velocity, solve_position,
-                                          settle_velocity};
+/* The tree takes the point of a pin without a motor or limits. */
+static int tree_rows(const joint_t *joint, joint_pose_t p1, joint_pose_t p2, double error[],
+                     double j1[][3], double j2[][3]) {
+    if (joint->def.enable_motor || joint->def.enable_limit) return 0;
+    vector_t r1, r2, gap = joint_separation(joint, p1, p2, &r1, &r2);
+    error[0] = gap.x, error[1] = gap.y;
+    if (j1 != NULL) joint_tree_point(j1, j2, r1, r2);
+    return 2;
+}
+
+static void tree_add(joint_t *joint, const double impulse[]) {
+    joint->point_impulse = vec_add(joint->point_impulse, (vector_t){impulse[0], impulse[1]});
+}
+
+const joint_kind_t JOINT_REVOLUTE_KIND = {prepare,         solve_velocity, solve_position,
+                                          settle_velocity, tree_rows,      NULL,
+                                          tree_add};

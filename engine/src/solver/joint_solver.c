@@ -1,5 +1,6 @@
 #include "solver/joint_solver.h"
 #include <math.h>
+#include <string.h>
 
 static const joint_kind_t *kind_of(const joint_t *joint) {
     static const joint_kind_t *const KINDS[JOINT_TYPE_COUNT] = {
@@ -82,36 +83,224 @@ static bool slow_turn(const joint_t *joint, const solver_velocity_t *row, double
     return fabs(joint->dt * (spin + joint->weight * row->w)) <= JOINT_EXACT_TURN;
 }
 
-/* Position sweeps of the joints per position iteration of the contacts:
- * a chain passes its correction one link per sweep, and joints are few
- * beside contacts, so they get more (a 20-link chain swinging at 1/240 s
- * stretched 0.44% with one, 0.16% with four). */
+/* The tree's position projection (joint_solver_project): at most
+ * JOINT_TREE_NEWTON_STEPS Newton steps, stopping once every row is within
+ * JOINT_TREE_TOLERANCE (m or rad) of its position; a step that makes the
+ * largest error worse is halved up to JOINT_TREE_HALVINGS times. On the
+ * 20-link chains of the tests one or two steps reach rounding; eight, the
+ * halvings and the sweeps after them (see there) kept a 100-link chain
+ * swinging from the horizontal at 1/60 s whole. */
+static const int JOINT_TREE_NEWTON_STEPS = 8;
+static const double JOINT_TREE_TOLERANCE = 1e-12;
+static const int JOINT_TREE_HALVINGS = 4;
+
+/* Position sweeps of the joints the tree does not take, per position
+ * iteration of the contacts: a chain of them passes its correction one
+ * link per sweep, and joints are few beside contacts, so they get more. */
 static const int JOINT_POSITION_SWEEPS = 4;
+
+/* The tree's row of a joint's body: the world and static bodies are
+ * ground. */
+static uint32_t tree_row(const body_t *body, const solver_bodies_t *bodies) {
+    if (body == NULL || solver_row_is_static(&bodies->velocities[body->solver_index])) {
+        return JOINT_TREE_GROUND;
+    }
+    return (uint32_t)body->solver_index;
+}
+
+/* A body's pose at the start of the step; the world's is the origin. */
+static joint_pose_t start_pose(const body_t *body) {
+    return body == NULL ? (joint_pose_t){VEC_ZERO, 0.0}
+                        : (joint_pose_t){body->centroid, body->angle};
+}
+
+/* Whether the joint's tree rows are soft this step; then their compliance
+ * and velocity bias. */
+static bool soft_rows(const joint_t *joint, double c[][JOINT_TREE_ROWS], double *bias) {
+    const joint_kind_t *kind = kind_of(joint);
+    return kind->tree_soft != NULL && kind->tree_soft(joint, c, bias);
+}
+
+/* Offers the joint's equality rows at the step's start to the tree; notes
+ * its edge. */
+static void offer_to_tree(joint_t *joint, joint_tree_t *tree, const solver_bodies_t *bodies) {
+    const joint_kind_t *kind = kind_of(joint);
+    if (kind->tree_rows == NULL) return;
+    joint_tree_block_t block = {0};
+    block.row1 = tree_row(joint->def.body1, bodies);
+    block.row2 = tree_row(joint->def.body2, bodies);
+    if (block.row1 == JOINT_TREE_GROUND && block.row2 == JOINT_TREE_GROUND) return;
+    double error[JOINT_TREE_ROWS];
+    block.rows = kind->tree_rows(joint, start_pose(joint->def.body1),
+                                 start_pose(joint->def.body2), error, block.j1, block.j2);
+    soft_rows(joint, block.c, error);
+    if (block.rows > 0) joint->tree_edge = joint_tree_add(tree, &block);
+}
 
 void joint_solver_prepare(const joint_step_t *step, const solver_bodies_t *bodies,
                           const solver_settings_t *settings) {
     double dt = settings->dt;
+    joint_tree_reset(step->tree, bodies->body_count);
     for (size_t i = 0; i < step->count; i++) {
         joint_t *joint = step->joints[i];
         joint->active = in_step(joint->def.body1, bodies) && in_step(joint->def.body2, bodies);
+        joint->tree_edge = JOINT_TREE_NONE;
         if (!joint->active) continue;
         take_rows(joint, joint->def.body1, bodies, true);
         take_rows(joint, joint->def.body2, bodies, false);
         joint->dt = dt;
         joint->weight = settings->position_weight;
-        carry_impulses(joint, dt, settings->warm_starting);
-        take_geometry(joint);
         joint->closes_gap = joint->weight > 0.0 && slow_turn(joint, joint->rows.v1, joint->spin1) &&
                             slow_turn(joint, joint->rows.v2, joint->spin2);
+        carry_impulses(joint, dt, settings->warm_starting);
+        take_geometry(joint);
         kind_of(joint)->prepare(joint);
+        offer_to_tree(joint, step->tree, bodies);
+    }
+    if (step->tree->edge_count > 0) joint_tree_factor(step->tree, bodies->velocities);
+}
+
+static bool swept(const joint_t *joint) {
+    return joint->active && joint->tree_edge == JOINT_TREE_NONE;
+}
+
+static bool in_tree(const joint_t *joint) {
+    return joint->active && joint->tree_edge != JOINT_TREE_NONE;
+}
+
+/* Whether the joint still closes its gap (closes_gap, decided at the
+ * step's start): the exact solve can change a link's spin a lot within
+ * the step, and past a turn of twice JOINT_EXACT_TURN the predicted gap's
+ * linear part fed the spin from one iteration to the next (a 100-link
+ * chain swinging at 1/60 s flew apart); the joint then keeps to its rates
+ * for the rest of the step, so that it does not flip between the two. */
+static bool still_closes_gap(joint_t *joint) {
+    if (!joint->closes_gap) return false;
+    double most = 2.0 * JOINT_EXACT_TURN;
+    joint->closes_gap =
+        fabs(joint->dt * (joint->spin1 + joint->weight * joint->rows.v1->w)) <= most &&
+        fabs(joint->dt * (joint->spin2 + joint->weight * joint->rows.v2->w)) <= most;
+    return joint->closes_gap;
+}
+
+/* Minus what the velocity iterations drive to zero on a joint's tree
+ * rows: soft rows' rates with their bias; while a rigid joint closes its
+ * gap (closes_gap), the rate that closes within the step the change of
+ * the rows' errors the step predicts for the velocities now, as a sweep of
+ * the joint does (the error the step starts with is the position pass's);
+ * otherwise the rows' rates. */
+static void velocity_error(joint_t *joint, const joint_tree_t *tree, double *rhs) {
+    const joint_tree_block_t *block = joint_tree_block(tree, joint->tree_edge);
+    double c[JOINT_TREE_ROWS][JOINT_TREE_ROWS], bias[JOINT_TREE_ROWS] = {0.0, 0.0, 0.0};
+    bool soft = soft_rows(joint, c, bias);
+    if (!soft && still_closes_gap(joint)) {
+        double start[JOINT_TREE_ROWS], end[JOINT_TREE_ROWS];
+        const joint_kind_t *kind = kind_of(joint);
+        kind->tree_rows(joint, start_pose(joint->def.body1), start_pose(joint->def.body2), start,
+                        NULL, NULL);
+        kind->tree_rows(joint, joint_predicted(joint, true), joint_predicted(joint, false), end,
+                        NULL, NULL);
+        for (int r = 0; r < block->rows; r++) {
+            rhs[r] = -(end[r] - start[r]) / (joint->dt * joint->weight);
+        }
+        return;
+    }
+    const solver_velocity_t *v1 = joint->rows.v1, *v2 = joint->rows.v2;
+    for (int r = 0; r < block->rows; r++) {
+        const double *a = block->j1[r], *b = block->j2[r];
+        rhs[r] = -(a[0] * v1->v.x + a[1] * v1->v.y + a[2] * v1->w + b[0] * v2->v.x +
+                   b[1] * v2->v.y + b[2] * v2->w + bias[r]);
     }
 }
 
-void joint_solver_iterate(const joint_step_t *step) {
+void joint_solver_iterate(const joint_step_t *step, const solver_bodies_t *bodies) {
     for (size_t i = 0; i < step->count; i++) {
         joint_t *joint = step->joints[i];
-        if (joint->active) kind_of(joint)->solve_velocity(joint);
+        if (swept(joint)) kind_of(joint)->solve_velocity(joint);
     }
+    joint_tree_t *tree = step->tree;
+    if (tree->edge_count == 0) return;
+    for (size_t i = 0; i < step->count; i++) {
+        joint_t *joint = step->joints[i];
+        if (in_tree(joint)) velocity_error(joint, tree, joint_tree_rhs(tree, joint->tree_edge));
+    }
+    joint_tree_solve(tree);
+    for (size_t i = 0; i < step->count; i++) {
+        joint_t *joint = step->joints[i];
+        if (in_tree(joint)) kind_of(joint)->tree_add(joint, joint_tree_impulse(tree, joint->tree_edge));
+    }
+    for (size_t k = 0; k < joint_tree_body_count(tree); k++) {
+        solver_velocity_t *row = &bodies->velocities[joint_tree_body_row(tree, k)];
+        const double *change = joint_tree_body_change(tree, k);
+        row->v = vec_add(row->v, (vector_t){change[0], change[1]});
+        row->w += change[2];
+    }
+}
+
+/* The largest error of the tree's rigid rows at the poses reached (m or
+ * rad); with `rows`, their derivatives there and, as right-hand sides,
+ * minus the errors, each bounded to JOINT_MAX_LINEAR_CORRECTION so that a
+ * joint pulled far apart closes over several steps. A soft weld's rows
+ * are a spring's: no position correction (zero rows). */
+static double tree_position_errors(const joint_step_t *step, bool rows) {
+    joint_tree_t *tree = step->tree;
+    double largest = 0.0;
+    for (size_t i = 0; i < step->count; i++) {
+        const joint_t *joint = step->joints[i];
+        if (!in_tree(joint)) continue;
+        joint_tree_block_t *block = joint_tree_rows(tree, joint->tree_edge);
+        double error[JOINT_TREE_ROWS], j1[JOINT_TREE_ROWS][3], j2[JOINT_TREE_ROWS][3];
+        double c[JOINT_TREE_ROWS][JOINT_TREE_ROWS], bias[JOINT_TREE_ROWS];
+        kind_of(joint)->tree_rows(joint, joint_pose(joint, true), joint_pose(joint, false), error,
+                                  j1, j2);
+        bool soft = soft_rows(joint, c, bias);
+        double *rhs = joint_tree_rhs(tree, joint->tree_edge);
+        for (int r = 0; r < block->rows; r++) {
+            if (soft) error[r] = 0.0, memset(j1[r], 0, sizeof j1[r]), memset(j2[r], 0, sizeof j2[r]);
+            largest = fmax(largest, fabs(error[r]));
+            if (!rows) continue;
+            memcpy(block->j1[r], j1[r], sizeof j1[r]);
+            memcpy(block->j2[r], j2[r], sizeof j2[r]);
+            rhs[r] = -joint_clamp(error[r], -JOINT_MAX_LINEAR_CORRECTION,
+                                  JOINT_MAX_LINEAR_CORRECTION);
+        }
+    }
+    return largest;
+}
+
+static void displace_tree(const joint_step_t *step, const solver_bodies_t *bodies,
+                          double share) {
+    joint_tree_t *tree = step->tree;
+    for (size_t k = 0; k < joint_tree_body_count(tree); k++) {
+        solver_displacement_t *row = &bodies->displacements[joint_tree_body_row(tree, k)];
+        const double *change = joint_tree_body_change(tree, k);
+        row->dx = vec_add(row->dx, vec_multiply(share, (vector_t){change[0], change[1]}));
+        row->dtheta += share * change[2];
+    }
+}
+
+/* One Newton step of the tree's rigid rows toward their positions, or none
+ * when they are there (returns whether it took one): factored at the poses
+ * reached (the step's start is off by the step's turn: a chain whipping at
+ * 60 rad/s at 1/60 s turns its links by 1 rad a step, and steps on the
+ * start's slope flung it apart). So far from the rows' positions that the
+ * step makes their largest error worse (the links of a 100-link chain
+ * whipping at 1/60 s turning 0.8 rad a step), it is halved, up to
+ * JOINT_TREE_HALVINGS times, and the rest is left to the next step. */
+static bool project_tree(const joint_step_t *step, const solver_bodies_t *bodies) {
+    joint_tree_t *tree = step->tree;
+    double largest = tree_position_errors(step, true);
+    if (largest <= JOINT_TREE_TOLERANCE) return false;
+    joint_tree_factor(tree, bodies->velocities);
+    joint_tree_solve(tree);
+    displace_tree(step, bodies, 1.0);
+    double share = 1.0;
+    for (int halving = 0; halving < JOINT_TREE_HALVINGS; halving++) {
+        if (tree_position_errors(step, false) <= largest) break;
+        share *= 0.5;
+        displace_tree(step, bodies, -share);
+    }
+    return true;
 }
 
 void joint_solver_correct(const joint_step_t *step) {
@@ -119,15 +308,70 @@ void joint_solver_correct(const joint_step_t *step) {
         for (size_t i = 0; i < step->count; i++) {
             joint_t *joint = step->joints[i];
             const joint_kind_t *kind = kind_of(joint);
-            if (joint->active && kind->solve_position != NULL) kind->solve_position(joint);
+            if (swept(joint) && kind->solve_position != NULL) kind->solve_position(joint);
         }
     }
 }
 
-void joint_solver_settle(const joint_step_t *step) {
+void joint_solver_project(const joint_step_t *step, const solver_bodies_t *bodies) {
+    if (step->tree->edge_count == 0) return;
+    for (int newton = 0; newton < JOINT_TREE_NEWTON_STEPS; newton++) {
+        if (!project_tree(step, bodies)) return;
+    }
+    if (tree_position_errors(step, false) <= JOINT_TREE_TOLERANCE) return;
+    /* Far from their positions (a 100-link chain whipping at 1/60 s, its
+     * links turning 0.8 rad a step), Newton steps on the whole tree come
+     * too slowly, and gaps they left grew step by step until the chain
+     * fell apart; the sweeps, one joint at a time, shrink every gap. */
+    for (int sweep = 0; sweep < JOINT_POSITION_SWEEPS; sweep++) {
+        for (size_t i = 0; i < step->count; i++) {
+            joint_t *joint = step->joints[i];
+            const joint_kind_t *kind = kind_of(joint);
+            if (in_tree(joint) && kind->solve_position != NULL) kind->solve_position(joint);
+        }
+    }
+}
+
+/* The tree's rows made to hold at the velocities, with their derivatives
+ * at the poses the position pass has reached: not accumulated (the next
+ * step starts from these velocities). A soft weld's rows are a spring's
+ * (zero rows). */
+static void settle_tree(const joint_step_t *step, const solver_bodies_t *bodies) {
+    joint_tree_t *tree = step->tree;
+    for (size_t i = 0; i < step->count; i++) {
+        const joint_t *joint = step->joints[i];
+        if (!in_tree(joint)) continue;
+        joint_tree_block_t *block = joint_tree_rows(tree, joint->tree_edge);
+        double error[JOINT_TREE_ROWS], c[JOINT_TREE_ROWS][JOINT_TREE_ROWS], bias[JOINT_TREE_ROWS];
+        kind_of(joint)->tree_rows(joint, joint_pose(joint, true), joint_pose(joint, false), error,
+                                  block->j1, block->j2);
+        if (soft_rows(joint, c, bias)) {
+            memset(block->j1, 0, sizeof block->j1);
+            memset(block->j2, 0, sizeof block->j2);
+        }
+        const solver_velocity_t *v1 = joint->rows.v1, *v2 = joint->rows.v2;
+        double *rhs = joint_tree_rhs(tree, joint->tree_edge);
+        for (int r = 0; r < block->rows; r++) {
+            const double *a = block->j1[r], *b = block->j2[r];
+            rhs[r] = -(a[0] * v1->v.x + a[1] * v1->v.y + a[2] * v1->w + b[0] * v2->v.x +
+                       b[1] * v2->v.y + b[2] * v2->w);
+        }
+    }
+    joint_tree_factor(tree, bodies->velocities);
+    joint_tree_solve(tree);
+    for (size_t k = 0; k < joint_tree_body_count(tree); k++) {
+        solver_velocity_t *row = &bodies->velocities[joint_tree_body_row(tree, k)];
+        const double *change = joint_tree_body_change(tree, k);
+        row->v = vec_add(row->v, (vector_t){change[0], change[1]});
+        row->w += change[2];
+    }
+}
+
+void joint_solver_settle(const joint_step_t *step, const solver_bodies_t *bodies) {
     for (size_t i = 0; i < step->count; i++) {
         joint_t *joint = step->joints[i];
         const joint_kind_t *kind = kind_of(joint);
-        if (joint->active && kind->settle_velocity != NULL) kind->settle_velocity(joint);
+        if (swept(joint) && kind->settle_velocity != NULL) kind->settle_velocity(joint);
     }
+    if (step->tree->edge_count > 0) settle_tree(step, bodies);
 }

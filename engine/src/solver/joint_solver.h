@@ -2,17 +2,30 @@
 #define JOINT_SOLVER_H
 
 /*
- * The joints' part of the solver (solver.c calls it at four points):
+ * The joints' part of the solver (solver.c calls it at five points):
  * joint_solver_prepare after the contacts are warm-started, prepares every
- * joint of the step and applies its warm-start impulses;
+ * joint of the step, applies its warm-start impulses, and factors the tree
+ * solve (joint_tree.h) of the joints' equality rows at the step's start;
  * joint_solver_iterate after each velocity sweep of the contacts, one
- * velocity sweep of the joints; joint_solver_correct after each position
- * sweep of the contacts, one position sweep of the rigid joints;
- * joint_solver_settle once the displacements are fixed (after the
- * velocity iterations, before the position pass), the end velocities made
- * consistent with the joints at the pose the step ends in. Joints
- * run one after another in the order given, on the calling thread, so the
- * result is the same bits for any worker count.
+void joint_solver_settle(const joint_step_t *step, const solver_bodies_t *bodies);
+ * velocity sweep of the joints the tree does not take, then the tree's
+ * exact solve of its rows (the impulses added to the accumulated ones);
+ * joint_solver_correct after each position sweep of the contacts, the
+ * position sweeps of the rigid joints the tree does not take;
+ * joint_solver_project after the bound on the step's corrections
+ * (solver_limit_corrections, the contacts'), Newton steps of the tree's
+ * rigid rows onto their positions, each factored at the poses reached,
+ * until they are within 1e-12 (m, rad), at most 8 (then position sweeps
+ * of those joints too).
+ *
+ * The tree takes, in the joints' order, each joint without a spring,
+ * limit, motor or force bound (revolute: its point; weld, rigid or soft:
+ * point and angle; prismatic: across and angle; wheel: across; a distance
+ * rod) unless it would close a cycle among moving bodies; that one, and
+ * the rest, are swept one at a time. A soft weld's rows take no position
+ * step (a spring corrects through its bias). Everything runs on the
+ * calling thread in the order given, so the result is the same bits for
+ * any worker count.
  *
  * A joint takes part when both its bodies are in the step's rows (body1
  * may be NULL, the world) and neither is asleep or marked removed; its rows
@@ -23,16 +36,19 @@
 #include <stddef.h>
 #include "solver/joint_types.h"
 
-/* The joints of a step and what they solve on. */
+/* The joints of a step, and the tree solve's arrays (the world's, reused
+ * from step to step; NULL where no step is solved). */
 typedef struct {
     joint_t *const *joints;
     size_t count;
+    joint_tree_t *tree;
 } joint_step_t;
 
 void joint_solver_prepare(const joint_step_t *step, const solver_bodies_t *bodies,
                           const solver_settings_t *settings);
-void joint_solver_iterate(const joint_step_t *step);
+void joint_solver_iterate(const joint_step_t *step, const solver_bodies_t *bodies);
 void joint_solver_correct(const joint_step_t *step);
-void joint_solver_settle(const joint_step_t *step);
+void joint_solver_settle(const joint_step_t *step, const solver_bodies_t *bodies);
+void joint_solver_project(const joint_step_t *step, const solver_bodies_t *bodies);
 
 #endif // #ifndef JOINT_SOLVER_H

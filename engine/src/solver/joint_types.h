@@ -12,6 +12,7 @@
 #include <stdbool.h>
 #include "jostle/joint.h"
 #include "dynamics/body_private.h"
+#include "solver/joint_tree.h"
 #include "solver/solver_types.h"
 
 /* A soft constraint's coefficients for a step (an implicit spring of
@@ -35,6 +36,9 @@ struct joint {
     struct scene *scene;
     /* Whether this step solves it (both bodies in the step, none removed). */
     bool active;
+    /* Its edge in the step's tree solve (joint_tree.h), or JOINT_TREE_NONE
+     * when the sweeps solve it. */
+    uint32_t tree_edge;
     joint_rows_t rows;
     solver_velocity_t ground_velocity;
     solver_displacement_t ground_displacement;
@@ -70,16 +74,39 @@ struct joint {
     double impulse_dt;
 };
 
+/* A body's pose: where the step has it at some point (its start, its
+ * predicted end, the position sweeps' current pose). */
+typedef struct {
+    vector_t centroid;
+    double angle;
+} joint_pose_t;
+
 /* Each type's part: prepare (lever arms and rows are set; also applies
  * the warm-start impulses), one velocity sweep, one position sweep (NULL
  * for the soft types, which correct through their bias), and the end
  * velocities made consistent once the step's displacements are fixed
- * (NULL where the velocity sweep already targets the rate). */
+ * (NULL where the velocity sweep already targets the rate).
+ *
+ * And its part in the tree solve (joint_tree.h; NULL for the mouse and
+ * motor joints, which it never takes): tree_rows gives how many equality
+ * rows the joint has (0 when it has a spring, a limit, a motor or a force
+ * bound, and stays in the sweeps), their errors (m, rad) with body1 and
+ * body2 at poses p1 and p2, and, unless j1 is NULL, their derivatives
+ * there by each body's displacement (dx, dy, dtheta), which are also the
+ * rows' terms on its velocity (vx, vy, w). tree_soft (NULL when the type
+ * has no soft rows) says whether the rows are soft this step and then
+ * gives their compliance C and velocity bias (with C times the
+ * accumulated impulses). tree_add adds a solve's impulses to the
+ * accumulated ones. */
 typedef struct {
     void (*prepare)(joint_t *joint);
     void (*solve_velocity)(joint_t *joint);
     void (*solve_position)(joint_t *joint);
     void (*settle_velocity)(joint_t *joint);
+    int (*tree_rows)(const joint_t *joint, joint_pose_t p1, joint_pose_t p2, double error[],
+                     double j1[][3], double j2[][3]);
+    bool (*tree_soft)(const joint_t *joint, double c[][JOINT_TREE_ROWS], double bias[]);
+    void (*tree_add)(joint_t *joint, const double impulse[]);
 } joint_kind_t;
 
 extern const joint_kind_t JOINT_REVOLUTE_KIND, JOINT_DISTANCE_KIND, JOINT_MOUSE_KIND,
@@ -131,12 +158,6 @@ static inline vector_t joint_relative_velocity(const joint_t *joint) {
     return vec_subtract(vec_add(v2->v, vec_cross_scalar(v2->w, joint->r2)),
                         vec_add(v1->v, vec_cross_scalar(v1->w, joint->r1)));
 }
-
-/* A body's pose during the position sweeps: where the step has it now. */
-typedef struct {
-    vector_t centroid;
-    double angle;
-} joint_pose_t;
 
 /* The pose of the joint's body (body1 when first) within the step; the
  * world's is the origin. */
@@ -191,6 +212,32 @@ static inline double joint_closing_rate(const joint_t *joint, double gap, double
  * s) the sweeps' linear solve overshoots and feeds the spin until the
  * chain flies apart. */
 static const double JOINT_EXACT_TURN = 0.05;
+
+/* A tree row's terms for a rate along direction u with lever terms l1,
+ * l2 (u . (v2 - v1) + l2 w2 - l1 w1); the point's x and y rows for lever
+ * arms r1, r2; the relative angle's row. */
+static inline void joint_tree_line(double j1[3], double j2[3], vector_t u, double l1, double l2) {
+    j1[0] = -u.x, j1[1] = -u.y, j1[2] = -l1;
+    j2[0] = u.x, j2[1] = u.y, j2[2] = l2;
+}
+
+static inline void joint_tree_point(double j1[][3], double j2[][3], vector_t r1, vector_t r2) {
+    joint_tree_line(j1[0], j2[0], (vector_t){1.0, 0.0}, -r1.y, -r2.y);
+    joint_tree_line(j1[1], j2[1], (vector_t){0.0, 1.0}, r1.x, r2.x);
+}
+
+static inline void joint_tree_angle(double j1[3], double j2[3]) {
+    joint_tree_line(j1, j2, VEC_ZERO, 1.0, 1.0);
+}
+
+/* The lever arms and anchor separation (anchor2 - anchor1) of the joint
+ * with its bodies at poses p1, p2. */
+static inline vector_t joint_separation(const joint_t *joint, joint_pose_t p1, joint_pose_t p2,
+                                        vector_t *r1, vector_t *r2) {
+    *r1 = vec_rotate(joint->def.anchor1, p1.angle);
+    *r2 = vec_rotate(joint->def.anchor2, p2.angle);
+    return vec_subtract(vec_add(p2.centroid, *r2), vec_add(p1.centroid, *r1));
+}
 
 /* Solves the 2x2 symmetric K x = b. A singular K gives 0. */
 static inline vector_t joint_solve22(double k11, double k12, double k22, vector_t b) {

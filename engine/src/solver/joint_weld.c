@@ -54,4 +54,46 @@ static void solve_position(joint_t *joint) {
     joint_correct_block(joint, r1, r2, gap, angle);
 }
 
-const joint_kind_t JOINT_WELD_KIND = {prepare, solve_velocity, solve_position, NULL};
+/* The tree takes a weld's point and angle, rigid or soft. */
+static int tree_rows(const joint_t *joint, joint_pose_t p1, joint_pose_t p2, double error[],
+                     double j1[][3], double j2[][3]) {
+    vector_t r1, r2, gap = joint_separation(joint, p1, p2, &r1, &r2);
+    error[0] = gap.x, error[1] = gap.y;
+    error[2] = p2.angle - p1.angle - joint->def.reference_angle;
+    if (j1 != NULL) {
+        joint_tree_point(j1, j2, r1, r2);
+        joint_tree_angle(j1[2], j2[2]);
+    }
+    return 3;
+}
+
+/* A soft weld's rows: with compliance C = K is / ms (K the weld's own
+ * blocks, is and ms its soft coefficients), (K + C) dl = -(J v + b + C l)
+ * is its sweep's step dl = -ms K^-1 (J v + b) - is l; the tree solves it
+ * with the whole tree's K in place of the weld's own. */
+static bool tree_soft(const joint_t *joint, double c[][JOINT_TREE_ROWS], double bias[]) {
+    if (joint->def.frequency == 0.0) return false;
+    const joint_soft_t *soft = &joint->soft;
+    double share = soft->impulse_scale / soft->mass_scale;
+    double k[3][3] = {{joint->k11, joint->k12, 0.0},
+                      {joint->k12, joint->k22, 0.0},
+                      {0.0, 0.0, joint->i1 + joint->i2}};
+    double impulse[3] = {joint->point_impulse.x, joint->point_impulse.y, joint->angle_impulse};
+    double error[3] = {joint->delta.x, joint->delta.y, joint->angle};
+    for (int r = 0; r < 3; r++) {
+        bias[r] = soft->bias_rate * error[r];
+        for (int k2 = 0; k2 < 3; k2++) {
+            c[r][k2] = share * k[r][k2];
+            bias[r] += c[r][k2] * impulse[k2];
+        }
+    }
+    return true;
+}
+
+static void tree_add(joint_t *joint, const double impulse[]) {
+    joint->point_impulse = vec_add(joint->point_impulse, (vector_t){impulse[0], impulse[1]});
+    joint->angle_impulse += impulse[2];
+}
+
+const joint_kind_t JOINT_WELD_KIND = {prepare,   solve_velocity, solve_position,
+                                      NULL, tree_rows, tree_soft, tree_add};

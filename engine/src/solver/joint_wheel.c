@@ -68,4 +68,27 @@ static void solve_position(joint_t *joint) {
     }
 }
 
-const joint_kind_t JOINT_WHEEL_KIND = {prepare, solve_velocity, solve_position, NULL};
+/* The tree takes a wheel without a spring, a motor or limits: its row
+ * across the axis. */
+static int tree_rows(const joint_t *joint, joint_pose_t p1, joint_pose_t p2, double error[],
+                     double j1[][3], double j2[][3]) {
+    const joint_def_t *def = &joint->def;
+    if (def->frequency > 0.0 || def->enable_motor || def->enable_limit) return 0;
+    vector_t r1, r2, d = joint_separation(joint, p1, p2, &r1, &r2);
+    vector_t axis = vec_rotate(vec_normalize(def->axis), p1.angle);
+    vector_t perp = vec_perpendicular(axis);
+    error[0] = vec_dot(perp, d);
+    if (j1 != NULL) {
+        double a1, a2, s1, s2;
+        joint_line_terms(d, r1, r2, axis, perp, &a1, &a2, &s1, &s2);
+        joint_tree_line(j1[0], j2[0], perp, s1, s2);
+    }
+    return 1;
+}
+
+static void tree_add(joint_t *joint, const double impulse[]) {
+    joint->point_impulse.x += impulse[0];
+}
+
+const joint_kind_t JOINT_WHEEL_KIND = {prepare,   solve_velocity, solve_position,
+                                       NULL, tree_rows, NULL, tree_add};

@@ -106,7 +106,7 @@ void solver_solve(solver_wide_t *wide, shock_t *shock, solver_contact_t *contact
         for (size_t i = 0; i < wide->loose_count; i++) {
             solver_solve_velocity(&contacts[wide->loose[i]], velocities);
         }
-        if (joints->count > 0) joint_solver_iterate(joints);
+        if (joints->count > 0) joint_solver_iterate(joints, bodies);
         if (iteration == shock_after) {
             stage_clock_lap(settings->clock, SCENE_STAGE_SOLVER);
             shock_propagate(shock, wide, contacts, contact_count, velocities, bodies->body_count);
@@ -117,7 +117,7 @@ void solver_solve(solver_wide_t *wide, shock_t *shock, solver_contact_t *contact
     if (any_impact) solver_mark_impacts(contacts, contact_count, velocities, bodies->states);
     stage_clock_lap(settings->clock, SCENE_STAGE_SOLVER);
     for_bodies(wide->workers, &split, advance_chunk);
-    if (joints->count > 0) joint_solver_settle(joints);
+    if (joints->count > 0) joint_solver_settle(joints, bodies);
     for (int iteration = 0; iteration < settings->position_iterations; iteration++) {
         solver_split_correct_positions(wide, bodies->displacements, iteration % 2 == 1);
         for (size_t i = 0; i < wide->loose_count; i++) {
@@ -126,5 +126,9 @@ void solver_solve(solver_wide_t *wide, shock_t *shock, solver_contact_t *contact
         if (joints->count > 0) joint_solver_correct(joints);
     }
     for_bodies(wide->workers, &split, limit_chunk);
+    /* The tree's projection after the bound on the corrections, which is
+     * the contacts': held by it, a whipping chain's joints stayed open by
+     * the step's centripetal drift. */
+    if (joints->count > 0) joint_solver_project(joints, bodies);
     stage_clock_lap(settings->clock, SCENE_STAGE_POSITION);
 }

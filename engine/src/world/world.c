@@ -42,6 +42,7 @@ void world_free(world_t *world) {
     seams_free(&world->seams);
     solver_wide_free(&world->wide);
     shock_free(&world->shock);
+    joint_tree_free(&world->joint_tree);
     sleep_free(&world->sleep);
     memory_free(world->active);
     memory_free(world->active_motions);
@@ -389,8 +390,9 @@ static void run_pipeline(world_t *world, body_t **bodies, integrator_motion_t *m
                                   step->restitution_threshold,
                                   clock};
     solver_bodies_t rows = {world->velocities, world->displacements, world->states, count};
+    joint_step_t joints = {step->joints.joints, step->joints.count, &world->joint_tree};
     solver_solve(&world->wide, &world->shock, world->contacts, world->anchors,
-                 world->contact_count, &rows, &settings, &step->joints);
+                 world->contact_count, &rows, &settings, &joints);
     if (step->sleeping) {
         update_sleep(world, bodies, count, step, all_bodies, all_count);
         stage_clock_lap(step->clock, SCENE_STAGE_SLEEP);

@@ -139,6 +139,7 @@ struct world {
 
     solver_wide_t wide;
     shock_t shock;
+    joint_tree_t joint_tree; /* the joints' tree solve (joint_tree.h) */
     int velocity_iterations, position_iterations;
 
     /* Sleeping: the awake bodies of the step, their motions and where
