@@ -6,8 +6,8 @@
 void joint_current(const joint_t *joint, vector_t *r1, vector_t *r2, vector_t *delta,
                    double *angle) {
     joint_pose_t p1 = joint_pose(joint, true), p2 = joint_pose(joint, false);
-    *r1 = vec_rotate(joint->def.anchor1, p1.angle);
-    *r2 = vec_rotate(joint->def.anchor2, p2.angle);
+    *r1 = joint_turned(joint->r1, p1.turn);
+    *r2 = joint_turned(joint->r2, p2.turn);
     *delta = vec_subtract(vec_add(p2.centroid, *r2), vec_add(p1.centroid, *r1));
     *angle = p2.angle - p1.angle - joint->def.reference_angle;
 }

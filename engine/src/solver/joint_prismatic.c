@@ -47,7 +47,7 @@ static void solve_position(joint_t *joint) {
     vector_t r1, r2, d;
     double angle;
     joint_current(joint, &r1, &r2, &d, &angle);
-    vector_t axis = vec_rotate(vec_normalize(joint->def.axis), joint_pose(joint, true).angle);
+    vector_t axis = joint_turned(joint->axis, joint_pose(joint, true).turn);
     vector_t perp = vec_perpendicular(axis);
     double a1, a2, s1, s2, k11, k12, k22;
     joint_line_terms(d, r1, r2, axis, perp, &a1, &a2, &s1, &s2);
@@ -71,7 +71,7 @@ static int tree_rows(const joint_t *joint, joint_pose_t p1, joint_pose_t p2, dou
                      double j1[][3], double j2[][3]) {
     if (joint->def.enable_motor || joint->def.enable_limit) return 0;
     vector_t r1, r2, d = joint_separation(joint, p1, p2, &r1, &r2);
-    vector_t axis = vec_rotate(vec_normalize(joint->def.axis), p1.angle);
+    vector_t axis = joint_turned(joint->axis, p1.turn);
     vector_t perp = vec_perpendicular(axis);
     error[0] = vec_dot(perp, d);
     error[1] = p2.angle - p1.angle - joint->def.reference_angle;

@@ -110,8 +110,8 @@ static uint32_t tree_row(const body_t *body, const solver_bodies_t *bodies) {
 
 /* A body's pose at the start of the step; the world's is the origin. */
 static joint_pose_t start_pose(const body_t *body) {
-    return body == NULL ? (joint_pose_t){VEC_ZERO, 0.0}
-                        : (joint_pose_t){body->centroid, body->angle};
+    return body == NULL ? (joint_pose_t){VEC_ZERO, 0.0, 0.0}
+                        : (joint_pose_t){body->centroid, body->angle, 0.0};
 }
 
 /* Whether the joint's tree rows are soft this step; then their compliance

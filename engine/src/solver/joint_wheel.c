@@ -51,7 +51,7 @@ static void solve_position(joint_t *joint) {
     vector_t r1, r2, d;
     double angle;
     joint_current(joint, &r1, &r2, &d, &angle);
-    vector_t axis = vec_rotate(vec_normalize(joint->def.axis), joint_pose(joint, true).angle);
+    vector_t axis = joint_turned(joint->axis, joint_pose(joint, true).turn);
     vector_t perp = vec_perpendicular(axis);
     double a1, a2, s1, s2;
     joint_line_terms(d, r1, r2, axis, perp, &a1, &a2, &s1, &s2);
@@ -75,7 +75,7 @@ static int tree_rows(const joint_t *joint, joint_pose_t p1, joint_pose_t p2, dou
     const joint_def_t *def = &joint->def;
     if (def->frequency > 0.0 || def->enable_motor || def->enable_limit) return 0;
     vector_t r1, r2, d = joint_separation(joint, p1, p2, &r1, &r2);
-    vector_t axis = vec_rotate(vec_normalize(def->axis), p1.angle);
+    vector_t axis = joint_turned(joint->axis, p1.turn);
     vector_t perp = vec_perpendicular(axis);
     error[0] = vec_dot(perp, d);
     if (j1 != NULL) {
