@@ -183,6 +183,7 @@ static uint32_t node_for(joint_tree_t *tree, uint32_t row) {
     node->row = row;
     node->set = index;
     node->ground_rows = 0;
+    node->held_rows = MAX_BLOCK; /* its Cg is unknown: cleared whole at the first factor */
     tree->node_of_row[row] = index;
     return index;
 }
@@ -393,9 +394,10 @@ void joint_tree_factor(joint_tree_t *tree, const solver_velocity_t *velocities) 
         const solver_velocity_t *row = &velocities[node->row];
         node->w[0] = node->w[1] = row->inverse_mass;
         node->w[2] = row->inverse_inertia;
+        /* Only the rows held last time can be nonzero (hold_rows writes no other). */
+        memset(node->cg, 0, sizeof node->cg[0] * (size_t)node->held_rows);
         node->held_rows = node->ground_rows;
         memset(node->x, 0, sizeof node->x);
-        memset(node->cg, 0, sizeof node->cg);
     }
     take_ground_rows(tree);
     for (size_t k = tree->node_count; k-- > 0;) {
