@@ -7,11 +7,14 @@
  * joint of the step, applies its warm-start impulses, and factors the tree
  * solve (joint_tree.h) of the joints' equality rows at the step's start;
  * joint_solver_iterate after each velocity sweep of the contacts, one
-void joint_solver_settle(const joint_step_t *step, const solver_bodies_t *bodies);
  * velocity sweep of the joints the tree does not take, then the tree's
  * exact solve of its rows (the impulses added to the accumulated ones);
- * joint_solver_correct after each position sweep of the contacts, the
- * position sweeps of the rigid joints the tree does not take;
+ * joint_solver_settle once the displacements are fixed (after the
+ * velocity iterations, before the position pass), the tree's rows give
+ * back the kick their positions did not see (RATTLE's half kick) and
+ * every joint's end velocities are made consistent with it at the pose the
+ * step ends in; joint_solver_correct after each position sweep of the
+ * contacts, the position sweeps of the rigid joints the tree does not take;
  * joint_solver_project after the bound on the step's corrections
  * (solver_limit_corrections, the contacts'), Newton steps of the tree's
  * rigid rows onto their positions, each factored at the poses reached,
