@@ -58,11 +58,7 @@ static void solve_position(joint_t *joint) {
     vector_t impulse = vec_negate(joint_solve22(k11, k12, k22, c));
     joint_displace(joint, vec_multiply(impulse.x, perp), impulse.x * s1 + impulse.y,
                    impulse.x * s2 + impulse.y);
-    if (joint->def.enable_limit) {
-        joint_current(joint, &r1, &r2, &d, &angle);
-        joint_line_terms(d, r1, r2, axis, perp, &a1, &a2, &s1, &s2);
-        joint_correct_line_limits(joint, vec_dot(axis, d), axis, a1, a2);
-    }
+    if (joint->def.enable_limit) joint_correct_line_limits(joint, axis, perp);
 }
 
 /* The tree takes a slider without a motor or limits: across the axis and
@@ -70,17 +66,10 @@ static void solve_position(joint_t *joint) {
 static int tree_rows(const joint_t *joint, joint_pose_t p1, joint_pose_t p2, double error[],
                      double j1[][3], double j2[][3]) {
     if (joint->def.enable_motor || joint->def.enable_limit) return 0;
-    vector_t r1, r2, d = joint_separation(joint, p1, p2, &r1, &r2);
-    vector_t axis = joint_turned(joint->axis, p1.turn);
-    vector_t perp = vec_perpendicular(axis);
-    error[0] = vec_dot(perp, d);
+    joint_tree_across(joint, p1, p2, &error[0], j1 != NULL ? j1[0] : NULL,
+                      j2 != NULL ? j2[0] : NULL);
     error[1] = p2.angle - p1.angle - joint->def.reference_angle;
-    if (j1 != NULL) {
-        double a1, a2, s1, s2;
-        joint_line_terms(d, r1, r2, axis, perp, &a1, &a2, &s1, &s2);
-        joint_tree_line(j1[0], j2[0], perp, s1, s2);
-        joint_tree_angle(j1[1], j2[1]);
-    }
+    if (j1 != NULL) joint_tree_angle(j1[1], j2[1]);
     return 2;
 }
 

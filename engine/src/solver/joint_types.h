@@ -348,10 +348,29 @@ static inline void joint_line_warm(joint_t *joint, double axial, double across, 
                 axial * joint->a2 + across * joint->s2 + turn);
 }
 
-/* The position sweep's limits along a line: translation t in [lower,
- * upper] along axis with lever terms a1, a2. */
-static inline void joint_correct_line_limits(joint_t *joint, double t, vector_t axis, double a1,
-                                             double a2) {
+/* A line joint's tree row across its axis (slider, wheel) at poses p1,
+ * p2: its error and, unless j1 is NULL, its terms. */
+static inline void joint_tree_across(const joint_t *joint, joint_pose_t p1, joint_pose_t p2,
+                                     double *error, double j1[3], double j2[3]) {
+    vector_t r1, r2, d = joint_separation(joint, p1, p2, &r1, &r2);
+    vector_t axis = joint_turned(joint->axis, p1.turn);
+    vector_t perp = vec_perpendicular(axis);
+    *error = vec_dot(perp, d);
+    if (j1 == NULL) return;
+    double a1, a2, s1, s2;
+    joint_line_terms(d, r1, r2, axis, perp, &a1, &a2, &s1, &s2);
+    joint_tree_line(j1, j2, perp, s1, s2);
+}
+
+/* The position sweep's limits along a line (axis, and perp across it),
+ * at the pose the sweeps have reached: the translation kept in [lower,
+ * upper]. */
+static inline void joint_correct_line_limits(joint_t *joint, vector_t axis, vector_t perp) {
+    vector_t r1, r2, d;
+    double angle, a1, a2, s1, s2;
+    joint_current(joint, &r1, &r2, &d, &angle);
+    joint_line_terms(d, r1, r2, axis, perp, &a1, &a2, &s1, &s2);
+    double t = vec_dot(axis, d);
     joint_correct_axial(joint, t - joint->def.lower_translation, axis, a1, a2);
     joint_correct_axial(joint, joint->def.upper_translation - t, vec_negate(axis), -a1, -a2);
 }

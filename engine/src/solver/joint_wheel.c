@@ -61,11 +61,7 @@ static void solve_position(joint_t *joint) {
     } else {
         joint_correct_axial(joint, c, perp, s1, s2);
     }
-    if (joint->def.enable_limit) {
-        joint_current(joint, &r1, &r2, &d, &angle);
-        joint_line_terms(d, r1, r2, axis, perp, &a1, &a2, &s1, &s2);
-        joint_correct_line_limits(joint, vec_dot(axis, d), axis, a1, a2);
-    }
+    if (joint->def.enable_limit) joint_correct_line_limits(joint, axis, perp);
 }
 
 /* The tree takes a wheel without a spring, a motor or limits: its row
@@ -74,15 +70,8 @@ static int tree_rows(const joint_t *joint, joint_pose_t p1, joint_pose_t p2, dou
                      double j1[][3], double j2[][3]) {
     const joint_def_t *def = &joint->def;
     if (def->frequency > 0.0 || def->enable_motor || def->enable_limit) return 0;
-    vector_t r1, r2, d = joint_separation(joint, p1, p2, &r1, &r2);
-    vector_t axis = joint_turned(joint->axis, p1.turn);
-    vector_t perp = vec_perpendicular(axis);
-    error[0] = vec_dot(perp, d);
-    if (j1 != NULL) {
-        double a1, a2, s1, s2;
-        joint_line_terms(d, r1, r2, axis, perp, &a1, &a2, &s1, &s2);
-        joint_tree_line(j1[0], j2[0], perp, s1, s2);
-    }
+    joint_tree_across(joint, p1, p2, &error[0], j1 != NULL ? j1[0] : NULL,
+                      j2 != NULL ? j2[0] : NULL);
     return 1;
 }
 
