@@ -239,6 +239,46 @@ static void find_collision_with_a_chain(void) {
     body_free(floor);
 }
 
+/*
+ * find_collision on a chain reports the contact the world builds, as for
+ * round pairs (test_round.c): a capsule (radius 0.25) whose low end lies
+ * 11.2 mm beyond a chain's open end and 0.2492 m above it, turned -67 mrad,
+ * touches the end 0.55 mm deep, but the world's contact is on the chain's
+ * face, where its end's side plane cuts the capsule, 0.8 mm - 11.2 mm
+ * tan(67 mrad) = 0.05 mm deep; find_collision gives that point's depth
+ * and the face's normal.
+ */
+static void find_collision_agrees_with_the_worlds_contact_on_a_chain(void) {
+    scene_t *scene = chain_scene();
+    scene_set_gravity(scene, VEC_ZERO);
+    vector_t points[2] = {{-0.25, 0}, {0.25, 0}};
+    body_t *floor = body_init_chain(points, 2, false, GREY);
+    double turn = -0.067;
+    vector_t right = {0.25 + 0.0112, 0.2492};
+    vector_t left = {right.x - 0.5 * cos(turn), right.y - 0.5 * sin(turn)};
+    body_t *rod = body_init_capsule(left, right, 0.25, 1.0, GREY);
+    scene_add_body(scene, floor);
+    scene_add_body(scene, rod);
+    collision_info_t info = find_collision(floor, rod);
+    scene_tick(scene, DT);
+    const contact_t *world = NULL;
+    for (size_t i = 0; i < scene_contact_count(scene); i++) {
+        const contact_t *c = scene_get_contact(scene, i);
+        if (c->kind == CONTACT_WORLD && (c->body1 == rod || c->body2 == rod)) world = c;
+    }
+    CHECK(world != NULL);
+    if (world != NULL) {
+        /* The world's axis runs from its body1 toward its body2. */
+        vector_t axis = world->body1 == floor ? world->axis : vec_negate(world->axis);
+        CHECK(world->point_count == 1);
+        CHECK_NEAR(world->separation[0], 0.0112 * tan(0.067) - 0.0008, 1e-12);
+        CHECK(info.collided);
+        CHECK_VEC(info.axis, axis.x, axis.y, 1e-15);
+        CHECK_NEAR(info.depth, -world->separation[0], 1e-15);
+    }
+    scene_free(scene);
+}
+
 /* The contact points of body's world contacts with `other` that lie within
  * 1 mm of p, after the last tick. */
 static int points_near(scene_t *scene, const body_t *body, const body_t *other, vector_t p) {
@@ -381,6 +421,148 @@ static void box_glides_from_a_static_box_onto_a_chain(void) {
                    "m/s\n",
                    left_is_chain ? "chain" : "static box", leftward ? "leftward" : "rightward",
                    speed0, height, angle, speed);
+        }
+        scene_free(scene);
+    }
+}
+
+/*
+ * A chain lying on a static box's top face (y = 0), or within a hair of it
+ * (SEAM_TOLERANCE, 1 micrometre): the two are one surface, and a body on
+ * the stretch they share gets one contact from it, as on one long face.
+ * Each layout: the box's top from box_lo to box_hi (0.5 m deep), the chain
+ * `count` points from chain_lo to chain_hi at height `lift`.
+ */
+typedef struct {
+    const char *name;
+    double box_lo, box_hi, chain_lo, chain_hi;
+    size_t count;
+    double lift;
+} overlap_layout_t;
+
+static const overlap_layout_t OVERLAPS[] = {
+    {"a segment within the box's face", -2.0, 2.0, -1.0, 1.0, 2, 0.0},
+    {"a chain over the box's end", -4.0, 1.0, -0.9258, 4.0, 6, 0.0},
+    {"a chain over the whole face", -1.0, 1.0, -4.0, 4.0, 9, 0.0},
+    {"a segment on the face exactly", -2.0, 2.0, -2.0, 2.0, 2, 0.0},
+    {"a chain a hair above", -4.0, 4.0, -2.0, 2.0, 9, 5e-7},
+    {"a chain a hair below", -4.0, 4.0, -2.0, 2.0, 9, -5e-7},
+};
+enum { OVERLAP_COUNT = sizeof(OVERLAPS) / sizeof(OVERLAPS[0]) };
+
+/* The layout's static box and chain, frictionless, added box first or
+ * chain first (the world's pair order follows). */
+static void add_overlap(scene_t *scene, const overlap_layout_t *layout, bool chain_first,
+                        body_t **base, body_t **chain) {
+    double half = 0.5 * (layout->box_hi - layout->box_lo);
+    *base = body_init(polygon_make_box((vector_t){layout->box_lo + half, -0.25}, half, 0.25),
+                      INFINITY, GREY);
+    vector_t points[16];
+    for (size_t i = 0; i < layout->count; i++) {
+        double t = (double)i / (double)(layout->count - 1);
+        points[i] = (vector_t){layout->chain_lo + t * (layout->chain_hi - layout->chain_lo),
+                               layout->lift};
+    }
+    *chain = body_init_chain(points, layout->count, false, GREY);
+    body_set_friction(*base, 0.0);
+    body_set_friction(*chain, 0.0);
+    scene_add_body(scene, chain_first ? *chain : *base);
+    scene_add_body(scene, chain_first ? *base : *chain);
+}
+
+/* Of body's world contacts with points after the last tick: how many with
+ * `base` and with `chain`, and their normal impulses' sum. */
+typedef struct {
+    int with_base, with_chain;
+    double impulse;
+} surface_contacts_t;
+
+static surface_contacts_t surface_contacts(scene_t *scene, const body_t *body,
+                                           const body_t *base, const body_t *chain) {
+    surface_contacts_t found = {0, 0, 0.0};
+    for (size_t i = 0; i < scene_contact_count(scene); i++) {
+        const contact_t *c = scene_get_contact(scene, i);
+        if (c->kind != CONTACT_WORLD || c->point_count == 0) continue;
+        const body_t *other = c->body1 == body ? c->body2 : c->body2 == body ? c->body1 : NULL;
+        if (other == NULL) continue;
+        found.with_base += other == base;
+        found.with_chain += other == chain;
+        for (size_t j = 0; j < c->point_count; j++) found.impulse += c->normal_impulse[j];
+    }
+    return found;
+}
+
+/* A 0.5 m box of 1 kg resting on the stretch the chain and the static box
+ * share (centred where the chain starts or over its middle) has one
+ * contact, with one of the two, whose impulse bears its weight: m g dt
+ * per step, to 1e-6 relative. */
+static void box_on_a_chain_over_a_static_box_meets_one_surface(void) {
+    for (int run = 0; run < 2 * OVERLAP_COUNT; run++) {
+        const overlap_layout_t *layout = &OVERLAPS[run / 2];
+        bool chain_first = run % 2 == 1;
+        scene_t *scene = chain_scene();
+        body_t *base, *chain;
+        add_overlap(scene, layout, chain_first, &base, &chain);
+        double lo = fmax(layout->box_lo, layout->chain_lo);
+        double hi = fmin(layout->box_hi, layout->chain_hi);
+        double x = layout->chain_lo > layout->box_lo ? lo + 0.3 : 0.5 * (lo + hi) + 0.1;
+        body_t *box = add_box(scene, x, 0.0);
+        scene_set_sleeping(scene, false); /* a sleeping pair's contact is not recorded */
+        for (int step = 0; step < 60; step++) scene_tick(scene, DT);
+        surface_contacts_t found = surface_contacts(scene, box, base, chain);
+        CHECK(found.with_base + found.with_chain == 1);
+        CHECK_RELATIVE(found.impulse, G * DT, 1e-6);
+        CHECK_NEAR(body_get_centroid(box).y, 0.25 + layout->lift, 1e-3);
+        if (found.with_base + found.with_chain != 1) {
+            printf("  %s, %s first: %d contacts with the box, %d with the chain\n", layout->name,
+                   chain_first ? "chain" : "box", found.with_base, found.with_chain);
+        }
+        scene_free(scene);
+    }
+}
+
+/* A frictionless box sliding at 0.5 to 20 m/s either way across a chain
+ * laid over a static box's face (over its end, over the whole face, or a
+ * hair into it): one contact from the surface at every step, its height
+ * within 1 mm of resting, its rotation under 1e-6 rad, its speed kept to
+ * 1e-3. (It starts 12.3 mm off the joins' grid: a step that ends with its
+ * middle within the micrometre where two faces share their claims, at a
+ * join, has a contact from each, as between flush boxes.) */
+static void box_glides_across_a_chain_over_a_static_box(void) {
+    const int layouts[] = {1, 2, 5};
+    for (int run = 0; run < 3 * 2 * SPEED_COUNT; run++) {
+        const overlap_layout_t *layout = &OVERLAPS[layouts[run / (2 * SPEED_COUNT)]];
+        double speed0 = SPEEDS[run % SPEED_COUNT];
+        bool leftward = run / SPEED_COUNT % 2 == 1;
+        scene_t *scene = chain_scene();
+        body_t *base, *chain;
+        add_overlap(scene, layout, leftward, &base, &chain);
+        double sign = leftward ? -1.0 : 1.0;
+        body_t *box = add_box(scene, -2.9877 * sign, 0.0);
+        body_set_centroid(box, (vector_t){-2.9877 * sign, 0.25 + layout->lift});
+        body_set_velocity(box, (vector_t){sign * speed0, 0.0});
+        double height = 0.0, angle = 0.0, speed = 0.0;
+        int steps = 0, doubled = 0;
+        while (sign * body_get_centroid(box).x < 3.0 && steps < 2000) {
+            scene_tick(scene, DT);
+            steps++;
+            height = fmax(height, fabs(body_get_centroid(box).y - 0.25 - layout->lift));
+            angle = fmax(angle, fabs(body_get_rotation(box)));
+            speed = fmax(speed, fabs(sign * body_get_velocity(box).x - speed0));
+            surface_contacts_t found = surface_contacts(scene, box, base, chain);
+            doubled += found.with_base > 0 && found.with_chain > 0;
+        }
+        CHECK(sign * body_get_centroid(box).x >= 3.0);
+        CHECK(doubled == 0);
+        CHECK(height <= HEIGHT_TOLERANCE);
+        CHECK(angle < ANGLE_TOLERANCE);
+        CHECK(speed <= 1e-3 * speed0);
+        if (!(doubled == 0 && height <= HEIGHT_TOLERANCE && angle < ANGLE_TOLERANCE &&
+              speed <= 1e-3 * speed0)) {
+            printf("  %s, %s at %g m/s: %d of %d steps with both, height %.3g m, angle %.3g rad, "
+                   "speed off by %.3g m/s\n",
+                   layout->name, leftward ? "leftward" : "rightward", speed0, doubled, steps,
+                   height, angle, speed);
         }
         scene_free(scene);
     }
@@ -588,10 +770,14 @@ TEST_SUITE(chains, TEST_CASE(box_glides_over_a_segment_floor),
            TEST_CASE(capsule_slides_over_joins_without_bumps), TEST_CASE(loop_keeps_bodies_inside),
            TEST_CASE(chains_collide_on_their_left_side),
            TEST_CASE(ball_on_a_chain_sleeps_and_reports_the_chain),
-           TEST_CASE(find_collision_with_a_chain), TEST_CASE(bad_input_aborts_with_message),
+           TEST_CASE(find_collision_with_a_chain),
+           TEST_CASE(find_collision_agrees_with_the_worlds_contact_on_a_chain),
+           TEST_CASE(bad_input_aborts_with_message),
            TEST_CASE(chain_accessors), TEST_CASE(long_chain_pairs_stay_linear),
            TEST_CASE(time_of_impact_is_exact_for_round_shapes),
            TEST_CASE(seed_collision_handlers_take_a_chain),
            TEST_CASE(convex_join_gives_one_corner_contact),
            TEST_CASE(box_slides_over_a_convex_join_as_over_a_corner),
-           TEST_CASE(box_glides_from_a_static_box_onto_a_chain));
+           TEST_CASE(box_glides_from_a_static_box_onto_a_chain),
+           TEST_CASE(box_on_a_chain_over_a_static_box_meets_one_surface),
+           TEST_CASE(box_glides_across_a_chain_over_a_static_box));

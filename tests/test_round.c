@@ -360,6 +360,71 @@ static scene_t *round_scene(double gravity) {
     return scene;
 }
 
+/* A static capsule along y = 0 from x = -0.25 to 0.25 (radius 0.25) and a
+ * free one of the same size whose right end lies dx beyond the first's and
+ * h above it, turned by `turn` (its left end high). */
+static void end_over_end(double dx, double h, double turn, body_t **lower, body_t **upper) {
+    *lower = body_init_capsule((vector_t){-0.25, 0}, (vector_t){0.25, 0}, 0.25, INFINITY, GREY);
+    vector_t right = {0.25 + dx, h};
+    vector_t left = {right.x - 0.5 * cos(turn), right.y - 0.5 * sin(turn)};
+    *upper = body_init_capsule(left, right, 0.25, 1.0, GREY);
+}
+
+/* The world's contact of the pair after one step with no gravity (its
+ * separations are the manifold's at the start of the step); the world
+ * builds it with body1 as its first body (a's face preferred), as
+ * find_collision(body1, body2) does. */
+static contact_t world_contact(scene_t *scene, const body_t *body1, const body_t *body2) {
+    contact_t found = {0};
+    for (size_t i = 0; i < scene_contact_count(scene); i++) {
+        const contact_t *c = scene_get_contact(scene, i);
+        if (c->kind == CONTACT_WORLD && (c->body1 == body2 || c->body2 == body2)) found = *c;
+    }
+    CHECK(found.body1 == body1 && found.body2 == body2);
+    return found;
+}
+
+/*
+ * find_collision reports the contact the world builds: its normal as the
+ * axis and its deepest point's depth. Two capsules stacked end over end
+ * (the upper's end 8.9 mm beyond the lower's, 0.4992 m above it, turned
+ * -65 mrad), whose nearest features are the two ends, 0.72 mm deep: the
+ * world's contact is on the lower one's face, its point where that face's
+ * side plane cuts the upper one, 0.8 mm - 8.9 mm tan(65 mrad) = 0.22 mm
+ * deep, and find_collision gives that. Turned -50 mrad, 13.8 mm beyond and
+ * 0.4995 m above, the ends overlap by 0.31 mm but the face's point is
+ * 0.19 mm clear: the world's contact is speculative, and find_collision
+ * finds no collision.
+ */
+static void find_collision_agrees_with_the_worlds_contact(void) {
+    body_t *lower, *upper;
+    end_over_end(0.0089, 0.4992, -0.065, &lower, &upper);
+    scene_t *scene = round_scene(0.0);
+    scene_add_body(scene, lower);
+    scene_add_body(scene, upper);
+    collision_info_t info = find_collision(lower, upper);
+    scene_tick(scene, DT);
+    contact_t world = world_contact(scene, lower, upper);
+    CHECK(world.point_count == 1 && world.touching);
+    CHECK_NEAR(world.separation[0], 0.0089 * tan(0.065) - 0.0008, 1e-12);
+    CHECK(info.collided);
+    CHECK_VEC(info.axis, world.axis.x, world.axis.y, 1e-15);
+    CHECK_NEAR(info.depth, -world.separation[0], 1e-15);
+    scene_free(scene);
+
+    end_over_end(0.0138, 0.4995, -0.05, &lower, &upper);
+    scene = round_scene(0.0);
+    scene_add_body(scene, lower);
+    scene_add_body(scene, upper);
+    info = find_collision(lower, upper);
+    scene_tick(scene, DT);
+    world = world_contact(scene, lower, upper);
+    CHECK(world.point_count == 1 && !world.touching);
+    CHECK_NEAR(world.separation[0], 0.0138 * tan(0.05) - 0.0005, 1e-12);
+    CHECK(!info.collided);
+    scene_free(scene);
+}
+
 static body_t *add(scene_t *scene, body_t *body, double elasticity, double friction) {
     body_set_elasticity(body, elasticity);
     body_set_friction(body, friction);
@@ -652,6 +717,7 @@ TEST_SUITE(round, TEST_CASE(circle_has_exact_mass_properties),
            TEST_CASE(parallel_capsules_keep_their_reference_face),
            TEST_CASE(stacked_capsules_touch_at_both_ends),
            TEST_CASE(rocking_capsules_keep_their_ids),
+           TEST_CASE(find_collision_agrees_with_the_worlds_contact),
            TEST_CASE(head_on_equal_circles_swap_velocities),
            TEST_CASE(dropped_ball_rebounds_to_e_squared),
            TEST_CASE(frictionless_circle_slides_without_turning),

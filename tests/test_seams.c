@@ -522,6 +522,38 @@ static void workers_give_the_same_bytes(void) {
     }
 }
 
+/* Two static boxes whose top faces overlap flush, over [0, 1]: one
+ * surface, each holding its side of the overlap's middle (x = 0.5). A box
+ * resting on the overlap at x = 0.3 or 0.8 has one contact, with the box
+ * on that side, bearing its weight (m g dt per step, to 1e-6 relative). */
+static void box_on_overlapping_tiles_meets_one_face(void) {
+    const double at[2] = {0.3, 0.8};
+    for (int k = 0; k < 2; k++) {
+        scene_t *scene = seam_scene((vector_t){0.0, -G});
+        scene_set_sleeping(scene, false); /* a sleeping pair's contact is not recorded */
+        body_t *left = add_block(scene, -2.0, -1.0, 1.0, 0.0, 0.0);
+        body_t *right = add_block(scene, 0.0, -0.5, 3.0, 0.0, 0.0);
+        body_t *box = add_box(scene, at[k], 0.0);
+        for (int step = 0; step < 60; step++) scene_tick(scene, DT);
+        int with_left = 0, with_right = 0;
+        double impulse = 0.0;
+        for (size_t i = 0; i < scene_contact_count(scene); i++) {
+            const contact_t *c = scene_get_contact(scene, i);
+            if (c->point_count == 0 || (c->body1 != box && c->body2 != box)) continue;
+            with_left += c->body1 == left || c->body2 == left;
+            with_right += c->body1 == right || c->body2 == right;
+            for (size_t j = 0; j < c->point_count; j++) impulse += c->normal_impulse[j];
+        }
+        CHECK(with_left == (k == 0) && with_right == (k == 1));
+        CHECK_RELATIVE(impulse, G * DT, 1e-6);
+        if (!(with_left == (k == 0) && with_right == (k == 1))) {
+            printf("  at x = %g: %d contacts with the left box, %d with the right\n", at[k],
+                   with_left, with_right);
+        }
+        scene_free(scene);
+    }
+}
+
 TEST_SUITE(seams, TEST_CASE(box_glides_over_flush_tiles),
            TEST_CASE(box_glides_over_tiles_of_differing_widths),
            TEST_CASE(box_glides_over_tiles_of_differing_heights),
@@ -535,4 +567,5 @@ TEST_SUITE(seams, TEST_CASE(box_glides_over_flush_tiles),
            TEST_CASE(removing_a_tile_opens_a_gap), TEST_CASE(tile_filtered_out_is_no_neighbour),
            TEST_CASE(changing_a_filter_after_running),
            TEST_CASE(contacts_switched_off_and_on_forget_old_tiles),
-           TEST_CASE(tiles_added_later_join_the_floor), TEST_CASE(workers_give_the_same_bytes));
+           TEST_CASE(tiles_added_later_join_the_floor), TEST_CASE(workers_give_the_same_bytes),
+           TEST_CASE(box_on_overlapping_tiles_meets_one_face));

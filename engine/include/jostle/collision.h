@@ -27,10 +27,11 @@ typedef struct {
 /*
  * Projects both polygons onto the outward edge normals of both and stops at
  * the first axis whose projections do not overlap. A pair with a circle or
- * capsule is tested on the exact shapes: the axis is the contact normal
- * (along the line between the nearest features, or the face normal of
- * least overlap when the cores overlap), the depth the overlap along it.
- * Allocates nothing.
+ * capsule (or a chain) gives the contact the world builds for it on the
+ * exact shapes, body1 as its first body: the axis is the contact's normal
+ * (along the line between the nearest features, or a face's normal where
+ * the contact lies on a face), collided when its deepest point touches,
+ * the depth that point's overlap along the axis. Allocates nothing.
  * Neither body may be NULL.
  */
 collision_info_t find_collision(body_t *body1, body_t *body2);

@@ -48,17 +48,30 @@ static bool overlaps_on_normals_of(const body_t *owner, const body_t *body1,
     return true;
 }
 
-/* A pair with a round body: collided when the exact shapes touch, the axis
- * the contact normal, the depth the overlap along it. */
+/* The separation of a manifold's deepest point (INFINITY: no points). */
+static double deepest(const manifold_t *m) {
+    double least = INFINITY;
+    for (int i = 0; i < m->point_count; i++) least = fmin(least, m->points[i].separation);
+    return least;
+}
+
+/* A pair with a round body: the contact the world builds, its points
+ * found at any distance (the world's margin only drops points, and the
+ * shapes' separation is a lower bound on theirs, so apart shapes are
+ * apart): collided when its deepest point touches, the axis its normal,
+ * the depth that point's overlap along it. */
 static collision_info_t round_collision(const body_t *body1, const body_t *body2) {
     collision_info_t info = {false, VEC_ZERO, 0.0};
     manifold_features_t features;
     double separation;
     manifold_t manifold = round_manifold_collide(body1, body2, 0.0, &features, &separation);
     if (separation > 0.0) return info;
+    manifold = round_manifold_collide(body1, body2, INFINITY, &features, &separation);
+    double least = manifold.point_count > 0 ? deepest(&manifold) : separation;
+    if (least > 0.0) return info;
     info.collided = true;
     info.axis = manifold.normal;
-    info.depth = -separation;
+    info.depth = -least;
     return info;
 }
 
@@ -75,8 +88,9 @@ static size_t parts_of(body_t *body, body_t ***parts) {
 }
 
 /* A pair with a chain: each segment against the other body (or each
- * segment of it) by the chain's rules (segment_manifold.h), the deepest
- * touch kept; *least receives the least separation found. */
+ * segment of it) by the chain's rules (segment_manifold.h), as the world
+ * builds their contacts (round_collision), the deepest touch kept; *least
+ * receives the least separation found. */
 static collision_info_t chain_collision(body_t *body1, body_t *body2, double *least) {
     body_t **parts1, **parts2;
     size_t n1 = parts_of(body1, &parts1), n2 = parts_of(body2, &parts2);
@@ -91,14 +105,13 @@ static collision_info_t chain_collision(body_t *body1, body_t *body2, double *le
             /* Not manifold_collide: a program of seed collisions links
              * none of the world's narrowphase. */
             manifold_t m = segment_manifold_collide(a, b, 0.0, &features, &separation);
-            for (int k = 0; k < m.point_count; k++) {
-                separation = fmin(separation, m.points[k].separation);
+            *least = fmin(*least, fmin(separation, deepest(&m)));
+            if (m.point_count == 0) continue;
+            m = segment_manifold_collide(a, b, INFINITY, &features, &separation);
+            double depth = -deepest(&m);
+            if (depth >= 0.0 && (!info.collided || depth > info.depth)) {
+                info = (collision_info_t){true, m.normal, depth};
             }
-            bool touches = m.point_count > 0 && separation <= 0.0;
-            if (touches && (!info.collided || -separation > info.depth)) {
-                info = (collision_info_t){true, m.normal, -separation};
-            }
-            *least = fmin(*least, separation);
         }
     }
     return info;

@@ -179,11 +179,11 @@ MANIFOLD_INLINE manifold_t clipped_manifold(const body_t *a, const body_t *b, bo
  *   every clipped point of the other body lies on its covered part (the
  *   neighbour that covers it holds those points). A face of a run clips the
  *   other body to the whole run, and keeps the contact only when the
- *   middle of the points within the margin lies on its own stretch, so
- *   that one face of the run holds it, as one long face would;
+ *   middle of the points within the margin lies on its own stretch (its
+ *   claim), so that one face of the run holds it, as one long face would;
  * - the other body's face as the reference: refused when body's clipped
- *   points include a seam vertex (no corner there to push on) or all lie
- *   on a covered part.
+ *   points include a seam vertex (no corner there to push on), all lie
+ *   on a covered part, or their middle lies off the claim of body's face.
  * A refused contact takes body's best face that is not internal (nor the
  * face just refused for its cover) instead, the face that continues past
  * the seam, and is dropped when that one too holds nothing.
@@ -204,17 +204,6 @@ static bool both_covered(const body_t *body, size_t edge, const clip_vertex_t po
         if (!(t <= seam->start || t >= seam->end)) return false;
     }
     return true;
-}
-
-/* Whether body's clipped incident points rest on a seam. */
-static bool on_seam(const body_t *body, const clipped_t *clipped) {
-    size_t inc_next = (clipped->inc_edge + 1) % body->count;
-    for (int i = 0; i < 2; i++) {
-        uint32_t feature = clipped->points[i].feature;
-        if (feature == clipped->inc_edge && body->seam->edges[feature].smooth) return true;
-        if (feature == inc_next && body->seam->edges[feature].smooth) return true;
-    }
-    return both_covered(body, clipped->inc_edge, clipped->points);
 }
 
 /* body's face that is not internal nor `excluded` with the largest
@@ -274,6 +263,22 @@ static bool claims(const body_t *body, size_t face, const clipped_t *clipped, do
     return t >= seam->claim_lo && t <= seam->claim_hi;
 }
 
+/* Whether body's clipped incident points rest on a seam, or on a stretch
+ * of its face's run that another face holds. */
+static bool on_seam(const body_t *body, const clipped_t *clipped, double margin) {
+    size_t inc_next = (clipped->inc_edge + 1) % body->count;
+    for (int i = 0; i < 2; i++) {
+        uint32_t feature = clipped->points[i].feature;
+        if (feature == clipped->inc_edge && body->seam->edges[feature].smooth) return true;
+        if (feature == inc_next && body->seam->edges[feature].smooth) return true;
+    }
+    if (body->seam->edges[clipped->inc_edge].chained &&
+        !claims(body, clipped->inc_edge, clipped, margin)) {
+        return true;
+    }
+    return both_covered(body, clipped->inc_edge, clipped->points);
+}
+
 /* The contact on body's face `face` (clipped), or none when another face
  * of its run holds it. */
 static manifold_t face_manifold(const body_t *a, const body_t *b, size_t face,
@@ -306,8 +311,11 @@ static manifold_t collide_at_seams(const body_t *a, const body_t *b, bool flip, 
         }
     } else {
         if (!clip_incident(other, ref_edge, body, &clipped)) return none;
-        if (!on_seam(body, &clipped)) {
-            return clipped_manifold(a, b, flip, ref_edge, &clipped, margin, features);
+        if (!on_seam(body, &clipped, margin)) {
+            manifold_t manifold = clipped_manifold(a, b, flip, ref_edge, &clipped, margin, features);
+            /* Held while no other face of the run holds it: found again. */
+            features->on_run = body->seam->edges[clipped.inc_edge].chained;
+            return manifold;
         }
     }
     double separation;

@@ -15,6 +15,15 @@ typedef struct seam_cover {
     double lo, hi;
 } seam_cover_t;
 
+/* A face of a run (non-back edge `edge`, an index into the search's
+ * edges): the run's root, its stretch [lo, hi] along the root's line, and
+ * whether it is a chain's segment. */
+typedef struct seam_member {
+    size_t root, edge;
+    double lo, hi;
+    bool segment;
+} seam_member_t;
+
 void seams_free(seams_t *seams) {
     if (seams->broadphase != NULL) broadphase_free(seams->broadphase);
     memory_free(seams->proxies);
@@ -25,6 +34,7 @@ void seams_free(seams_t *seams) {
     memory_free(seams->run_parent);
     memory_free(seams->run_lo);
     memory_free(seams->run_hi);
+    memory_free(seams->members);
 }
 
 static double edge_tolerance(double length) {
@@ -164,32 +174,41 @@ static void apply_covers(seams_t *seams, size_t statics) {
     }
 }
 
+/* The static body among statics[0 .. upto] whose edges hold `edge`. */
+static const body_t *owner_of(const seams_t *seams, size_t upto, size_t edge) {
+    size_t lo = 0, hi = upto;
+    while (lo < hi) {
+        size_t mid = (lo + hi + 1) / 2;
+        if (first_edge(seams, seams->statics[mid]) <= edge) {
+            lo = mid;
+        } else {
+            hi = mid - 1;
+        }
+    }
+    return seams->statics[lo];
+}
+
+static void add_member(seams_t *seams, seam_member_t member) {
+    memory_reserve((void **)&seams->members, &seams->member_capacity, seams->member_count + 1,
+                   sizeof(seam_member_t));
+    seams->members[seams->member_count++] = member;
+}
+
 /* Each chained edge's reach: the extent of its run, found along the line
- * of the run's first edge (its root) and measured along the edge. */
+ * of the run's first edge (its root) and measured along the edge; and the
+ * faces of the runs, with their stretches along their roots' lines. */
 static void apply_runs(seams_t *seams, size_t statics) {
     size_t *parent = seams->run_parent;
+    seams->member_count = 0;
     for (size_t pass = 0; pass < 2; pass++) {
         for (size_t s = 0; s < statics; s++) {
             const body_t *body = seams->statics[s];
             size_t first = first_edge(seams, body);
             for (size_t i = 0; i < body->count; i++) {
                 size_t root = find_run(parent, first + i);
-                const body_t *owner = body; /* the root's body, found below */
-                size_t root_edge = i;
-                if (root != first + i) {
-                    /* The root is an edge of an earlier static body. */
-                    size_t lo = 0, hi = s;
-                    while (lo < hi) {
-                        size_t mid = (lo + hi + 1) / 2;
-                        if (first_edge(seams, seams->statics[mid]) <= root) {
-                            lo = mid;
-                        } else {
-                            hi = mid - 1;
-                        }
-                    }
-                    owner = seams->statics[lo];
-                    root_edge = root - first_edge(seams, owner);
-                }
+                /* The root is an edge of this body or of an earlier one. */
+                const body_t *owner = root == first + i ? body : owner_of(seams, s, root);
+                size_t root_edge = root - first_edge(seams, owner);
                 edge_line_t base = edge_line(owner, root_edge);
                 edge_line_t line = edge_line(body, i);
                 if (pass == 0) {
@@ -198,6 +217,11 @@ static void apply_runs(seams_t *seams, size_t statics) {
                     double t1 = vec_dot(base.along, vec_subtract(end, base.start));
                     seams->run_lo[root] = min_of(seams->run_lo[root], min_of(t0, t1));
                     seams->run_hi[root] = max_of(seams->run_hi[root], max_of(t0, t1));
+                    if (!is_back(body, i)) {
+                        add_member(seams, (seam_member_t){root, first + i, min_of(t0, t1),
+                                                          max_of(t0, t1),
+                                                          body->kind == BODY_SHAPE_SEGMENT});
+                    }
                     continue;
                 }
                 vector_t lo = vec_add(base.start, vec_multiply(seams->run_lo[root], base.along));
@@ -208,6 +232,100 @@ static void apply_runs(seams_t *seams, size_t statics) {
                     max_of(line.length, vec_dot(line.along, vec_subtract(hi, line.start)));
             }
         }
+    }
+}
+
+static int compare_members(const void *a, const void *b) {
+    const seam_member_t *x = a, *y = b;
+    if (x->root != y->root) return x->root < y->root ? -1 : 1;
+    if (x->lo != y->lo) return x->lo < y->lo ? -1 : 1;
+    return (x->edge > y->edge) - (x->edge < y->edge);
+}
+
+/* The tolerance of two faces of a run, as match_edges takes it. */
+static double pair_tolerance(const seam_member_t *x, const seam_member_t *y) {
+    return edge_tolerance(min_of(x->hi - x->lo, y->hi - y->lo));
+}
+
+/* Whether candidate c reaches further along the run than b, both
+ * starting before the holder ends: by more than the tolerance, or as far
+ * and preferred (a polygon's face before a segment, so that a segment
+ * lying exactly on a box's face leaves the box's corners whole; then the
+ * earlier edge). */
+static bool reaches_further(const seam_member_t *c, const seam_member_t *b) {
+    double tolerance = pair_tolerance(c, b);
+    if (c->hi > b->hi + tolerance) return true;
+    if (c->hi < b->hi - tolerance) return false;
+    if (c->segment != b->segment) return !c->segment;
+    return c->edge < b->edge;
+}
+
+static void set_claim(seams_t *seams, const seam_member_t *member, double lo, double hi) {
+    seam_edge_t *edge = &seams->edges[member->edge];
+    edge->claim_lo = lo;
+    edge->claim_hi = hi;
+    edge->chained = true;
+}
+
+/*
+ * Faces of a run that overlap (a chain's segment lying on a static box's
+ * face, or two flush boxes' faces over each other) are one surface, whose
+ * every stretch one face holds. Along the run, each face that holds a
+ * stretch is followed by the face that reaches furthest among those that
+ * start before it ends (the one a contact clipped to the run would meet
+ * next); where two such faces overlap, each holds its side of the middle
+ * of the overlap (their claims shared there by the tolerance, as at a
+ * join); a face that reaches no further than the one holding before it
+ * holds nothing. Faces that only meet end to end keep match_edges' claims.
+ */
+static void claim_group(seams_t *seams, seam_member_t *members, size_t count) {
+    const seam_member_t *holder = NULL;
+    size_t k = 0;
+    while (k < count) {
+        /* The faces that start before the holder ends (or, at the start of
+         * the run, with its first face): the one that reaches furthest is
+         * next, and the others hold nothing. */
+        const seam_member_t *from = holder != NULL ? holder : &members[k];
+        double limit = holder != NULL ? holder->hi : members[k].lo;
+        const seam_member_t *best = NULL;
+        for (; k < count && members[k].lo <= limit + pair_tolerance(from, &members[k]); k++) {
+            const seam_member_t *candidate = &members[k];
+            if (best == NULL || reaches_further(candidate, best)) {
+                if (best != NULL) set_claim(seams, best, INFINITY, -INFINITY);
+                best = candidate;
+            } else {
+                set_claim(seams, candidate, INFINITY, -INFINITY);
+            }
+        }
+        if (best == NULL) {
+            holder = NULL; /* apart: a new stretch starts at members[k] */
+            continue;
+        }
+        double tolerance = holder != NULL ? pair_tolerance(holder, best) : 0.0;
+        if (holder != NULL && !(best->hi > holder->hi + tolerance)) {
+            set_claim(seams, best, INFINITY, -INFINITY);
+            continue;
+        }
+        if (holder != NULL && best->lo < holder->hi - tolerance) {
+            double middle = 0.5 * (best->lo + holder->hi);
+            set_claim(seams, holder, seams->edges[holder->edge].claim_lo,
+                      middle - holder->lo + tolerance);
+            set_claim(seams, best, middle - best->lo - tolerance,
+                      seams->edges[best->edge].claim_hi);
+        }
+        holder = best;
+    }
+}
+
+/* The claims of overlapping faces, run by run. */
+static void apply_claims(seams_t *seams) {
+    seam_member_t *members = seams->members;
+    qsort(members, seams->member_count, sizeof(seam_member_t), compare_members);
+    for (size_t k = 0; k < seams->member_count;) {
+        size_t end = k + 1;
+        while (end < seams->member_count && members[end].root == members[k].root) end++;
+        if (end - k > 1) claim_group(seams, members + k, end - k);
+        k = end;
     }
 }
 
@@ -293,6 +411,7 @@ void seams_find(seams_t *seams, body_t **bodies, size_t count) {
     }
     apply_covers(seams, statics);
     apply_runs(seams, statics);
+    apply_claims(seams);
     for (size_t s = 0; s < statics; s++) {
         body_t *body = seams->statics[s];
         for (size_t i = 0; i < body->count; i++) {

@@ -23,7 +23,14 @@
  * - edges in the same direction that meet or overlap end to end *continue*
  *   each other into one flat *run*, and the vertex where one continues
  *   into the other is a *seam vertex*: it is not a corner of the combined
- *   surface.
+ *   surface;
+ * - where faces of a run overlap (a chain's segment lying on a static
+ *   box's face, or two boxes' faces over each other), one of them holds
+ *   each stretch (seam_edge_t's claim), so that a body there gets one
+ *   contact: along the run, the face that reaches furthest takes over
+ *   from the one before at the middle of their overlap, a face that
+ *   reaches no further than the one holding before it holds nothing, and
+ *   of two that reach as far (within the tolerance) a polygon's face holds.
  *
  * Static means infinite mass and inertia, at rest (a kinematic body moving
  * at a velocity takes no part) and not removed; two static bodies are
@@ -66,13 +73,16 @@ typedef struct seam_edge {
     /* Of the faces of a run, the one whose stretch [claim_lo, claim_hi]
      * holds the middle of the contact's points keeps the contact: each end
      * where the face continues into a neighbour's is shared with it by the
-     * tolerance, each end where the run stops is open (infinite). */
+     * tolerance (at the middle of their overlap where they overlap), each
+     * end where the run stops is open (infinite); empty (INFINITY,
+     * -INFINITY) for a face that holds nothing. */
     double claim_lo, claim_hi;
     /* The whole edge is covered: no contact takes its normal. */
     bool internal;
     /* Vertex i is a seam vertex. */
     bool smooth;
-    /* A neighbour's face continues this one (the run is longer than it). */
+    /* A neighbour's face continues this one (the run is longer than it),
+     * or overlaps it and holds part of it. */
     bool chained;
 } seam_edge_t;
 
@@ -105,6 +115,9 @@ typedef struct {
     size_t run_parent_capacity;
     double *run_lo, *run_hi;
     size_t run_lo_capacity, run_hi_capacity;
+    /* The faces of the runs, sorted run by run to share out their claims. */
+    struct seam_member *members;
+    size_t member_count, member_capacity;
 } seams_t;
 
 void seams_free(seams_t *seams);

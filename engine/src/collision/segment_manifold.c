@@ -25,13 +25,15 @@ static vector_t left_normal(vector_t d) {
 }
 
 /*
- * A static polygon's face (or another chain's segment) that continues the
- * segment flush, found by the seams (seams.h) on the segment's free face,
- * its edge 1 from p2 back to p1: the segment's run reaches over the seam's
- * run, and an open end where the neighbour continues it is a flat join,
- * whose claim it shares with the neighbour's face by the seams' tolerance,
- * as the faces of flush static boxes do. The chain's own joins stay as the
- * chain made them.
+ * A static polygon's face (or another chain's segment) that continues or
+ * overlaps the segment flush, found by the seams (seams.h) on the
+ * segment's free face, its edge 1 from p2 back to p1: the segment's run
+ * reaches over the seam's run, an open end where the neighbour continues
+ * it is a flat join, and the segment holds only the part of its claim
+ * that the seams give its face (shared with the neighbour's face by the
+ * seams' tolerance where it continues, as the faces of flush static boxes
+ * do; none where the neighbour's face holds it). The chain's own joins
+ * stay as the chain made them.
  */
 static void join_seams(const body_t *segment, segment_frame_t *f) {
     const seam_edge_t *free_face = &segment->seam->edges[1];
@@ -40,14 +42,10 @@ static void join_seams(const body_t *segment, segment_frame_t *f) {
     f->run_lo = min_of(f->run_lo, length - free_face->reach_hi);
     f->run_hi = max_of(f->run_hi, length - free_face->reach_lo);
     /* Vertex 0 is p1, where edge 1 ends; vertex 1 is p2, where it starts. */
-    if (!f->has[0] && segment->seam->edges[0].smooth) {
-        f->has[0] = true;
-        f->claim_lo = length - free_face->claim_hi;
-    }
-    if (!f->has[1] && segment->seam->edges[1].smooth) {
-        f->has[1] = true;
-        f->claim_hi = length - free_face->claim_lo;
-    }
+    f->has[0] |= segment->seam->edges[0].smooth;
+    f->has[1] |= segment->seam->edges[1].smooth;
+    f->claim_lo = max_of(f->claim_lo, length - free_face->claim_hi);
+    f->claim_hi = min_of(f->claim_hi, length - free_face->claim_lo);
 }
 
 static segment_frame_t frame_of(const body_t *segment) {
@@ -128,6 +126,8 @@ static manifold_t segment_first(const body_t *segment, const body_t *other, doub
     manifold_t raw = round_manifold_collide(segment, other, margin, &found, separation);
     if (*separation > margin) return none(raw.normal);
     segment_frame_t f = frame_of(segment);
+    /* Lying on a face that holds all of it (seams.h), it makes no contact. */
+    if (!(f.claim_lo <= f.claim_hi)) return none(raw.normal);
     if (behind(&f, other->centroid)) return none(raw.normal);
     if (raw.point_count == 0) return on_run(&f, other, margin, separation);
     vector_t normal = raw.normal;
