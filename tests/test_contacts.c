@@ -296,6 +296,29 @@ static void record_names_bodies_axis_and_impulses(void) {
 
 static scene_t *build_pile(size_t count);
 
+/* The step's counts of contacts and points are those of its record, on one
+ * thread and on two (each worker counts its own chunk's). */
+static void stats_count_the_records_points(void) {
+    for (size_t workers = 1; workers <= 2; workers++) {
+        scene_t *scene = build_pile(300);
+        scene_set_sleeping(scene, false);
+        scene_set_workers(scene, workers);
+        run(scene, 90, DT);
+        size_t contacts = 0, points = 0;
+        for (size_t i = 0; i < scene_contact_count(scene); i++) {
+            const contact_t *contact = scene_get_contact(scene, i);
+            if (contact->kind != CONTACT_WORLD) continue;
+            contacts++;
+            points += contact->point_count;
+        }
+        scene_stats_t stats = scene_get_stats(scene);
+        CHECK(contacts > 300);
+        CHECK(stats.contacts == contacts);
+        CHECK(stats.contact_points == points);
+        scene_free(scene);
+    }
+}
+
 /* cradle(5) of docs/bench-scenes.md with world contacts: the collision
  * pass carries the impact down the row of touching boxes, so the last one
  * leaves at 2 m/s and the others stop, as with the seed's pair collisions. */
@@ -824,6 +847,7 @@ TEST_SUITE(contacts, TEST_CASE(box_comes_to_rest_on_floor), TEST_CASE(column_of_
            TEST_CASE(bounce_apex_heights_at_60_hz), TEST_CASE(bounce_apex_heights_at_600_hz),
            TEST_CASE(elasticity_combines_by_max_and_zero_sticks),
            TEST_CASE(record_names_bodies_axis_and_impulses),
+           TEST_CASE(stats_count_the_records_points),
            TEST_CASE(speculative_contact_is_recorded_apart),
            TEST_CASE(newtons_cradle_passes_momentum_along), TEST_CASE(bouncy_pile_comes_to_rest),
            TEST_CASE(deep_bouncy_pile_comes_to_rest),

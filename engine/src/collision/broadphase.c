@@ -11,7 +11,7 @@ broadphase_t *broadphase_init(void) {
 }
 
 void broadphase_free(broadphase_t *broadphase) {
-    memory_free(broadphase->entries);
+    memory_free(broadphase->ranges);
     memory_free(broadphase->sorted);
     memory_free(broadphase->bucket_start);
     memory_free(broadphase->large);
@@ -64,35 +64,6 @@ static double choose_cell_size(const broadphase_proxy_t *proxies, size_t count) 
     return size > 1e-6 ? min_of(size, 1e300) : 1e-6;
 }
 
-/* Writes the (cell, proxy) entries; proxies covering too many cells go to
- * the large list. Returns the number of entries. */
-static size_t fill_entries(broadphase_t *broadphase, const broadphase_proxy_t *proxies,
-                           size_t count, double inverse_size, size_t *large_count) {
-    size_t n = 0;
-    *large_count = 0;
-    for (size_t i = 0; i < count; i++) {
-        aabb_t box = proxies[i].box;
-        cell_range_t r = cell_range(&box, inverse_size);
-        double cells = range_cells(r);
-        if (cells > BROADPHASE_MAX_CELLS) {
-            memory_reserve((void **)&broadphase->large, &broadphase->large_capacity,
-                           *large_count + 1, sizeof(uint32_t));
-            broadphase->large[(*large_count)++] = (uint32_t)i;
-            continue;
-        }
-        if (n + (size_t)cells > broadphase->entry_capacity) { /* a call per body cost 2% */
-            memory_reserve((void **)&broadphase->entries, &broadphase->entry_capacity,
-                           n + (size_t)cells, sizeof(cell_entry_t));
-        }
-        for (int32_t iy = r.y0; iy <= r.y1; iy++) {
-            for (int32_t ix = r.x0; ix <= r.x1; ix++) {
-                broadphase->entries[n++] = (cell_entry_t){box, ix, iy, r.x0, r.y0, (uint32_t)i, 0};
-            }
-        }
-    }
-    return n;
-}
-
 /* Enough buckets that cells, which hold several entries, rarely share one. */
 static size_t bucket_count(size_t n) {
     size_t buckets = 64;
@@ -100,40 +71,15 @@ static size_t bucket_count(size_t n) {
     return buckets;
 }
 
-/* Counting sort of the entries by bucket. Returns the bucket count. */
-static size_t sort_entries(broadphase_t *broadphase, size_t n) {
-    size_t buckets = bucket_count(n);
-    uint32_t mask = (uint32_t)(buckets - 1);
-    memory_reserve((void **)&broadphase->bucket_start, &broadphase->bucket_capacity, buckets + 1,
-                   sizeof(uint32_t));
-    memory_reserve((void **)&broadphase->sorted, &broadphase->sorted_capacity, n,
-                   sizeof(cell_entry_t));
-    uint32_t *start = broadphase->bucket_start;
-    memset(start, 0, (buckets + 1) * sizeof(uint32_t));
-    for (size_t i = 0; i < n; i++) {
-        cell_entry_t *entry = &broadphase->entries[i];
-        entry->bucket = hash_cell(entry->ix, entry->iy, mask);
-        start[entry->bucket + 1]++;
-    }
-    for (size_t b = 0; b < buckets; b++) start[b + 1] += start[b];
-    for (size_t i = 0; i < n; i++) {
-        const cell_entry_t *entry = &broadphase->entries[i];
-        broadphase->sorted[start[entry->bucket]++] = *entry;
-    }
-    /* The fill advanced each start to the next bucket's; shift back. */
-    for (size_t b = buckets; b > 0; b--) start[b] = start[b - 1];
-    start[0] = 0;
-    return buckets;
-}
-
 /*
- * fill_entries and sort_entries over the workers, writing the sorted
- * entries straight: the proxies are cut into parts; a first pass counts each
- * part's entries (the bucket count hangs on their total), a second each
- * part's entries per bucket, and a third writes each part's entries from its
- * places, its share of each bucket after the earlier parts'. A counting sort
- * is stable, so this is the one-thread order byte for byte, and the large
- * list comes out in proxy order too.
+ * The grid's entries sorted by bucket, written in place: the proxies are
+ * cut into parts (one per worker, one without workers); a first pass finds
+ * each proxy's cells and counts each part's entries (the bucket count hangs
+ * on their total), a second each part's entries per bucket, and a third
+ * writes each part's entries from its places, its share of each bucket
+ * after the earlier parts'. A counting sort is stable, so the entries come
+ * out in proxy order within a bucket, for any number of parts, and the
+ * large list in proxy order too.
  */
 typedef struct {
     broadphase_t *broadphase;
@@ -159,7 +105,9 @@ static void count_part(void *context, size_t chunk, size_t begin, size_t end) {
         size_t first, last, entries = 0, large = 0;
         part_proxies(split, part, &first, &last);
         for (size_t i = first; i < last; i++) {
-            double cells = range_cells(cell_range(&split->proxies[i].box, split->inverse_size));
+            cell_range_t r = cell_range(&split->proxies[i].box, split->inverse_size);
+            split->broadphase->ranges[i] = r;
+            double cells = range_cells(r);
             if (cells > BROADPHASE_MAX_CELLS) {
                 large++;
             } else {
@@ -184,7 +132,7 @@ static void histogram_part(void *context, size_t chunk, size_t begin, size_t end
         size_t first, last, large = broadphase->part_large[part];
         part_proxies(split, part, &first, &last);
         for (size_t i = first; i < last; i++) {
-            cell_range_t r = cell_range(&split->proxies[i].box, split->inverse_size);
+            cell_range_t r = broadphase->ranges[i];
             if (range_cells(r) > BROADPHASE_MAX_CELLS) {
                 broadphase->large[large++] = (uint32_t)i;
                 continue;
@@ -207,7 +155,7 @@ static void place_part(void *context, size_t chunk, size_t begin, size_t end) {
         part_proxies(split, part, &first, &last);
         for (size_t i = first; i < last; i++) {
             aabb_t box = split->proxies[i].box;
-            cell_range_t r = cell_range(&box, split->inverse_size);
+            cell_range_t r = broadphase->ranges[i];
             if (range_cells(r) > BROADPHASE_MAX_CELLS) continue;
             for (int32_t iy = r.y0; iy <= r.y1; iy++) {
                 for (int32_t ix = r.x0; ix <= r.x1; ix++) {
@@ -250,15 +198,28 @@ static void places_from_counts(broadphase_t *broadphase, size_t parts, size_t bu
     broadphase->bucket_start[buckets] = running;
 }
 
-/* Returns the bucket count, as sort_entries; *n and *large_count as
- * fill_entries. */
-static size_t fill_split(broadphase_t *broadphase, const broadphase_proxy_t *proxies,
-                         size_t count, double inverse_size, size_t *n, size_t *large_count) {
-    workers_t *workers = broadphase->workers;
-    size_t parts = workers_count(workers) * PARTS_PER_WORKER;
+/* fn over the parts: on the workers when there are. */
+static void for_parts(workers_t *workers, size_t parts, workers_fn_t fn, void *split) {
+    if (workers == NULL) {
+        fn(split, 0, 0, parts);
+        return;
+    }
+    workers_for(workers, parts, fn, split);
+}
+
+/* Fills the grid (sorted, bucket_start, large) on the workers given
+ * (NULL: this thread); returns the bucket count, and the numbers of
+ * entries and of large proxies (covering more than BROADPHASE_MAX_CELLS
+ * cells, paired with everything instead). */
+static size_t fill_grid(broadphase_t *broadphase, workers_t *workers,
+                        const broadphase_proxy_t *proxies, size_t count, double inverse_size,
+                        size_t *n, size_t *large_count) {
+    memory_reserve((void **)&broadphase->ranges, &broadphase->range_capacity, count,
+                   sizeof(cell_range_t));
+    size_t parts = workers != NULL ? workers_count(workers) * PARTS_PER_WORKER : 1;
     if (parts > WORKERS_MAX_CHUNKS) parts = WORKERS_MAX_CHUNKS;
     fill_split_t split = {broadphase, proxies, count, parts, 0, inverse_size};
-    workers_for(workers, parts, count_part, &split);
+    for_parts(workers, parts, count_part, &split);
     *n = total_parts(broadphase, parts, large_count);
     split.buckets = bucket_count(*n);
     memory_reserve((void **)&broadphase->large, &broadphase->large_capacity, *large_count,
@@ -269,9 +230,9 @@ static size_t fill_split(broadphase_t *broadphase, const broadphase_proxy_t *pro
                    sizeof(cell_entry_t));
     memory_reserve((void **)&broadphase->part_place, &broadphase->part_place_capacity,
                    parts * split.buckets, sizeof(uint32_t));
-    workers_for(workers, parts, histogram_part, &split);
+    for_parts(workers, parts, histogram_part, &split);
     places_from_counts(broadphase, parts, split.buckets);
-    workers_for(workers, parts, place_part, &split);
+    for_parts(workers, parts, place_part, &split);
     return split.buckets;
 }
 
@@ -430,12 +391,11 @@ size_t broadphase_find_pairs(broadphase_t *broadphase, const broadphase_proxy_t 
     broadphase->tests = 0;
     double inverse_size = 1.0 / choose_cell_size(proxies, count);
     size_t large_count, n, buckets;
+    buckets = fill_grid(broadphase, broadphase->workers, proxies, count, inverse_size, &n,
+                        &large_count);
     if (broadphase->workers != NULL) {
-        buckets = fill_split(broadphase, proxies, count, inverse_size, &n, &large_count);
         pairs_in_buckets_split(broadphase, proxies, buckets);
     } else {
-        n = fill_entries(broadphase, proxies, count, inverse_size, &large_count);
-        buckets = sort_entries(broadphase, n);
         pairs_in_buckets(broadphase, proxies, buckets);
     }
     if (large_count > 0) pairs_with_large(broadphase, proxies, count, large_count);
@@ -446,9 +406,9 @@ size_t broadphase_find_pairs(broadphase_t *broadphase, const broadphase_proxy_t 
 
 void broadphase_build(broadphase_t *broadphase, const broadphase_proxy_t *proxies, size_t count) {
     broadphase->inverse_size = 1.0 / choose_cell_size(proxies, count);
-    size_t n = fill_entries(broadphase, proxies, count, broadphase->inverse_size,
-                            &broadphase->large_count);
-    broadphase->bucket_count = sort_entries(broadphase, n);
+    size_t n;
+    broadphase->bucket_count = fill_grid(broadphase, NULL, proxies, count,
+                                         broadphase->inverse_size, &n, &broadphase->large_count);
     broadphase->proxy_count = count;
     broadphase->proxies = proxies;
     aabb_t bounds = {{INFINITY, INFINITY}, {-INFINITY, -INFINITY}};

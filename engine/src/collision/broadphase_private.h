@@ -17,12 +17,19 @@ typedef struct {
     int32_t ix, iy;     /* this cell (adjacent: cell_key reads them as one) */
     int32_t min_x, min_y; /* the cell of box.min */
     uint32_t proxy;
-    uint32_t bucket;    /* hash of (ix, iy), set by sort_entries; in what was padding */
+    uint32_t bucket;    /* hash of (ix, iy); in what was padding */
 } cell_entry_t;
 
+/* The cells a box covers, corners included. */
+typedef struct {
+    int32_t x0, y0, x1, y1;
+} cell_range_t;
+
 struct broadphase {
-    cell_entry_t *entries, *sorted;
-    size_t entry_capacity, sorted_capacity;
+    cell_entry_t *sorted;   /* the entries, by bucket */
+    size_t sorted_capacity;
+    cell_range_t *ranges;   /* each proxy's cells, found once a search */
+    size_t range_capacity;
     uint32_t *bucket_start; /* size bucket_count + 1 */
     size_t bucket_capacity;
     uint32_t *large;
@@ -38,7 +45,7 @@ struct broadphase {
     broadphase_pair_t *chunk_pairs[WORKERS_MAX_CHUNKS];
     size_t chunk_count[WORKERS_MAX_CHUNKS], chunk_capacity[WORKERS_MAX_CHUNKS];
     size_t chunk_tests[WORKERS_MAX_CHUNKS];
-    /* With workers, the grid is filled by parts of the proxies (fill_split):
+    /* The grid is filled by parts of the proxies (fill_grid), one per worker:
      * each part's entry and large counts, where its large proxies go, and
      * parts x buckets counts that become each part's next place per bucket. */
     size_t part_entries[WORKERS_MAX_CHUNKS], part_large[WORKERS_MAX_CHUNKS];
@@ -72,11 +79,6 @@ static inline int32_t cell_index(double coordinate, double inverse_size) {
     int32_t truncated = (int32_t)cell;
     return truncated - (cell < (double)truncated);
 }
-
-/* The cells a box covers, corners included. */
-typedef struct {
-    int32_t x0, y0, x1, y1;
-} cell_range_t;
 
 static inline cell_range_t cell_range(const aabb_t *box, double inverse_size) {
     return (cell_range_t){cell_index(box->min.x, inverse_size), cell_index(box->min.y, inverse_size),

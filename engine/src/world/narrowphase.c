@@ -201,7 +201,10 @@ static size_t collide_group(world_t *world, body_t **bodies, const broadphase_pa
         body_t *b = bodies[pairs[n].b];
         pair_result_t found;
         collide_pair(world, a, b, &pairs[n], &found);
-        if (found.manifold.point_count > 0) add_contact(world, world->contact_count++, a, b, &found);
+        if (found.manifold.point_count > 0) {
+            add_contact(world, world->contact_count++, a, b, &found);
+            world->point_count += (size_t)found.manifold.point_count;
+        }
         if (found.apart) world->gaps[world->gap_count++] = found.gap;
     }
     place_group(world, a, first, world->contact_count, gap_first, world->gap_count);
@@ -233,7 +236,7 @@ static size_t group_start(const broadphase_pair_t *pairs, size_t count, size_t i
 static void collide_chunk(void *context, size_t chunk, size_t begin, size_t end) {
     const split_t *split = context;
     world_t *world = split->world;
-    size_t made = 0, apart = 0;
+    size_t made = 0, apart = 0, points = 0;
     end = group_start(split->pairs, split->pair_count, end);
     for (size_t i = group_start(split->pairs, split->pair_count, begin); i < end; i++) {
         PREFETCH_BODY_B(split->bodies, split->pairs, i + PAIR_AHEAD, split->pair_count);
@@ -241,10 +244,12 @@ static void collide_chunk(void *context, size_t chunk, size_t begin, size_t end)
         collide_pair(world, split->bodies[pair->a], split->bodies[pair->b], pair,
                      &world->results[i]);
         made += world->results[i].manifold.point_count > 0;
+        points += (size_t)world->results[i].manifold.point_count;
         apart += world->results[i].apart;
     }
     world->chunk_first[chunk + 1] = made;
     world->chunk_gap_first[chunk + 1] = apart;
+    world->chunk_points[chunk] = points;
 }
 
 static void emit_chunk(void *context, size_t chunk, size_t begin, size_t end) {
@@ -278,6 +283,7 @@ static void narrowphase_split(world_t *world, body_t **bodies, const broadphase_
     for (size_t k = 0; k < chunks; k++) {
         world->chunk_first[k + 1] += world->chunk_first[k];
         world->chunk_gap_first[k + 1] += world->chunk_gap_first[k];
+        world->point_count += world->chunk_points[k];
     }
     workers_for(world->workers, pair_count, emit_chunk, &split);
     world->contact_count = world->chunk_first[chunks];
@@ -310,6 +316,7 @@ static void swap_contact_buffers(world_t *world) {
     world->contact_count = 0;
     world->old_gap_count = world->gap_count;
     world->gap_count = 0;
+    world->point_count = 0;
     world->step_number++;
 }
 

@@ -401,9 +401,7 @@ static void run_pipeline(world_t *world, body_t **bodies, integrator_motion_t *m
 
     stats->broadphase_pairs += pair_count;
     stats->contacts += world->contact_count;
-    for (size_t i = 0; i < world->contact_count; i++) {
-        stats->contact_points += (size_t)world->contacts[i].point_count;
-    }
+    stats->contact_points += world->point_count;
     stage_clock_lap(clock, SCENE_STAGE_SOLVER);
 }
 

@@ -98,6 +98,8 @@ struct world {
     solver_anchor_t *anchors;
     contact_source_t *sources;
     size_t contact_count, contact_capacity, anchor_capacity, source_capacity;
+    /* Their points, counted as they are made (for the step's stats). */
+    size_t point_count;
 
     /* Last step's contacts and sources: the buffers swap each step, so
      * warm starting and feature reuse read last step's results where the
@@ -160,6 +162,7 @@ struct world {
     size_t result_capacity;
     size_t chunk_first[WORKERS_MAX_CHUNKS + 1];
     size_t chunk_gap_first[WORKERS_MAX_CHUNKS + 1];
+    size_t chunk_points[WORKERS_MAX_CHUNKS];
 
     /* Room for time_of_impact's posed polygons. */
     toi_scratch_t toi_scratch;
