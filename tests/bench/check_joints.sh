@@ -8,7 +8,7 @@
 #     measured, Box2D v3 6.0%);
 #   ragdolls(20): no body below the floor or outside the box at the end,
 #     every pin within 1 cm, and at most 10 of the 200 bodies still moving
-#     (7 measured).
+#     (3 measured).
 # Ends with "N passed, N failed".
 program=build/bench/bench_engine
 passed=0

@@ -65,6 +65,19 @@ static void solve_position(joint_t *joint) {
     joint_correct_point(joint);
 }
 
+/* RATTLE's half kick for the pin's point, as the tree's rows have it
+ * (joint_solver.c): while the sweeps close the gap, the point impulse P
+ * moved the bodies by w dt M^-1 P but changed their velocities by all of
+ * M^-1 P; left in, the (1 - w) share pushes along the arm's start
+ * direction and a swing gains energy every step. Taken back just before
+ * this pin's own settle, which gives back what the end pose needs, so a
+ * pin at rest is left as it was. */
+static void take_back_kick(joint_t *joint) {
+    if (!joint->closes_gap || joint->weight >= 1.0) return;
+    vector_t p = vec_multiply(-(1.0 - joint->weight), joint->point_impulse);
+    joint_apply(joint, p, vec_cross(joint->r1, p), vec_cross(joint->r2, p));
+}
+
 /* The pin's sweeps close the gap the step ends with, and where the scheme
  * moves a body by its start velocity too (weight < 1) that sets the
  * anchors' end relative velocity to their start one mirrored: any relative
@@ -76,6 +89,7 @@ static void solve_position(joint_t *joint) {
  * ends with velocities of its end pose, not its start one. Not carried into
  * the warm start: the next step starts from these velocities already. */
 static void settle_velocity(joint_t *joint) {
+    take_back_kick(joint);
     vector_t r1, r2, gap;
     double angle;
     joint_current(joint, &r1, &r2, &gap, &angle);

@@ -377,10 +377,10 @@ static void settle_tree(const joint_step_t *step, const solver_bodies_t *bodies)
  * the anchors' direction at the start, which the settle (along the one at
  * the end) does not fully cancel, and swings gained energy every step (a
  * double pendulum under the seed scheme from 0 to 120 J in 30 s, m g L
- * 9.8 J; now within 1e-3 J). Done for the tree's rigid rows, whose
+ * 9.8 J; now within 1e-3 J). Done here for the tree's rigid rows, whose
  * impulses are then all the joint stores (its warm start applies them);
- * not for the pins outside it, which have limits or a motor beside their
- * point (taking their point's kick back kept a ragdoll from resting). */
+ * a pin outside the tree, which has limits or a motor beside its point,
+ * takes back its point's share in its own settle (joint_revolute.c). */
 static void take_back_kick(joint_t *joint) {
     if (!in_tree(joint) || !joint->closes_gap || joint->weight >= 1.0) return;
     double share = -(1.0 - joint->weight);

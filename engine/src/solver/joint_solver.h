@@ -10,8 +10,9 @@
  * velocity sweep of the joints the tree does not take, then the tree's
  * exact solve of its rows (the impulses added to the accumulated ones);
  * joint_solver_settle once the displacements are fixed (after the
- * velocity iterations, before the position pass), the tree's rows give
- * back the kick their positions did not see (RATTLE's half kick) and
+ * velocity iterations, before the position pass), the rigid rows that
+ * closed their gap (the tree's, and the points of the pins outside it)
+ * give back the kick their positions did not see (RATTLE's half kick) and
  * every joint's end velocities are made consistent with it at the pose the
  * step ends in; joint_solver_correct after each position sweep of the
  * contacts, the position sweeps of the rigid joints the tree does not take;
