@@ -122,7 +122,9 @@ static bool bounce_contact(solver_contact_t *c, solver_velocity_t *velocities,
     for (int i = 0; i < c->point_count; i++) {
         solver_point_t *p = &c->points[i];
         double vn = relative_along(&a, &b, c->normal, p->rn_a, p->rn_b);
-        *impacts |= late_impact(c, p, vn, threshold, states, dt);
+        bool late = late_impact(c, p, vn, threshold, states, dt);
+        c->impact |= late;
+        *impacts |= late;
         approach[i] = approach_of(p, vn);
     }
     for (int i = 0; i < c->point_count; i++) {

@@ -32,6 +32,7 @@ static void mark_impacts(const solver_contact_t *c, const solver_velocity_t *vel
     solver_state_t *a = &states[c->a], *b = &states[c->b];
     a->pushing_contacts++;
     b->pushing_contacts++;
+    if (!c->impact) return;
     bool static_a = solver_row_is_static(&velocities[c->a]);
     bool static_b = solver_row_is_static(&velocities[c->b]);
     for (int i = 0; i < c->point_count; i++) {

@@ -109,6 +109,9 @@ typedef struct {
     /* The two points are an incident edge's own ends (manifold_features_t),
      * so the block solve may take a worse condition (velocity_solve.c). */
     bool edge_ends;
+    /* A point has an impact within the step (impact_time >= 0): set where
+     * impact times are, so passes over every contact read no further. */
+    bool impact;
     solver_point_t points[2];
     vector_t normal;         /* unit, from a toward b; the tangent is perp(normal) */
     double friction, restitution;

@@ -156,6 +156,7 @@ static inline __attribute__((always_inline)) bool prepare(solver_contact_t *c, c
                              &states[c->a], &states[c->b], s);
     }
     if (c->point_count == 2) same_impact_moment(c, s->dt);
+    c->impact = impact;
     c->block = false;
     if (c->point_count == 2) {
         const solver_point_t *p1 = &c->points[0], *p2 = &c->points[1];
