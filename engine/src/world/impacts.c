@@ -118,6 +118,7 @@ static __attribute__((noinline)) void take_impact(world_t *world, size_t n, doub
  */
 void impacts_take(world_t *world, double dt, size_t largest_polygon, double threshold) {
     toi_scratch_reserve(&world->toi_scratch, largest_polygon);
+    if (world->elastic_count == 0) return;
     for (size_t n = 0; n < world->contact_count; n++) {
         if (world->contacts[n].restitution != 0.0) take_impact(world, n, dt, threshold);
     }

@@ -120,7 +120,7 @@ WORLD_INLINE void add_contact(world_t *world, size_t n, body_t *a, body_t *b,
     contact->b = b->solver_index;
     contact->normal = manifold->normal;
     contact->friction = sqrt(a->friction * b->friction);
-    contact->restitution = max_of(a->elasticity, b->elasticity);
+    contact->restitution = contact_restitution(a, b);
     contact->slop = solver_contact_slop(a->radius, b->radius);
     contact->point_count = manifold->point_count;
     contact->edge_ends = found->features.edge_ends && manifold->point_count == 2;
@@ -204,6 +204,7 @@ static size_t collide_group(world_t *world, body_t **bodies, const broadphase_pa
         if (found.manifold.point_count > 0) {
             add_contact(world, world->contact_count++, a, b, &found);
             world->point_count += (size_t)found.manifold.point_count;
+            world->elastic_count += contact_restitution(a, b) != 0.0;
         }
         if (found.apart) world->gaps[world->gap_count++] = found.gap;
     }
@@ -236,7 +237,7 @@ static size_t group_start(const broadphase_pair_t *pairs, size_t count, size_t i
 static void collide_chunk(void *context, size_t chunk, size_t begin, size_t end) {
     const split_t *split = context;
     world_t *world = split->world;
-    size_t made = 0, apart = 0, points = 0;
+    size_t made = 0, apart = 0, points = 0, elastic = 0;
     end = group_start(split->pairs, split->pair_count, end);
     for (size_t i = group_start(split->pairs, split->pair_count, begin); i < end; i++) {
         PREFETCH_BODY_B(split->bodies, split->pairs, i + PAIR_AHEAD, split->pair_count);
@@ -245,11 +246,14 @@ static void collide_chunk(void *context, size_t chunk, size_t begin, size_t end)
                      &world->results[i]);
         made += world->results[i].manifold.point_count > 0;
         points += (size_t)world->results[i].manifold.point_count;
+        elastic += world->results[i].manifold.point_count > 0 &&
+                   contact_restitution(split->bodies[pair->a], split->bodies[pair->b]) != 0.0;
         apart += world->results[i].apart;
     }
     world->chunk_first[chunk + 1] = made;
     world->chunk_gap_first[chunk + 1] = apart;
     world->chunk_points[chunk] = points;
+    world->chunk_elastic[chunk] = elastic;
 }
 
 static void emit_chunk(void *context, size_t chunk, size_t begin, size_t end) {
@@ -284,6 +288,7 @@ static void narrowphase_split(world_t *world, body_t **bodies, const broadphase_
         world->chunk_first[k + 1] += world->chunk_first[k];
         world->chunk_gap_first[k + 1] += world->chunk_gap_first[k];
         world->point_count += world->chunk_points[k];
+        world->elastic_count += world->chunk_elastic[k];
     }
     workers_for(world->workers, pair_count, emit_chunk, &split);
     world->contact_count = world->chunk_first[chunks];
@@ -316,7 +321,7 @@ static void swap_contact_buffers(world_t *world) {
     world->contact_count = 0;
     world->old_gap_count = world->gap_count;
     world->gap_count = 0;
-    world->point_count = 0;
+    world->point_count = world->elastic_count = 0;
     world->step_number++;
 }
 

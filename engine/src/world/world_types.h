@@ -22,6 +22,7 @@
 #include "solver/solver.h"
 #include "world/sleep.h"
 #include "base/workers.h"
+#include "base/scalar.h"
 
 typedef struct world world_t;
 
@@ -98,8 +99,10 @@ struct world {
     solver_anchor_t *anchors;
     contact_source_t *sources;
     size_t contact_count, contact_capacity, anchor_capacity, source_capacity;
-    /* Their points, counted as they are made (for the step's stats). */
-    size_t point_count;
+    /* Their points, counted as they are made (for the step's stats), and
+     * those of them with a restitution (impacts.c has nothing to do
+     * without one). */
+    size_t point_count, elastic_count;
 
     /* Last step's contacts and sources: the buffers swap each step, so
      * warm starting and feature reuse read last step's results where the
@@ -162,11 +165,16 @@ struct world {
     size_t result_capacity;
     size_t chunk_first[WORKERS_MAX_CHUNKS + 1];
     size_t chunk_gap_first[WORKERS_MAX_CHUNKS + 1];
-    size_t chunk_points[WORKERS_MAX_CHUNKS];
+    size_t chunk_points[WORKERS_MAX_CHUNKS], chunk_elastic[WORKERS_MAX_CHUNKS];
 
     /* Room for time_of_impact's posed polygons. */
     toi_scratch_t toi_scratch;
 };
+
+/* A contact's restitution: the larger of its bodies' elasticities. */
+static inline double contact_restitution(const body_t *a, const body_t *b) {
+    return max_of(a->elasticity, b->elasticity);
+}
 
 static inline uint64_t pair_key(const body_t *a, const body_t *b) {
     return (uint64_t)a->id << 32 | b->id;
