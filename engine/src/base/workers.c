@@ -156,6 +156,7 @@ size_t workers_count(const workers_t *workers) {
 }
 
 size_t workers_chunks(const workers_t *workers, size_t count) {
+    if (workers == NULL) return count < 1 ? count : 1;
     size_t chunks = workers->count * CHUNKS_PER_WORKER;
     if (chunks > WORKERS_MAX_CHUNKS) chunks = WORKERS_MAX_CHUNKS;
     return count < chunks ? count : chunks;

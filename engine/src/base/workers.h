@@ -36,11 +36,13 @@ void workers_free(workers_t *workers);
 size_t workers_count(const workers_t *workers);
 
 /* How many chunks workers_for makes of count indices: chunk k is
- * [k count / n, (k + 1) count / n), n = workers_chunks(workers, count). */
+ * [k count / n, (k + 1) count / n), n = workers_chunks(workers, count).
+ * Without a pool (workers NULL) that is one chunk, none for count 0. */
 size_t workers_chunks(const workers_t *workers, size_t count);
 
-/* Runs fn over the chunks of [0, count) in parallel. Not reentrant: fn
- * must not call workers_for on the same pool. */
+/* Runs fn over the chunks of [0, count) in parallel; with workers NULL, on
+ * the calling thread as chunk 0 (not at all for count 0). Not reentrant:
+ * fn must not call workers_for on the same pool. */
 void workers_for(workers_t *workers, size_t count, workers_fn_t fn, void *context);
 
 #endif // #ifndef WORKERS_H

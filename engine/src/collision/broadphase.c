@@ -198,15 +198,6 @@ static void places_from_counts(broadphase_t *broadphase, size_t parts, size_t bu
     broadphase->bucket_start[buckets] = running;
 }
 
-/* fn over the parts: on the workers when there are. */
-static void for_parts(workers_t *workers, size_t parts, workers_fn_t fn, void *split) {
-    if (workers == NULL) {
-        fn(split, 0, 0, parts);
-        return;
-    }
-    workers_for(workers, parts, fn, split);
-}
-
 /* Fills the grid (sorted, bucket_start, large) on the workers given
  * (NULL: this thread); returns the bucket count, and the numbers of
  * entries and of large proxies (covering more than BROADPHASE_MAX_CELLS
@@ -219,7 +210,7 @@ static size_t fill_grid(broadphase_t *broadphase, workers_t *workers,
     size_t parts = workers != NULL ? workers_count(workers) * PARTS_PER_WORKER : 1;
     if (parts > WORKERS_MAX_CHUNKS) parts = WORKERS_MAX_CHUNKS;
     fill_split_t split = {broadphase, proxies, count, parts, 0, inverse_size};
-    for_parts(workers, parts, count_part, &split);
+    workers_for(workers, parts, count_part, &split);
     *n = total_parts(broadphase, parts, large_count);
     split.buckets = bucket_count(*n);
     memory_reserve((void **)&broadphase->large, &broadphase->large_capacity, *large_count,
@@ -230,9 +221,9 @@ static size_t fill_grid(broadphase_t *broadphase, workers_t *workers,
                    sizeof(cell_entry_t));
     memory_reserve((void **)&broadphase->part_place, &broadphase->part_place_capacity,
                    parts * split.buckets, sizeof(uint32_t));
-    for_parts(workers, parts, histogram_part, &split);
+    workers_for(workers, parts, histogram_part, &split);
     places_from_counts(broadphase, parts, split.buckets);
-    for_parts(workers, parts, place_part, &split);
+    workers_for(workers, parts, place_part, &split);
     return split.buckets;
 }
 

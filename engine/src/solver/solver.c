@@ -52,12 +52,7 @@ static prepared_t prepare_all(workers_t *workers, solve_split_t *split, size_t c
 
 /* fn over every body: on the workers when there are. */
 static void for_bodies(workers_t *workers, solve_split_t *split, workers_fn_t fn) {
-    size_t count = split->bodies->body_count;
-    if (workers == NULL) {
-        fn(split, 0, 0, count);
-        return;
-    }
-    workers_for(workers, count, fn, split);
+    workers_for(workers, split->bodies->body_count, fn, split);
 }
 
 /* Warm starting off: every contact starts from zero impulse instead of the

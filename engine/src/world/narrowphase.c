@@ -202,9 +202,10 @@ static size_t collide_group(world_t *world, body_t **bodies, const broadphase_pa
         pair_result_t found;
         collide_pair(world, a, b, &pairs[n], &found);
         if (found.manifold.point_count > 0) {
-            add_contact(world, world->contact_count++, a, b, &found);
+            size_t made = world->contact_count++;
+            add_contact(world, made, a, b, &found);
             world->point_count += (size_t)found.manifold.point_count;
-            world->elastic_count += contact_restitution(a, b) != 0.0;
+            world->elastic_count += world->contacts[made].restitution != 0.0;
         }
         if (found.apart) world->gaps[world->gap_count++] = found.gap;
     }

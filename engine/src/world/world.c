@@ -69,10 +69,6 @@ void world_set_workers(world_t *world, size_t workers) {
 }
 
 void world_for_bodies(world_t *world, size_t count, workers_fn_t fn, void *context) {
-    if (world->workers == NULL) {
-        fn(context, 0, 0, count);
-        return;
-    }
     workers_for(world->workers, count, fn, context);
 }
 
