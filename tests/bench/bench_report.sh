@@ -158,28 +158,27 @@ JOINTS
             k = ++n[s, e]; ms[s, e, k] = field($0, "median_ms") + 0
             if (r == 1) first[s, e] = $0
         }
+        # One table per scene: the times and counts, then the named fields
+        # (of the first round) under their headings.
+        function table(s, headings, fields,    nf, f, k, i, e, l, line, rule) {
+            if (ne[s] == 0) return
+            printf "### %s(%s)\n\n", s, size[s]
+            print "| engine | ms per step | instructions per step | " headings " |"
+            nf = split(fields, f, " ")
+            rule = "|---|---|---"
+            for (k = 1; k <= nf; k++) rule = rule "|---"
+            print rule "|"
+            for (i = 1; i <= ne[s]; i++) { e = engines[s, i]; l = first[s, e]
+                line = sprintf("| %s | %s | %s |", e, times(s, e), count(s, e))
+                for (k = 1; k <= nf; k++) line = line " " field(l, f[k]) " |"
+                print line }
+            print ""
+        }
         END {
-            s = "jointchain"
-            if (ne[s] > 0) {
-                printf "### jointchain(%s)\n\n", size[s]
-                print "| engine | ms per step | instructions per step | largest stretch | final stretch | widest gap (m) | lowest tip (m) |"
-                print "|---|---|---|---|---|---|---|"
-                for (i = 1; i <= ne[s]; i++) { e = engines[s, i]; l = first[s, e]
-                    printf "| %s | %s | %s | %s | %s | %s | %s |\n", e, times(s, e), count(s, e),
-                        field(l, "max_stretch"), field(l, "end_stretch"), field(l, "max_gap"), field(l, "tip_min_y") }
-                print ""
-            }
-            s = "ragdolls"
-            if (ne[s] > 0) {
-                printf "### ragdolls(%s)\n\n", size[s]
-                print "| engine | ms per step | instructions per step | widest gap (m) | widest gap at the end (m) | past a limit (rad) | deepest penetration (m) | below the floor | moving at the end |"
-                print "|---|---|---|---|---|---|---|---|---|"
-                for (i = 1; i <= ne[s]; i++) { e = engines[s, i]; l = first[s, e]
-                    printf "| %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", e, times(s, e), count(s, e),
-                        field(l, "max_gap"), field(l, "end_gap"), field(l, "max_past_limit"),
-                        field(l, "max_penetration"), field(l, "below"), field(l, "moving_end") }
-                print ""
-            }
+            table("jointchain", "largest stretch | final stretch | widest gap (m) | lowest tip (m)",
+                  "max_stretch end_stretch max_gap tip_min_y")
+            table("ragdolls", "widest gap (m) | widest gap at the end (m) | past a limit (rad) | deepest penetration (m) | below the floor | moving at the end",
+                  "max_gap end_gap max_past_limit max_penetration below moving_end")
         }' "$work/joints-instructions" "$work/joints-raw"
         if grep -q 'runs_differ=1' "$work/joints-raw"; then
             echo "**A program gave different figures when a run was repeated (runs_differ=1).**"
