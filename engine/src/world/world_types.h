@@ -195,15 +195,60 @@ static inline size_t find_in_step(const contact_source_t *sources, size_t count,
     return SIZE_MAX;
 }
 
-/* Copies the impulses of `from`'s points to those of contact that are the
- * same features. */
-WORLD_INLINE void impulses_by_feature(solver_contact_t *contact, const solver_contact_t *from) {
+/* How far a point may be from where a vanished point of its contact was
+ * and still take that point's impulses (m): a tenth of the smaller body's
+ * radius, at most a centimetre (docs/design.md, Warm starting). */
+WORLD_INLINE double warm_reach(const body_t *a, const body_t *b) {
+    double smaller = a->radius < b->radius ? a->radius : b->radius;
+    double reach = 0.1 * smaller;
+    return reach < 0.01 ? reach : 0.01;
+}
+
+/*
+ * Which of `from`'s points each point of contact continues (-1: none).
+ * The same feature first. A point whose feature is new (the reference face
+ * passed to the other body, a corner took over from its neighbour) then
+ * takes the nearest point of `from` that no feature kept, if that was
+ * within reach of it: the load the pair carried there does not vanish
+ * with the feature's name. points and from_points: where the points are
+ * (world frame).
+ */
+WORLD_INLINE void match_points(const solver_contact_t *contact, const vector_t *points,
+                               const solver_contact_t *from, const vector_t *from_points,
+                               double reach, int match[2]) {
+    bool kept[2] = {false, false};
     for (int i = 0; i < contact->point_count; i++) {
+        match[i] = -1;
         for (int j = 0; j < from->point_count; j++) {
             if (contact->points[i].id != from->points[j].id) continue;
-            contact->points[i].normal_impulse = from->points[j].normal_impulse;
-            contact->points[i].tangent_impulse = from->points[j].tangent_impulse;
+            match[i] = j;
+            kept[j] = true;
         }
+    }
+    for (int i = 0; i < contact->point_count; i++) {
+        if (match[i] >= 0) continue;
+        double nearest = reach;
+        for (int j = 0; j < from->point_count; j++) {
+            double d = vec_get_length(vec_subtract(from_points[j], points[i]));
+            if (kept[j] || d >= nearest) continue;
+            nearest = d;
+            match[i] = j;
+        }
+        if (match[i] >= 0) kept[match[i]] = true;
+    }
+}
+
+/* Copies the impulses of `from`'s points to the points of contact that
+ * continue them (match_points). */
+WORLD_INLINE void carry_impulses(solver_contact_t *contact, const vector_t *points,
+                                 const solver_contact_t *from, const vector_t *from_points,
+                                 double reach) {
+    int match[2];
+    match_points(contact, points, from, from_points, reach, match);
+    for (int i = 0; i < contact->point_count; i++) {
+        if (match[i] < 0) continue;
+        contact->points[i].normal_impulse = from->points[match[i]].normal_impulse;
+        contact->points[i].tangent_impulse = from->points[match[i]].tangent_impulse;
     }
 }
 
