@@ -211,31 +211,40 @@ WORLD_INLINE double warm_reach(const body_t *a, const body_t *b) {
  * takes the nearest point of `from` that no feature kept, if that was
  * within reach of it: the load the pair carried there does not vanish
  * with the feature's name. points and from_points: where the points are
- * (world frame).
+ * (world frame). Returns how many points continue one of `from`'s.
  */
-WORLD_INLINE void match_points(const solver_contact_t *contact, const vector_t *points,
-                               const solver_contact_t *from, const vector_t *from_points,
-                               double reach, int match[2]) {
-    bool kept[2] = {false, false};
+WORLD_INLINE int match_points(const solver_contact_t *contact, const vector_t *points,
+                              const solver_contact_t *from, const vector_t *from_points,
+                              double reach, int match[2]) {
+    unsigned kept = 0; /* bit j: from's point j is continued */
+    int matched = 0;
+    match[0] = match[1] = -1; /* not in the loop: GCC made that a call to memset */
     for (int i = 0; i < contact->point_count; i++) {
-        match[i] = -1;
         for (int j = 0; j < from->point_count; j++) {
             if (contact->points[i].id != from->points[j].id) continue;
             match[i] = j;
-            kept[j] = true;
+            kept |= 1u << j;
         }
+        matched += match[i] >= 0;
     }
+    if (matched == contact->point_count || kept == (1u << from->point_count) - 1u) return matched;
     for (int i = 0; i < contact->point_count; i++) {
         if (match[i] >= 0) continue;
-        double nearest = reach;
+        double nearest = reach * reach; /* squared distances: no root */
         for (int j = 0; j < from->point_count; j++) {
-            double d = vec_get_length(vec_subtract(from_points[j], points[i]));
-            if (kept[j] || d >= nearest) continue;
-            nearest = d;
+            if (kept & (1u << j)) continue;
+            vector_t d = vec_subtract(from_points[j], points[i]);
+            double squared = vec_dot(d, d);
+            if (squared >= nearest) continue;
+            nearest = squared;
             match[i] = j;
         }
-        if (match[i] >= 0) kept[match[i]] = true;
+        if (match[i] >= 0) {
+            kept |= 1u << match[i];
+            matched++;
+        }
     }
+    return matched;
 }
 
 /* Copies the impulses of `from`'s points to the points of contact that
@@ -244,7 +253,7 @@ WORLD_INLINE void carry_impulses(solver_contact_t *contact, const vector_t *poin
                                  const solver_contact_t *from, const vector_t *from_points,
                                  double reach) {
     int match[2];
-    match_points(contact, points, from, from_points, reach, match);
+    if (match_points(contact, points, from, from_points, reach, match) == 0) return;
     for (int i = 0; i < contact->point_count; i++) {
         if (match[i] < 0) continue;
         contact->points[i].normal_impulse = from->points[match[i]].normal_impulse;
