@@ -99,7 +99,8 @@ void scene_set_step_lengths(scene_t *scene, double last, double before);
  * contact's (world, m) with their feature ids, separations (m) and the
  * impulses the solver accumulated (N s): the velocity pass's normal and
  * tangent impulses, which warm-start the next step's points of the same
- * ids, and the collision pass's. The features are what the manifold was
+ * ids (or at the same place, scene_set_warm_starting), and the collision
+ * pass's. The features are what the manifold was
  * found from, in the bodies' own frames: which body holds the reference
  * face (flip: body_b's), its normal and a point on it in that body's
  * frame, and the incident points in the other body's frame with their

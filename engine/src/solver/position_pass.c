@@ -116,13 +116,60 @@ void solver_advance(const solver_bodies_t *bodies, const solver_settings_t *s, s
     }
 }
 
+/* How far point p's overlap is to be pushed back in this pass (<= 0, m):
+ * its separation re-estimated from the displacements so far, to first
+ * order in the rotation (a step turns a body by a small angle), toward
+ * minus the contact's slop by the rate, at most the largest correction. */
+static double position_error(const solver_contact_t *c, const solver_point_t *p, double rate,
+                             const solver_displacement_t *a, const solver_displacement_t *b) {
+    double separation = p->separation + vec_dot(c->normal, vec_subtract(b->dx, a->dx)) +
+                        b->dtheta * p->rn_b - a->dtheta * p->rn_a;
+    return max_of(-SOLVER_MAX_POSITION_CORRECTION, min_of(rate * (separation + c->slop), 0.0));
+}
+
+/* Moves the bodies apart by x1 and x2 (kg m) at the contact's points. */
+static void push_apart(const solver_contact_t *c, const solver_velocity_t *velocities,
+                       solver_displacement_t *a, solver_displacement_t *b, double x1, double x2) {
+    const solver_point_t *p1 = &c->points[0], *p2 = &c->points[1];
+    double ma = velocities[c->a].inverse_mass, ia = velocities[c->a].inverse_inertia;
+    double mb = velocities[c->b].inverse_mass, ib = velocities[c->b].inverse_inertia;
+    double total = x1 + x2;
+    a->dx = vec_subtract(a->dx, vec_multiply(ma * total, c->normal));
+    a->dtheta -= ia * (x1 * p1->rn_a + x2 * p2->rn_a);
+    b->dx = vec_add(b->dx, vec_multiply(mb * total, c->normal));
+    b->dtheta += ib * (x1 * p1->rn_b + x2 * p2->rn_b);
+}
+
 /*
- * One non-linear Gauss-Seidel pass over positions. The separation is
- * re-estimated from the displacements so far, to first order in the
- * rotation (a step turns a body by a small angle), and pushed back toward
- * minus the contact's slop by a fraction of the overlap. Only positions
- * move: no energy is added. solver_wide.c does the same four contacts at a
- * time.
+ * A block contact's two pushes at once: x >= 0 with K x + C >= 0 and
+ * x (K x + C) = 0, C the points' errors, by the four cases of the velocity
+ * block solve. One point after the other, the first push turned the body
+ * and the second undid only part of it, so every flat landing left a spin:
+ * a box dropped 0.5 m onto another turned at 0.08 rad/s and slid 5 mm.
+ */
+static void correct_block(const solver_contact_t *c, const solver_velocity_t *velocities,
+                          solver_displacement_t *a, solver_displacement_t *b, double rate) {
+    const solver_point_t *p1 = &c->points[0], *p2 = &c->points[1];
+    double c1 = position_error(c, p1, rate, a, b), c2 = position_error(c, p2, rate, a, b);
+    double x1 = -(c->m11 * c1 + c->m12 * c2), x2 = -(c->m12 * c1 + c->m22 * c2);
+    if (x1 >= 0.0 && x2 >= 0.0) {
+        push_apart(c, velocities, a, b, x1, x2);
+        return;
+    }
+    x1 = -p1->normal_mass * c1;
+    if (x1 >= 0.0 && c->k12 * x1 + c2 >= 0.0) {
+        push_apart(c, velocities, a, b, x1, 0.0);
+        return;
+    }
+    x2 = -p2->normal_mass * c2;
+    if (x2 >= 0.0 && c->k12 * x2 + c1 >= 0.0) push_apart(c, velocities, a, b, 0.0, x2);
+}
+
+/*
+ * One non-linear Gauss-Seidel pass over positions: each point's overlap
+ * pushed back toward minus the contact's slop by a fraction of it (both
+ * points of a block contact together). Only positions move: no energy is
+ * added. solver_wide.c does the same four contacts at a time.
  */
 void solver_solve_position(const solver_contact_t *c, const solver_velocity_t *velocities,
                            solver_displacement_t *displacements) {
@@ -130,13 +177,13 @@ void solver_solve_position(const solver_contact_t *c, const solver_velocity_t *v
     double ma = velocities[c->a].inverse_mass, ia = velocities[c->a].inverse_inertia;
     double mb = velocities[c->b].inverse_mass, ib = velocities[c->b].inverse_inertia;
     double rate = solver_position_rate(&velocities[c->a], &velocities[c->b]);
+    if (c->block) {
+        correct_block(c, velocities, a, b, rate);
+        return;
+    }
     for (int i = 0; i < c->point_count; i++) {
         const solver_point_t *p = &c->points[i];
-        double separation = p->separation + vec_dot(c->normal, vec_subtract(b->dx, a->dx)) +
-                            b->dtheta * p->rn_b - a->dtheta * p->rn_a;
-        double error = max_of(-SOLVER_MAX_POSITION_CORRECTION,
-                              min_of(rate * (separation + c->slop), 0.0));
-        double lambda = -error * p->normal_mass;
+        double lambda = -position_error(c, p, rate, a, b) * p->normal_mass;
         a->dx = vec_subtract(a->dx, vec_multiply(ma * lambda, c->normal));
         a->dtheta -= ia * lambda * p->rn_a;
         b->dx = vec_add(b->dx, vec_multiply(mb * lambda, c->normal));

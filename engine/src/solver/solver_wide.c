@@ -388,28 +388,78 @@ LANE_INLINE void scatter_displacements(solver_displacement_t *rows, const uint32
     }
 }
 
-/* position_pass.c's solver_solve_position, lane by lane. */
-LANE_INLINE void correct_batch(const solver_position_batch_t *batch,
-                               const solver_position_point_t *points, lane_displacement_t *a,
-                               lane_displacement_t *b) {
+/* How far a point's overlap is to be pushed back in this pass (<= 0, m):
+ * position_pass.c's error, lane by lane. */
+LANE_INLINE lane_t position_error(const solver_position_batch_t *batch,
+                                  const solver_position_point_t *point,
+                                  const lane_displacement_t *a, const lane_displacement_t *b) {
     const lane_t zero = {0.0, 0.0, 0.0, 0.0};
     const lane_t most = zero - SOLVER_MAX_POSITION_CORRECTION;
     const lane_vector_t *n = &batch->normal;
+    const lane_lever_t *rn = &point->rn;
+    lane_t separation = point->separation + (n->x * (b->dx - a->dx) + n->y * (b->dy - a->dy)) +
+                        b->dtheta * rn->b - a->dtheta * rn->a;
+    lane_t wanted = batch->rate * (separation + batch->slop);
+    lane_t capped = min_lane(wanted, zero);
+    return max_lane(most, capped);
+}
+
+/* Moves the bodies apart by lambda (kg m) at a point. */
+LANE_INLINE void push_point(const solver_position_batch_t *batch, const lane_lever_t *rn,
+                            lane_t lambda, lane_displacement_t *a, lane_displacement_t *b) {
+    const lane_vector_t *n = &batch->normal;
+    a->dx -= batch->ma * lambda * n->x;
+    a->dy -= batch->ma * lambda * n->y;
+    a->dtheta -= batch->ia * lambda * rn->a;
+    b->dx += batch->mb * lambda * n->x;
+    b->dy += batch->mb * lambda * n->y;
+    b->dtheta += batch->ib * lambda * rn->b;
+}
+
+/* position_pass.c's block correction: both points' pushes at once, the
+ * four cases evaluated in every lane and the first that holds selected. */
+LANE_INLINE void correct_block(const solver_position_batch_t *batch,
+                               const solver_position_point_t *points, const lane_block_t *k,
+                               lane_displacement_t *a, lane_displacement_t *b) {
+    const lane_t zero = {0.0, 0.0, 0.0, 0.0};
+    const solver_position_point_t *p1 = &points[0], *p2 = &points[1];
+    lane_t c1 = position_error(batch, p1, a, b), c2 = position_error(batch, p2, a, b);
+    lane_t both1 = -(k->m11 * c1 + k->m12 * c2);
+    lane_t both2 = -(k->m12 * c1 + k->m22 * c2);
+    mask_t both = (mask_t)(both1 >= zero) & (mask_t)(both2 >= zero);
+    lane_t first = -p1->normal_mass * c1;
+    mask_t first_only = (mask_t)(first >= zero) & (mask_t)(k->k12 * first + c2 >= zero);
+    lane_t second = -p2->normal_mass * c2;
+    mask_t second_only = (mask_t)(second >= zero) & (mask_t)(k->k12 * second + c1 >= zero);
+
+    lane_t x1 = zero, x2 = select_lane(second_only, second, zero);
+    x1 = select_lane(first_only, first, x1);
+    x2 = select_lane(first_only, zero, x2);
+    x1 = select_lane(both, both1, x1);
+    x2 = select_lane(both, both2, x2);
+
+    const lane_vector_t *n = &batch->normal;
+    lane_t total = x1 + x2;
+    a->dx -= batch->ma * total * n->x;
+    a->dy -= batch->ma * total * n->y;
+    a->dtheta -= batch->ia * (x1 * p1->rn.a + x2 * p2->rn.a);
+    b->dx += batch->mb * total * n->x;
+    b->dy += batch->mb * total * n->y;
+    b->dtheta += batch->ib * (x1 * p1->rn.b + x2 * p2->rn.b);
+}
+
+/* position_pass.c's solver_solve_position, lane by lane; k: the block
+ * batch's matrices (NULL for another kind). */
+LANE_INLINE void correct_batch(const solver_position_batch_t *batch,
+                               const solver_position_point_t *points, const lane_block_t *k,
+                               lane_displacement_t *a, lane_displacement_t *b) {
+    if (k != NULL) {
+        correct_block(batch, points, k, a, b);
+        return;
+    }
     for (int i = 0; i < batch->point_count; i++) {
-        const lane_lever_t *rn = &points[i].rn;
-        lane_t separation = points[i].separation +
-                            (n->x * (b->dx - a->dx) + n->y * (b->dy - a->dy)) +
-                            b->dtheta * rn->b - a->dtheta * rn->a;
-        lane_t wanted = batch->rate * (separation + batch->slop);
-        lane_t capped = min_lane(wanted, zero);
-        lane_t error = max_lane(most, capped);
-        lane_t lambda = -error * points[i].normal_mass;
-        a->dx -= batch->ma * lambda * n->x;
-        a->dy -= batch->ma * lambda * n->y;
-        a->dtheta -= batch->ia * lambda * rn->a;
-        b->dx += batch->mb * lambda * n->x;
-        b->dy += batch->mb * lambda * n->y;
-        b->dtheta += batch->ib * lambda * rn->b;
+        lane_t lambda = -position_error(batch, &points[i], a, b) * points[i].normal_mass;
+        push_point(batch, &points[i].rn, lambda, a, b);
     }
 }
 
@@ -435,19 +485,19 @@ LANE_INLINE void scatter_displacements_shared(solver_displacement_t *rows,
 }
 
 LANE_INLINE void correct_one(const solver_position_batch_t *batch,
-                             const solver_position_point_t *points,
+                             const solver_position_point_t *points, const lane_block_t *k,
                              solver_displacement_t *displacements, bool shared) {
     if (shared) {
         lane_displacement_t a = gather_displacements_shared(displacements, batch->a, batch->lanes);
         lane_displacement_t b = gather_displacements_shared(displacements, batch->b, batch->lanes);
-        correct_batch(batch, points, &a, &b);
+        correct_batch(batch, points, k, &a, &b);
         scatter_displacements_shared(displacements, batch->a, batch->lanes, batch->fixed_a, &a);
         scatter_displacements_shared(displacements, batch->b, batch->lanes, batch->fixed_b, &b);
         return;
     }
     lane_displacement_t a = gather_displacements(displacements, batch->a);
     lane_displacement_t b = gather_displacements(displacements, batch->b);
-    correct_batch(batch, points, &a, &b);
+    correct_batch(batch, points, k, &a, &b);
     scatter_displacements(displacements, batch->a, batch->lanes, &a);
     scatter_displacements(displacements, batch->b, batch->lanes, &b);
 }
@@ -458,18 +508,22 @@ void solver_wide_correct_positions(solver_wide_t *wide, solver_displacement_t *d
     size_t count = wide->batch_count;
     if (!backward) {
         const solver_position_point_t *points = wide->position_points;
+        const lane_block_t *blocks = wide->blocks;
         for (size_t i = 0; i < count; i++) {
             const solver_position_batch_t *batch = &wide->position_batches[i];
-            correct_one(batch, points, displacements, false);
+            bool block = batch->kind == BATCH_BLOCK;
+            correct_one(batch, points, block ? blocks++ : NULL, displacements, false);
             points += batch->point_count;
         }
         return;
     }
     const solver_position_point_t *points = wide->position_points + wide->point_count;
+    const lane_block_t *blocks = wide->blocks + wide->block_count;
     for (size_t i = count; i-- > 0;) {
         const solver_position_batch_t *batch = &wide->position_batches[i];
         points -= batch->point_count;
-        correct_one(batch, points, displacements, false);
+        bool block = batch->kind == BATCH_BLOCK;
+        correct_one(batch, points, block ? --blocks : NULL, displacements, false);
     }
 }
 
@@ -477,11 +531,13 @@ LANE_CLONES
 void solver_wide_correct_range(solver_wide_t *wide, solver_displacement_t *displacements,
                                size_t begin, size_t end) {
     if (begin == end) return;
-    const solver_position_point_t *points =
-        wide->position_points + first_point(wide, group_of(wide, begin), begin);
+    size_t g = group_of(wide, begin);
+    const solver_position_point_t *points = wide->position_points + first_point(wide, g, begin);
+    const lane_block_t *blocks = wide->blocks + first_block(wide, g, begin);
     for (size_t i = begin; i < end; i++) {
         const solver_position_batch_t *batch = &wide->position_batches[i];
-        correct_one(batch, points, displacements, true);
+        bool block = batch->kind == BATCH_BLOCK;
+        correct_one(batch, points, block ? blocks++ : NULL, displacements, true);
         points += batch->point_count;
     }
 }

@@ -95,7 +95,7 @@ LANE_INLINE void load_batch(solver_wide_t *wide, pack_at_t at, const uint32_t *o
         if (kind == BATCH_BLOCK) memset(&wide->blocks[at.block], 0, sizeof(lane_block_t));
     }
     batch->lanes = position->lanes = (uint8_t)count;
-    batch->kind = (uint8_t)kind;
+    batch->kind = position->kind = (uint8_t)kind;
     position->point_count = (uint8_t)points;
     for (int l = 0; l < count; l++) pack_lane(wide, at, &contacts[order[l]], order[l], l, rows);
 }

@@ -81,7 +81,7 @@ struct solver_position_batch {
     lane_vector_t normal;
     lane_t ma, mb, ia, ib, rate, slop;
     uint32_t a[LANES], b[LANES];
-    uint8_t lanes, point_count;
+    uint8_t lanes, point_count, kind;
     uint8_t fixed_a, fixed_b; /* as in solver_batch */
 };
 

@@ -46,7 +46,7 @@ static bool impact_in_step(const solver_contact_t *c, const solver_anchor_t *anc
  * there. Each point's separation becomes the one that the solver's model of
  * the step (each body at its start velocities and acceleration) closes to
  * the point's separation at that moment, so the solver times an impact at
- * it. Impulses stay with the points of the same features.
+ * it. Impulses stay with the points that continue them (match_points).
  */
 static void take_at(world_t *world, size_t n, const toi_contact_t *hit) {
     solver_contact_t *c = &world->contacts[n];
@@ -70,6 +70,7 @@ static void take_at(world_t *world, size_t n, const toi_contact_t *hit) {
     solver_contact_t before = *c;
     solver_anchor_t *anchor = &world->anchors[n];
     contact_source_t *source = &world->sources[n];
+    vector_t before_points[2] = {source->points[0], source->points[1]};
     c->normal = normal;
     c->point_count = manifold->point_count;
     c->edge_ends = hit->features.edge_ends && manifold->point_count == 2;
@@ -82,7 +83,8 @@ static void take_at(world_t *world, size_t n, const toi_contact_t *hit) {
         point->normal_impulse = point->tangent_impulse = 0.0;
         source->points[i] = manifold->points[i].point;
     }
-    impulses_by_feature(c, &before);
+    carry_impulses(c, source->points, &before, before_points,
+                   warm_reach(source->body_a, source->body_b));
     double cos_a = cos(hit->angle_a), sin_a = sin(hit->angle_a);
     vector_t d = vec_subtract(hit->centroid_b, hit->centroid_a);
     source->features = hit->features;

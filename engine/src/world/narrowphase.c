@@ -63,18 +63,20 @@ static const solver_point_t *same_point(const solver_contact_t *c, uint32_t id) 
  * step's dt (a point of one step: its impulses times the ratio of the
  * steps). Last step's force alone also holds the impulse that stopped what
  * the step before left moving, and times the ratio that impulse returns as
- * a kick that grows from step to step (docs/api.md, Step size).
+ * a kick that grows from step to step (docs/api.md, Step size). The step
+ * before is matched by the feature of last step's point.
  */
-static void warm_rescaled(const world_t *world, solver_contact_t *contact, size_t old_index) {
+static void warm_rescaled(const world_t *world, solver_contact_t *contact, const int match[2],
+                          size_t old_index) {
     const solver_contact_t *old = &world->old_contacts[old_index];
     uint32_t previous = world->old_sources[old_index].previous;
     const solver_contact_t *older =
         previous != NO_CONTACT ? &world->older_contacts[previous] : NULL;
     for (int i = 0; i < contact->point_count; i++) {
+        if (match[i] < 0) continue;
         solver_point_t *point = &contact->points[i];
-        const solver_point_t *last = same_point(old, point->id);
-        if (last == NULL) continue;
-        const solver_point_t *before = older != NULL ? same_point(older, point->id) : NULL;
+        const solver_point_t *last = &old->points[match[i]];
+        const solver_point_t *before = older != NULL ? same_point(older, last->id) : NULL;
         if (before != NULL) {
             point->normal_impulse =
                 world->warm_share * (last->normal_impulse + before->normal_impulse);
@@ -87,15 +89,21 @@ static void warm_rescaled(const world_t *world, solver_contact_t *contact, size_
     }
 }
 
-/* Copies last step's impulses to the points that are the same features;
- * rescaled when this step is not as long as the last (warm_rescaled). */
+/* Copies last step's impulses to the points that continue its points
+ * (match_points); rescaled when this step is not as long as the last
+ * (warm_rescaled). */
 WORLD_INLINE void warm_from_old(const world_t *world, solver_contact_t *contact,
-                                size_t old_index) {
+                                const contact_source_t *source, size_t old_index) {
+    const solver_contact_t *old = &world->old_contacts[old_index];
+    const vector_t *old_points = world->old_sources[old_index].points;
+    double reach = warm_reach(source->body_a, source->body_b);
     if (world->warm_ratio != 1.0) {
-        warm_rescaled(world, contact, old_index);
+        int match[2];
+        match_points(contact, source->points, old, old_points, reach, match);
+        warm_rescaled(world, contact, match, old_index);
         return;
     }
-    impulses_by_feature(contact, &world->old_contacts[old_index]);
+    carry_impulses(contact, source->points, old, old_points, reach);
 }
 
 static relative_pose_t relative_pose(const body_t *a, const body_t *b) {
@@ -139,7 +147,7 @@ WORLD_INLINE void add_contact(world_t *world, size_t n, body_t *a, body_t *b,
     source->features = found->features;
     source->pose = found->pose;
     source->previous = found->old != SIZE_MAX ? (uint32_t)found->old : NO_CONTACT;
-    if (found->old != SIZE_MAX) warm_from_old(world, contact, found->old);
+    if (found->old != SIZE_MAX) warm_from_old(world, contact, source, found->old);
 }
 
 /* The manifold of the broadphase's pair (a, b), reusing last step's

@@ -195,15 +195,69 @@ static inline size_t find_in_step(const contact_source_t *sources, size_t count,
     return SIZE_MAX;
 }
 
-/* Copies the impulses of `from`'s points to those of contact that are the
- * same features. */
-WORLD_INLINE void impulses_by_feature(solver_contact_t *contact, const solver_contact_t *from) {
+/* How far a point may be from where a vanished point of its contact was
+ * and still take that point's impulses (m): a tenth of the smaller body's
+ * radius, at most a centimetre (docs/design.md, Warm starting). */
+WORLD_INLINE double warm_reach(const body_t *a, const body_t *b) {
+    double smaller = a->radius < b->radius ? a->radius : b->radius;
+    double reach = 0.1 * smaller;
+    return reach < 0.01 ? reach : 0.01;
+}
+
+/*
+ * Which of `from`'s points each point of contact continues (-1: none).
+ * The same feature first. A point whose feature is new (the reference face
+ * passed to the other body, a corner took over from its neighbour) then
+ * takes the nearest point of `from` that no feature kept, if that was
+ * within reach of it: the load the pair carried there does not vanish
+ * with the feature's name. points and from_points: where the points are
+ * (world frame). Returns how many points continue one of `from`'s.
+ */
+WORLD_INLINE int match_points(const solver_contact_t *contact, const vector_t *points,
+                              const solver_contact_t *from, const vector_t *from_points,
+                              double reach, int match[2]) {
+    unsigned kept = 0; /* bit j: from's point j is continued */
+    int matched = 0;
+    match[0] = match[1] = -1; /* not in the loop: GCC made that a call to memset */
     for (int i = 0; i < contact->point_count; i++) {
         for (int j = 0; j < from->point_count; j++) {
             if (contact->points[i].id != from->points[j].id) continue;
-            contact->points[i].normal_impulse = from->points[j].normal_impulse;
-            contact->points[i].tangent_impulse = from->points[j].tangent_impulse;
+            match[i] = j;
+            kept |= 1u << j;
         }
+        matched += match[i] >= 0;
+    }
+    if (matched == contact->point_count || kept == (1u << from->point_count) - 1u) return matched;
+    for (int i = 0; i < contact->point_count; i++) {
+        if (match[i] >= 0) continue;
+        double nearest = reach * reach; /* squared distances: no root */
+        for (int j = 0; j < from->point_count; j++) {
+            if (kept & (1u << j)) continue;
+            vector_t d = vec_subtract(from_points[j], points[i]);
+            double squared = vec_dot(d, d);
+            if (squared >= nearest) continue;
+            nearest = squared;
+            match[i] = j;
+        }
+        if (match[i] >= 0) {
+            kept |= 1u << match[i];
+            matched++;
+        }
+    }
+    return matched;
+}
+
+/* Copies the impulses of `from`'s points to the points of contact that
+ * continue them (match_points). */
+WORLD_INLINE void carry_impulses(solver_contact_t *contact, const vector_t *points,
+                                 const solver_contact_t *from, const vector_t *from_points,
+                                 double reach) {
+    int match[2];
+    if (match_points(contact, points, from, from_points, reach, match) == 0) return;
+    for (int i = 0; i < contact->point_count; i++) {
+        if (match[i] < 0) continue;
+        contact->points[i].normal_impulse = from->points[match[i]].normal_impulse;
+        contact->points[i].tangent_impulse = from->points[match[i]].tangent_impulse;
     }
 }
 
