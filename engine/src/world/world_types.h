@@ -211,11 +211,11 @@ WORLD_INLINE double warm_reach(const body_t *a, const body_t *b) {
  * takes the nearest point of `from` that no feature kept, if that was
  * within reach of it: the load the pair carried there does not vanish
  * with the feature's name. points and from_points: where the points are
- * (world frame). Returns how many points continue one of `from`'s.
+ * (world frame).
  */
-WORLD_INLINE int match_points(const solver_contact_t *contact, const vector_t *points,
-                              const solver_contact_t *from, const vector_t *from_points,
-                              double reach, int match[2]) {
+WORLD_INLINE void match_points(const solver_contact_t *contact, const vector_t *points,
+                               const solver_contact_t *from, const vector_t *from_points,
+                               double reach, int match[2]) {
     unsigned kept = 0; /* bit j: from's point j is continued */
     int matched = 0;
     match[0] = match[1] = -1; /* not in the loop: GCC made that a call to memset */
@@ -227,7 +227,7 @@ WORLD_INLINE int match_points(const solver_contact_t *contact, const vector_t *p
         }
         matched += match[i] >= 0;
     }
-    if (matched == contact->point_count || kept == (1u << from->point_count) - 1u) return matched;
+    if (matched == contact->point_count || kept == (1u << from->point_count) - 1u) return;
     for (int i = 0; i < contact->point_count; i++) {
         if (match[i] >= 0) continue;
         double nearest = reach * reach; /* squared distances: no root */
@@ -239,23 +239,35 @@ WORLD_INLINE int match_points(const solver_contact_t *contact, const vector_t *p
             nearest = squared;
             match[i] = j;
         }
-        if (match[i] >= 0) {
-            kept |= 1u << match[i];
-            matched++;
-        }
+        if (match[i] >= 0) kept |= 1u << match[i];
     }
-    return matched;
 }
 
 /* Copies the impulses of `from`'s points to the points of contact that
- * continue them (match_points). */
+ * continue them (match_points). The same features are copied at once, as
+ * most are; match_points runs only when a point is left over and so is
+ * one of `from`'s. */
 WORLD_INLINE void carry_impulses(solver_contact_t *contact, const vector_t *points,
                                  const solver_contact_t *from, const vector_t *from_points,
                                  double reach) {
-    int match[2];
-    if (match_points(contact, points, from, from_points, reach, match) == 0) return;
+    unsigned kept = 0;
+    int left = 0;
     for (int i = 0; i < contact->point_count; i++) {
-        if (match[i] < 0) continue;
+        bool same = false;
+        for (int j = 0; j < from->point_count; j++) {
+            if (contact->points[i].id != from->points[j].id) continue;
+            contact->points[i].normal_impulse = from->points[j].normal_impulse;
+            contact->points[i].tangent_impulse = from->points[j].tangent_impulse;
+            kept |= 1u << j;
+            same = true;
+        }
+        left += !same;
+    }
+    if (left == 0 || kept == (1u << from->point_count) - 1u) return;
+    int match[2];
+    match_points(contact, points, from, from_points, reach, match);
+    for (int i = 0; i < contact->point_count; i++) {
+        if (match[i] < 0 || contact->points[i].id == from->points[match[i]].id) continue;
         contact->points[i].normal_impulse = from->points[match[i]].normal_impulse;
         contact->points[i].tangent_impulse = from->points[match[i]].tangent_impulse;
     }
