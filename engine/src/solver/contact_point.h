@@ -2,10 +2,12 @@
 #define CONTACT_POINT_H
 
 /*
- * What preparing (velocity_solve.c), the velocity solve and the collision
- * pass (collision_pass.c) share about one contact point, one contact at a
- * time: velocities at a point, impulses along a direction, the bounce
- * threshold, and which of two pending impacts comes later. The batches
+ * What preparing (velocity_solve.c), the velocity solve, the collision
+ * pass (collision_pass.c) and the position pass (position_pass.c) share
+ * about one contact point, one contact at a time: velocities at a point,
+ * impulses along a direction, a block contact's two points solved
+ * together, the bounce threshold, and which of two pending impacts comes
+ * later. The batches
  * (solver_wide.c) have their own, four lanes at a time.
  */
 
@@ -38,6 +40,27 @@ static inline void apply_along(solver_velocity_t *a, solver_velocity_t *b, vecto
     b->v.x += b->inverse_mass * lambda * d.x;
     b->v.y += b->inverse_mass * lambda * d.y;
     b->w += b->inverse_inertia * lambda * rd_b;
+}
+
+/*
+ * A block contact's two points at once: x >= 0 with K x + b >= 0 and
+ * x (K x + b) = 0, K the contact's 2x2 matrix, by enumerating the four
+ * cases (both points, the first alone, the second alone, neither), as in
+ * Box2D. False when no case holds (rounding), x then unset.
+ */
+static inline bool solve_block_cases(const solver_contact_t *c, double b1, double b2,
+                                     double *x1, double *x2) {
+    *x1 = -(c->m11 * b1 + c->m12 * b2);
+    *x2 = -(c->m12 * b1 + c->m22 * b2);
+    if (*x1 >= 0.0 && *x2 >= 0.0) return true;
+    *x1 = -c->points[0].normal_mass * b1;
+    *x2 = 0.0;
+    if (*x1 >= 0.0 && c->k12 * *x1 + b2 >= 0.0) return true;
+    *x1 = 0.0;
+    *x2 = -c->points[1].normal_mass * b2;
+    if (*x2 >= 0.0 && c->k12 * *x2 + b1 >= 0.0) return true;
+    *x2 = 0.0;
+    return b1 >= 0.0 && b2 >= 0.0;
 }
 
 /* The approach speed (m/s) from which an elastic contact bounces: lower for

@@ -234,12 +234,35 @@ LANE_INLINE void solve_normal_points(const solver_batch_t *batch, lane_point_t *
     }
 }
 
-/* velocity_solve.c's block solve with its four cases evaluated in every
- * lane and the first that holds selected (the case order is the scalar
- * one). */
+/* contact_point.h's solve_block_cases with its four cases evaluated in
+ * every lane and the first that holds selected (the scalar order); where
+ * none holds, x1 and x2 keep what they held. nm1, nm2: the points' normal
+ * masses. */
+LANE_INLINE void solve_block_lanes(const lane_block_t *k, lane_t nm1, lane_t nm2, lane_t b1,
+                                   lane_t b2, lane_t *x1, lane_t *x2) {
+    const lane_t zero = {0.0, 0.0, 0.0, 0.0};
+    lane_t both1 = -(k->m11 * b1 + k->m12 * b2);
+    lane_t both2 = -(k->m12 * b1 + k->m22 * b2);
+    mask_t both = (mask_t)(both1 >= zero) & (mask_t)(both2 >= zero);
+    lane_t first = -nm1 * b1;
+    mask_t first_only = (mask_t)(first >= zero) & (mask_t)(k->k12 * first + b2 >= zero);
+    lane_t second = -nm2 * b2;
+    mask_t second_only = (mask_t)(second >= zero) & (mask_t)(k->k12 * second + b1 >= zero);
+    mask_t neither = (mask_t)(b1 >= zero) & (mask_t)(b2 >= zero);
+
+    *x1 = select_lane(neither, zero, *x1);
+    *x2 = select_lane(neither, zero, *x2);
+    *x1 = select_lane(second_only, zero, *x1);
+    *x2 = select_lane(second_only, second, *x2);
+    *x1 = select_lane(first_only, first, *x1);
+    *x2 = select_lane(first_only, zero, *x2);
+    *x1 = select_lane(both, both1, *x1);
+    *x2 = select_lane(both, both2, *x2);
+}
+
+/* velocity_solve.c's block solve, lane by lane. */
 LANE_INLINE void solve_normal_block(const solver_batch_t *batch, lane_point_t *points,
                                     const lane_block_t *k, lane_body_t *a, lane_body_t *b) {
-    const lane_t zero = {0.0, 0.0, 0.0, 0.0};
     lane_point_t *p1 = &points[0], *p2 = &points[1];
     lane_t a1 = p1->normal_impulse, a2 = p2->normal_impulse;
     lane_t b1 = relative_along(a, b, &batch->normal, &p1->rn) - p1->target;
@@ -247,22 +270,8 @@ LANE_INLINE void solve_normal_block(const solver_batch_t *batch, lane_point_t *p
     b1 -= k->k11 * a1 + k->k12 * a2;
     b2 -= k->k12 * a1 + k->k22 * a2;
 
-    lane_t both1 = -(k->m11 * b1 + k->m12 * b2);
-    lane_t both2 = -(k->m12 * b1 + k->m22 * b2);
-    mask_t both = (mask_t)(both1 >= zero) & (mask_t)(both2 >= zero);
-    lane_t first = -p1->normal_mass * b1;
-    mask_t first_only = (mask_t)(first >= zero) & (mask_t)(k->k12 * first + b2 >= zero);
-    lane_t second = -p2->normal_mass * b2;
-    mask_t second_only = (mask_t)(second >= zero) & (mask_t)(k->k12 * second + b1 >= zero);
-    mask_t neither = (mask_t)(b1 >= zero) & (mask_t)(b2 >= zero);
-
-    lane_t x1 = select_lane(neither, zero, a1), x2 = select_lane(neither, zero, a2);
-    x1 = select_lane(second_only, zero, x1);
-    x2 = select_lane(second_only, second, x2);
-    x1 = select_lane(first_only, first, x1);
-    x2 = select_lane(first_only, zero, x2);
-    x1 = select_lane(both, both1, x1);
-    x2 = select_lane(both, both2, x2);
+    lane_t x1 = a1, x2 = a2;
+    solve_block_lanes(k, p1->normal_mass, p2->normal_mass, b1, b2, &x1, &x2);
 
     lane_t d1 = x1 - a1, d2 = x2 - a2;
     lane_t total = d1 + d2;
@@ -416,27 +425,15 @@ LANE_INLINE void push_point(const solver_position_batch_t *batch, const lane_lev
     b->dtheta += batch->ib * lambda * rn->b;
 }
 
-/* position_pass.c's block correction: both points' pushes at once, the
- * four cases evaluated in every lane and the first that holds selected. */
+/* position_pass.c's block correction, lane by lane. */
 LANE_INLINE void correct_block(const solver_position_batch_t *batch,
                                const solver_position_point_t *points, const lane_block_t *k,
                                lane_displacement_t *a, lane_displacement_t *b) {
     const lane_t zero = {0.0, 0.0, 0.0, 0.0};
     const solver_position_point_t *p1 = &points[0], *p2 = &points[1];
     lane_t c1 = position_error(batch, p1, a, b), c2 = position_error(batch, p2, a, b);
-    lane_t both1 = -(k->m11 * c1 + k->m12 * c2);
-    lane_t both2 = -(k->m12 * c1 + k->m22 * c2);
-    mask_t both = (mask_t)(both1 >= zero) & (mask_t)(both2 >= zero);
-    lane_t first = -p1->normal_mass * c1;
-    mask_t first_only = (mask_t)(first >= zero) & (mask_t)(k->k12 * first + c2 >= zero);
-    lane_t second = -p2->normal_mass * c2;
-    mask_t second_only = (mask_t)(second >= zero) & (mask_t)(k->k12 * second + c1 >= zero);
-
-    lane_t x1 = zero, x2 = select_lane(second_only, second, zero);
-    x1 = select_lane(first_only, first, x1);
-    x2 = select_lane(first_only, zero, x2);
-    x1 = select_lane(both, both1, x1);
-    x2 = select_lane(both, both2, x2);
+    lane_t x1 = zero, x2 = zero;
+    solve_block_lanes(k, p1->normal_mass, p2->normal_mass, c1, c2, &x1, &x2);
 
     const lane_vector_t *n = &batch->normal;
     lane_t total = x1 + x2;

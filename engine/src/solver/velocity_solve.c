@@ -226,11 +226,9 @@ static inline void apply_block(solver_contact_t *c, solver_velocity_t *a, solver
     p2->normal_impulse = x2;
 }
 
-/*
- * Both normal impulses at once: the linear complementarity problem
- * vn = K x + b', x >= 0, vn >= target, x (vn - target) = 0, solved by
- * enumerating its four cases (both active, either alone, none), as in Box2D.
- */
+/* Both normal impulses at once: the complementarity problem
+ * vn = K x + b', x >= 0, vn >= target, x (vn - target) = 0
+ * (solve_block_cases). */
 static inline void solve_normal_block(solver_contact_t *c, solver_velocity_t *a,
                                       solver_velocity_t *b) {
     solver_point_t *p1 = &c->points[0], *p2 = &c->points[1];
@@ -239,23 +237,8 @@ static inline void solve_normal_block(solver_contact_t *c, solver_velocity_t *a,
     double b2 = relative_along(a, b, c->normal, p2->rn_a, p2->rn_b) - p2->target;
     b1 -= c->k11 * a1 + c->k12 * a2;
     b2 -= c->k12 * a1 + c->k22 * a2;
-
-    double x1 = -(c->m11 * b1 + c->m12 * b2), x2 = -(c->m12 * b1 + c->m22 * b2);
-    if (x1 >= 0.0 && x2 >= 0.0) {
-        apply_block(c, a, b, x1, x2);
-        return;
-    }
-    x1 = -p1->normal_mass * b1;
-    if (x1 >= 0.0 && c->k12 * x1 + b2 >= 0.0) {
-        apply_block(c, a, b, x1, 0.0);
-        return;
-    }
-    x2 = -p2->normal_mass * b2;
-    if (x2 >= 0.0 && c->k12 * x2 + b1 >= 0.0) {
-        apply_block(c, a, b, 0.0, x2);
-        return;
-    }
-    if (b1 >= 0.0 && b2 >= 0.0) apply_block(c, a, b, 0.0, 0.0);
+    double x1, x2;
+    if (solve_block_cases(c, b1, b2, &x1, &x2)) apply_block(c, a, b, x1, x2);
 }
 
 /* Works on copies of the two rows: the compiler then keeps them in
