@@ -273,16 +273,6 @@ static bool cores_overlap(const core_t *a, const core_t *b, double sat, const cl
     return c->distance_squared == 0.0;
 }
 
-/* Two circles: the line of their centres, as the general search below finds
- * it (the same numbers) without its loops: the pile of circles' common case. */
-static manifold_t circles_manifold(const core_t *a, const core_t *b, double margin,
-                                   double *separation) {
-    closest_t c = {vec_get_length_squared(vec_subtract(b->v[0], a->v[0])),
-                   {a->v[0], b->v[0]}, {-1, -1}, {0, 0}};
-    *separation = sqrt(c.distance_squared) - (a->radius + b->radius);
-    return *separation > margin ? no_manifold(VEC_ZERO) : vertex_manifold(a, b, &c, margin);
-}
-
 /* The manifold on the face that separates the cores most: a's, unless b's
  * is clearly better. */
 static manifold_t reference_manifold(const core_t *a, const core_t *b, best_face_t face_a,
@@ -346,14 +336,42 @@ static manifold_t cores_manifold(const core_t *a, const core_t *b, double margin
                                 : apart_manifold(a, b, &c, face_a, face_b, margin);
 }
 
+/* Two circles: the line of their centres, as vertex_manifold gives it for
+ * two one-vertex cores, straight from the bodies without building either
+ * core (a pile of circles calls this for every pair, every step). */
+static manifold_t circle_pair(const body_t *body_a, const body_t *body_b, double margin,
+                              manifold_features_t *features, double *separation) {
+    vector_t centre_a = vec_add(body_a->centroid, vec_rotate_cs(body_a->core[0], body_a->rotation_cos,
+                                                                body_a->rotation_sin));
+    vector_t centre_b = vec_add(body_b->centroid, vec_rotate_cs(body_b->core[0], body_b->rotation_cos,
+                                                                body_b->rotation_sin));
+    double ra = body_a->round_radius, rb = body_b->round_radius;
+    double distance = sqrt(vec_get_length_squared(vec_subtract(centre_b, centre_a)));
+    *separation = distance - (ra + rb);
+    *features = (manifold_features_t){.point_count = 0};
+    if (*separation > margin) return no_manifold(VEC_ZERO);
+    vector_t normal = distance > 0.0 ? vec_multiply(1.0 / distance, vec_subtract(centre_b, centre_a))
+                                     : (vector_t){0.0, 1.0};
+    manifold_t manifold = no_manifold(normal);
+    double gap = distance - ra - rb; /* vertex_manifold's rounding, which may differ by an ulp */
+    if (gap > margin) return manifold;
+    manifold.point_count = 1;
+    manifold.points[0].separation = gap;
+    manifold.points[0].point = vec_add(centre_a, vec_multiply(ra + 0.5 * gap, normal));
+    manifold.points[0].id = VERTEX_ID;
+    *features = (manifold_features_t){.point_count = 1, .ids = {VERTEX_ID}};
+    return manifold;
+}
+
 manifold_t round_manifold_collide(const body_t *body_a, const body_t *body_b, double margin,
                                   manifold_features_t *features, double *separation) {
+    if (body_a->kind == BODY_SHAPE_CIRCLE && body_b->kind == BODY_SHAPE_CIRCLE) {
+        return circle_pair(body_a, body_b, margin, features, separation);
+    }
     core_t a, b;
     core_of(body_a, &a);
     core_of(body_b, &b);
-    manifold_t manifold = a.count == 1 && b.count == 1
-                              ? circles_manifold(&a, &b, margin, separation)
-                              : cores_manifold(&a, &b, margin, separation);
+    manifold_t manifold = cores_manifold(&a, &b, margin, separation);
     *features = (manifold_features_t){.point_count = manifold.point_count};
     for (int i = 0; i < manifold.point_count; i++) features->ids[i] = manifold.points[i].id;
     return manifold;
