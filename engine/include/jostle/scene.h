@@ -377,7 +377,9 @@ const contact_t *scene_get_contact(scene_t *scene, size_t index);
 /* Counters of the last scene_tick, for tests and the sandbox's HUD. */
 typedef struct {
     size_t broadphase_tests;   /* bounding-box comparisons the broadphase made (the
-                                  world's and the collision groups', forces.h) */
+                                  world's and the collision groups', forces.h; a
+                                  step that keeps last step's pairs, resting
+                                  bodies, makes one per kept pair) */
     size_t broadphase_pairs;   /* pairs whose bounding boxes overlapped */
     size_t contacts;           /* manifolds with at least one point, speculative
                                   ones included (see contact.h) */

@@ -47,30 +47,6 @@ static inline void add_pair(broadphase_t *broadphase, uint32_t a, uint32_t b) {
     append_pair(&broadphase->pairs, &broadphase->pair_count, &broadphase->pair_capacity, a, b);
 }
 
-/* A cell about twice the mean extent of the movable bodies: each such body
- * then covers at most four cells and a cell holds a few bodies. */
-static double choose_cell_size(const broadphase_proxy_t *proxies, size_t count) {
-    double sum = 0.0;
-    size_t movable = 0;
-    for (size_t i = 0; i < count; i++) {
-        if (proxies[i].fixed) continue;
-        aabb_t box = proxies[i].box;
-        sum += max_of(box.max.x - box.min.x, box.max.y - box.min.y);
-        movable++;
-    }
-    double size = movable > 0 ? 2.0 * sum / (double)movable : 1.0;
-    /* An infinite size (a box swept by a dt v that overflows, or extents
-     * summing past the largest double) would make every cell index NaN. */
-    return size > 1e-6 ? min_of(size, 1e300) : 1e-6;
-}
-
-/* Enough buckets that cells, which hold several entries, rarely share one. */
-static size_t bucket_count(size_t n) {
-    size_t buckets = 64;
-    while (2 * buckets < n) buckets *= 2;
-    return buckets;
-}
-
 /*
  * The grid's entries sorted by bucket, written in place: the proxies are
  * cut into parts (one per worker, one without workers); a first pass finds

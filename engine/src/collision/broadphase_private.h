@@ -7,6 +7,7 @@
 #include <stdint.h>
 #include <string.h>
 #include "collision/broadphase.h"
+#include "base/scalar.h"
 #include "base/workers.h"
 
 /* A proxy in one cell, with its box and the cell of its box's lower-left
@@ -95,6 +96,30 @@ static inline uint64_t cell_key(const cell_entry_t *entry) {
     uint64_t key;
     memcpy(&key, &entry->ix, sizeof key);
     return key;
+}
+
+/* A cell about twice the mean extent of the movable bodies: each such body
+ * then covers at most four cells and a cell holds a few bodies. */
+static inline double choose_cell_size(const broadphase_proxy_t *proxies, size_t count) {
+    double sum = 0.0;
+    size_t movable = 0;
+    for (size_t i = 0; i < count; i++) {
+        if (proxies[i].fixed) continue;
+        aabb_t box = proxies[i].box;
+        sum += max_of(box.max.x - box.min.x, box.max.y - box.min.y);
+        movable++;
+    }
+    double size = movable > 0 ? 2.0 * sum / (double)movable : 1.0;
+    /* An infinite size (a box swept by a dt v that overflows, or extents
+     * summing past the largest double) would make every cell index NaN. */
+    return size > 1e-6 ? min_of(size, 1e300) : 1e-6;
+}
+
+/* Enough buckets that cells, which hold several entries, rarely share one. */
+static inline size_t bucket_count(size_t n) {
+    size_t buckets = 64;
+    while (2 * buckets < n) buckets *= 2;
+    return buckets;
 }
 
 #endif // #ifndef BROADPHASE_PRIVATE_H

@@ -17,13 +17,13 @@ static const double CONTACT_MARGIN = 0.005;
 
 world_t *world_init(size_t velocity_iterations, size_t position_iterations) {
     world_t *world = memory_calloc(1, sizeof(world_t));
-    world->broadphase = broadphase_init();
+    world->pairs = pair_tracker_init();
     world_set_iterations(world, velocity_iterations, position_iterations);
     return world;
 }
 
 void world_free(world_t *world) {
-    broadphase_free(world->broadphase);
+    pair_tracker_free(world->pairs);
     memory_free(world->proxies);
     memory_free(world->velocities);
     memory_free(world->states);
@@ -65,7 +65,7 @@ void world_set_workers(world_t *world, size_t workers) {
     workers_free(world->workers);
     world->workers = workers > 1 ? workers_init(workers) : NULL;
     world->wide.workers = world->workers;
-    broadphase_set_workers(world->broadphase, world->workers);
+    pair_tracker_set_workers(world->pairs, world->workers);
 }
 
 void world_for_bodies(world_t *world, size_t count, workers_fn_t fn, void *context) {
@@ -371,8 +371,8 @@ static void run_pipeline(world_t *world, body_t **bodies, integrator_motion_t *m
         seams_find(&world->seams, bodies, count);
     }
     const broadphase_pair_t *pairs;
-    size_t pair_count = broadphase_find_pairs(world->broadphase, world->proxies, count, &pairs,
-                                              &stats->broadphase_tests);
+    size_t pair_count =
+        pair_tracker_find(world->pairs, world->proxies, count, &pairs, &stats->broadphase_tests);
     pair_count = drop_joined_pairs(world, bodies, count, &step->joints, &pairs, pair_count);
     stage_clock_lap(clock, SCENE_STAGE_BROADPHASE);
     narrowphase_find_contacts(world, bodies, pairs, pair_count);

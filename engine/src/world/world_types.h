@@ -16,6 +16,7 @@
 #include "dynamics/body_private.h"
 #include "dynamics/integrator.h"
 #include "collision/broadphase.h"
+#include "collision/pair_tracker.h"
 #include "collision/manifold.h"
 #include "collision/seams.h"
 #include "collision/time_of_impact.h"
@@ -81,7 +82,7 @@ typedef struct {
 } pair_result_t;
 
 struct world {
-    broadphase_t *broadphase;
+    pair_tracker_t *pairs;
     broadphase_proxy_t *proxies;
     size_t proxy_capacity;
     solver_velocity_t *velocities;
@@ -94,7 +95,7 @@ struct world {
     size_t margin_capacity;
 
     /* This step's contacts, with their sources in parallel, grouped by
-     * body a (the broadphase hands over its pairs sorted by a). */
+     * body a (the pair tracker hands over its pairs sorted by a, then b). */
     solver_contact_t *contacts;
     solver_anchor_t *anchors;
     contact_source_t *sources;
