@@ -95,7 +95,7 @@ struct world {
     size_t margin_capacity;
 
     /* This step's contacts, with their sources in parallel, grouped by
-     * body a (the pair tracker hands over its pairs sorted by a, then b). */
+     * body a (the pair tracker hands over its pairs sorted by a). */
     solver_contact_t *contacts;
     solver_anchor_t *anchors;
     contact_source_t *sources;
