@@ -451,8 +451,8 @@ EOF
 The chaotic figures over the 8 layout seeds of bench-scenes.md (median and
 least-largest over the seeds), and the exact ones once; Box2D v3's
 ($v3name) beside this engine's. Penetrations: this engine's from its step
-record (before the last solve), Box2D v3's on the polygons at the final
-positions.
+record (before the last solve), Box2D v3's from the scene's shapes
+(polygons, circles and capsules) collided again at the final positions.
 
 EOF
     if [ -n "$BENCH_SEEDS_ARGS" ]; then
