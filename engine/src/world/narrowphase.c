@@ -198,18 +198,20 @@ enum { PAIR_AHEAD = 4 };
 
 /* How many contacts ahead of the last one matched the narrowphase asks for
  * last step's records: the pairs come in last step's order, mostly, so the
- * old contacts they match are read nearly in sequence, but 344 bytes apart
+ * old contacts they match are read nearly in sequence, but 344 bytes apart,
  * and waiting on each was a third of the time of a settled pile's
  * narrowphase (pile(4000)). The lines asked for are those a match reads:
- * each point's id and impulses, and the source's key, pose and features. */
-enum { OLD_AHEAD = 4 };
-#define PREFETCH_OLD(world, old)                                                             \
+ * each point's id and impulses, and the source's key, pose and features.
+ * A macro: GCC deems a function of prefetches alone const and drops its
+ * calls. */
+enum { OLD_AHEAD = 8 };
+#define PREFETCH_OLD(world, at)                                                              \
     do {                                                                                     \
-        if ((old) + OLD_AHEAD < (world)->old_count) {                                        \
-            const char *c_ = (const char *)&(world)->old_contacts[(old) + OLD_AHEAD];        \
+        if ((at) < (world)->old_count) {                                                     \
+            const char *c_ = (const char *)&(world)->old_contacts[at];                       \
             __builtin_prefetch(c_ + offsetof(solver_contact_t, points[0].id));              \
             __builtin_prefetch(c_ + offsetof(solver_contact_t, points[1].tangent_impulse)); \
-            const char *s_ = (const char *)&(world)->old_sources[(old) + OLD_AHEAD];         \
+            const char *s_ = (const char *)&(world)->old_sources[at];                        \
             __builtin_prefetch(s_);                                                          \
             __builtin_prefetch(s_ + 64);                                                     \
             __builtin_prefetch(s_ + sizeof(contact_source_t) - 1);                           \
@@ -229,7 +231,7 @@ static size_t collide_group(world_t *world, body_t **bodies, const broadphase_pa
         body_t *b = bodies[pairs[n].b];
         pair_result_t found;
         collide_pair(world, a, b, &pairs[n], &found);
-        if (found.old != SIZE_MAX) PREFETCH_OLD(world, found.old);
+        if (found.old != SIZE_MAX) PREFETCH_OLD(world, found.old + OLD_AHEAD);
         if (found.manifold.point_count > 0) {
             size_t made = world->contact_count++;
             add_contact(world, made, a, b, &found);
@@ -274,6 +276,9 @@ static void collide_chunk(void *context, size_t chunk, size_t begin, size_t end)
         const broadphase_pair_t *pair = &split->pairs[i];
         collide_pair(world, split->bodies[pair->a], split->bodies[pair->b], pair,
                      &world->results[i]);
+        if (world->results[i].old != SIZE_MAX) {
+            PREFETCH_OLD(world, world->results[i].old + OLD_AHEAD);
+        }
         made += world->results[i].manifold.point_count > 0;
         points += (size_t)world->results[i].manifold.point_count;
         elastic += world->results[i].manifold.point_count > 0 &&
@@ -296,6 +301,7 @@ static void emit_chunk(void *context, size_t chunk, size_t begin, size_t end) {
         body_t *a = split->bodies[pairs[i].a];
         size_t first = n, gap_first = g;
         for (uint32_t group = pairs[i].a; i < end && pairs[i].a == group; i++) {
+            if (i + OLD_AHEAD < end) PREFETCH_OLD(world, world->results[i + OLD_AHEAD].old);
             const pair_result_t *found = &world->results[i];
             if (found->manifold.point_count > 0) {
                 add_contact(world, n++, a, split->bodies[pairs[i].b], found);
