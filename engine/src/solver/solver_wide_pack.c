@@ -31,9 +31,10 @@ LANE_INLINE void pack_lane(solver_wide_t *wide, pack_at_t at, const solver_conta
     position->slop[l] = c->slop;
     if (batch->kind == BATCH_BLOCK) {
         lane_block_t *k = &wide->blocks[at.block];
-        k->k11[l] = c->k11;
-        k->k12[l] = c->k12;
-        k->k22[l] = c->k22;
+        solver_block_k_t kc = solver_contact_k(c, &rows[c->a], &rows[c->b]);
+        k->k11[l] = kc.k11;
+        k->k12[l] = kc.k12;
+        k->k22[l] = kc.k22;
         k->m11[l] = c->m11;
         k->m12[l] = c->m12;
         k->m22[l] = c->m22;

@@ -159,18 +159,15 @@ static inline __attribute__((always_inline)) bool prepare(solver_contact_t *c, c
     c->impact = impact;
     c->block = false;
     if (c->point_count == 2) {
-        const solver_point_t *p1 = &c->points[0], *p2 = &c->points[1];
-        c->k11 = ma + mb + ia * p1->rn_a * p1->rn_a + ib * p1->rn_b * p1->rn_b;
-        c->k22 = ma + mb + ia * p2->rn_a * p2->rn_a + ib * p2->rn_b * p2->rn_b;
-        c->k12 = ma + mb + ia * p1->rn_a * p2->rn_a + ib * p1->rn_b * p2->rn_b;
-        double det = c->k11 * c->k22 - c->k12 * c->k12;
+        solver_block_k_t k = solver_contact_k(c, a, b);
+        double det = k.k11 * k.k22 - k.k12 * k.k12;
         double condition = c->edge_ends ? MAX_EDGE_CONDITION_NUMBER : MAX_CONDITION_NUMBER;
-        if (c->k11 * c->k11 < condition * det) {
+        if (k.k11 * k.k11 < condition * det) {
             c->block = true;
             double inv = 1.0 / det;
-            c->m11 = inv * c->k22;
-            c->m12 = -inv * c->k12;
-            c->m22 = inv * c->k11;
+            c->m11 = inv * k.k22;
+            c->m12 = -inv * k.k12;
+            c->m22 = inv * k.k11;
         }
     }
     return impact;
@@ -235,10 +232,11 @@ static inline void solve_normal_block(solver_contact_t *c, solver_velocity_t *a,
     double a1 = p1->normal_impulse, a2 = p2->normal_impulse;
     double b1 = relative_along(a, b, c->normal, p1->rn_a, p1->rn_b) - p1->target;
     double b2 = relative_along(a, b, c->normal, p2->rn_a, p2->rn_b) - p2->target;
-    b1 -= c->k11 * a1 + c->k12 * a2;
-    b2 -= c->k12 * a1 + c->k22 * a2;
+    solver_block_k_t k = solver_contact_k(c, a, b);
+    b1 -= k.k11 * a1 + k.k12 * a2;
+    b2 -= k.k12 * a1 + k.k22 * a2;
     double x1, x2;
-    if (solve_block_cases(c, b1, b2, &x1, &x2)) apply_block(c, a, b, x1, x2);
+    if (solve_block_cases(c, k.k12, b1, b2, &x1, &x2)) apply_block(c, a, b, x1, x2);
 }
 
 /* Works on copies of the two rows: the compiler then keeps them in

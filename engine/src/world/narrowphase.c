@@ -368,11 +368,12 @@ void narrowphase_find_contacts(world_t *world, body_t **bodies, const broadphase
      * together (they keep their contents), so a new most of pairs costs
      * one step's allocations, not one in each of the next steps. */
     size_t n = pair_count;
-    memory_reserve((void **)&world->contacts, &world->contact_capacity, n, sizeof(solver_contact_t));
-    memory_reserve((void **)&world->old_contacts, &world->old_contact_capacity, n,
-                   sizeof(solver_contact_t));
-    memory_reserve((void **)&world->older_contacts, &world->older_contact_capacity, n,
-                   sizeof(solver_contact_t));
+    memory_reserve_lines((void **)&world->contacts, &world->contact_capacity, n,
+                         sizeof(solver_contact_t));
+    memory_reserve_lines((void **)&world->old_contacts, &world->old_contact_capacity, n,
+                         sizeof(solver_contact_t));
+    memory_reserve_lines((void **)&world->older_contacts, &world->older_contact_capacity, n,
+                         sizeof(solver_contact_t));
     memory_reserve((void **)&world->sources, &world->source_capacity, n, sizeof(contact_source_t));
     memory_reserve((void **)&world->old_sources, &world->old_source_capacity, n,
                    sizeof(contact_source_t));
