@@ -3,6 +3,7 @@
  * and gets a line here. */
 SUITE(vector)
 SUITE(list)
+SUITE(memory)
 SUITE(polygon)
 SUITE(body)
 SUITE(scene)

@@ -118,13 +118,16 @@ static void make_block(solver_contact_t *c, const solver_velocity_t *a,
                        const solver_velocity_t *b) {
     const solver_point_t *p = c->points, *q = c->points + 1;
     double m = a->inverse_mass + b->inverse_mass;
-    c->k11 = m + a->inverse_inertia * p->rn_a * p->rn_a + b->inverse_inertia * p->rn_b * p->rn_b;
-    c->k22 = m + a->inverse_inertia * q->rn_a * q->rn_a + b->inverse_inertia * q->rn_b * q->rn_b;
-    c->k12 = m + a->inverse_inertia * p->rn_a * q->rn_a + b->inverse_inertia * p->rn_b * q->rn_b;
-    double det = c->k11 * c->k22 - c->k12 * c->k12;
-    c->m11 = c->k22 / det;
-    c->m12 = -c->k12 / det;
-    c->m22 = c->k11 / det;
+    double k11 = m + a->inverse_inertia * p->rn_a * p->rn_a + b->inverse_inertia * p->rn_b * p->rn_b;
+    double k22 = m + a->inverse_inertia * q->rn_a * q->rn_a + b->inverse_inertia * q->rn_b * q->rn_b;
+    double k12 = m + a->inverse_inertia * p->rn_a * q->rn_a + b->inverse_inertia * p->rn_b * q->rn_b;
+    /* The solver recomputes K from the rows (solver_contact_k): the same. */
+    solver_block_k_t k = solver_contact_k(c, a, b);
+    CHECK(k.k11 == k11 && k.k12 == k12 && k.k22 == k22);
+    double det = k11 * k22 - k12 * k12;
+    c->m11 = k22 / det;
+    c->m12 = -k12 / det;
+    c->m22 = k11 / det;
     c->block = true;
 }
 

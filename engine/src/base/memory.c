@@ -2,6 +2,7 @@
 #include <stdatomic.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 #include "base/check.h"
 #include "jostle/jostle.h"
 
@@ -41,10 +42,31 @@ void memory_free(void *block) {
     free(block);
 }
 
+static size_t grown_capacity(size_t capacity, size_t needed) {
+    size_t grown = capacity < 16 ? 16 : capacity * 2;
+    while (grown < needed) grown *= 2;
+    return grown;
+}
+
 void memory_reserve(void **array, size_t *capacity, size_t needed, size_t element_size) {
     if (needed <= *capacity) return;
-    size_t grown = *capacity < 16 ? 16 : *capacity * 2;
-    while (grown < needed) grown *= 2;
+    size_t grown = grown_capacity(*capacity, needed);
     *array = memory_realloc(*array, grown * element_size);
+    *capacity = grown;
+}
+
+enum { CACHE_LINE = 64 };
+
+void memory_reserve_lines(void **array, size_t *capacity, size_t needed, size_t element_size) {
+    if (needed <= *capacity) return;
+    size_t grown = grown_capacity(*capacity, needed);
+    /* aligned_alloc wants a size that is a multiple of the alignment. */
+    size_t bytes = (grown * element_size + CACHE_LINE - 1) / CACHE_LINE * CACHE_LINE;
+    void *block = aligned_alloc(CACHE_LINE, bytes);
+    REQUIRE(block != NULL, "out of memory allocating %zu bytes", bytes);
+    count_allocation();
+    if (*array != NULL) memcpy(block, *array, *capacity * element_size);
+    free(*array);
+    *array = block;
     *capacity = grown;
 }

@@ -16,4 +16,10 @@ void memory_free(void *block);
  * growing *capacity geometrically. */
 void memory_reserve(void **array, size_t *capacity, size_t needed, size_t element_size);
 
+/* memory_reserve for an array whose first element starts a cache line
+ * (64 bytes), so that elements of a multiple of 64 bytes each fill whole
+ * lines. The array must come from this function (or be NULL); free it with
+ * memory_free. */
+void memory_reserve_lines(void **array, size_t *capacity, size_t needed, size_t element_size);
+
 #endif // #ifndef MEMORY_H

@@ -5,6 +5,7 @@
  * pipeline (which read and write them in bulk); everyone else uses body.h. */
 
 #include <math.h>
+#include <stddef.h>
 #include <stdint.h>
 #include "jostle/body.h"
 
@@ -155,6 +156,30 @@ typedef struct body_segment {
 static inline struct body *body_public(struct body *body) {
     return body->chain != NULL ? body->chain : body;
 }
+
+/* How many bodies ahead a loop over the step's bodies asks for the next
+ * ones: each body is a block of its own, and the loops that walk them all
+ * (predicting, loading, moving) waited on each body's first field. */
+enum { BODY_AHEAD = 8 };
+/* Asks for the lines of bodies[at] (when at < count) that a step reads:
+ * its fields through the accumulated impulses and, with_shape, a box's
+ * vertex arrays (256 bytes). malloc aligns to 16 bytes, so each may span
+ * five lines. A macro: GCC deems a function of prefetches alone const and
+ * drops its calls. */
+#define BODY_PREFETCH(bodies, at, count, with_shape)                                 \
+    do {                                                                             \
+        if ((at) < (count)) {                                                        \
+            const char *line_ = (const char *)(bodies)[at];                          \
+            for (int k_ = 0; k_ < 4; k_++) __builtin_prefetch(line_ + 64 * k_);      \
+            __builtin_prefetch(line_ + offsetof(struct body, sleep_time) - 1);       \
+            if (with_shape) {                                                        \
+                const char *s_ = (const char *)(bodies)[at]->shape;                  \
+                __builtin_prefetch(line_ + offsetof(struct body, local_vertices));   \
+                for (int k_ = 0; k_ < 4; k_++) __builtin_prefetch(s_ + 64 * k_);     \
+                __builtin_prefetch(s_ + 255);                                        \
+            }                                                                        \
+        }                                                                            \
+    } while (0)
 
 /* Allocates a body (zeroed) with room for a polygon of count vertices in
  * its four arrays. */

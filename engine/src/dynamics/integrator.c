@@ -441,6 +441,7 @@ void integrator_predict_range(const integrator_step_t *step, body_t **bodies,
                               integrator_motion_t *motions, size_t begin, size_t end) {
     double w = integrator_position_weight(step->integrator);
     for (size_t i = begin; i < end; i++) {
+        BODY_PREFETCH(bodies, i + BODY_AHEAD, end, false);
         predict_one_stage(bodies[i], step->dt, step->gravity, w, &motions[i]);
     }
 }
@@ -522,6 +523,7 @@ integrator_outcome_t integrator_move(const integrator_step_t *step, body_t **bod
     integrator_outcome_t outcome = {count, VEC_ZERO, false};
     if (motions != NULL) {
         for (size_t i = 0; i < count; i++) {
+            BODY_PREFETCH(bodies, i + BODY_AHEAD, count, false);
             body_t *body = bodies[i];
             if (body->removed) {
                 outcome.removed = true;
@@ -535,6 +537,7 @@ integrator_outcome_t integrator_move(const integrator_step_t *step, body_t **bod
     const double dt = step->dt, w = integrator_position_weight(step->integrator);
     const vector_t gravity = step->gravity;
     for (size_t i = 0; i < count; i++) {
+        BODY_PREFETCH(bodies, i + BODY_AHEAD, count, false);
         body_t *body = bodies[i];
         integrator_motion_t motion;
         if (body->removed) {

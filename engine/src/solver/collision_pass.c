@@ -22,10 +22,12 @@ static bool needs_bounce(const solver_point_t *p, double approach, double thresh
  * The compression impulses of a contact's taking-part points: the smallest
  * impulses x >= 0 that stop every approach, K x + approach >= 0 with
  * x (K x + approach) = 0, by the same enumeration as solve_normal_block (one
- * point: x = -approach / K). Points that take no part have NAN approach and
- * get 0; a point left for a later pass is set to NAN.
+ * point: x = -approach / K; K from the rows a and b). Points that take no
+ * part have NAN approach and get 0; a point left for a later pass is set
+ * to NAN.
  */
-static void compression_impulses(const solver_contact_t *c, double approach[2], double x[2]) {
+static void compression_impulses(const solver_contact_t *c, const solver_velocity_t *a,
+                                 const solver_velocity_t *b, double approach[2], double x[2]) {
     x[0] = x[1] = 0.0;
     bool both = c->point_count == 2 && !isnan(approach[0]) && !isnan(approach[1]);
     if (both && !c->block) {
@@ -41,12 +43,13 @@ static void compression_impulses(const solver_contact_t *c, double approach[2], 
         return;
     }
     double b1 = approach[0], b2 = approach[1];
+    double k12 = solver_contact_k(c, a, b).k12;
     double x1 = -(c->m11 * b1 + c->m12 * b2), x2 = -(c->m12 * b1 + c->m22 * b2);
     if (x1 >= 0.0 && x2 >= 0.0) {
         x[0] = x1, x[1] = x2;
-    } else if ((x1 = -c->points[0].normal_mass * b1) >= 0.0 && c->k12 * x1 + b2 >= 0.0) {
+    } else if ((x1 = -c->points[0].normal_mass * b1) >= 0.0 && k12 * x1 + b2 >= 0.0) {
         x[0] = x1;
-    } else if ((x2 = -c->points[1].normal_mass * b2) >= 0.0 && c->k12 * x2 + b1 >= 0.0) {
+    } else if ((x2 = -c->points[1].normal_mass * b2) >= 0.0 && k12 * x2 + b1 >= 0.0) {
         x[1] = x2;
     }
 }
@@ -139,7 +142,7 @@ static bool bounce_contact(solver_contact_t *c, solver_velocity_t *velocities,
     }
     if (!wanted) return false;
     double x[2];
-    compression_impulses(c, approach, x);
+    compression_impulses(c, &a, &b, approach, x);
     bool applied = false;
     for (int i = 0; i < c->point_count; i++) {
         solver_point_t *p = &c->points[i];

@@ -44,21 +44,22 @@ static inline void apply_along(solver_velocity_t *a, solver_velocity_t *b, vecto
 
 /*
  * A block contact's two points at once: x >= 0 with K x + b >= 0 and
- * x (K x + b) = 0, K the contact's 2x2 matrix, by enumerating the four
- * cases (both points, the first alone, the second alone, neither), as in
- * Box2D. False when no case holds (rounding), x then unset.
+ * x (K x + b) = 0, K the contact's 2x2 matrix (k12 its off-diagonal
+ * term, solver_contact_k), by enumerating the four cases (both points, the
+ * first alone, the second alone, neither), as in Box2D. False when no case
+ * holds (rounding), x then unset.
  */
-static inline bool solve_block_cases(const solver_contact_t *c, double b1, double b2,
+static inline bool solve_block_cases(const solver_contact_t *c, double k12, double b1, double b2,
                                      double *x1, double *x2) {
     *x1 = -(c->m11 * b1 + c->m12 * b2);
     *x2 = -(c->m12 * b1 + c->m22 * b2);
     if (*x1 >= 0.0 && *x2 >= 0.0) return true;
     *x1 = -c->points[0].normal_mass * b1;
     *x2 = 0.0;
-    if (*x1 >= 0.0 && c->k12 * *x1 + b2 >= 0.0) return true;
+    if (*x1 >= 0.0 && k12 * *x1 + b2 >= 0.0) return true;
     *x1 = 0.0;
     *x2 = -c->points[1].normal_mass * b2;
-    if (*x2 >= 0.0 && c->k12 * *x2 + b1 >= 0.0) return true;
+    if (*x2 >= 0.0 && k12 * *x2 + b1 >= 0.0) return true;
     *x2 = 0.0;
     return b1 >= 0.0 && b2 >= 0.0;
 }

@@ -150,7 +150,8 @@ static void correct_block(const solver_contact_t *c, const solver_velocity_t *ve
     double c1 = position_error(c, &c->points[0], rate, a, b);
     double c2 = position_error(c, &c->points[1], rate, a, b);
     double x1, x2;
-    if (solve_block_cases(c, c1, c2, &x1, &x2)) push_apart(c, velocities, a, b, x1, x2);
+    double k12 = solver_contact_k(c, &velocities[c->a], &velocities[c->b]).k12;
+    if (solve_block_cases(c, k12, c1, c2, &x1, &x2)) push_apart(c, velocities, a, b, x1, x2);
 }
 
 /*

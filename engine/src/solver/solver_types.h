@@ -116,10 +116,35 @@ typedef struct {
     vector_t normal;         /* unit, from a toward b; the tangent is perp(normal) */
     double friction, restitution;
     double slop;             /* overlap the position pass leaves alone (m): solver_contact_slop */
-    /* The 2x2 normal effective-mass matrix K and its inverse (block solve). */
-    double k11, k12, k22;
+    /* The inverse of the 2x2 normal effective-mass matrix K (block solve);
+     * K itself is recomputed where it is needed (solver_contact_k). */
     double m11, m12, m22;
 } solver_contact_t;
+
+/* Five cache lines: the contact buffers are aligned to a line
+ * (memory_reserve_lines), so each contact is read and written in five,
+ * where at 344 bytes it spanned six or seven. */
+_Static_assert(sizeof(solver_contact_t) == 5 * 64, "solver_contact_t fills five cache lines");
+
+/* A two-point contact's normal effective-mass matrix K, from its points'
+ * lever terms and its bodies' rows a and b: the expression preparing
+ * decides the block solve with, so every user gets the same bits. */
+typedef struct {
+    double k11, k12, k22;
+} solver_block_k_t;
+
+static inline solver_block_k_t solver_contact_k(const solver_contact_t *c,
+                                                const solver_velocity_t *a,
+                                                const solver_velocity_t *b) {
+    double ma = a->inverse_mass, mb = b->inverse_mass;
+    double ia = a->inverse_inertia, ib = b->inverse_inertia;
+    const solver_point_t *p1 = &c->points[0], *p2 = &c->points[1];
+    return (solver_block_k_t){
+        ma + mb + ia * p1->rn_a * p1->rn_a + ib * p1->rn_b * p1->rn_b,
+        ma + mb + ia * p1->rn_a * p2->rn_a + ib * p1->rn_b * p2->rn_b,
+        ma + mb + ia * p2->rn_a * p2->rn_a + ib * p2->rn_b * p2->rn_b,
+    };
+}
 
 /* The rows of every body, body_count of each. */
 typedef struct {

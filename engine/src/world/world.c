@@ -164,6 +164,7 @@ static void load_chunk(void *context, size_t chunk, size_t begin, size_t end) {
     const body_loop_t *loop = context;
     bool changed = false;
     for (size_t i = begin; i < end; i++) {
+        BODY_PREFETCH(loop->bodies, i + BODY_AHEAD, end, true);
         changed |= load_body(loop->world, loop->bodies[i], &loop->free_motions[i], i, loop->dt);
     }
     loop->world->seams_changed[chunk] = changed;
@@ -184,6 +185,7 @@ static bool load_bodies(world_t *world, body_t **bodies, const integrator_motion
         return changed;
     }
     for (size_t i = 0; i < count; i++) {
+        BODY_PREFETCH(bodies, i + BODY_AHEAD, count, true);
         changed |= load_body(world, bodies[i], &motions[i], i, step->dt);
     }
     return changed;

@@ -125,12 +125,12 @@ void world_restore_memory(world_t *world, const scene_contact_memory_t *memories
                           size_t count) {
     /* A new step: whatever groups the bodies had point to an older one. */
     world->step_number++;
-    memory_reserve((void **)&world->contacts, &world->contact_capacity, count,
-                   sizeof(solver_contact_t));
+    memory_reserve_lines((void **)&world->contacts, &world->contact_capacity, count,
+                         sizeof(solver_contact_t));
     memory_reserve((void **)&world->sources, &world->source_capacity, count,
                    sizeof(contact_source_t));
-    memory_reserve((void **)&world->old_contacts, &world->old_contact_capacity, count,
-                   sizeof(solver_contact_t));
+    memory_reserve_lines((void **)&world->old_contacts, &world->old_contact_capacity, count,
+                         sizeof(solver_contact_t));
     world->contact_count = count;
     world->gap_count = 0;
     for (size_t i = 0; i < count;) {
