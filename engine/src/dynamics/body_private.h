@@ -162,9 +162,10 @@ static inline struct body *body_public(struct body *body) {
  * (predicting, loading, moving) waited on each body's first field. */
 enum { BODY_AHEAD = 8 };
 /* Asks for the lines of bodies[at] (when at < count) that a step reads:
- * its fields through the accumulated impulses and, with_shape, a box's
- * vertex arrays (256 bytes). malloc aligns to 16 bytes, so each may span
- * five lines. A macro: GCC deems a function of prefetches alone const and
+ * its fields through the accumulated impulses and, with_shape, what
+ * placing it in the world reads: a round shape's core, or a box's vertex
+ * arrays (256 bytes). malloc aligns to 16 bytes, so each may span one
+ * line more. A macro: GCC deems a function of prefetches alone const and
  * drops its calls. */
 #define BODY_PREFETCH(bodies, at, count, with_shape)                                 \
     do {                                                                             \
@@ -174,6 +175,8 @@ enum { BODY_AHEAD = 8 };
             __builtin_prefetch(line_ + offsetof(struct body, sleep_time) - 1);       \
             if (with_shape) {                                                        \
                 const char *s_ = (const char *)(bodies)[at]->shape;                  \
+                __builtin_prefetch(line_ + offsetof(struct body, core));             \
+                __builtin_prefetch(line_ + offsetof(struct body, round_radius));     \
                 __builtin_prefetch(line_ + offsetof(struct body, local_vertices));   \
                 for (int k_ = 0; k_ < 4; k_++) __builtin_prefetch(s_ + 64 * k_);     \
                 __builtin_prefetch(s_ + 255);                                        \
