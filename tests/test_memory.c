@@ -60,4 +60,5 @@ static void reserve_lines_of_small_elements(void) {
 }
 
 TEST_SUITE(memory, TEST_CASE(reserve_lines_aligns_and_keeps_contents),
-           TEST_CASE(reserve_lines_with_room_is_a_no_op), TEST_CASE(reserve_lines_of_small_elements));
+           TEST_CASE(reserve_lines_with_room_is_a_no_op),
+           TEST_CASE(reserve_lines_of_small_elements));

@@ -118,9 +118,10 @@ static void make_block(solver_contact_t *c, const solver_velocity_t *a,
                        const solver_velocity_t *b) {
     const solver_point_t *p = c->points, *q = c->points + 1;
     double m = a->inverse_mass + b->inverse_mass;
-    double k11 = m + a->inverse_inertia * p->rn_a * p->rn_a + b->inverse_inertia * p->rn_b * p->rn_b;
-    double k22 = m + a->inverse_inertia * q->rn_a * q->rn_a + b->inverse_inertia * q->rn_b * q->rn_b;
-    double k12 = m + a->inverse_inertia * p->rn_a * q->rn_a + b->inverse_inertia * p->rn_b * q->rn_b;
+    double ia = a->inverse_inertia, ib = b->inverse_inertia;
+    double k11 = m + ia * p->rn_a * p->rn_a + ib * p->rn_b * p->rn_b;
+    double k22 = m + ia * q->rn_a * q->rn_a + ib * q->rn_b * q->rn_b;
+    double k12 = m + ia * p->rn_a * q->rn_a + ib * p->rn_b * q->rn_b;
     /* The solver recomputes K from the rows (solver_contact_k): the same. */
     solver_block_k_t k = solver_contact_k(c, a, b);
     CHECK(k.k11 == k11 && k.k12 == k12 && k.k22 == k22);

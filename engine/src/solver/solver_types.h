@@ -123,7 +123,7 @@ typedef struct {
 
 /* Five cache lines: the contact buffers are aligned to a line
  * (memory_reserve_lines), so each contact is read and written in five,
- * where at 344 bytes it spanned six or seven. */
+ * where at 344 bytes, with K kept, it spanned six or seven. */
 _Static_assert(sizeof(solver_contact_t) == 5 * 64, "solver_contact_t fills five cache lines");
 
 /* A two-point contact's normal effective-mass matrix K, from its points'
@@ -227,9 +227,9 @@ extern const double SOLVER_MAX_TURN;
 
 /* The position rate of a contact between bodies with these rows. Derived
  * where it is used rather than kept in solver_contact_t beside the slop:
- * that made the contact 352 bytes instead of 344, and pile(1000) ran 0.7%
- * more instructions than this (measured): address arithmetic in every loop
- * over the contacts, and prepare setting the field. */
+ * the field would take the contact past its five lines, and kept it cost
+ * pile(1000) 0.7% more instructions than this (measured): address
+ * arithmetic in every loop over the contacts, and prepare setting it. */
 static inline double solver_position_rate(const solver_velocity_t *a, const solver_velocity_t *b) {
     bool against_static = solver_row_is_static(a) || solver_row_is_static(b);
     return against_static ? SOLVER_STATIC_POSITION_RATE : SOLVER_POSITION_RATE;

@@ -189,7 +189,8 @@ void solver_wide_pack(solver_wide_t *wide, const solver_contact_t *contacts,
         uint32_t first = wide->group_start[g] + (uint32_t)(i - wide->group_batch[g]) * LANES;
         uint32_t left = wide->group_start[g + 1] - first;
         int n = (int)(left < LANES ? left : LANES);
-        PREFETCH_CONTACTS(contacts, rows, wide->order, first + PACK_AHEAD, wide->group_start[GROUPS]);
+        PREFETCH_CONTACTS(contacts, rows, wide->order, first + PACK_AHEAD,
+                          wide->group_start[GROUPS]);
         load_batch(wide, at, wide->order + first, n, (batch_kind_t)(g % BATCH_KINDS), contacts,
                    rows);
     }

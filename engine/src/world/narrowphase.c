@@ -205,7 +205,7 @@ enum { PAIR_AHEAD = 4 };
 
 /* How many contacts ahead of the last one matched the narrowphase asks for
  * last step's records: the pairs come in last step's order, mostly, so the
- * old contacts they match are read nearly in sequence, but 344 bytes apart,
+ * old contacts they match are read nearly in sequence, but a record apart,
  * and waiting on each was a third of the time of a settled pile's
  * narrowphase (pile(4000)). The lines asked for are those a match reads:
  * each point's id and impulses, and the source's key, pose and features.
@@ -241,8 +241,9 @@ enum { MADE_AHEAD = 4 };
             __builtin_prefetch(s_, 1);                                                       \
             __builtin_prefetch(s_ + 64, 1);                                                  \
             __builtin_prefetch(s_ + sizeof(contact_source_t) - 1, 1);                        \
-            __builtin_prefetch(&(world)->anchors[at], 1);                                    \
-            __builtin_prefetch((const char *)&(world)->anchors[at] + sizeof(solver_anchor_t) - 1, 1); \
+            const char *a_ = (const char *)&(world)->anchors[at];                            \
+            __builtin_prefetch(a_, 1);                                                       \
+            __builtin_prefetch(a_ + sizeof(solver_anchor_t) - 1, 1);                         \
         }                                                                                    \
     } while (0)
 
