@@ -8,6 +8,7 @@
 #include <stddef.h>
 #include <stdint.h>
 #include "jostle/body.h"
+#include "base/prefetch.h"
 
 struct body {
     /* The fields every step reads for each pair and each body (the
@@ -161,27 +162,24 @@ static inline struct body *body_public(struct body *body) {
  * ones: each body is a block of its own, and the loops that walk them all
  * (predicting, loading, moving) waited on each body's first field. */
 enum { BODY_AHEAD = 8 };
+/* The round core and its radius, which lie together. */
+#define BODY_CORE_BYTES                                                                   \
+    (offsetof(struct body, round_radius) + sizeof(double) - offsetof(struct body, core))
 /* Asks for the lines of bodies[at] (when at < count) that a step reads:
  * its fields through the accumulated impulses and, with_shape, what
  * placing it in the world reads: a round shape's core, or a box's vertex
- * arrays (256 bytes). malloc aligns to 16 bytes, so each may span one
- * line more. A macro: GCC deems a function of prefetches alone const and
- * drops its calls. */
-#define BODY_PREFETCH(bodies, at, count, with_shape)                                 \
-    do {                                                                             \
-        if ((at) < (count)) {                                                        \
-            const char *line_ = (const char *)(bodies)[at];                          \
-            for (int k_ = 0; k_ < 4; k_++) __builtin_prefetch(line_ + 64 * k_);      \
-            __builtin_prefetch(line_ + offsetof(struct body, sleep_time) - 1);       \
-            if (with_shape) {                                                        \
-                const char *s_ = (const char *)(bodies)[at]->shape;                  \
-                __builtin_prefetch(line_ + offsetof(struct body, core));             \
-                __builtin_prefetch(line_ + offsetof(struct body, round_radius));     \
-                __builtin_prefetch(line_ + offsetof(struct body, local_vertices));   \
-                for (int k_ = 0; k_ < 4; k_++) __builtin_prefetch(s_ + 64 * k_);     \
-                __builtin_prefetch(s_ + 255);                                        \
-            }                                                                        \
-        }                                                                            \
+ * arrays (256 bytes) and the pointer to its local ones. */
+#define BODY_PREFETCH(bodies, at, count, with_shape)                                      \
+    do {                                                                                  \
+        if ((at) < (count)) {                                                             \
+            const struct body *body_ = (bodies)[at];                                      \
+            PREFETCH_SPAN(body_, offsetof(struct body, sleep_time), 0);                   \
+            if (with_shape) {                                                             \
+                PREFETCH_SPAN(body_->core, BODY_CORE_BYTES, 0);                           \
+                PREFETCH_SPAN(&body_->local_vertices, 2 * sizeof(vector_t *), 0);         \
+                PREFETCH_SPAN(body_->shape, 16 * sizeof(vector_t), 0);                    \
+            }                                                                             \
+        }                                                                                 \
     } while (0)
 
 /* Allocates a body (zeroed) with room for a polygon of count vertices in

@@ -6,6 +6,7 @@
 #include "solver/solver_wide.h"
 #include <string.h>
 #include "base/memory.h"
+#include "base/prefetch.h"
 #include "solver/solver_wide_private.h"
 
 /* Where a batch is packed: its index, its first point's and its block's. */
@@ -75,10 +76,7 @@ enum { PACK_AHEAD = 4 * LANES };
     do {                                                                                    \
         size_t end_ = (from) + LANES < (total) ? (from) + LANES : (total);                  \
         for (size_t k_ = (from); k_ < end_; k_++) {                                         \
-            const char *line_ = (const char *)&(contacts)[(order)[k_]];                     \
-            for (size_t at_ = 0; at_ < sizeof(solver_contact_t); at_ += 64) {               \
-                __builtin_prefetch(line_ + at_);                                            \
-            }                                                                               \
+            PREFETCH_SPAN(&(contacts)[(order)[k_]], sizeof(solver_contact_t), 0);          \
         }                                                                                   \
         size_t near_ = (from) - PACK_AHEAD / 2;                                             \
         end_ = near_ + LANES < (total) ? near_ + LANES : (total);                           \

@@ -5,6 +5,7 @@
 #include "world/narrowphase.h"
 #include <math.h>
 #include "base/memory.h"
+#include "base/prefetch.h"
 #include "base/scalar.h"
 #include "base/workers.h"
 
@@ -183,24 +184,25 @@ WORLD_INLINE void collide_pair(const world_t *world, body_t *a, body_t *b, const
 }
 
 /* How many pairs ahead the narrowphase asks for body b's lines that a
- * manifold reads: its first two, the core of a round shape and the first
- * line of a polygon's world vertices. b is anywhere in the scene, and
+ * manifold reads first: its first two, the core of a round shape and the
+ * first line of a polygon's world vertices. b is anywhere in the scene, and
  * waiting on it was a third of the time of evaluating a manifold
- * (pile(4000)), and half of colliding two circles (circlepile(4000)). A
- * macro: GCC deems a function of prefetches alone const and drops its
- * calls. */
+ * (pile(4000)), and half of colliding two circles (circlepile(4000)).
+ * Single lines, not PREFETCH_SPAN: every line of those fields, and every
+ * line of last step's source below, made the narrowphase slower (a fifth
+ * more perf samples in circlepile(4000)). A macro: GCC deems a function of
+ * prefetches alone const and drops its calls. */
 enum { PAIR_AHEAD = 4 };
-#define PREFETCH_BODY_B(bodies, pairs, at, count)                                       \
-    do {                                                                                \
-        if ((at) < (count)) {                                                           \
-            const body_t *b_ = (bodies)[(pairs)[at].b];                                 \
-            const char *line_ = (const char *)b_;                                       \
-            __builtin_prefetch(line_);                                                  \
-            __builtin_prefetch(line_ + 64);                                             \
-            __builtin_prefetch(line_ + offsetof(body_t, core));                         \
-            __builtin_prefetch(line_ + offsetof(body_t, round_radius));                 \
-            __builtin_prefetch(b_->shape);                                              \
-        }                                                                               \
+#define PREFETCH_BODY_B(bodies, pairs, at, count)                                      \
+    do {                                                                               \
+        if ((at) < (count)) {                                                          \
+            const body_t *b_ = (bodies)[(pairs)[at].b];                                \
+            __builtin_prefetch(b_);                                                    \
+            __builtin_prefetch((const char *)b_ + PREFETCH_LINE);                      \
+            __builtin_prefetch(b_->core);                                              \
+            __builtin_prefetch(&b_->round_radius);                                     \
+            __builtin_prefetch(b_->shape);                                             \
+        }                                                                              \
     } while (0)
 
 /* How many contacts ahead of the last one matched the narrowphase asks for
@@ -230,21 +232,13 @@ enum { OLD_AHEAD = 8 };
  * steps ago and have left the cache in a large pile, and the stores then
  * waited to own each line (a sixth of circlepile(4000)'s narrowphase). */
 enum { MADE_AHEAD = 4 };
-#define PREFETCH_MADE(world, at)                                                             \
-    do {                                                                                     \
-        if ((at) < (world)->contact_capacity) {                                              \
-            const char *c_ = (const char *)&(world)->contacts[at];                           \
-            for (size_t k_ = 0; k_ < sizeof(solver_contact_t); k_ += 64) {                   \
-                __builtin_prefetch(c_ + k_, 1);                                              \
-            }                                                                                \
-            const char *s_ = (const char *)&(world)->sources[at];                            \
-            __builtin_prefetch(s_, 1);                                                       \
-            __builtin_prefetch(s_ + 64, 1);                                                  \
-            __builtin_prefetch(s_ + sizeof(contact_source_t) - 1, 1);                        \
-            const char *a_ = (const char *)&(world)->anchors[at];                            \
-            __builtin_prefetch(a_, 1);                                                       \
-            __builtin_prefetch(a_ + sizeof(solver_anchor_t) - 1, 1);                         \
-        }                                                                                    \
+#define PREFETCH_MADE(world, at)                                                      \
+    do {                                                                              \
+        if ((at) < (world)->contact_capacity) {                                       \
+            PREFETCH_SPAN(&(world)->contacts[at], sizeof(solver_contact_t), 1);        \
+            PREFETCH_SPAN(&(world)->sources[at], sizeof(contact_source_t), 1);         \
+            PREFETCH_SPAN(&(world)->anchors[at], sizeof(solver_anchor_t), 1);          \
+        }                                                                             \
     } while (0)
 
 /* The contacts of the pairs whose body a is pairs[0].a; returns how many
