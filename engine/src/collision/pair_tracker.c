@@ -205,42 +205,56 @@ static size_t insert_ranked(pair_tracker_t *tracker, size_t group, size_t n,
     return n + 1;
 }
 
-/* Marks in tracker->overlaps which kept pairs' boxes overlap now. */
-static void mark_overlaps(pair_tracker_t *tracker, const broadphase_proxy_t *proxies) {
+/* Room for a bit per kept pair in tracker->overlaps, all clear. */
+static void clear_overlaps(pair_tracker_t *tracker) {
     size_t words = (tracker->kept_count + 63) / 64;
     memory_reserve((void **)&tracker->overlaps, &tracker->overlap_capacity, words,
                    sizeof(uint64_t));
-    for (size_t w = 0; w < words; w++) tracker->overlaps[w] = 0;
-    for (size_t i = 0; i < tracker->kept_count; i++) {
-        broadphase_pair_t pair = tracker->kept[i];
-        bool overlap = aabb_overlaps(proxies[pair.a].box, proxies[pair.b].box);
-        tracker->overlaps[i / 64] |= (uint64_t)overlap << (i % 64);
-    }
+    memset(tracker->overlaps, 0, words * sizeof(uint64_t));
 }
 
-/* Whether the pairs of the last call stand as they are: the same kept
- * pairs overlap, and every proxy's cells and the bucket mask, all a rank
- * reads, are unchanged. Marks the overlaps either way. */
-static bool same_as_last(pair_tracker_t *tracker, grid_place_t place,
-                         const broadphase_proxy_t *proxies, size_t count) {
-    mark_overlaps(tracker, proxies);
-    if (!tracker->ranked || tracker->last_count != count || tracker->last_mask != place.mask) {
-        return false;
-    }
-    size_t words = (tracker->kept_count + 63) / 64;
-    return memcmp(tracker->overlaps, tracker->last_overlaps, words * sizeof(uint64_t)) == 0 &&
+static bool kept_overlaps(const pair_tracker_t *tracker, const broadphase_proxy_t *proxies,
+                          size_t i) {
+    broadphase_pair_t pair = tracker->kept[i];
+    return aabb_overlaps(proxies[pair.a].box, proxies[pair.b].box);
+}
+
+/* Whether every proxy's cells and the bucket mask, all a rank reads, are
+ * those of the last call. */
+static bool same_cells(const pair_tracker_t *tracker, grid_place_t place, size_t count) {
+    return tracker->ranked && tracker->last_count == count && tracker->last_mask == place.mask &&
            memcmp(place.ranges, tracker->last_ranges, count * sizeof(cell_range_t)) == 0;
 }
 
-/* The overlapping kept pairs, each at its rank among its first body's. */
-static void rank_kept(pair_tracker_t *tracker, grid_place_t place) {
+/* Whether the same kept pairs overlap as at the last call, marking which
+ * do in tracker->overlaps. */
+static bool same_overlaps(pair_tracker_t *tracker, const broadphase_proxy_t *proxies) {
+    clear_overlaps(tracker);
+    for (size_t i = 0; i < tracker->kept_count; i++) {
+        tracker->overlaps[i / 64] |= (uint64_t)kept_overlaps(tracker, proxies, i) << (i % 64);
+    }
+    size_t words = (tracker->kept_count + 63) / 64;
+    return memcmp(tracker->overlaps, tracker->last_overlaps, words * sizeof(uint64_t)) == 0;
+}
+
+/* The overlapping kept pairs, each at its rank among its first body's;
+ * `marked`: tracker->overlaps already says which overlap, else they are
+ * found and marked here. */
+static void rank_kept(pair_tracker_t *tracker, grid_place_t place,
+                      const broadphase_proxy_t *proxies, bool marked) {
     memory_reserve((void **)&tracker->pairs, &tracker->pair_capacity, tracker->kept_count,
                    sizeof(broadphase_pair_t));
     memory_reserve((void **)&tracker->ranks, &tracker->rank_capacity, tracker->kept_count,
                    sizeof(uint64_t));
+    if (!marked) clear_overlaps(tracker);
     size_t n = 0, group = 0;
     for (size_t i = 0; i < tracker->kept_count; i++) {
-        if (!(tracker->overlaps[i / 64] >> (i % 64) & 1u)) continue;
+        if (marked) {
+            if (!(tracker->overlaps[i / 64] >> (i % 64) & 1u)) continue;
+        } else {
+            if (!kept_overlaps(tracker, proxies, i)) continue;
+            tracker->overlaps[i / 64] |= (uint64_t)1 << (i % 64);
+        }
         broadphase_pair_t pair = tracker->kept[i];
         if (n > 0 && tracker->pairs[n - 1].a != pair.a) group = n;
         n = insert_ranked(tracker, group, n, pair, pair_rank(place, pair));
@@ -280,7 +294,11 @@ size_t pair_tracker_find(pair_tracker_t *tracker, const broadphase_proxy_t *prox
         tracker->since_search++;
     }
     grid_place_t place = grid_place(tracker, proxies, count);
-    if (!same_as_last(tracker, place, proxies, count)) rank_kept(tracker, place);
+    if (!same_cells(tracker, place, count)) {
+        rank_kept(tracker, place, proxies, false);
+    } else if (!same_overlaps(tracker, proxies)) {
+        rank_kept(tracker, place, proxies, true);
+    }
     remember(tracker, place, count);
     *tests += tracker->kept_count;
     *pairs = tracker->pairs;
