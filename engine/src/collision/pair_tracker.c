@@ -208,6 +208,7 @@ static size_t insert_ranked(pair_tracker_t *tracker, size_t group, size_t n,
 /* Room for a bit per kept pair in tracker->overlaps, all clear. */
 static void clear_overlaps(pair_tracker_t *tracker) {
     size_t words = (tracker->kept_count + 63) / 64;
+    if (words == 0) return; /* memset of a null buffer is undefined even for 0 bytes */
     memory_reserve((void **)&tracker->overlaps, &tracker->overlap_capacity, words,
                    sizeof(uint64_t));
     memset(tracker->overlaps, 0, words * sizeof(uint64_t));
@@ -223,7 +224,8 @@ static bool kept_overlaps(const pair_tracker_t *tracker, const broadphase_proxy_
  * those of the last call. */
 static bool same_cells(const pair_tracker_t *tracker, grid_place_t place, size_t count) {
     return tracker->ranked && tracker->last_count == count && tracker->last_mask == place.mask &&
-           memcmp(place.ranges, tracker->last_ranges, count * sizeof(cell_range_t)) == 0;
+           (count == 0 ||
+            memcmp(place.ranges, tracker->last_ranges, count * sizeof(cell_range_t)) == 0);
 }
 
 /* Whether the same kept pairs overlap as at the last call, marking which
@@ -234,7 +236,8 @@ static bool same_overlaps(pair_tracker_t *tracker, const broadphase_proxy_t *pro
         tracker->overlaps[i / 64] |= (uint64_t)kept_overlaps(tracker, proxies, i) << (i % 64);
     }
     size_t words = (tracker->kept_count + 63) / 64;
-    return memcmp(tracker->overlaps, tracker->last_overlaps, words * sizeof(uint64_t)) == 0;
+    return words == 0 ||
+           memcmp(tracker->overlaps, tracker->last_overlaps, words * sizeof(uint64_t)) == 0;
 }
 
 /* The overlapping kept pairs, each at its rank among its first body's;
