@@ -151,6 +151,32 @@ static void moving_boxes_are_searched_as_they_are(void) {
     pair_tracker_free(tracker);
 }
 
+/* A resting scene is handed last call's pairs again while no box changes
+ * cells and the same pairs overlap; a box that starts or stops touching
+ * another within the cells it had still changes the pairs. Two 1 m boxes
+ * 1 cm apart in a 2 m grid, the second nudged 2 cm across and back. */
+static void touching_within_the_same_cells(void) {
+    const broadphase_pair_t *pairs;
+    size_t tests = 0;
+    proxies[0] = (broadphase_proxy_t){{{0.19, 0.2}, {1.19, 1.2}}, false, 1, UINT32_MAX, 0};
+    proxies[1] = (broadphase_proxy_t){{{1.2, 0.2}, {2.2, 1.2}}, false, 1, UINT32_MAX, 0};
+    proxies[2] = (broadphase_proxy_t){{{5.2, 0.2}, {6.2, 1.2}}, false, 1, UINT32_MAX, 0};
+    pair_tracker_t *tracker = pair_tracker_init();
+    CHECK(pair_tracker_find(tracker, proxies, 3, &pairs, &tests) == 0);
+    CHECK(pair_tracker_find(tracker, proxies, 3, &pairs, &tests) == 0);
+    double nudges[] = {-0.02, 0.0, 0.02, 0.0};
+    for (int k = 0; k < 4; k++) {
+        proxies[1].box.min.x += nudges[k];
+        proxies[1].box.max.x += nudges[k];
+        size_t n = pair_tracker_find(tracker, proxies, 3, &pairs, &tests);
+        bool touching = proxies[1].box.min.x <= proxies[0].box.max.x;
+        CHECK(n == (touching ? 1u : 0u));
+        CHECK(!touching || (pairs[0].a == 0 && pairs[0].b == 1));
+        check_same_as_grid(tracker, 3);
+    }
+    pair_tracker_free(tracker);
+}
+
 /* A box that is NaN or infinite: NaN never pairs and always searches, an
  * infinite box pairs with what it overlaps, as the grid's own rule. */
 static void nan_and_infinite_boxes(void) {
@@ -166,4 +192,5 @@ static void nan_and_infinite_boxes(void) {
 
 TEST_SUITE(pair_tracker, TEST_CASE(pairs_are_the_overlapping_ones_call_after_call),
            TEST_CASE(resting_boxes_skip_the_search),
-           TEST_CASE(moving_boxes_are_searched_as_they_are), TEST_CASE(nan_and_infinite_boxes));
+           TEST_CASE(moving_boxes_are_searched_as_they_are),
+           TEST_CASE(touching_within_the_same_cells), TEST_CASE(nan_and_infinite_boxes));

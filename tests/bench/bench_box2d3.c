@@ -11,7 +11,8 @@
  * (b2World_Step's usual count), its soft contacts (contact hertz 30, damping
  * ratio 10, push-out speed 3 m/s), restitution threshold 1 m/s, continuous
  * collision against static bodies, maximum linear speed 400 m/s, single
- * precision, one thread (workerCount 1). Changed: sleeping off
+ * precision, one thread (workerCount 1; --workers N gives N to v3's own
+ * scheduler, for the two-worker comparison). Changed: sleeping off
  * (worldDef.enableSleep = false) in the variant box2d3-BUILD, so that every
  * body is stepped every step, as in the other programs; box2d3-BUILD-sleeping
  * (pile only) keeps its default, sleeping on. --iterations is ignored: v3's
@@ -62,6 +63,9 @@ typedef struct {
     double G;
 } b3_pair_t;
 
+/* worldDef.workerCount: above 1, v3 runs its own scheduler's threads. */
+static int b3_workers = 1;
+
 typedef struct {
     b2WorldId world;
     b2BodyId *bodies;
@@ -93,7 +97,7 @@ static void b3_describe(FILE *out) {
             b2IsDoublePrecision() ? "double" : "single", B3_SUBSTEPS, (double)def.contactHertz,
             (double)def.contactDampingRatio, (double)def.contactSpeed,
             (double)def.restitutionThreshold, def.enableContinuous ? "on" : "off",
-            (double)def.maximumLinearSpeed, def.workerCount < 1 ? 1 : def.workerCount,
+            (double)def.maximumLinearSpeed, b3_workers,
             (double)body.sleepThreshold, (double)joint.base.constraintHertz,
             (double)joint.base.constraintDampingRatio, def.enableSleep ? "on" : "off",
             BENCH_BOX2D3_BUILD);
@@ -108,6 +112,7 @@ static void *b3_world_new_common(double gy, int capacity, int sleeping) {
     b2WorldDef def = b2DefaultWorldDef();
     def.gravity = (b2Vec2){0.0f, (float)gy};
     def.enableSleep = sleeping != 0;
+    def.workerCount = b3_workers;
     w->world = b2CreateWorld(&def);
     w->capacity = capacity > 0 ? capacity : 4;
     w->bodies = (b2BodyId *)malloc(sizeof(b2BodyId) * (size_t)w->capacity);
@@ -458,5 +463,21 @@ static const bench_ops_t box2d3_sleeping_ops =
 
 int main(int argc, char **argv) {
     const bench_ops_t *ops[2] = {&box2d3_ops, &box2d3_sleeping_ops};
-    return bench_main(argc, argv, ops, 2);
+    /* --workers is this program's own: taken out before bench_main. */
+    int kept = 1;
+    for (int i = 1; i < argc; i++) {
+        if (strcmp(argv[i], "--workers") == 0 && i + 1 < argc) {
+            char *end;
+            long workers = strtol(argv[++i], &end, 10);
+            if (*end != '\0' || workers < 1 || workers > 64) {
+                fprintf(stderr, "%s: --workers takes 1 to 64, not %s\n", argv[0], argv[i]);
+                return 2;
+            }
+            b3_workers = (int)workers;
+            printf("# box2d3-%s: %d workers\n", BENCH_BOX2D3_BUILD, b3_workers);
+        } else {
+            argv[kept++] = argv[i];
+        }
+    }
+    return bench_main(kept, argv, ops, 2);
 }

@@ -254,6 +254,10 @@ for round in 1 2 3; do
     for n in 1 2; do
         "$ours" --scene pile --size "$workers_size" --runs 1 --wall --workers "$n" --variant ours |
             sed -n "s/^engine=/workers=$n engine=/p"
+        if [ -n "$v3" ]; then
+            "$v3" --scene pile --size "$workers_size" --runs 1 --wall --workers "$n" \
+                --variant "$v3name" | sed -n "s/^engine=/workers=$n engine=/p"
+        fi
     done
 done >"$work/workers"
 if [ -n "$scale_sizes" ]; then
@@ -392,30 +396,41 @@ EOF
 
 ## Two workers: pile($workers_size)
 
-This engine with scene_set_workers(scene, 2) against 1, three alternated
+Each engine with 2 workers against 1 (this engine's scene_set_workers,
+Box2D v3's worldDef.workerCount and its own scheduler), three alternated
 runs each, not pinned (the second worker needs the second core). Wall time
 is what a second worker can save; CPU time over wall time shows how much of
-the run the second core was free (2.0 at best). Box2D v3's program runs one
-thread only (its task system is not wired into the driver), so it has no
-figure here.
+the run the second core was busy (2.0 at most: this engine's waiting
+threads spin a while before they sleep, v3's wait on a semaphore between
+its tasks and spin only inside its solver). The load average at the start
+is in the header: a second core busy with anything else leaves nothing to
+gain.
 
-| workers | CPU ms per step (median) | wall ms per step (median) | CPU / wall |
-|---|---|---|---|
-$(awk '{ n = ""; c = ""; w = ""
+| engine | workers | CPU ms per step (median) | wall ms per step (median) | CPU / wall |
+|---|---|---|---|---|
+$(awk '{ e = ""; n = ""; c = ""; w = ""
         for (i = 1; i <= NF; i++) { split($i, kv, "=")
-            if (kv[1] == "workers") n = kv[2]; if (kv[1] == "median_ms") c = kv[2]
-            if (kv[1] == "wall_median_ms") w = kv[2] }
-        k = ++count[n]; cpu[n, k] = c; wall[n, k] = w }
-     function median(arr, n, k,   i, j, t, v) {
-        for (i = 1; i <= k; i++) v[i] = arr[n, i]
+            if (kv[1] == "engine") e = kv[2]; if (kv[1] == "workers") n = kv[2]
+            if (kv[1] == "median_ms") c = kv[2]; if (kv[1] == "wall_median_ms") w = kv[2] }
+        if (!(e in seen)) { seen[e] = 1; order[++engines] = e }
+        k = ++count[e, n]; cpu[e, n, k] = c; wall[e, n, k] = w }
+     function median(arr, e, n, k,   i, j, t, v) {
+        for (i = 1; i <= k; i++) v[i] = arr[e, n, i]
         for (i = 2; i <= k; i++) for (j = i; j > 1 && v[j - 1] + 0 > v[j] + 0; j--) {
             t = v[j]; v[j] = v[j - 1]; v[j - 1] = t }
         return v[int((k + 1) / 2)] }
-     END { for (n = 1; n <= 2; n++) if (count[n] > 0) {
-            c = median(cpu, n, count[n]); w = median(wall, n, count[n])
-            printf "| %d | %s | %s | %.2f |\n", n, c, w, c / w
-            if (n == 1) w1 = w; else w2 = w }
-        if (w1 > 0 && w2 > 0) printf "\nTwo workers over one, wall time: %.2f.\n", w2 / w1 }' "$work/workers")
+     END { for (x = 1; x <= engines; x++) { e = order[x]
+            for (n = 1; n <= 2; n++) if (count[e, n] > 0) {
+                c = median(cpu, e, n, count[e, n]); w = median(wall, e, n, count[e, n])
+                printf "| %s | %d | %s | %s | %.2f |\n", e, n, c, w, c / w
+                two[e, n] = w } }
+        printf "\n"
+        for (x = 1; x <= engines; x++) { e = order[x]
+            if (two[e, 1] > 0 && two[e, 2] > 0)
+                printf "%s: two workers over one, wall time %.2f.\n", e, two[e, 2] / two[e, 1] }
+        if (engines > 1 && two[order[2], 2] > 0)
+            printf "Ours over %s, both with two workers, wall time: %.2f.\n", order[2],
+                two[order[1], 2] / two[order[2], 2] }' "$work/workers")
 EOF
     if [ -s "$work/scale" ]; then
         cat <<EOF

@@ -13,18 +13,20 @@
 
 enum { PREFETCH_LINE = 64 };
 
-/* Asks for every cache line of the `bytes` bytes at `address` (bytes > 0),
- * each once, for reading (for_write 0) or for writing (1, a compile-time
- * constant). A macro: GCC deems a function of prefetches alone const and
- * drops its calls. */
+/* Asks for every cache line of the `bytes` bytes at `address` (bytes > 0,
+ * a compile-time constant), for reading (for_write 0) or for writing (1,
+ * also a constant). Addresses a line apart, then the last byte: each line
+ * of the span is asked for, a line at most twice, in straight-line code
+ * (a loop over aligned lines cost pyramid(40) 6% more instructions). A
+ * macro: GCC deems a function of prefetches alone const and drops its
+ * calls. */
 #define PREFETCH_SPAN(address, bytes, for_write)                                     \
     do {                                                                             \
         const char *span_start_ = (const char *)(address);                           \
-        const char *span_end_ = span_start_ + (bytes);                               \
-        const char *span_line_ = span_start_ - (uintptr_t)span_start_ % PREFETCH_LINE; \
-        for (; span_line_ < span_end_; span_line_ += PREFETCH_LINE) {                \
-            __builtin_prefetch(span_line_, for_write);                               \
+        for (size_t span_at_ = 0; span_at_ < (bytes); span_at_ += PREFETCH_LINE) {    \
+            __builtin_prefetch(span_start_ + span_at_, for_write);                   \
         }                                                                            \
+        __builtin_prefetch(span_start_ + (bytes) - 1, for_write);                    \
     } while (0)
 
 #endif // #ifndef PREFETCH_H

@@ -1,4 +1,5 @@
 #include "collision/pair_tracker.h"
+#include <string.h>
 #include "base/memory.h"
 #include "base/scalar.h"
 #include "collision/broadphase_private.h"
@@ -39,6 +40,17 @@ struct pair_tracker {
     size_t pair_capacity, rank_capacity;
     cell_range_t *ranges;
     size_t range_capacity;
+    /* What the last kept call ranked from, so that its pairs are handed
+     * out again while nothing a rank reads has changed (a resting scene):
+     * each proxy's cells, the bucket mask, and which kept pairs overlapped,
+     * a bit each. ranked: pairs holds that call's pair_count pairs. */
+    cell_range_t *last_ranges;
+    size_t last_range_capacity;
+    uint64_t *overlaps, *last_overlaps;
+    size_t overlap_capacity, last_overlap_capacity;
+    uint32_t last_mask;
+    size_t last_count, pair_count;
+    bool ranked;
 };
 
 pair_tracker_t *pair_tracker_init(void) {
@@ -54,6 +66,9 @@ void pair_tracker_free(pair_tracker_t *tracker) {
     memory_free(tracker->pairs);
     memory_free(tracker->ranks);
     memory_free(tracker->ranges);
+    memory_free(tracker->last_ranges);
+    memory_free(tracker->overlaps);
+    memory_free(tracker->last_overlaps);
     memory_free(tracker);
 }
 
@@ -125,6 +140,7 @@ static void search(pair_tracker_t *tracker, const broadphase_proxy_t *proxies, s
     tracker->count = count;
     tracker->searched_grown = grow;
     tracker->since_search = 0;
+    tracker->ranked = false;
 }
 
 /* Where the grid would find each pair if it searched the boxes
@@ -189,6 +205,85 @@ static size_t insert_ranked(pair_tracker_t *tracker, size_t group, size_t n,
     return n + 1;
 }
 
+/* Room for a bit per kept pair in tracker->overlaps, all clear. */
+static void clear_overlaps(pair_tracker_t *tracker) {
+    size_t words = (tracker->kept_count + 63) / 64;
+    if (words == 0) return; /* memset of a null buffer is undefined even for 0 bytes */
+    memory_reserve((void **)&tracker->overlaps, &tracker->overlap_capacity, words,
+                   sizeof(uint64_t));
+    memset(tracker->overlaps, 0, words * sizeof(uint64_t));
+}
+
+static bool kept_overlaps(const pair_tracker_t *tracker, const broadphase_proxy_t *proxies,
+                          size_t i) {
+    broadphase_pair_t pair = tracker->kept[i];
+    return aabb_overlaps(proxies[pair.a].box, proxies[pair.b].box);
+}
+
+/* Whether every proxy's cells and the bucket mask, all a rank reads, are
+ * those of the last call. */
+static bool same_cells(const pair_tracker_t *tracker, grid_place_t place, size_t count) {
+    return tracker->ranked && tracker->last_count == count && tracker->last_mask == place.mask &&
+           (count == 0 ||
+            memcmp(place.ranges, tracker->last_ranges, count * sizeof(cell_range_t)) == 0);
+}
+
+/* Whether the same kept pairs overlap as at the last call, marking which
+ * do in tracker->overlaps. */
+static bool same_overlaps(pair_tracker_t *tracker, const broadphase_proxy_t *proxies) {
+    clear_overlaps(tracker);
+    for (size_t i = 0; i < tracker->kept_count; i++) {
+        tracker->overlaps[i / 64] |= (uint64_t)kept_overlaps(tracker, proxies, i) << (i % 64);
+    }
+    size_t words = (tracker->kept_count + 63) / 64;
+    return words == 0 ||
+           memcmp(tracker->overlaps, tracker->last_overlaps, words * sizeof(uint64_t)) == 0;
+}
+
+/* The overlapping kept pairs, each at its rank among its first body's;
+ * `marked`: tracker->overlaps already says which overlap, else they are
+ * found and marked here. */
+static void rank_kept(pair_tracker_t *tracker, grid_place_t place,
+                      const broadphase_proxy_t *proxies, bool marked) {
+    memory_reserve((void **)&tracker->pairs, &tracker->pair_capacity, tracker->kept_count,
+                   sizeof(broadphase_pair_t));
+    memory_reserve((void **)&tracker->ranks, &tracker->rank_capacity, tracker->kept_count,
+                   sizeof(uint64_t));
+    if (!marked) clear_overlaps(tracker);
+    size_t n = 0, group = 0;
+    for (size_t i = 0; i < tracker->kept_count; i++) {
+        if (marked) {
+            if (!(tracker->overlaps[i / 64] >> (i % 64) & 1u)) continue;
+        } else {
+            if (!kept_overlaps(tracker, proxies, i)) continue;
+            tracker->overlaps[i / 64] |= (uint64_t)1 << (i % 64);
+        }
+        broadphase_pair_t pair = tracker->kept[i];
+        if (n > 0 && tracker->pairs[n - 1].a != pair.a) group = n;
+        n = insert_ranked(tracker, group, n, pair, pair_rank(place, pair));
+    }
+    tracker->pair_count = n;
+}
+
+/* Keeps what this call ranked from for the next (same_as_last). */
+static void remember(pair_tracker_t *tracker, grid_place_t place, size_t count) {
+    cell_range_t *ranges = tracker->ranges;
+    size_t range_capacity = tracker->range_capacity;
+    tracker->ranges = tracker->last_ranges;
+    tracker->range_capacity = tracker->last_range_capacity;
+    tracker->last_ranges = ranges;
+    tracker->last_range_capacity = range_capacity;
+    uint64_t *overlaps = tracker->overlaps;
+    size_t overlap_capacity = tracker->overlap_capacity;
+    tracker->overlaps = tracker->last_overlaps;
+    tracker->overlap_capacity = tracker->last_overlap_capacity;
+    tracker->last_overlaps = overlaps;
+    tracker->last_overlap_capacity = overlap_capacity;
+    tracker->last_mask = place.mask;
+    tracker->last_count = count;
+    tracker->ranked = true;
+}
+
 size_t pair_tracker_find(pair_tracker_t *tracker, const broadphase_proxy_t *proxies, size_t count,
                          const broadphase_pair_t **pairs, size_t *tests) {
     if (!tracker->searched_grown || !still_inside(tracker, proxies, count)) {
@@ -201,20 +296,14 @@ size_t pair_tracker_find(pair_tracker_t *tracker, const broadphase_proxy_t *prox
     } else {
         tracker->since_search++;
     }
-    memory_reserve((void **)&tracker->pairs, &tracker->pair_capacity, tracker->kept_count,
-                   sizeof(broadphase_pair_t));
-    memory_reserve((void **)&tracker->ranks, &tracker->rank_capacity, tracker->kept_count,
-                   sizeof(uint64_t));
-    size_t n = 0, group = 0;
     grid_place_t place = grid_place(tracker, proxies, count);
-    for (size_t i = 0; i < tracker->kept_count; i++) {
-        broadphase_pair_t pair = tracker->kept[i];
-        aabb_t a = proxies[pair.a].box, b = proxies[pair.b].box;
-        if (!aabb_overlaps(a, b)) continue;
-        if (n > 0 && tracker->pairs[n - 1].a != pair.a) group = n;
-        n = insert_ranked(tracker, group, n, pair, pair_rank(place, pair));
+    if (!same_cells(tracker, place, count)) {
+        rank_kept(tracker, place, proxies, false);
+    } else if (!same_overlaps(tracker, proxies)) {
+        rank_kept(tracker, place, proxies, true);
     }
+    remember(tracker, place, count);
     *tests += tracker->kept_count;
     *pairs = tracker->pairs;
-    return n;
+    return tracker->pair_count;
 }
