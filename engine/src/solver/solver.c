@@ -66,6 +66,25 @@ static void forget_impulses(solver_contact_t *contacts, size_t contact_count) {
     }
 }
 
+/*
+ * Once the step's motion is fixed (solver_advance), the touching points'
+ * targets go back to 0 and one more iteration runs: the end velocities keep
+ * no push that only undid a start drift (set_target), as Box2D v3's relax
+ * iterations keep no position bias. Left in them, a deep pile's bodies
+ * started each step sinking into their supports and the position pass
+ * pushed them out along the normals, without friction: pile(4000) crept
+ * for minutes.
+ */
+static void relax(solver_wide_t *wide, solver_contact_t *contacts, size_t contact_count,
+                  solver_velocity_t *velocities) {
+    solver_unbias_targets(contacts, contact_count);
+    solver_wide_load_targets(wide, contacts);
+    solver_split_iterate(wide, velocities);
+    for (size_t i = 0; i < wide->loose_count; i++) {
+        solver_solve_velocity(&contacts[wide->loose[i]], velocities);
+    }
+}
+
 void solver_solve(solver_wide_t *wide, shock_t *shock, solver_contact_t *contacts,
                   const solver_anchor_t *anchors, size_t contact_count,
                   const solver_bodies_t *bodies, const solver_settings_t *settings,
@@ -108,10 +127,14 @@ void solver_solve(solver_wide_t *wide, shock_t *shock, solver_contact_t *contact
             stage_clock_lap(settings->clock, SCENE_STAGE_SHOCK);
         }
     }
-    solver_split_store(wide, contacts);
-    if (any_impact) solver_mark_impacts(contacts, contact_count, velocities, bodies->states);
+    if (any_impact) {
+        solver_split_store(wide, contacts);
+        solver_mark_impacts(contacts, contact_count, velocities, bodies->states);
+    }
     stage_clock_lap(settings->clock, SCENE_STAGE_SOLVER);
     for_bodies(wide->workers, &split, advance_chunk);
+    relax(wide, contacts, contact_count, velocities);
+    solver_split_store(wide, contacts);
     if (joints->count > 0) joint_solver_settle(joints, bodies);
     for (int iteration = 0; iteration < settings->position_iterations; iteration++) {
         solver_split_correct_positions(wide, bodies->displacements, iteration % 2 == 1);

@@ -82,7 +82,14 @@ static bool set_target(solver_point_t *p, vector_t r_a, vector_t r_b, vector_t n
     p->restitution_tangent_impulse = 0.0;
     p->touched = p->separation <= 0.0;
     if (p->separation <= 0.0) {
-        p->target = 0.0;
+        /* The start velocity's drift may not press the point deeper: an
+         * approach it carries is stopped within the step (solver_relax takes
+         * the target back to 0 once the bodies have moved). A fast approach
+         * is the collision pass's. */
+        double drift_n = vec_dot(normal, drift);
+        bool slow = vn_start >= -bounce_threshold(restitution, sa, sb,
+                                                  settings->restitution_threshold);
+        p->target = w > 0.0 && slow ? max_of(-drift_n / w, 0.0) : 0.0;
         return false;
     }
     double an = vec_dot(normal, vec_subtract(sb->acceleration, sa->acceleration));
@@ -286,4 +293,13 @@ prepared_t solver_prepare_range(solver_contact_t *contacts, const solver_anchor_
         found.elastic |= c->restitution > 0.0;
     }
     return found;
+}
+
+void solver_unbias_targets(solver_contact_t *contacts, size_t count) {
+    for (size_t i = 0; i < count; i++) {
+        solver_contact_t *c = &contacts[i];
+        for (int j = 0; j < c->point_count; j++) {
+            if (c->points[j].separation <= 0.0) c->points[j].target = 0.0;
+        }
+    }
 }

@@ -44,6 +44,13 @@ prepared_t solver_prepare_range(solver_contact_t *contacts, const solver_anchor_
 /* Applies prepared contact c's accumulated impulses to its bodies' rows. */
 void solver_warm_start(const solver_contact_t *c, solver_velocity_t *velocities);
 
+/* Sets the target of every touching point (separation <= 0) of
+ * contacts[0 .. count) to 0, the end velocity that only stops an approach:
+ * preparing also asks such a point to undo the approach its bodies' start
+ * velocities carry into the step's motion, which the step's motion then
+ * has, but which the end velocity must not keep (solver.c's relaxation). */
+void solver_unbias_targets(solver_contact_t *contacts, size_t count);
+
 /* One velocity iteration of prepared contact c. */
 void solver_solve_velocity(solver_contact_t *c, solver_velocity_t *velocities);
 
