@@ -77,11 +77,11 @@ static void forget_impulses(solver_contact_t *contacts, size_t contact_count) {
  */
 static void relax(solver_wide_t *wide, solver_contact_t *contacts, size_t contact_count,
                   solver_velocity_t *velocities) {
-    solver_unbias_targets(contacts, contact_count);
+    if (!solver_unbias_targets(contacts, contact_count)) return;
     solver_wide_load_targets(wide, contacts);
-    solver_split_iterate(wide, velocities);
+    solver_split_relax(wide, velocities);
     for (size_t i = 0; i < wide->loose_count; i++) {
-        solver_solve_velocity(&contacts[wide->loose[i]], velocities);
+        solver_relax_velocity(&contacts[wide->loose[i]], velocities);
     }
 }
 

@@ -328,26 +328,28 @@ void solver_wide_warm_start_range(solver_wide_t *wide, solver_velocity_t *rows, 
     warm_batches(wide, rows, begin, end, wide->points + first_point(wide, g, begin), true);
 }
 
+/* friction false: the normals only (the relaxation, solver.h), a constant
+ * at every call, so each sweep is compiled with or without it. */
 LANE_INLINE void iterate_batches(solver_wide_t *wide, solver_velocity_t *rows, size_t begin,
                                  size_t end, lane_point_t *points, const lane_block_t *blocks,
-                                 bool shared) {
+                                 bool shared, bool friction) {
     for (size_t i = begin; i < end; i++) {
         const solver_batch_t *batch = &wide->batches[i];
         lane_body_t a, b;
         gather_pair(rows, batch, shared, &a, &b);
         switch (batch->kind) {
         case BATCH_BLOCK:
-            solve_friction(batch, points, 2, &a, &b);
+            if (friction) solve_friction(batch, points, 2, &a, &b);
             solve_normal_block(batch, points, blocks++, &a, &b);
             points += 2;
             break;
         case BATCH_PAIR:
-            solve_friction(batch, points, 2, &a, &b);
+            if (friction) solve_friction(batch, points, 2, &a, &b);
             solve_normal_points(batch, points, 2, &a, &b);
             points += 2;
             break;
         default:
-            solve_friction(batch, points, 1, &a, &b);
+            if (friction) solve_friction(batch, points, 1, &a, &b);
             solve_normal_points(batch, points, 1, &a, &b);
             points += 1;
             break;
@@ -358,7 +360,7 @@ LANE_INLINE void iterate_batches(solver_wide_t *wide, solver_velocity_t *rows, s
 
 LANE_CLONES
 void solver_wide_iterate(solver_wide_t *wide, solver_velocity_t *rows) {
-    iterate_batches(wide, rows, 0, wide->batch_count, wide->points, wide->blocks, false);
+    iterate_batches(wide, rows, 0, wide->batch_count, wide->points, wide->blocks, false, true);
 }
 
 LANE_CLONES
@@ -367,7 +369,21 @@ void solver_wide_iterate_range(solver_wide_t *wide, solver_velocity_t *rows, siz
     if (begin == end) return;
     size_t g = group_of(wide, begin);
     iterate_batches(wide, rows, begin, end, wide->points + first_point(wide, g, begin),
-                    wide->blocks + first_block(wide, g, begin), true);
+                    wide->blocks + first_block(wide, g, begin), true, true);
+}
+
+LANE_CLONES
+void solver_wide_relax(solver_wide_t *wide, solver_velocity_t *rows) {
+    iterate_batches(wide, rows, 0, wide->batch_count, wide->points, wide->blocks, false, false);
+}
+
+LANE_CLONES
+void solver_wide_relax_range(solver_wide_t *wide, solver_velocity_t *rows, size_t begin,
+                             size_t end) {
+    if (begin == end) return;
+    size_t g = group_of(wide, begin);
+    iterate_batches(wide, rows, begin, end, wide->points + first_point(wide, g, begin),
+                    wide->blocks + first_block(wide, g, begin), true, false);
 }
 
 /* The bodies' displacements in a batch, lane by lane. */

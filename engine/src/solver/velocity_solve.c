@@ -82,14 +82,16 @@ static bool set_target(solver_point_t *p, vector_t r_a, vector_t r_b, vector_t n
     p->restitution_tangent_impulse = 0.0;
     p->touched = p->separation <= 0.0;
     if (p->separation <= 0.0) {
-        /* The start velocity's drift may not press the point deeper: an
-         * approach it carries is stopped within the step (solver_relax takes
-         * the target back to 0 once the bodies have moved). A fast approach
-         * is the collision pass's. */
-        double drift_n = vec_dot(normal, drift);
+        /* The start velocity's approach may not press the point deeper:
+         * the share of it the step's motion carries, (1 - w) dt vn_start,
+         * is undone within the step, and solver_unbias_targets takes the
+         * target back to 0 once the bodies have moved. A fast approach is
+         * the collision pass's; the forces' own part of the drift is the
+         * free motion's (a spring's pull held a multi-stage scheme to order
+         * 2 when it was undone too). */
         bool slow = vn_start >= -bounce_threshold(restitution, sa, sb,
                                                   settings->restitution_threshold);
-        p->target = w > 0.0 && slow ? max_of(-drift_n / w, 0.0) : 0.0;
+        p->target = w > 0.0 && slow ? max_of(-(1.0 - w) * vn_start / w, 0.0) : 0.0;
         return false;
     }
     double an = vec_dot(normal, vec_subtract(sb->acceleration, sa->acceleration));
@@ -262,6 +264,17 @@ void solver_solve_velocity(solver_contact_t *c, solver_velocity_t *velocities) {
     velocities[c->b] = b;
 }
 
+void solver_relax_velocity(solver_contact_t *c, solver_velocity_t *velocities) {
+    solver_velocity_t a = velocities[c->a], b = velocities[c->b];
+    if (c->block) {
+        solve_normal_block(c, &a, &b);
+    } else {
+        for (int i = 0; i < c->point_count; i++) solve_normal_point(c, &a, &b, &c->points[i]);
+    }
+    velocities[c->a] = a;
+    velocities[c->b] = b;
+}
+
 /* How many contacts ahead preparing asks for body b's rows: the contacts
  * come grouped by body a, so b is anywhere in the rows. And the contact and
  * its anchor, which the narrowphase wrote long enough ago to have left the
@@ -295,11 +308,16 @@ prepared_t solver_prepare_range(solver_contact_t *contacts, const solver_anchor_
     return found;
 }
 
-void solver_unbias_targets(solver_contact_t *contacts, size_t count) {
+bool solver_unbias_targets(solver_contact_t *contacts, size_t count) {
+    bool biased = false;
     for (size_t i = 0; i < count; i++) {
         solver_contact_t *c = &contacts[i];
         for (int j = 0; j < c->point_count; j++) {
-            if (c->points[j].separation <= 0.0) c->points[j].target = 0.0;
+            if (c->points[j].separation <= 0.0 && c->points[j].target != 0.0) {
+                c->points[j].target = 0.0;
+                biased = true;
+            }
         }
     }
+    return biased;
 }

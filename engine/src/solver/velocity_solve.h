@@ -49,9 +49,12 @@ void solver_warm_start(const solver_contact_t *c, solver_velocity_t *velocities)
  * preparing also asks such a point to undo the approach its bodies' start
  * velocities carry into the step's motion, which the step's motion then
  * has, but which the end velocity must not keep (solver.c's relaxation). */
-void solver_unbias_targets(solver_contact_t *contacts, size_t count);
+bool solver_unbias_targets(solver_contact_t *contacts, size_t count);
 
 /* One velocity iteration of prepared contact c. */
 void solver_solve_velocity(solver_contact_t *c, solver_velocity_t *velocities);
+
+/* The same, of c's normals alone (the relaxation, solver.c). */
+void solver_relax_velocity(solver_contact_t *c, solver_velocity_t *velocities);
 
 #endif // #ifndef VELOCITY_SOLVE_H
