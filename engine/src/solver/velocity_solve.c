@@ -91,7 +91,8 @@ static bool set_target(solver_point_t *p, vector_t r_a, vector_t r_b, vector_t n
          * 2 when it was undone too). */
         bool slow = vn_start >= -bounce_threshold(restitution, sa, sb,
                                                   settings->restitution_threshold);
-        p->target = w > 0.0 && slow ? max_of(-(1.0 - w) * vn_start / w, 0.0) : 0.0;
+        double pull = dt * (vec_get_length(sa->acceleration) + vec_get_length(sb->acceleration));
+        p->target = w > 0.0 && slow && vn_start >= -pull ? max_of(-(1.0 - w) * vn_start / w, 0.0) : 0.0;
         return false;
     }
     double an = vec_dot(normal, vec_subtract(sb->acceleration, sa->acceleration));
@@ -199,7 +200,7 @@ static inline void solve_friction(solver_contact_t *c, solver_velocity_t *a,
     for (int i = 0; i < c->point_count; i++) {
         solver_point_t *p = &c->points[i];
         double vt = relative_along(a, b, tangent, p->rt_a, p->rt_b);
-        double limit = c->friction * p->normal_impulse;
+        double limit = c->friction * max_of(p->normal_impulse - p->normal_mass * max_of(p->target, 0.0), 0.0);
         double total = max_of(-limit, min_of(p->tangent_impulse - p->tangent_mass * vt, limit));
         double delta = total - p->tangent_impulse;
         p->tangent_impulse = total;
