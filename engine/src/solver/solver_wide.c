@@ -222,13 +222,16 @@ LANE_INLINE void solve_friction(const solver_batch_t *batch, lane_point_t *point
     }
 }
 
+/* relaxed: a raised target counts as 0 (the relaxation, solver.c). */
+#define TARGET_OF(p, relaxed) ((relaxed) ? min_lane((p)->target, zero) : (p)->target)
+
 LANE_INLINE void solve_normal_points(const solver_batch_t *batch, lane_point_t *points, int count,
-                                     lane_body_t *a, lane_body_t *b) {
+                                     lane_body_t *a, lane_body_t *b, bool relaxed) {
     const lane_t zero = {0.0, 0.0, 0.0, 0.0};
     for (int i = 0; i < count; i++) {
         lane_point_t *p = &points[i];
         lane_t vn = relative_along(a, b, &batch->normal, &p->rn);
-        lane_t wanted = p->normal_impulse - p->normal_mass * (vn - p->target);
+        lane_t wanted = p->normal_impulse - p->normal_mass * (vn - TARGET_OF(p, relaxed));
         lane_t total = max_lane(wanted, zero);
         lane_t delta = total - p->normal_impulse;
         p->normal_impulse = total;
@@ -264,11 +267,13 @@ LANE_INLINE void solve_block_lanes(const lane_block_t *k, lane_t nm1, lane_t nm2
 
 /* velocity_solve.c's block solve, lane by lane. */
 LANE_INLINE void solve_normal_block(const solver_batch_t *batch, lane_point_t *points,
-                                    const lane_block_t *k, lane_body_t *a, lane_body_t *b) {
+                                    const lane_block_t *k, lane_body_t *a, lane_body_t *b,
+                                    bool relaxed) {
+    const lane_t zero = {0.0, 0.0, 0.0, 0.0};
     lane_point_t *p1 = &points[0], *p2 = &points[1];
     lane_t a1 = p1->normal_impulse, a2 = p2->normal_impulse;
-    lane_t b1 = relative_along(a, b, &batch->normal, &p1->rn) - p1->target;
-    lane_t b2 = relative_along(a, b, &batch->normal, &p2->rn) - p2->target;
+    lane_t b1 = relative_along(a, b, &batch->normal, &p1->rn) - TARGET_OF(p1, relaxed);
+    lane_t b2 = relative_along(a, b, &batch->normal, &p2->rn) - TARGET_OF(p2, relaxed);
     b1 -= k->k11 * a1 + k->k12 * a2;
     b2 -= k->k12 * a1 + k->k22 * a2;
 
@@ -330,7 +335,8 @@ void solver_wide_warm_start_range(solver_wide_t *wide, solver_velocity_t *rows, 
     warm_batches(wide, rows, begin, end, wide->points + first_point(wide, g, begin), true);
 }
 
-/* friction false: the normals only (the relaxation, solver.h), a constant
+/* friction false: the normals only, raised targets counted as 0 (the
+ * relaxation, solver.c), a constant
  * at every call, so each sweep is compiled with or without it. */
 LANE_INLINE void iterate_batches(solver_wide_t *wide, solver_velocity_t *rows, size_t begin,
                                  size_t end, lane_point_t *points, const lane_block_t *blocks,
@@ -342,17 +348,17 @@ LANE_INLINE void iterate_batches(solver_wide_t *wide, solver_velocity_t *rows, s
         switch (batch->kind) {
         case BATCH_BLOCK:
             if (friction) solve_friction(batch, points, 2, &a, &b);
-            solve_normal_block(batch, points, blocks++, &a, &b);
+            solve_normal_block(batch, points, blocks++, &a, &b, !friction);
             points += 2;
             break;
         case BATCH_PAIR:
             if (friction) solve_friction(batch, points, 2, &a, &b);
-            solve_normal_points(batch, points, 2, &a, &b);
+            solve_normal_points(batch, points, 2, &a, &b, !friction);
             points += 2;
             break;
         default:
             if (friction) solve_friction(batch, points, 1, &a, &b);
-            solve_normal_points(batch, points, 1, &a, &b);
+            solve_normal_points(batch, points, 1, &a, &b, !friction);
             points += 1;
             break;
         }

@@ -165,10 +165,6 @@ void solver_wide_correct_range(solver_wide_t *wide, solver_displacement_t *displ
 void solver_wide_store_range(const solver_wide_t *wide, solver_contact_t *contacts, size_t begin,
                              size_t end);
 
-/* Writes the contacts' targets into their batches (after a change of
- * targets since packing). */
-void solver_wide_load_targets(solver_wide_t *wide, const solver_contact_t *contacts);
-
 /* Writes the batches' accumulated impulses back to their contacts. */
 void solver_wide_store(const solver_wide_t *wide, solver_contact_t *contacts);
 

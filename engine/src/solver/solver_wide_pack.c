@@ -251,18 +251,6 @@ void solver_wide_store_range(const solver_wide_t *wide, solver_contact_t *contac
     }
 }
 
-void solver_wide_load_targets(solver_wide_t *wide, const solver_contact_t *contacts) {
-    lane_point_t *points = wide->points;
-    for (size_t i = 0; i < wide->batch_count; i++) {
-        const solver_batch_t *batch = &wide->batches[i];
-        for (int l = 0; l < batch->lanes; l++) {
-            const solver_contact_t *c = &contacts[batch->contact[l]];
-            for (int k = 0; k < c->point_count; k++) points[k].target[l] = c->points[k].target;
-        }
-        points += kind_points((batch_kind_t)batch->kind);
-    }
-}
-
 void solver_wide_store(const solver_wide_t *wide, solver_contact_t *contacts) {
     solver_wide_store_range(wide, contacts, 0, wide->batch_count);
 }

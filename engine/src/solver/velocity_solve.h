@@ -29,9 +29,10 @@ double solver_bounce_threshold(double restitution, const solver_state_t *sa,
                                const solver_state_t *sb, double threshold);
 
 /* What preparing contacts found: an impact within the step, an elastic
- * contact. */
+ * contact, a touching point whose target was raised above 0 (a resting
+ * approach, velocity_solve.c). */
 typedef struct {
-    bool impact, elastic;
+    bool impact, elastic, raised;
 } prepared_t;
 
 /* Prepares contacts [begin, end) for the step (their anchors are anchors[i]
@@ -44,17 +45,11 @@ prepared_t solver_prepare_range(solver_contact_t *contacts, const solver_anchor_
 /* Applies prepared contact c's accumulated impulses to its bodies' rows. */
 void solver_warm_start(const solver_contact_t *c, solver_velocity_t *velocities);
 
-/* Sets the target of every touching point (separation <= 0) of
- * contacts[0 .. count) to 0, the end velocity that only stops an approach:
- * preparing also asks such a point to undo the approach its bodies' start
- * velocities carry into the step's motion, which the step's motion then
- * has, but which the end velocity must not keep (solver.c's relaxation). */
-bool solver_unbias_targets(solver_contact_t *contacts, size_t count);
-
 /* One velocity iteration of prepared contact c. */
 void solver_solve_velocity(solver_contact_t *c, solver_velocity_t *velocities);
 
-/* The same, of c's normals alone (the relaxation, solver.c). */
+/* The same, of c's normals alone, each raised target counted as 0 (the
+ * relaxation, solver.c). */
 void solver_relax_velocity(solver_contact_t *c, solver_velocity_t *velocities);
 
 #endif // #ifndef VELOCITY_SOLVE_H
