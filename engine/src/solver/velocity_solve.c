@@ -102,7 +102,7 @@ static bool set_target(solver_point_t *p, vector_t r_a, vector_t r_b, vector_t n
     p->touched = p->separation <= 0.0;
     if (p->separation <= 0.0) {
         p->target = 0.0;
-        if (w > 0.0 && resting_approach(vn_start, sa, sb, settings)) {
+        if (w > 0.0 && w < 1.0 && resting_approach(vn_start, sa, sb, settings)) {
             p->target = -(1.0 - w) * vn_start / w;
             *raised = true;
         }
