@@ -501,9 +501,10 @@ static void a_body_reaped_while_paused_leaves_the_index(void) {
 /* A deep pile: 600 polygons of 0.5 m radius (triangles to octagons, mass
  * by area, friction 0.6) dropped 15 wide and 40 rows high into a box 18.9 m
  * wide comes to rest and is fully asleep within 15 s of simulated time (at
- * 12 s). It was still awake at 15 s while each step's start velocities
- * pressed resting bodies into their supports and the position pass pushed
- * them out again (solver.c, relax). */
+ * 12 s). It slept at 22 s while the heap kept compacting under the
+ * frictionless position pass, before resting approaches were undone within
+ * the step and relaxed out of the end velocities (velocity_solve.c's
+ * raised targets, solver.c's relaxation). */
 static void a_deep_pile_falls_asleep(void) {
     enum { COLUMNS = 15, ROWS = 40, COUNT = COLUMNS * ROWS };
     scene_t *scene = scene_init();
