@@ -67,7 +67,11 @@ static double approach(const solver_contact_t *c, const solver_point_t *p,
                        const solver_velocity_t *a, const solver_velocity_t *b) {
     double at_b = vec_dot(c->normal, b->v) + b->w * p->rn_b;
     double at_a = vec_dot(c->normal, a->v) + a->w * p->rn_a;
-    return (at_b - at_a) - p->target;
+    /* A touching point's target only undoes its start drift (set_target):
+     * no load to carry, and lifting each level by it lifted the level above
+     * by the sum (pyramid(40)'s top drifted 0.24 m instead of 0.05 m). */
+    double target = p->separation <= 0.0 ? 0.0 : p->target;
+    return (at_b - at_a) - target;
 }
 
 /* The upper body's lever term along the normal at p, picked by address:

@@ -42,10 +42,11 @@ static prepared_t prepare_all(workers_t *workers, solve_split_t *split, size_t c
                                     split->settings, 0, contact_count);
     }
     workers_for(workers, contact_count, prepare_chunk, split);
-    prepared_t found = {false, false};
+    prepared_t found = {false, false, false};
     for (size_t k = 0; k < workers_chunks(workers, contact_count); k++) {
         found.impact |= split->found[k].impact;
         found.elastic |= split->found[k].elastic;
+        found.raised |= split->found[k].raised;
     }
     return found;
 }
@@ -66,12 +67,25 @@ static void forget_impulses(solver_contact_t *contacts, size_t contact_count) {
     }
 }
 
+/*
+ * Once the step's motion is fixed (solver_advance), one more iteration of
+ * the normals runs with every raised target counted as 0: the end
+ * velocities keep no push that only undid a resting approach (set_target),
+ * as Box2D v3's relax iterations keep no position bias.
+ */
+static void relax(solver_wide_t *wide, solver_contact_t *contacts, solver_velocity_t *velocities) {
+    solver_split_relax(wide, velocities);
+    for (size_t i = 0; i < wide->loose_count; i++) {
+        solver_relax_velocity(&contacts[wide->loose[i]], velocities);
+    }
+}
+
 void solver_solve(solver_wide_t *wide, shock_t *shock, solver_contact_t *contacts,
                   const solver_anchor_t *anchors, size_t contact_count,
                   const solver_bodies_t *bodies, const solver_settings_t *settings,
                   const joint_step_t *joints) {
     solver_velocity_t *velocities = bodies->velocities;
-    solve_split_t split = {contacts, anchors, bodies, settings, {{false, false}}};
+    solve_split_t split = {contacts, anchors, bodies, settings, {{false, false, false}}};
     if (!settings->warm_starting) forget_impulses(contacts, contact_count);
     /* A step pays for the collision pass only with an elastic contact, and
      * for timing impacts only with an impact. */
@@ -108,10 +122,14 @@ void solver_solve(solver_wide_t *wide, shock_t *shock, solver_contact_t *contact
             stage_clock_lap(settings->clock, SCENE_STAGE_SHOCK);
         }
     }
-    solver_split_store(wide, contacts);
-    if (any_impact) solver_mark_impacts(contacts, contact_count, velocities, bodies->states);
+    if (any_impact) {
+        solver_split_store(wide, contacts);
+        solver_mark_impacts(contacts, contact_count, velocities, bodies->states);
+    }
     stage_clock_lap(settings->clock, SCENE_STAGE_SOLVER);
     for_bodies(wide->workers, &split, advance_chunk);
+    if (found.raised) relax(wide, contacts, velocities);
+    if (found.raised || !any_impact) solver_split_store(wide, contacts);
     if (joints->count > 0) joint_solver_settle(joints, bodies);
     for (int iteration = 0; iteration < settings->position_iterations; iteration++) {
         solver_split_correct_positions(wide, bodies->displacements, iteration % 2 == 1);

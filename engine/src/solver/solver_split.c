@@ -5,7 +5,7 @@
  * alone: waking the others would cost more than it saves. */
 static const size_t SPLIT_MIN_BATCHES = 16;
 
-typedef enum { SWEEP_PACK, SWEEP_STORE, SWEEP_WARM, SWEEP_ITERATE, SWEEP_CORRECT } sweep_t;
+typedef enum { SWEEP_PACK, SWEEP_STORE, SWEEP_WARM, SWEEP_ITERATE, SWEEP_RELAX, SWEEP_CORRECT } sweep_t;
 
 typedef struct {
     solver_wide_t *wide;
@@ -30,6 +30,9 @@ static void sweep_range(const colour_sweep_t *s, size_t begin, size_t end) {
         break;
     case SWEEP_ITERATE:
         solver_wide_iterate_range(s->wide, s->rows, begin, end);
+        break;
+    case SWEEP_RELAX:
+        solver_wide_relax_range(s->wide, s->rows, begin, end);
         break;
     case SWEEP_CORRECT:
         solver_wide_correct_range(s->wide, s->displacements, begin, end);
@@ -102,6 +105,15 @@ void solver_split_iterate(solver_wide_t *wide, solver_velocity_t *rows) {
         return;
     }
     colour_sweep_t s = {wide, SWEEP_ITERATE, rows, NULL, NULL, 0};
+    sweep_forward(&s);
+}
+
+void solver_split_relax(solver_wide_t *wide, solver_velocity_t *rows) {
+    if (wide->workers == NULL) {
+        solver_wide_relax(wide, rows);
+        return;
+    }
+    colour_sweep_t s = {wide, SWEEP_RELAX, rows, NULL, NULL, 0};
     sweep_forward(&s);
 }
 

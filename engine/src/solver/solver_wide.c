@@ -211,7 +211,9 @@ LANE_INLINE void solve_friction(const solver_batch_t *batch, lane_point_t *point
     for (int i = 0; i < count; i++) {
         lane_point_t *p = &points[i];
         lane_t vt = relative_along(a, b, &tangent, &p->rt);
-        lane_t limit = batch->friction * p->normal_impulse;
+        const lane_t zero = {0.0, 0.0, 0.0, 0.0};
+        lane_t lim0 = p->normal_impulse - p->normal_mass * max_lane(p->target, zero);
+        lane_t limit = batch->friction * max_lane(lim0, zero);
         lane_t wanted = p->tangent_impulse - p->tangent_mass * vt;
         lane_t total = max_lane(-limit, min_lane(wanted, limit));
         lane_t delta = total - p->tangent_impulse;
@@ -220,13 +222,16 @@ LANE_INLINE void solve_friction(const solver_batch_t *batch, lane_point_t *point
     }
 }
 
+/* relaxed: a raised target counts as 0 (the relaxation, solver.c). */
+#define TARGET_OF(p, relaxed) ((relaxed) ? min_lane((p)->target, zero) : (p)->target)
+
 LANE_INLINE void solve_normal_points(const solver_batch_t *batch, lane_point_t *points, int count,
-                                     lane_body_t *a, lane_body_t *b) {
+                                     lane_body_t *a, lane_body_t *b, bool relaxed) {
     const lane_t zero = {0.0, 0.0, 0.0, 0.0};
     for (int i = 0; i < count; i++) {
         lane_point_t *p = &points[i];
         lane_t vn = relative_along(a, b, &batch->normal, &p->rn);
-        lane_t wanted = p->normal_impulse - p->normal_mass * (vn - p->target);
+        lane_t wanted = p->normal_impulse - p->normal_mass * (vn - TARGET_OF(p, relaxed));
         lane_t total = max_lane(wanted, zero);
         lane_t delta = total - p->normal_impulse;
         p->normal_impulse = total;
@@ -262,11 +267,13 @@ LANE_INLINE void solve_block_lanes(const lane_block_t *k, lane_t nm1, lane_t nm2
 
 /* velocity_solve.c's block solve, lane by lane. */
 LANE_INLINE void solve_normal_block(const solver_batch_t *batch, lane_point_t *points,
-                                    const lane_block_t *k, lane_body_t *a, lane_body_t *b) {
+                                    const lane_block_t *k, lane_body_t *a, lane_body_t *b,
+                                    bool relaxed) {
+    const lane_t zero = {0.0, 0.0, 0.0, 0.0};
     lane_point_t *p1 = &points[0], *p2 = &points[1];
     lane_t a1 = p1->normal_impulse, a2 = p2->normal_impulse;
-    lane_t b1 = relative_along(a, b, &batch->normal, &p1->rn) - p1->target;
-    lane_t b2 = relative_along(a, b, &batch->normal, &p2->rn) - p2->target;
+    lane_t b1 = relative_along(a, b, &batch->normal, &p1->rn) - TARGET_OF(p1, relaxed);
+    lane_t b2 = relative_along(a, b, &batch->normal, &p2->rn) - TARGET_OF(p2, relaxed);
     b1 -= k->k11 * a1 + k->k12 * a2;
     b2 -= k->k12 * a1 + k->k22 * a2;
 
@@ -328,27 +335,30 @@ void solver_wide_warm_start_range(solver_wide_t *wide, solver_velocity_t *rows, 
     warm_batches(wide, rows, begin, end, wide->points + first_point(wide, g, begin), true);
 }
 
+/* friction false: the normals only, raised targets counted as 0 (the
+ * relaxation, solver.c), a constant
+ * at every call, so each sweep is compiled with or without it. */
 LANE_INLINE void iterate_batches(solver_wide_t *wide, solver_velocity_t *rows, size_t begin,
                                  size_t end, lane_point_t *points, const lane_block_t *blocks,
-                                 bool shared) {
+                                 bool shared, bool friction) {
     for (size_t i = begin; i < end; i++) {
         const solver_batch_t *batch = &wide->batches[i];
         lane_body_t a, b;
         gather_pair(rows, batch, shared, &a, &b);
         switch (batch->kind) {
         case BATCH_BLOCK:
-            solve_friction(batch, points, 2, &a, &b);
-            solve_normal_block(batch, points, blocks++, &a, &b);
+            if (friction) solve_friction(batch, points, 2, &a, &b);
+            solve_normal_block(batch, points, blocks++, &a, &b, !friction);
             points += 2;
             break;
         case BATCH_PAIR:
-            solve_friction(batch, points, 2, &a, &b);
-            solve_normal_points(batch, points, 2, &a, &b);
+            if (friction) solve_friction(batch, points, 2, &a, &b);
+            solve_normal_points(batch, points, 2, &a, &b, !friction);
             points += 2;
             break;
         default:
-            solve_friction(batch, points, 1, &a, &b);
-            solve_normal_points(batch, points, 1, &a, &b);
+            if (friction) solve_friction(batch, points, 1, &a, &b);
+            solve_normal_points(batch, points, 1, &a, &b, !friction);
             points += 1;
             break;
         }
@@ -358,7 +368,7 @@ LANE_INLINE void iterate_batches(solver_wide_t *wide, solver_velocity_t *rows, s
 
 LANE_CLONES
 void solver_wide_iterate(solver_wide_t *wide, solver_velocity_t *rows) {
-    iterate_batches(wide, rows, 0, wide->batch_count, wide->points, wide->blocks, false);
+    iterate_batches(wide, rows, 0, wide->batch_count, wide->points, wide->blocks, false, true);
 }
 
 LANE_CLONES
@@ -367,7 +377,21 @@ void solver_wide_iterate_range(solver_wide_t *wide, solver_velocity_t *rows, siz
     if (begin == end) return;
     size_t g = group_of(wide, begin);
     iterate_batches(wide, rows, begin, end, wide->points + first_point(wide, g, begin),
-                    wide->blocks + first_block(wide, g, begin), true);
+                    wide->blocks + first_block(wide, g, begin), true, true);
+}
+
+LANE_CLONES
+void solver_wide_relax(solver_wide_t *wide, solver_velocity_t *rows) {
+    iterate_batches(wide, rows, 0, wide->batch_count, wide->points, wide->blocks, false, false);
+}
+
+LANE_CLONES
+void solver_wide_relax_range(solver_wide_t *wide, solver_velocity_t *rows, size_t begin,
+                             size_t end) {
+    if (begin == end) return;
+    size_t g = group_of(wide, begin);
+    iterate_batches(wide, rows, begin, end, wide->points + first_point(wide, g, begin),
+                    wide->blocks + first_block(wide, g, begin), true, false);
 }
 
 /* The bodies' displacements in a batch, lane by lane. */

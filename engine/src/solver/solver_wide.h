@@ -93,6 +93,10 @@ void solver_wide_warm_start(solver_wide_t *wide, solver_velocity_t *rows);
 /* One velocity iteration over every batch, colour by colour. */
 void solver_wide_iterate(solver_wide_t *wide, solver_velocity_t *rows);
 
+/* One velocity iteration of the normals alone (no friction): the
+ * relaxation (solver.c). */
+void solver_wide_relax(solver_wide_t *wide, solver_velocity_t *rows);
+
 /* One position iteration (position_pass.h's solver_solve_position) over
  * every batch, colour by colour, from the last batch back when backward.
  * Within a colour the contacts are corrected side by side, so a one-way
@@ -152,6 +156,8 @@ void solver_wide_warm_start_range(solver_wide_t *wide, solver_velocity_t *rows, 
                                   size_t end);
 void solver_wide_iterate_range(solver_wide_t *wide, solver_velocity_t *rows, size_t begin,
                                size_t end);
+void solver_wide_relax_range(solver_wide_t *wide, solver_velocity_t *rows, size_t begin,
+                             size_t end);
 void solver_wide_correct_range(solver_wide_t *wide, solver_displacement_t *displacements,
                                size_t begin, size_t end);
 /* solver_wide_store of batches [begin, end) (any batches: each writes its

@@ -45,6 +45,27 @@ static inline __attribute__((always_inline)) double time_of_impact(double s, dou
 }
 
 /*
+ * Whether a touching point's start approach vn (< 0) is a resting one: no
+ * faster than one step of the stronger pull on its bodies (dt times the
+ * larger acceleration of their free motions), the load a solve can have
+ * left short. The share of it the step's motion carries, (1 - w) dt vn, is
+ * then undone within the step (the target is raised to -(1 - w) vn / w)
+ * and the relaxation (solver.c) takes that push back out of the end
+ * velocity once the bodies have moved. A faster approach is an arrival
+ * (and the collision pass bounces one faster than its threshold): raised, a
+ * ball landing beside a wall rose along it in the solve, the
+ * wall's friction met that rise and the ball rolled away (3 mm).
+ * Only the start velocity's share: a spring's pull in the drift, undone
+ * too, held a multi-stage scheme to order 2.
+ */
+static inline bool resting_approach(double vn, const solver_state_t *sa,
+                                    const solver_state_t *sb, const solver_settings_t *s) {
+    if (vn >= 0.0) return false;
+    double pull = vec_get_length(sa->acceleration) + vec_get_length(sb->acceleration);
+    return vn >= -min_of(s->dt * pull, s->restitution_threshold);
+}
+
+/*
  * The lower bound on a point's end-of-step relative normal velocity.
  *
  * Touching or overlapping: no approach (0); a fast approach bounces in the
@@ -68,12 +89,10 @@ static inline __attribute__((always_inline)) double time_of_impact(double s, dou
  */
 static bool set_target(solver_point_t *p, vector_t r_a, vector_t r_b, vector_t normal,
                        double restitution, const solver_state_t *sa, const solver_state_t *sb,
-                       const solver_settings_t *settings) {
+                       const solver_settings_t *settings, bool *raised) {
     double dt = settings->dt, w = settings->position_weight;
     vector_t start = vec_subtract(point_velocity(sb->v_start, sb->w_start, r_b),
                                   point_velocity(sa->v_start, sa->w_start, r_a));
-    vector_t drift = vec_subtract(point_velocity(sb->drift, sb->spin_drift, r_b),
-                                  point_velocity(sa->drift, sa->spin_drift, r_a));
     double vn_start = vec_dot(normal, start);
     p->impact_time = -1.0;
     p->impact_offset = NAN;
@@ -83,8 +102,14 @@ static bool set_target(solver_point_t *p, vector_t r_a, vector_t r_b, vector_t n
     p->touched = p->separation <= 0.0;
     if (p->separation <= 0.0) {
         p->target = 0.0;
+        if (w > 0.0 && w < 1.0 && resting_approach(vn_start, sa, sb, settings)) {
+            p->target = -(1.0 - w) * vn_start / w;
+            *raised = true;
+        }
         return false;
     }
+    vector_t drift = vec_subtract(point_velocity(sb->drift, sb->spin_drift, r_b),
+                                  point_velocity(sa->drift, sa->spin_drift, r_a));
     double an = vec_dot(normal, vec_subtract(sb->acceleration, sa->acceleration));
     double tau = time_of_impact(p->separation, vn_start, an, dt);
     double vi = tau >= 0.0 ? vn_start + an * tau : 0.0;
@@ -137,7 +162,7 @@ static void same_impact_moment(solver_contact_t *c, double dt) {
  * pile(1000) ran 2% more instructions). */
 static inline __attribute__((always_inline)) bool prepare(solver_contact_t *c, const solver_anchor_t *anchor,
                     const solver_velocity_t *velocities, const solver_state_t *states,
-                    const solver_settings_t *s) {
+                    const solver_settings_t *s, bool *raised) {
     const solver_velocity_t *a = &velocities[c->a], *b = &velocities[c->b];
     vector_t tangent = tangent_of(c->normal);
     double ma = a->inverse_mass, mb = b->inverse_mass;
@@ -154,7 +179,7 @@ static inline __attribute__((always_inline)) bool prepare(solver_contact_t *c, c
         double k_tangent = ma + mb + ia * p->rt_a * p->rt_a + ib * p->rt_b * p->rt_b;
         p->tangent_mass = k_tangent > 0.0 ? 1.0 / k_tangent : 0.0;
         impact |= set_target(p, anchor->r_a[i], anchor->r_b[i], c->normal, c->restitution,
-                             &states[c->a], &states[c->b], s);
+                             &states[c->a], &states[c->b], s, raised);
     }
     if (c->point_count == 2) same_impact_moment(c, s->dt);
     c->impact = impact;
@@ -190,7 +215,7 @@ static inline void solve_friction(solver_contact_t *c, solver_velocity_t *a,
     for (int i = 0; i < c->point_count; i++) {
         solver_point_t *p = &c->points[i];
         double vt = relative_along(a, b, tangent, p->rt_a, p->rt_b);
-        double limit = c->friction * p->normal_impulse;
+        double limit = c->friction * max_of(p->normal_impulse - p->normal_mass * max_of(p->target, 0.0), 0.0);
         double total = max_of(-limit, min_of(p->tangent_impulse - p->tangent_mass * vt, limit));
         double delta = total - p->tangent_impulse;
         p->tangent_impulse = total;
@@ -198,10 +223,15 @@ static inline void solve_friction(solver_contact_t *c, solver_velocity_t *a,
     }
 }
 
+/* relaxed: a raised target counts as 0 (the relaxation, solver.c). */
+static inline double target_of(const solver_point_t *p, bool relaxed) {
+    return relaxed ? min_of(p->target, 0.0) : p->target;
+}
+
 static inline void solve_normal_point(const solver_contact_t *c, solver_velocity_t *a,
-                                      solver_velocity_t *b, solver_point_t *p) {
+                                      solver_velocity_t *b, solver_point_t *p, bool relaxed) {
     double vn = relative_along(a, b, c->normal, p->rn_a, p->rn_b);
-    double total = max_of(p->normal_impulse - p->normal_mass * (vn - p->target), 0.0);
+    double total = max_of(p->normal_impulse - p->normal_mass * (vn - target_of(p, relaxed)), 0.0);
     double delta = total - p->normal_impulse;
     p->normal_impulse = total;
     apply_along(a, b, c->normal, p->rn_a, p->rn_b, delta);
@@ -228,11 +258,11 @@ static inline void apply_block(solver_contact_t *c, solver_velocity_t *a, solver
  * vn = K x + b', x >= 0, vn >= target, x (vn - target) = 0
  * (solve_block_cases). */
 static inline void solve_normal_block(solver_contact_t *c, solver_velocity_t *a,
-                                      solver_velocity_t *b) {
+                                      solver_velocity_t *b, bool relaxed) {
     solver_point_t *p1 = &c->points[0], *p2 = &c->points[1];
     double a1 = p1->normal_impulse, a2 = p2->normal_impulse;
-    double b1 = relative_along(a, b, c->normal, p1->rn_a, p1->rn_b) - p1->target;
-    double b2 = relative_along(a, b, c->normal, p2->rn_a, p2->rn_b) - p2->target;
+    double b1 = relative_along(a, b, c->normal, p1->rn_a, p1->rn_b) - target_of(p1, relaxed);
+    double b2 = relative_along(a, b, c->normal, p2->rn_a, p2->rn_b) - target_of(p2, relaxed);
     solver_block_k_t k = solver_contact_k(c, a, b);
     b1 -= k.k11 * a1 + k.k12 * a2;
     b2 -= k.k12 * a1 + k.k22 * a2;
@@ -247,9 +277,20 @@ void solver_solve_velocity(solver_contact_t *c, solver_velocity_t *velocities) {
     solver_velocity_t a = velocities[c->a], b = velocities[c->b];
     solve_friction(c, &a, &b);
     if (c->block) {
-        solve_normal_block(c, &a, &b);
+        solve_normal_block(c, &a, &b, false);
     } else {
-        for (int i = 0; i < c->point_count; i++) solve_normal_point(c, &a, &b, &c->points[i]);
+        for (int i = 0; i < c->point_count; i++) solve_normal_point(c, &a, &b, &c->points[i], false);
+    }
+    velocities[c->a] = a;
+    velocities[c->b] = b;
+}
+
+void solver_relax_velocity(solver_contact_t *c, solver_velocity_t *velocities) {
+    solver_velocity_t a = velocities[c->a], b = velocities[c->b];
+    if (c->block) {
+        solve_normal_block(c, &a, &b, true);
+    } else {
+        for (int i = 0; i < c->point_count; i++) solve_normal_point(c, &a, &b, &c->points[i], true);
     }
     velocities[c->a] = a;
     velocities[c->b] = b;
@@ -270,7 +311,7 @@ enum { PREPARE_AHEAD = 4 };
 prepared_t solver_prepare_range(solver_contact_t *contacts, const solver_anchor_t *anchors,
                                 const solver_bodies_t *bodies, const solver_settings_t *settings,
                                 size_t begin, size_t end) {
-    prepared_t found = {false, false};
+    prepared_t found = {false, false, false};
     for (size_t i = begin; i < end; i++) {
         if (i + PREPARE_AHEAD < end) {
             const solver_contact_t *ahead = &contacts[i + PREPARE_AHEAD];
@@ -282,7 +323,8 @@ prepared_t solver_prepare_range(solver_contact_t *contacts, const solver_anchor_
             PREFETCH_PREPARED(contacts, anchors, i + 2 * PREPARE_AHEAD);
         }
         solver_contact_t *c = &contacts[i];
-        found.impact |= prepare(c, &anchors[i], bodies->velocities, bodies->states, settings);
+        found.impact |= prepare(c, &anchors[i], bodies->velocities, bodies->states, settings,
+                                &found.raised);
         found.elastic |= c->restitution > 0.0;
     }
     return found;

@@ -29,9 +29,10 @@ double solver_bounce_threshold(double restitution, const solver_state_t *sa,
                                const solver_state_t *sb, double threshold);
 
 /* What preparing contacts found: an impact within the step, an elastic
- * contact. */
+ * contact, a touching point whose target was raised above 0 (a resting
+ * approach, velocity_solve.c). */
 typedef struct {
-    bool impact, elastic;
+    bool impact, elastic, raised;
 } prepared_t;
 
 /* Prepares contacts [begin, end) for the step (their anchors are anchors[i]
@@ -46,5 +47,9 @@ void solver_warm_start(const solver_contact_t *c, solver_velocity_t *velocities)
 
 /* One velocity iteration of prepared contact c. */
 void solver_solve_velocity(solver_contact_t *c, solver_velocity_t *velocities);
+
+/* The same, of c's normals alone, each raised target counted as 0 (the
+ * relaxation, solver.c). */
+void solver_relax_velocity(solver_contact_t *c, solver_velocity_t *velocities);
 
 #endif // #ifndef VELOCITY_SOLVE_H
