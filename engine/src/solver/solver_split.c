@@ -5,7 +5,14 @@
  * alone: waking the others would cost more than it saves. */
 static const size_t SPLIT_MIN_BATCHES = 16;
 
-typedef enum { SWEEP_PACK, SWEEP_STORE, SWEEP_WARM, SWEEP_ITERATE, SWEEP_RELAX, SWEEP_CORRECT } sweep_t;
+typedef enum {
+    SWEEP_PACK,
+    SWEEP_STORE,
+    SWEEP_WARM,
+    SWEEP_ITERATE,
+    SWEEP_RELAX,
+    SWEEP_CORRECT
+} sweep_t;
 
 typedef struct {
     solver_wide_t *wide;

@@ -212,8 +212,8 @@ LANE_INLINE void solve_friction(const solver_batch_t *batch, lane_point_t *point
         lane_point_t *p = &points[i];
         lane_t vt = relative_along(a, b, &tangent, &p->rt);
         const lane_t zero = {0.0, 0.0, 0.0, 0.0};
-        lane_t lim0 = p->normal_impulse - p->normal_mass * max_lane(p->target, zero);
-        lane_t limit = batch->friction * max_lane(lim0, zero);
+        lane_t pressed = p->normal_impulse - p->normal_mass * max_lane(p->target, zero);
+        lane_t limit = batch->friction * max_lane(pressed, zero);
         lane_t wanted = p->tangent_impulse - p->tangent_mass * vt;
         lane_t total = max_lane(-limit, min_lane(wanted, limit));
         lane_t delta = total - p->tangent_impulse;

@@ -215,7 +215,9 @@ static inline void solve_friction(solver_contact_t *c, solver_velocity_t *a,
     for (int i = 0; i < c->point_count; i++) {
         solver_point_t *p = &c->points[i];
         double vt = relative_along(a, b, tangent, p->rt_a, p->rt_b);
-        double limit = c->friction * max_of(p->normal_impulse - p->normal_mass * max_of(p->target, 0.0), 0.0);
+        /* The raised part of the normal impulse (set_target) gives no friction. */
+        double pressed = p->normal_impulse - p->normal_mass * max_of(p->target, 0.0);
+        double limit = c->friction * max_of(pressed, 0.0);
         double total = max_of(-limit, min_of(p->tangent_impulse - p->tangent_mass * vt, limit));
         double delta = total - p->tangent_impulse;
         p->tangent_impulse = total;
@@ -279,7 +281,9 @@ void solver_solve_velocity(solver_contact_t *c, solver_velocity_t *velocities) {
     if (c->block) {
         solve_normal_block(c, &a, &b, false);
     } else {
-        for (int i = 0; i < c->point_count; i++) solve_normal_point(c, &a, &b, &c->points[i], false);
+        for (int i = 0; i < c->point_count; i++) {
+            solve_normal_point(c, &a, &b, &c->points[i], false);
+        }
     }
     velocities[c->a] = a;
     velocities[c->b] = b;
