@@ -265,7 +265,7 @@ static void rank_kept(pair_tracker_t *tracker, grid_place_t place,
     tracker->pair_count = n;
 }
 
-/* Keeps what this call ranked from for the next (same_as_last). */
+/* Keeps what this call ranked from for the next (same_cells, same_overlaps). */
 static void remember(pair_tracker_t *tracker, grid_place_t place, size_t count) {
     cell_range_t *ranges = tracker->ranges;
     size_t range_capacity = tracker->range_capacity;
