@@ -17,8 +17,8 @@ enum { PREFETCH_LINE = 64 };
  * a compile-time constant), for reading (for_write 0) or for writing (1,
  * also a constant). Addresses a line apart, then the last byte: each line
  * of the span is asked for, a line at most twice, in straight-line code
- * (a loop over aligned lines cost pyramid(40) 6% more instructions). A
- * macro: GCC deems a function of prefetches alone const and drops its
+ * (a loop over the aligned lines ran pyramid(40) 4% more instructions).
+ * A macro: GCC deems a function of prefetches alone const and drops its
  * calls. */
 #define PREFETCH_SPAN(address, bytes, for_write)                                     \
     do {                                                                             \
