@@ -70,3 +70,12 @@ void memory_reserve_lines(void **array, size_t *capacity, size_t needed, size_t 
     *array = block;
     *capacity = grown;
 }
+
+void memory_swap(void **a, size_t *a_capacity, void **b, size_t *b_capacity) {
+    void *array = *a;
+    *a = *b;
+    *b = array;
+    size_t capacity = *a_capacity;
+    *a_capacity = *b_capacity;
+    *b_capacity = capacity;
+}

@@ -22,4 +22,7 @@ void memory_reserve(void **array, size_t *capacity, size_t needed, size_t elemen
  * memory_free. */
 void memory_reserve_lines(void **array, size_t *capacity, size_t needed, size_t element_size);
 
+/* Exchanges two reserved arrays with their capacities (double buffering). */
+void memory_swap(void **a, size_t *a_capacity, void **b, size_t *b_capacity);
+
 #endif // #ifndef MEMORY_H

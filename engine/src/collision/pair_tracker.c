@@ -267,18 +267,10 @@ static void rank_kept(pair_tracker_t *tracker, grid_place_t place,
 
 /* Keeps what this call ranked from for the next (same_cells, same_overlaps). */
 static void remember(pair_tracker_t *tracker, grid_place_t place, size_t count) {
-    cell_range_t *ranges = tracker->ranges;
-    size_t range_capacity = tracker->range_capacity;
-    tracker->ranges = tracker->last_ranges;
-    tracker->range_capacity = tracker->last_range_capacity;
-    tracker->last_ranges = ranges;
-    tracker->last_range_capacity = range_capacity;
-    uint64_t *overlaps = tracker->overlaps;
-    size_t overlap_capacity = tracker->overlap_capacity;
-    tracker->overlaps = tracker->last_overlaps;
-    tracker->overlap_capacity = tracker->last_overlap_capacity;
-    tracker->last_overlaps = overlaps;
-    tracker->last_overlap_capacity = overlap_capacity;
+    memory_swap((void **)&tracker->ranges, &tracker->range_capacity,
+                (void **)&tracker->last_ranges, &tracker->last_range_capacity);
+    memory_swap((void **)&tracker->overlaps, &tracker->overlap_capacity,
+                (void **)&tracker->last_overlaps, &tracker->last_overlap_capacity);
     tracker->last_mask = place.mask;
     tracker->last_count = count;
     tracker->ranked = true;

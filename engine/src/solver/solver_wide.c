@@ -345,6 +345,9 @@ LANE_INLINE void iterate_batches(solver_wide_t *wide, solver_velocity_t *rows, s
         const solver_batch_t *batch = &wide->batches[i];
         lane_body_t a, b;
         gather_pair(rows, batch, shared, &a, &b);
+        /* Each kind spelled out: its point count a constant, the loops over
+         * points unrolled (one path with the count read from the batch ran
+         * pile(1000) 0.8% more instructions). */
         switch (batch->kind) {
         case BATCH_BLOCK:
             if (friction) solve_friction(batch, points, 2, &a, &b);

@@ -272,30 +272,29 @@ static inline void solve_normal_block(solver_contact_t *c, solver_velocity_t *a,
     if (solve_block_cases(c, k.k12, b1, b2, &x1, &x2)) apply_block(c, a, b, x1, x2);
 }
 
+static inline void solve_normals(solver_contact_t *c, solver_velocity_t *a,
+                                 solver_velocity_t *b, bool relaxed) {
+    if (c->block) {
+        solve_normal_block(c, a, b, relaxed);
+        return;
+    }
+    for (int i = 0; i < c->point_count; i++) solve_normal_point(c, a, b, &c->points[i], relaxed);
+}
+
 /* Works on copies of the two rows: the compiler then keeps them in
  * registers instead of reloading them after every store (it cannot prove
  * the rows and the contact do not alias). */
 void solver_solve_velocity(solver_contact_t *c, solver_velocity_t *velocities) {
     solver_velocity_t a = velocities[c->a], b = velocities[c->b];
     solve_friction(c, &a, &b);
-    if (c->block) {
-        solve_normal_block(c, &a, &b, false);
-    } else {
-        for (int i = 0; i < c->point_count; i++) {
-            solve_normal_point(c, &a, &b, &c->points[i], false);
-        }
-    }
+    solve_normals(c, &a, &b, false);
     velocities[c->a] = a;
     velocities[c->b] = b;
 }
 
 void solver_relax_velocity(solver_contact_t *c, solver_velocity_t *velocities) {
     solver_velocity_t a = velocities[c->a], b = velocities[c->b];
-    if (c->block) {
-        solve_normal_block(c, &a, &b, true);
-    } else {
-        for (int i = 0; i < c->point_count; i++) solve_normal_point(c, &a, &b, &c->points[i], true);
-    }
+    solve_normals(c, &a, &b, true);
     velocities[c->a] = a;
     velocities[c->b] = b;
 }

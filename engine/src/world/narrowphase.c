@@ -355,27 +355,17 @@ static void narrowphase_split(world_t *world, body_t **bodies, const broadphase_
     world->gap_count = world->chunk_gap_first[chunks];
 }
 
-/* Exchanges two buffers with their capacities. */
-static void swap_buffers(void **now, size_t *now_capacity, void **old, size_t *old_capacity) {
-    void *buffer = *now;
-    *now = *old;
-    *old = buffer;
-    size_t capacity = *now_capacity;
-    *now_capacity = *old_capacity;
-    *old_capacity = capacity;
-}
-
 /* Last step's contacts and gaps become the old ones, and the old contacts
  * the older; this step's are written over the buffers of the step before
  * (the contacts' over those of two steps before). */
 static void swap_contact_buffers(world_t *world) {
-    swap_buffers((void **)&world->contacts, &world->contact_capacity,
+    memory_swap((void **)&world->contacts, &world->contact_capacity,
                  (void **)&world->old_contacts, &world->old_contact_capacity);
-    swap_buffers((void **)&world->contacts, &world->contact_capacity,
+    memory_swap((void **)&world->contacts, &world->contact_capacity,
                  (void **)&world->older_contacts, &world->older_contact_capacity);
-    swap_buffers((void **)&world->sources, &world->source_capacity,
+    memory_swap((void **)&world->sources, &world->source_capacity,
                  (void **)&world->old_sources, &world->old_source_capacity);
-    swap_buffers((void **)&world->gaps, &world->gap_capacity, (void **)&world->old_gaps,
+    memory_swap((void **)&world->gaps, &world->gap_capacity, (void **)&world->old_gaps,
                  &world->old_gap_capacity);
     world->old_count = world->contact_count;
     world->contact_count = 0;
