@@ -34,16 +34,30 @@ static const unsigned YIELDS_BEFORE_SLEEP = 1u << 11;
 static const uint64_t CLOSED = (uint64_t)1 << 31;
 static const uint64_t JOINED = CLOSED - 1;
 
+/* The chunks a thread takes first: from `next` up to `end`, by a counter
+ * on a line of its own; once they are gone it takes what is left of the
+ * others' shares. */
+typedef struct {
+    _Alignas(64) atomic_size_t next;
+    size_t end;
+} share_t;
+
+typedef struct {
+    pthread_t thread;
+    workers_t *workers;
+    size_t index; /* its share; the caller's is 0 */
+} thread_t;
+
 struct workers {
     size_t count;
-    pthread_t *threads;
+    thread_t *threads;
     size_t started;
 
     /* The call: written by the caller before `state` publishes it. */
     workers_fn_t fn;
     void *context;
     size_t total, chunks;
-    atomic_size_t next_chunk;
+    share_t *shares; /* one per thread */
     atomic_size_t finished; /* joined threads that have left the call */
     _Atomic uint64_t state;
 
@@ -59,18 +73,34 @@ static inline void pause_briefly(void) {
 #endif
 }
 
+/* One turn of a wait on another thread: a pause, or later a yield. */
+static void wait_turn(unsigned spin) {
+    if (spin < SPINS) {
+        pause_briefly();
+    } else {
+        sched_yield();
+    }
+}
+
 static uint32_t call_number(uint64_t state) {
     return (uint32_t)(state >> 32);
 }
 
-/* Takes and runs chunks of the current call until none is left. */
-static void run_chunks(workers_t *workers) {
-    for (;;) {
-        size_t chunk = atomic_fetch_add_explicit(&workers->next_chunk, 1, memory_order_relaxed);
-        if (chunk >= workers->chunks) return;
-        size_t begin = chunk * workers->total / workers->chunks;
-        size_t end = (chunk + 1) * workers->total / workers->chunks;
-        workers->fn(workers->context, chunk, begin, end);
+/* Takes and runs chunks of the current call until none is left: its own
+ * share first, then the others'. A thread that runs the same chunks of
+ * each loop over the bodies finds their lines in its own cache, where
+ * taking the next free chunk left half of them in the other core's (two
+ * workers ran body_update_world in twice one worker's CPU time). */
+static void run_chunks(workers_t *workers, size_t self) {
+    for (size_t k = 0; k < workers->count; k++) {
+        share_t *share = &workers->shares[(self + k) % workers->count];
+        for (;;) {
+            size_t chunk = atomic_fetch_add_explicit(&share->next, 1, memory_order_relaxed);
+            if (chunk >= share->end) break;
+            size_t begin = chunk * workers->total / workers->chunks;
+            size_t end = (chunk + 1) * workers->total / workers->chunks;
+            workers->fn(workers->context, chunk, begin, end);
+        }
     }
 }
 
@@ -80,11 +110,7 @@ static uint64_t await_call(workers_t *workers, uint32_t seen) {
     for (unsigned spin = 0; spin < SPINS + YIELDS_BEFORE_SLEEP; spin++) {
         uint64_t state = atomic_load(&workers->state);
         if (call_number(state) != seen || atomic_load(&workers->quit)) return state;
-        if (spin < SPINS) {
-            pause_briefly();
-        } else {
-            sched_yield();
-        }
+        wait_turn(spin);
     }
     pthread_mutex_lock(&workers->lock);
     atomic_fetch_add(&workers->sleepers, 1);
@@ -99,7 +125,8 @@ static uint64_t await_call(workers_t *workers, uint32_t seen) {
 }
 
 static void *thread_main(void *argument) {
-    workers_t *workers = argument;
+    const thread_t *self = argument;
+    workers_t *workers = self->workers;
     uint32_t seen = 0;
     for (;;) {
         uint64_t state = await_call(workers, seen);
@@ -108,7 +135,7 @@ static void *thread_main(void *argument) {
         /* Join unless the caller has closed the call already. */
         while (!(state & CLOSED) && call_number(state) == seen) {
             if (atomic_compare_exchange_weak(&workers->state, &state, state + 1)) {
-                run_chunks(workers);
+                run_chunks(workers, self->index);
                 atomic_fetch_add_explicit(&workers->finished, 1, memory_order_release);
                 break;
             }
@@ -120,10 +147,12 @@ workers_t *workers_init(size_t count) {
     REQUIRE(count >= 2, "a pool needs at least 2 workers (got %zu)", count);
     workers_t *workers = memory_calloc(1, sizeof(workers_t));
     workers->count = count;
-    workers->threads = memory_calloc(count - 1, sizeof(pthread_t));
+    workers->threads = memory_calloc(count - 1, sizeof(thread_t));
+    size_t share_capacity = 0; /* on lines of their own */
+    memory_reserve_lines((void **)&workers->shares, &share_capacity, count, sizeof(share_t));
     pthread_mutex_init(&workers->lock, NULL);
     pthread_cond_init(&workers->wake, NULL);
-    atomic_init(&workers->next_chunk, 0);
+    for (size_t i = 0; i < count; i++) atomic_init(&workers->shares[i].next, 0);
     atomic_init(&workers->finished, 0);
     atomic_init(&workers->state, 0);
     atomic_init(&workers->sleepers, 0);
@@ -133,7 +162,10 @@ workers_t *workers_init(size_t count) {
 
 static void start_threads(workers_t *workers) {
     for (; workers->started < workers->count - 1; workers->started++) {
-        int error = pthread_create(&workers->threads[workers->started], NULL, thread_main, workers);
+        thread_t *thread = &workers->threads[workers->started];
+        thread->workers = workers;
+        thread->index = workers->started + 1;
+        int error = pthread_create(&thread->thread, NULL, thread_main, thread);
         REQUIRE(error == 0, "cannot start a worker thread (%s)", strerror(error));
     }
 }
@@ -144,10 +176,11 @@ void workers_free(workers_t *workers) {
     atomic_store(&workers->quit, true);
     pthread_cond_broadcast(&workers->wake);
     pthread_mutex_unlock(&workers->lock);
-    for (size_t i = 0; i < workers->started; i++) pthread_join(workers->threads[i], NULL);
+    for (size_t i = 0; i < workers->started; i++) pthread_join(workers->threads[i].thread, NULL);
     pthread_cond_destroy(&workers->wake);
     pthread_mutex_destroy(&workers->lock);
     memory_free(workers->threads);
+    memory_free(workers->shares);
     memory_free(workers);
 }
 
@@ -182,11 +215,7 @@ static void finish(workers_t *workers) {
     size_t joined = (size_t)(state & JOINED);
     for (unsigned spin = 0; atomic_load_explicit(&workers->finished, memory_order_acquire) < joined;
          spin++) {
-        if (spin < SPINS) {
-            pause_briefly();
-        } else {
-            sched_yield();
-        }
+        wait_turn(spin);
     }
 }
 
@@ -201,9 +230,13 @@ void workers_for(workers_t *workers, size_t count, workers_fn_t fn, void *contex
     workers->context = context;
     workers->total = count;
     workers->chunks = chunks;
-    atomic_store_explicit(&workers->next_chunk, 0, memory_order_relaxed);
+    for (size_t t = 0; t < workers->count; t++) {
+        atomic_store_explicit(&workers->shares[t].next, t * chunks / workers->count,
+                              memory_order_relaxed);
+        workers->shares[t].end = (t + 1) * chunks / workers->count;
+    }
     atomic_store_explicit(&workers->finished, 0, memory_order_relaxed);
     publish(workers);
-    run_chunks(workers);
+    run_chunks(workers, 0);
     finish(workers);
 }

@@ -6,10 +6,13 @@
  * workers_for splits [0, count) into fixed chunks, a function of count and
  * the worker count alone, and runs them on the calling thread and the
  * pool's threads together; it returns when every chunk is done, and what
- * the chunks wrote is then visible to the caller. Which thread runs which
- * chunk varies from call to call, so a chunk must write only what its own
- * indices decide (never a sum over chunks in floating point): then the
- * result is the same for any worker count.
+ * the chunks wrote is then visible to the caller. Each thread has a share
+ * of the chunks, the same in every call with as many chunks (the caller the
+ * first, thread i the i-th), and takes the rest of the others' once its own
+ * are done: loops over the same indices then find their data in the same
+ * core's cache. Which thread runs a chunk still varies, so a chunk must
+ * write only what its own indices decide (never a sum over chunks in
+ * floating point): then the result is the same for any worker count.
  *
  * The threads are started on the first workers_for and parked between
  * calls: they spin for a few microseconds (the world's loops come in quick
