@@ -114,7 +114,7 @@ static batch_kind_t kind_of(const solver_contact_t *c) {
     return c->point_count == 2 ? BATCH_PAIR : BATCH_SINGLE;
 }
 
-enum { GROUPS = BATCH_KINDS * COLORING_MAX_COLORS };
+enum { GROUPS = BATCH_KINDS * COLORING_MAX_COLORS, SORT_AHEAD = 16 };
 
 _Static_assert((int)GROUPS < (int)COLORING_NONE, "a group fits where its contact's colour was");
 
@@ -129,6 +129,8 @@ static void sort_by_color(solver_wide_t *wide, const solver_contact_t *contacts,
     wide->loose_count = 0;
     uint8_t *group = wide->colors;
     for (size_t i = 0; i < count; i++) {
+        /* A record apart: waiting on them was most of this loop's time. */
+        if (i + SORT_AHEAD < count) __builtin_prefetch(&contacts[i + SORT_AHEAD]);
         if (group[i] == COLORING_NONE) {
             wide->loose[wide->loose_count++] = (uint32_t)i;
             continue;
