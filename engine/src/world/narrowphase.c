@@ -325,9 +325,16 @@ static void emit_chunk(void *context, size_t chunk, size_t begin, size_t end) {
         body_t *a = split->bodies[pairs[i].a];
         size_t first = n, gap_first = g;
         for (uint32_t group = pairs[i].a; i < end && pairs[i].a == group; i++) {
+            /* The results two steps of OLD_AHEAD ahead, so that the one
+             * whose old contact is asked for next is in the cache: reading
+             * its index from memory was a fifth of this loop's time. */
+            if (i + 2 * OLD_AHEAD < end) {
+                PREFETCH_SPAN(&world->results[i + 2 * OLD_AHEAD], sizeof(pair_result_t), 0);
+            }
             if (i + OLD_AHEAD < end) PREFETCH_OLD(world, world->results[i + OLD_AHEAD].old);
             const pair_result_t *found = &world->results[i];
             if (found->manifold.point_count > 0) {
+                PREFETCH_MADE(world, n + MADE_AHEAD);
                 add_contact(world, n++, a, split->bodies[pairs[i].b], found);
             }
             if (found->apart) world->gaps[g++] = found->gap;
