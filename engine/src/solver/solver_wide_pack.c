@@ -114,7 +114,9 @@ static batch_kind_t kind_of(const solver_contact_t *c) {
     return c->point_count == 2 ? BATCH_PAIR : BATCH_SINGLE;
 }
 
-enum { GROUPS = BATCH_KINDS * COLORING_MAX_COLORS, SORT_AHEAD = 16 };
+enum { GROUPS = BATCH_KINDS * COLORING_MAX_COLORS };
+/* How many contacts ahead sorting asks for a contact's first line. */
+enum { SORT_AHEAD = 16 };
 
 _Static_assert((int)GROUPS < (int)COLORING_NONE, "a group fits where its contact's colour was");
 
