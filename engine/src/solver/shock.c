@@ -20,6 +20,7 @@ void shock_free(shock_t *shock) {
     memory_free(shock->queue);
     memory_free(shock->held);
     memory_free(shock->support_end);
+    memory_free(shock->jointed);
     memset(shock, 0, sizeof *shock);
 }
 
@@ -450,36 +451,50 @@ static void lift_pushes(const solver_contact_t *c, const solver_velocity_t *row,
 }
 
 /* Lifts the upper body (b of contact c, or a) off the other, when it rests
- * on it: the levels may have reached it first through another contact. */
-static void lift_off(const solver_contact_t *c, const solver_velocity_t *velocities,
-                     const solver_state_t *states, solver_displacement_t *displacements,
-                     bool upper_is_b) {
-    if (!rests_on(c, states, upper_is_b)) return;
-    const solver_velocity_t *row = &velocities[upper_is_b ? c->b : c->a];
+ * on it (the levels may have reached it first through another contact) and
+ * no joint holds it (jointed NULL: none holds any). */
+static void lift_off(const solver_contact_t *c, const solver_bodies_t *bodies,
+                     const uint8_t *jointed, bool upper_is_b) {
+    uint32_t body = upper_is_b ? c->b : c->a;
+    if ((jointed != NULL && jointed[body]) || !rests_on(c, bodies->states, upper_is_b)) return;
+    const solver_velocity_t *row = &bodies->velocities[body];
+    solver_displacement_t *displacements = bodies->displacements;
     double rn[2] = {upper_rn(&c->points[0], upper_is_b),
                     c->point_count == 2 ? upper_rn(&c->points[1], upper_is_b) : 0.0};
     double x[2];
     lift_pushes(c, row, &displacements[c->a], &displacements[c->b], rn, x);
     if (x[0] == 0.0 && x[1] == 0.0) return;
-    solver_displacement_t *upper = &displacements[upper_is_b ? c->b : c->a];
+    solver_displacement_t *upper = &displacements[body];
     double sign = SIGN[upper_is_b], total = x[0] + x[1];
     upper->dx = vec_add(upper->dx, vec_multiply(sign * row->inverse_mass * total, c->normal));
     upper->dtheta += sign * row->inverse_inertia * (x[0] * rn[0] + x[1] * rn[1]);
 }
 
+/* Which bodies a joint holds, or NULL when no joint is solved. */
+static const uint8_t *mark_jointed(shock_t *shock, const solver_bodies_t *bodies,
+                                   const joint_step_t *joints) {
+    if (joints->count == 0) return NULL;
+    memory_reserve((void **)&shock->jointed, &shock->jointed_capacity, bodies->body_count,
+                   sizeof(uint8_t));
+    memset(shock->jointed, 0, bodies->body_count);
+    joint_solver_mark_held(joints, bodies, shock->jointed);
+    return shock->jointed;
+}
+
 void shock_lift(shock_t *shock, const solver_contact_t *contacts, size_t count,
-                const solver_velocity_t *velocities, const solver_state_t *states,
-                solver_displacement_t *displacements, size_t body_count) {
+                const solver_bodies_t *bodies, const joint_step_t *joints) {
     if (count == 0) return;
+    size_t body_count = bodies->body_count;
     reserve(shock, count, body_count);
-    if (!link_resting(shock, contacts, count, states, body_count)) return;
-    size_t reached = find_levels(shock, velocities, body_count);
+    if (!link_resting(shock, contacts, count, bodies->states, body_count)) return;
+    size_t reached = find_levels(shock, bodies->velocities, body_count);
+    const uint8_t *jointed = mark_jointed(shock, bodies, joints);
     uint32_t start = 0;
     for (size_t q = 0; q < reached; q++) {
         uint32_t stop = shock->support_end[q];
         for (uint32_t k = start; k < stop; k++) {
             uint32_t side = shock->held[k];
-            lift_off(&contacts[side / 2], velocities, states, displacements, side % 2 == 1);
+            lift_off(&contacts[side / 2], bodies, jointed, side % 2 == 1);
         }
         start = stop;
     }
