@@ -749,7 +749,11 @@ static void overlaps_are_pushed_apart_no_faster_than_the_push_speed(void) {
              * (solver.c) then takes about the start approach it stopped back
              * out of the end velocity, so the end velocity explains the
              * motion to within DT / 2 of the start speed (measured: the
-             * excess over the cap was 3.5e-6 m without this allowance). */
+             * excess over the cap was 3.5e-6 m without this allowance).
+             * Not exactly: the relaxation can take out more than that, and
+             * with the boxes falling at up to 0.09 m/s off the lift
+             * (shock.h) the estimate exceeded the cap by 1.1e-5 m, hence
+             * the 0.1% below (uncapped, the first step pushed 0.19 m). */
             vector_t drift = vec_multiply(DT / 2.0, vec_add(v0[i], body_get_velocity(boxes[i])));
             most_pushed = fmax(most_pushed, vec_get_length(vec_subtract(moved, drift)) -
                                                 DT / 2.0 * vec_get_length(v0[i]));
@@ -760,7 +764,7 @@ static void overlaps_are_pushed_apart_no_faster_than_the_push_speed(void) {
         }
     }
     CHECK(fastest <= SOLVER_MAX_PUSH_SPEED + 0.05);
-    CHECK(most_pushed <= SOLVER_MAX_PUSH_SPEED * DT * (1.0 + 1e-9));
+    CHECK(most_pushed <= SOLVER_MAX_PUSH_SPEED * DT * (1.0 + 1e-3));
     CHECK(most_turned * sqrt(0.5) <= SOLVER_MAX_PUSH_SPEED * DT * (1.0 + 1e-9));
     CHECK(in_bounds);
     CHECK(max_penetration(scene) < 0.01);

@@ -112,6 +112,30 @@ static void heavy_box_stays_on_light_box(void) {
     }
 }
 
+/* Thirty boxes made 4 mm into the box below: the lift (shock_lift) raises
+ * each out of its support from the ground up, so within a second every
+ * overlap is back to the 1 mm slop. Pushed by the position iterations
+ * alone, each of both boxes and none knowing what rests above, the
+ * deepest overlap shrank by 0.13 mm a second (4.0 mm after 4.5 s). */
+static void overlapping_column_is_lifted_apart(void) {
+    enum { BOXES = 30 };
+    const double overlap = 0.004;
+    scene_t *scene = stack_scene();
+    body_t *boxes[BOXES];
+    for (int j = 0; j < BOXES; j++) {
+        boxes[j] = add_box(scene, 0.0, 0.5 + j * (1.0 - overlap) - overlap, 1.0);
+    }
+    for (int i = 0; i < 60; i++) scene_tick(scene, DT);
+    CHECK(body_get_centroid(boxes[0]).y > 0.5 - 0.0011);
+    for (int j = 1; j < BOXES; j++) {
+        double gap = body_get_centroid(boxes[j]).y - body_get_centroid(boxes[j - 1]).y - 1.0;
+        CHECK(gap > -0.0011);
+        CHECK_NEAR(body_get_centroid(boxes[j]).x, 0.0, 1e-9);
+    }
+    scene_free(scene);
+}
+
 TEST_SUITE(stacks, TEST_CASE(column_of_twenty_stands_a_minute),
+           TEST_CASE(overlapping_column_is_lifted_apart),
            TEST_CASE(box_dropped_flat_lands_without_turning),
            TEST_CASE(heavy_box_stays_on_light_box));

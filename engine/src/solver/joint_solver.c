@@ -408,3 +408,21 @@ void joint_solver_settle(const joint_step_t *step, const solver_bodies_t *bodies
     }
     if (step->tree->edge_count > 0) settle_tree(step, bodies);
 }
+
+/* A row of the step's bodies: not the joint's own row for the world. */
+static void mark_row(const solver_bodies_t *bodies, const solver_displacement_t *row,
+                     uint8_t *held) {
+    if (row >= bodies->displacements && row < bodies->displacements + bodies->body_count) {
+        held[row - bodies->displacements] = 1;
+    }
+}
+
+void joint_solver_mark_held(const joint_step_t *step, const solver_bodies_t *bodies,
+                            uint8_t *held) {
+    for (size_t i = 0; i < step->count; i++) {
+        const joint_t *joint = step->joints[i];
+        if (!joint->active) continue;
+        mark_row(bodies, joint->rows.d1, held);
+        mark_row(bodies, joint->rows.d2, held);
+    }
+}

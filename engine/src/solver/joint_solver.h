@@ -38,6 +38,7 @@
 
 #include <stdbool.h>
 #include <stddef.h>
+#include <stdint.h>
 #include "solver/joint_types.h"
 
 /* The joints of a step, and the tree solve's arrays (the world's, reused
@@ -54,5 +55,10 @@ void joint_solver_iterate(const joint_step_t *step, const solver_bodies_t *bodie
 void joint_solver_correct(const joint_step_t *step);
 void joint_solver_settle(const joint_step_t *step, const solver_bodies_t *bodies);
 void joint_solver_project(const joint_step_t *step, const solver_bodies_t *bodies);
+
+/* Sets held[i] for each body row i that a joint solved this step holds
+ * (after joint_solver_prepare); leaves the other entries as they are. */
+void joint_solver_mark_held(const joint_step_t *step, const solver_bodies_t *bodies,
+                            uint8_t *held);
 
 #endif // #ifndef JOINT_SOLVER_H

@@ -126,11 +126,9 @@ void solver_advance(const solver_bodies_t *bodies, const solver_settings_t *s, s
     }
 }
 
-/* How far point p's overlap is to be pushed back in this pass (<= 0, m):
- * its separation re-estimated from the displacements so far, to first
- * order in the rotation (a step turns a body by a small angle), toward
- * minus the contact's slop by the rate, at most the largest correction. */
-static double position_error(const solver_contact_t *c, const solver_point_t *p, double rate,
+/* The separation re-estimated from the displacements so far, to first
+ * order in the rotation (a step turns a body by a small angle). */
+double solver_position_error(const solver_contact_t *c, const solver_point_t *p, double rate,
                              const solver_displacement_t *a, const solver_displacement_t *b) {
     double separation = p->separation + vec_dot(c->normal, vec_subtract(b->dx, a->dx)) +
                         b->dtheta * p->rn_b - a->dtheta * p->rn_a;
@@ -156,8 +154,8 @@ static void push_apart(const solver_contact_t *c, const solver_velocity_t *veloc
  * box dropped 0.5 m onto another turned at 0.08 rad/s and slid 5 mm. */
 static void correct_block(const solver_contact_t *c, const solver_velocity_t *velocities,
                           solver_displacement_t *a, solver_displacement_t *b, double rate) {
-    double c1 = position_error(c, &c->points[0], rate, a, b);
-    double c2 = position_error(c, &c->points[1], rate, a, b);
+    double c1 = solver_position_error(c, &c->points[0], rate, a, b);
+    double c2 = solver_position_error(c, &c->points[1], rate, a, b);
     double x1, x2;
     double k12 = solver_contact_k(c, &velocities[c->a], &velocities[c->b]).k12;
     if (solve_block_cases(c, k12, c1, c2, &x1, &x2)) push_apart(c, velocities, a, b, x1, x2);
@@ -181,7 +179,7 @@ void solver_solve_position(const solver_contact_t *c, const solver_velocity_t *v
     double mb = velocities[c->b].inverse_mass, ib = velocities[c->b].inverse_inertia;
     for (int i = 0; i < c->point_count; i++) {
         const solver_point_t *p = &c->points[i];
-        double lambda = -position_error(c, p, rate, a, b) * p->normal_mass;
+        double lambda = -solver_position_error(c, p, rate, a, b) * p->normal_mass;
         a->dx = vec_subtract(a->dx, vec_multiply(ma * lambda, c->normal));
         a->dtheta -= ia * lambda * p->rn_a;
         b->dx = vec_add(b->dx, vec_multiply(mb * lambda, c->normal));

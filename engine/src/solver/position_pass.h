@@ -24,6 +24,12 @@ void solver_mark_impacts(const solver_contact_t *contacts, size_t count,
 void solver_advance(const solver_bodies_t *bodies, const solver_settings_t *s, size_t begin,
                     size_t end);
 
+/* How far point p of contact c is to be pushed back now (<= 0, m): its
+ * separation after the displacements so far, toward minus the contact's
+ * slop by rate, at most SOLVER_MAX_POSITION_CORRECTION. */
+double solver_position_error(const solver_contact_t *c, const solver_point_t *p, double rate,
+                             const solver_displacement_t *a, const solver_displacement_t *b);
+
 /* One position iteration of contact c. */
 void solver_solve_position(const solver_contact_t *c, const solver_velocity_t *velocities,
                            solver_displacement_t *displacements);

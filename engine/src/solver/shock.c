@@ -3,6 +3,7 @@
 #include <string.h>
 #include "base/memory.h"
 #include "base/workers.h"
+#include "solver/position_pass.h"
 
 static const uint32_t UNREACHED = UINT32_MAX;
 /* The slot of a loose contact: its impulses are in the contact. */
@@ -19,6 +20,7 @@ void shock_free(shock_t *shock) {
     memory_free(shock->queue);
     memory_free(shock->held);
     memory_free(shock->support_end);
+    memory_free(shock->jointed);
     memset(shock, 0, sizeof *shock);
 }
 
@@ -104,30 +106,38 @@ static void stop_one(const solver_contact_t *c, solver_velocity_t *a, solver_vel
     push_upper(c, upper, upper_is_b, x, 0.0, rn, 0.0);
 }
 
+/* The pushes x1, x2 >= 0 at two points (lever terms rn1, rn2 of the upper
+ * body) that bring neither below its target, gap1 and gap2 short of it
+ * where negative, the upper body alone moving: the same LCP as the
+ * iterations' block solve, from zero. Both 0 when no case holds. */
+static void solve_upper(const solver_velocity_t *upper, double rn1, double rn2, double gap1,
+                        double gap2, double *x1, double *x2) {
+    double m = upper->inverse_mass, ii = upper->inverse_inertia;
+    double k11 = m + ii * rn1 * rn1, k22 = m + ii * rn2 * rn2, k12 = m + ii * rn1 * rn2;
+    double det = k11 * k22 - k12 * k12;
+    *x1 = det > 1e-12 * k11 * k22 ? (k12 * gap2 - k22 * gap1) / det : -1.0;
+    *x2 = det > 1e-12 * k11 * k22 ? (k12 * gap1 - k11 * gap2) / det : -1.0;
+    if (*x1 >= 0.0 && *x2 >= 0.0) return;
+    *x1 = *x2 = 0.0;
+    if (gap1 < 0.0 && k11 > 0.0 && gap2 - k12 * gap1 / k11 >= 0.0) {
+        *x1 = -gap1 / k11;
+    } else if (gap2 < 0.0 && k22 > 0.0 && gap1 - k12 * gap2 / k22 >= 0.0) {
+        *x2 = -gap2 / k22;
+    }
+}
+
 /* The impulses along the normal that stop the upper body's approach at a
- * two-point contact, the lower body held still: the same LCP as the
- * iterations' block solve, from zero. */
+ * two-point contact, the lower body held still. */
 static void stop_two(const solver_contact_t *c, solver_velocity_t *a, solver_velocity_t *b,
                      bool upper_is_b) {
     const solver_point_t *p1 = &c->points[0], *p2 = &c->points[1];
     double gap1 = approach(c, p1, a, b), gap2 = approach(c, p2, a, b);
     if (gap1 >= 0.0 && gap2 >= 0.0) return;
     solver_velocity_t *upper = upper_is_b ? b : a;
-    double m = upper->inverse_mass, ii = upper->inverse_inertia;
     double rn1 = upper_rn(p1, upper_is_b), rn2 = upper_rn(p2, upper_is_b);
-    double k11 = m + ii * rn1 * rn1, k22 = m + ii * rn2 * rn2, k12 = m + ii * rn1 * rn2;
-    double det = k11 * k22 - k12 * k12;
-    double x1 = det > 1e-12 * k11 * k22 ? (k12 * gap2 - k22 * gap1) / det : -1.0;
-    double x2 = det > 1e-12 * k11 * k22 ? (k12 * gap1 - k11 * gap2) / det : -1.0;
-    if (x1 >= 0.0 && x2 >= 0.0) {
-        push_upper(c, upper, upper_is_b, x1, x2, rn1, rn2);
-    } else if (gap1 < 0.0 && k11 > 0.0 && gap2 - k12 * gap1 / k11 >= 0.0) {
-        push_upper(c, upper, upper_is_b, -gap1 / k11, 0.0, rn1, rn2);
-    } else if (gap2 < 0.0 && k22 > 0.0 && gap1 - k12 * gap2 / k22 >= 0.0) {
-        push_upper(c, upper, upper_is_b, 0.0, -gap2 / k22, rn1, rn2);
-    } else {
-        push_upper(c, upper, upper_is_b, 0.0, 0.0, rn1, rn2);
-    }
+    double x1, x2;
+    solve_upper(upper, rn1, rn2, gap1, gap2, &x1, &x2);
+    push_upper(c, upper, upper_is_b, x1, x2, rn1, rn2);
 }
 
 /*
@@ -355,9 +365,8 @@ static void propagate(shock_t *shock, const solver_wide_t *wide,
     }
 }
 
-void shock_propagate(shock_t *shock, const solver_wide_t *wide, const solver_contact_t *contacts,
-                     size_t count, solver_velocity_t *velocities, size_t body_count) {
-    if (count == 0) return;
+/* The arrays for count contacts and body_count bodies. */
+static void reserve(shock_t *shock, size_t count, size_t body_count) {
     memory_reserve((void **)&shock->level, &shock->level_capacity, body_count, sizeof(uint32_t));
     memory_reserve((void **)&shock->first, &shock->first_capacity, body_count, sizeof(uint32_t));
     memory_reserve((void **)&shock->sides, &shock->side_capacity, 2 * count,
@@ -372,6 +381,121 @@ void shock_propagate(shock_t *shock, const solver_wide_t *wide, const solver_con
      * hold_up fetches ahead. */
     memory_reserve((void **)&shock->held, &shock->held_capacity, count + 1 + PREFETCH_AHEAD,
                    sizeof(uint32_t));
+}
+
+void shock_propagate(shock_t *shock, const solver_wide_t *wide, const solver_contact_t *contacts,
+                     size_t count, solver_velocity_t *velocities, size_t body_count) {
+    if (count == 0) return;
+    reserve(shock, count, body_count);
     if (!link_bodies(shock, wide, contacts, body_count)) return;
     propagate(shock, wide, contacts, velocities, body_count);
+}
+
+/* The lift (shock_lift): how near straight against the upper body's pull
+ * a contact's normal must be for the body to rest on it (cos 60 degrees). */
+static const double RESTING_COSINE = 0.5;
+
+/* Whether the upper body (b, or a) of contact c rests on the other: the
+ * normal from the other to it points against its pull. A body of infinite
+ * mass has none (integrator.c), so it rests on nothing. */
+static inline bool rests_on(const solver_contact_t *c, const solver_state_t *states,
+                            bool upper_is_b) {
+    vector_t pull = states[upper_is_b ? c->b : c->a].acceleration;
+    double along = SIGN[upper_is_b] * vec_dot(c->normal, pull);
+    return along < 0.0 && along * along > RESTING_COSINE * RESTING_COSINE * vec_dot(pull, pull);
+}
+
+/* Lists each body's touching contacts on which one of the two rests, as
+ * link_bodies lists the loaded ones. Returns whether one of them started
+ * the step deeper than its slop (else the lift has nothing to do). */
+static bool link_resting(shock_t *shock, const solver_contact_t *contacts, size_t count,
+                         const solver_state_t *states, size_t body_count) {
+    uint32_t *first = shock->first;
+    solver_side_t *sides = shock->sides;
+    memset(first, 0xff, body_count * sizeof(uint32_t)); /* SOLVER_NO_SIDE */
+    bool deep = false;
+    for (size_t i = 0; i < count; i++) {
+        const solver_contact_t *c = &contacts[i];
+        double least = c->points[0].separation;
+        if (c->point_count == 2 && c->points[1].separation < least) {
+            least = c->points[1].separation;
+        }
+        if (least > 0.0) continue;
+        if (!rests_on(c, states, true) && !rests_on(c, states, false)) continue;
+        deep |= least + c->slop < 0.0;
+        uint32_t side = 2 * (uint32_t)i;
+        sides[side] = (solver_side_t){first[c->a], c->b};
+        first[c->a] = side;
+        sides[side + 1] = (solver_side_t){first[c->b], c->a};
+        first[c->b] = side + 1;
+    }
+    return deep;
+}
+
+/* The pushes at contact c's points (kg m, >= 0) that move its upper body
+ * (row) out of their overlaps beyond the slop by the static position rate,
+ * the other body held still; lever terms rn of the upper body. */
+static void lift_pushes(const solver_contact_t *c, const solver_velocity_t *row,
+                        const solver_displacement_t *a, const solver_displacement_t *b,
+                        const double rn[2], double x[2]) {
+    double rate = SOLVER_STATIC_POSITION_RATE;
+    double e1 = solver_position_error(c, &c->points[0], rate, a, b);
+    x[0] = x[1] = 0.0;
+    if (c->point_count == 2) {
+        double e2 = solver_position_error(c, &c->points[1], rate, a, b);
+        if (e1 < 0.0 || e2 < 0.0) solve_upper(row, rn[0], rn[1], e1, e2, &x[0], &x[1]);
+        return;
+    }
+    double k = row->inverse_mass + row->inverse_inertia * rn[0] * rn[0];
+    if (e1 < 0.0 && k > 0.0) x[0] = -e1 / k;
+}
+
+/* Lifts the upper body (b of contact c, or a) off the other, when it rests
+ * on it (the levels may have reached it first through another contact) and
+ * no joint holds it (jointed NULL: none holds any). */
+static void lift_off(const solver_contact_t *c, const solver_bodies_t *bodies,
+                     const uint8_t *jointed, bool upper_is_b) {
+    uint32_t body = upper_is_b ? c->b : c->a;
+    if ((jointed != NULL && jointed[body]) || !rests_on(c, bodies->states, upper_is_b)) return;
+    const solver_velocity_t *row = &bodies->velocities[body];
+    solver_displacement_t *displacements = bodies->displacements;
+    double rn[2] = {upper_rn(&c->points[0], upper_is_b),
+                    c->point_count == 2 ? upper_rn(&c->points[1], upper_is_b) : 0.0};
+    double x[2];
+    lift_pushes(c, row, &displacements[c->a], &displacements[c->b], rn, x);
+    if (x[0] == 0.0 && x[1] == 0.0) return;
+    solver_displacement_t *upper = &displacements[body];
+    double sign = SIGN[upper_is_b], total = x[0] + x[1];
+    upper->dx = vec_add(upper->dx, vec_multiply(sign * row->inverse_mass * total, c->normal));
+    upper->dtheta += sign * row->inverse_inertia * (x[0] * rn[0] + x[1] * rn[1]);
+}
+
+/* Which bodies a joint holds, or NULL when no joint is solved. */
+static const uint8_t *mark_jointed(shock_t *shock, const solver_bodies_t *bodies,
+                                   const joint_step_t *joints) {
+    if (joints->count == 0) return NULL;
+    memory_reserve((void **)&shock->jointed, &shock->jointed_capacity, bodies->body_count,
+                   sizeof(uint8_t));
+    memset(shock->jointed, 0, bodies->body_count);
+    joint_solver_mark_held(joints, bodies, shock->jointed);
+    return shock->jointed;
+}
+
+void shock_lift(shock_t *shock, const solver_contact_t *contacts, size_t count,
+                const solver_bodies_t *bodies, const joint_step_t *joints) {
+    if (count == 0) return;
+    size_t body_count = bodies->body_count;
+    reserve(shock, count, body_count);
+    if (!link_resting(shock, contacts, count, bodies->states, body_count)) return;
+    size_t reached = find_levels(shock, bodies->velocities, body_count);
+    const uint8_t *jointed = mark_jointed(shock, bodies, joints);
+    uint32_t start = 0;
+    for (size_t q = 0; q < reached; q++) {
+        uint32_t stop = shock->support_end[q];
+        for (uint32_t k = start; k < stop; k++) {
+            uint32_t side = shock->held[k];
+            lift_off(&contacts[side / 2], bodies, jointed, side % 2 == 1);
+        }
+        start = stop;
+    }
 }

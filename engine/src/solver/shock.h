@@ -14,12 +14,14 @@
  * hinge (a column of 20 boxes with 1 cm of jitter fell in 7 s at 8
  * iterations and needed 50 to stand). Holding the lower body still makes
  * every load-bearing contact exact in one pass from the ground up.
+ * shock_lift does the same for the overlaps, after the velocities.
  *
  * Allocation: the arrays grow to the largest step seen and are reused.
  */
 
 #include <stddef.h>
 #include <stdint.h>
+#include "solver/joint_solver.h"
 #include "solver/solver_types.h"
 #include "solver/solver_wide.h"
 
@@ -29,12 +31,13 @@ struct shock {
     uint32_t *level;         /* per body; UINT32_MAX when no load path reaches it */
     uint32_t *first;         /* per body: its first side, SOLVER_NO_SIDE when it has none */
     solver_side_t *sides;    /* 2i and 2i + 1: contact i from its a and its b, if it carries load */
+    uint8_t *jointed;        /* the lift: per body, whether a joint holds it */
     solver_slot_t *slots;    /* per two-point contact that carries load: where its impulses are */
     uint32_t *queue;         /* bodies in the order the levels reached them */
     uint32_t *held;          /* the sides by which the bodies are held up, in queue order */
     uint32_t *support_end;   /* per queue place: where its body's supports end in held */
     size_t level_capacity, first_capacity, side_capacity, slot_capacity, queue_capacity,
-        held_capacity, support_end_capacity;
+        held_capacity, support_end_capacity, jointed_capacity;
 };
 
 void shock_free(shock_t *shock);
@@ -44,5 +47,31 @@ void shock_free(shock_t *shock);
  * of wide (and from the contacts for the loose ones), not stored back. */
 void shock_propagate(shock_t *shock, const solver_wide_t *wide, const solver_contact_t *contacts,
                      size_t count, solver_velocity_t *velocities, size_t body_count);
+
+/*
+ * The same for the overlaps (the lift), once a step before the last
+ * position iteration, which then spreads its moves over both bodies of
+ * each contact. Bodies get levels from the static bodies through the
+ * touching contacts on which one body rests: the normal, from the lower
+ * body to the upper, within 60 degrees of straight against the upper
+ * body's pull (its free acceleration). Level by level from the ground up,
+ * each body is moved out of the overlap with its supports beyond the slop
+ * by SOLVER_STATIC_POSITION_RATE of it, the lower body held still as a
+ * static one is. A body pulled by nothing is never lifted, nor one that a
+ * joint holds: the joints' own correction follows, and pulled back by its
+ * pins every step a lifted ragdoll never came to rest.
+ *
+ * Why: a landing leaves overlaps of millimetres deep in a heap, and the
+ * position iterations, each pushing both bodies of a contact, lift a
+ * column of them under 30 m of heap by hundredths of a millimetre a step;
+ * their pushes, which know no friction, slid bodies along one another
+ * instead until part of the heap slipped, and the heap never rested
+ * (docs/design.md, Sleeping). Contacts steeper than 60 degrees hold a
+ * body sideways more than up and are left to the position iterations.
+ *
+ * The levels reuse the arrays of shock_propagate, whose pass is over.
+ */
+void shock_lift(shock_t *shock, const solver_contact_t *contacts, size_t count,
+                const solver_bodies_t *bodies, const joint_step_t *joints);
 
 #endif // #ifndef SHOCK_H

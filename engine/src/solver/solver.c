@@ -132,6 +132,11 @@ void solver_solve(solver_wide_t *wide, shock_t *shock, solver_contact_t *contact
     if (found.raised || !any_impact) solver_split_store(wide, contacts);
     if (joints->count > 0) joint_solver_settle(joints, bodies);
     for (int iteration = 0; iteration < settings->position_iterations; iteration++) {
+        /* The lift before the last iteration, which then spreads its moves
+         * over both bodies of each contact (shock.h). */
+        if (iteration == settings->position_iterations - 1) {
+            shock_lift(shock, contacts, contact_count, bodies, joints);
+        }
         solver_split_correct_positions(wide, bodies->displacements, iteration % 2 == 1);
         for (size_t i = 0; i < wide->loose_count; i++) {
             solver_solve_position(&contacts[wide->loose[i]], velocities, bodies->displacements);
