@@ -317,30 +317,61 @@ static void hold_up_range(shock_t *shock, const solver_wide_t *wide,
  * it, the call costs more than the bodies. */
 enum { SPLIT_LEVEL = 64 };
 
+/* Does the work of the queue's bodies [begin, end). */
+typedef void (*level_range_t)(void *context, size_t begin, size_t end);
+
+typedef struct {
+    level_range_t range;
+    void *context;
+    size_t first; /* the level's first place in the queue */
+} level_split_t;
+
+static void level_chunk(void *context, size_t chunk, size_t begin, size_t end) {
+    const level_split_t *split = context;
+    (void)chunk;
+    split->range(split->context, split->first + begin, split->first + end);
+}
+
+/* range over the queue's bodies [0, reached), level after level, each
+ * level of SPLIT_LEVEL bodies or more over the workers: a body's work
+ * changes only its own row and reads its supports', all of lower levels,
+ * so the bodies of a level may go in any order with the same result. */
+static void over_levels(const shock_t *shock, workers_t *workers, size_t reached,
+                        level_range_t range, void *context) {
+    level_split_t split = {range, context, 0};
+    for (size_t q = 0; q < reached;) {
+        uint32_t level = shock->level[shock->queue[q]];
+        size_t end = q + 1;
+        while (end < reached && shock->level[shock->queue[end]] == level) end++;
+        if (end - q >= SPLIT_LEVEL) {
+            split.first = q;
+            workers_for(workers, end - q, level_chunk, &split);
+        } else {
+            range(context, q, end);
+        }
+        q = end;
+    }
+}
+
 typedef struct {
     shock_t *shock;
     const solver_wide_t *wide;
     const solver_contact_t *contacts;
     solver_velocity_t *velocities;
-    size_t first; /* the level's first place in the queue */
-} level_split_t;
+} hold_t;
 
-/* A chunk of one level: hold_up reads ahead no further than the chunk's
- * own supports, which no other thread sorts. */
-static void level_chunk(void *context, size_t chunk, size_t begin, size_t end) {
-    const level_split_t *split = context;
-    (void)chunk;
-    hold_up_range(split->shock, split->wide, split->contacts, split->velocities,
-                  split->first + begin, split->first + end, 0);
+/* hold_up reads ahead no further than the range's own supports, which no
+ * other thread sorts. */
+static void hold_range(void *context, size_t begin, size_t end) {
+    const hold_t *hold = context;
+    hold_up_range(hold->shock, hold->wide, hold->contacts, hold->velocities, begin, end, 0);
 }
 
 /*
  * Each body held up by its supports, in the order the levels reached the
  * bodies, which is level by level from the ground up: a body's supports
  * are all of the level below, held up before it, so their velocities are
- * final. A body's pass changes its own velocity only, so the bodies of one
- * level may go in any order, and a large level goes over the workers with
- * the same result.
+ * final. A body's pass changes its own velocity only (over_levels).
  */
 static void propagate(shock_t *shock, const solver_wide_t *wide,
                       const solver_contact_t *contacts, solver_velocity_t *velocities,
@@ -350,19 +381,8 @@ static void propagate(shock_t *shock, const solver_wide_t *wide,
         hold_up_range(shock, wide, contacts, velocities, 0, reached, PREFETCH_AHEAD);
         return;
     }
-    level_split_t split = {shock, wide, contacts, velocities, 0};
-    for (size_t q = 0; q < reached;) {
-        uint32_t level = shock->level[shock->queue[q]];
-        size_t end = q + 1;
-        while (end < reached && shock->level[shock->queue[end]] == level) end++;
-        if (end - q >= SPLIT_LEVEL) {
-            split.first = q;
-            workers_for(wide->workers, end - q, level_chunk, &split);
-        } else {
-            hold_up_range(shock, wide, contacts, velocities, q, end, 0);
-        }
-        q = end;
-    }
+    hold_t hold = {shock, wide, contacts, velocities};
+    over_levels(shock, wide->workers, reached, hold_range, &hold);
 }
 
 /* The arrays for count contacts and body_count bodies. */
@@ -415,6 +435,13 @@ static bool link_resting(shock_t *shock, const solver_contact_t *contacts, size_
     memset(first, 0xff, body_count * sizeof(uint32_t)); /* SOLVER_NO_SIDE */
     bool deep = false;
     for (size_t i = 0; i < count; i++) {
+        /* The contacts a record apart, their bodies' states anywhere. */
+        if (i + 2 * PREFETCH_AHEAD < count) PREFETCH_CONTACT(&contacts[i + 2 * PREFETCH_AHEAD]);
+        if (i + PREFETCH_AHEAD < count) {
+            const solver_contact_t *ahead = &contacts[i + PREFETCH_AHEAD];
+            __builtin_prefetch(&states[ahead->a].acceleration);
+            __builtin_prefetch(&states[ahead->b].acceleration);
+        }
         const solver_contact_t *c = &contacts[i];
         double least = c->points[0].separation;
         if (c->point_count == 2 && c->points[1].separation < least) {
@@ -481,21 +508,38 @@ static const uint8_t *mark_jointed(shock_t *shock, const solver_bodies_t *bodies
     return shock->jointed;
 }
 
-void shock_lift(shock_t *shock, const solver_contact_t *contacts, size_t count,
-                const solver_bodies_t *bodies, const joint_step_t *joints) {
+typedef struct {
+    const shock_t *shock;
+    const solver_contact_t *contacts;
+    const solver_bodies_t *bodies;
+    const uint8_t *jointed;
+} lift_t;
+
+/* The queue's bodies [begin, end) lifted off their supports. */
+static void lift_range(void *context, size_t begin, size_t end) {
+    const lift_t *lift = context;
+    const uint32_t *support_end = lift->shock->support_end, *held = lift->shock->held;
+    uint32_t stop = support_end[end - 1];
+    for (uint32_t k = begin > 0 ? support_end[begin - 1] : 0; k < stop; k++) {
+        if (k + PREFETCH_AHEAD < stop) {
+            PREFETCH_CONTACT(&lift->contacts[held[k + PREFETCH_AHEAD] / 2]);
+        }
+        lift_off(&lift->contacts[held[k] / 2], lift->bodies, lift->jointed, held[k] % 2 == 1);
+    }
+}
+
+void shock_lift(shock_t *shock, workers_t *workers, const solver_contact_t *contacts,
+                size_t count, const solver_bodies_t *bodies, const joint_step_t *joints) {
     if (count == 0) return;
     size_t body_count = bodies->body_count;
     reserve(shock, count, body_count);
     if (!link_resting(shock, contacts, count, bodies->states, body_count)) return;
     size_t reached = find_levels(shock, bodies->velocities, body_count);
-    const uint8_t *jointed = mark_jointed(shock, bodies, joints);
-    uint32_t start = 0;
-    for (size_t q = 0; q < reached; q++) {
-        uint32_t stop = shock->support_end[q];
-        for (uint32_t k = start; k < stop; k++) {
-            uint32_t side = shock->held[k];
-            lift_off(&contacts[side / 2], bodies, jointed, side % 2 == 1);
-        }
-        start = stop;
+    lift_t lift = {shock, contacts, bodies, mark_jointed(shock, bodies, joints)};
+    if (reached == 0) return;
+    if (workers == NULL) {
+        lift_range(&lift, 0, reached);
+        return;
     }
+    over_levels(shock, workers, reached, lift_range, &lift);
 }

@@ -71,7 +71,7 @@ void shock_propagate(shock_t *shock, const solver_wide_t *wide, const solver_con
  *
  * The levels reuse the arrays of shock_propagate, whose pass is over.
  */
-void shock_lift(shock_t *shock, const solver_contact_t *contacts, size_t count,
-                const solver_bodies_t *bodies, const joint_step_t *joints);
+void shock_lift(shock_t *shock, workers_t *workers, const solver_contact_t *contacts,
+                size_t count, const solver_bodies_t *bodies, const joint_step_t *joints);
 
 #endif // #ifndef SHOCK_H

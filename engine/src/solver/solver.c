@@ -135,7 +135,7 @@ void solver_solve(solver_wide_t *wide, shock_t *shock, solver_contact_t *contact
         /* The lift before the last iteration, which then spreads its moves
          * over both bodies of each contact (shock.h). */
         if (iteration == settings->position_iterations - 1) {
-            shock_lift(shock, contacts, contact_count, bodies, joints);
+            shock_lift(shock, wide->workers, contacts, contact_count, bodies, joints);
         }
         solver_split_correct_positions(wide, bodies->displacements, iteration % 2 == 1);
         for (size_t i = 0; i < wide->loose_count; i++) {
