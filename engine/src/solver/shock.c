@@ -49,11 +49,7 @@ static bool link_bodies(shock_t *shock, const solver_wide_t *wide,
         uint32_t i = wide->loose[k];
         const solver_contact_t *c = &contacts[i];
         if (!carries_load(c)) continue;
-        uint32_t side = 2 * i; /* fits: 2^31 contacts would not fit in memory */
-        sides[side] = (solver_side_t){first[c->a], c->b};
-        first[c->a] = side;
-        sides[side + 1] = (solver_side_t){first[c->b], c->a};
-        first[c->b] = side + 1;
+        solver_link_sides(first, sides, i, c->a, c->b);
         shock->slots[i] = IN_CONTACT;
         any = true;
     }
@@ -92,6 +88,14 @@ static void push_upper(const solver_contact_t *c, solver_velocity_t *upper, bool
     upper->w += sign * upper->inverse_inertia * (x1 * rn1 + x2 * rn2);
 }
 
+/* The push x >= 0 at one point (lever term rn of the upper body) that
+ * brings it to its target, gap short of it where negative, the upper body
+ * alone moving; 0 when it cannot move there. */
+static double solve_one(const solver_velocity_t *upper, double rn, double gap) {
+    double k = upper->inverse_mass + upper->inverse_inertia * rn * rn;
+    return gap < 0.0 && k > 0.0 ? -gap / k : 0.0;
+}
+
 /* The impulse along the normal that stops the upper body's approach at a
  * one-point contact, the lower body (the other of a, b) held still. */
 static void stop_one(const solver_contact_t *c, solver_velocity_t *a, solver_velocity_t *b,
@@ -101,9 +105,7 @@ static void stop_one(const solver_contact_t *c, solver_velocity_t *a, solver_vel
     if (gap >= 0.0) return;
     solver_velocity_t *upper = upper_is_b ? b : a;
     double rn = upper_rn(p, upper_is_b);
-    double k = upper->inverse_mass + upper->inverse_inertia * rn * rn;
-    double x = k > 0.0 ? -gap / k : 0.0;
-    push_upper(c, upper, upper_is_b, x, 0.0, rn, 0.0);
+    push_upper(c, upper, upper_is_b, solve_one(upper, rn, gap), 0.0, rn, 0.0);
 }
 
 /* The pushes x1, x2 >= 0 at two points (lever terms rn1, rn2 of the upper
@@ -450,11 +452,7 @@ static bool link_resting(shock_t *shock, const solver_contact_t *contacts, size_
         if (least > 0.0) continue;
         if (!rests_on(c, states, true) && !rests_on(c, states, false)) continue;
         deep |= least + c->slop < 0.0;
-        uint32_t side = 2 * (uint32_t)i;
-        sides[side] = (solver_side_t){first[c->a], c->b};
-        first[c->a] = side;
-        sides[side + 1] = (solver_side_t){first[c->b], c->a};
-        first[c->b] = side + 1;
+        solver_link_sides(first, sides, (uint32_t)i, c->a, c->b);
     }
     return deep;
 }
@@ -473,8 +471,7 @@ static void lift_pushes(const solver_contact_t *c, const solver_velocity_t *row,
         if (e1 < 0.0 || e2 < 0.0) solve_upper(row, rn[0], rn[1], e1, e2, &x[0], &x[1]);
         return;
     }
-    double k = row->inverse_mass + row->inverse_inertia * rn[0] * rn[0];
-    if (e1 < 0.0 && k > 0.0) x[0] = -e1 / k;
+    x[0] = solve_one(row, rn[0], e1);
 }
 
 /* Lifts the upper body (b of contact c, or a) off the other, when it rests

@@ -374,13 +374,20 @@ void solver_wide_iterate(solver_wide_t *wide, solver_velocity_t *rows) {
     iterate_batches(wide, rows, 0, wide->batch_count, wide->points, wide->blocks, false, true);
 }
 
-LANE_CLONES
-void solver_wide_iterate_range(solver_wide_t *wide, solver_velocity_t *rows, size_t begin,
-                               size_t end) {
+/* Batches [begin, end) of one colour, from their first point and block;
+ * rows shared with other threads. */
+LANE_INLINE void iterate_range(solver_wide_t *wide, solver_velocity_t *rows, size_t begin,
+                               size_t end, bool friction) {
     if (begin == end) return;
     size_t g = group_of(wide, begin);
     iterate_batches(wide, rows, begin, end, wide->points + first_point(wide, g, begin),
-                    wide->blocks + first_block(wide, g, begin), true, true);
+                    wide->blocks + first_block(wide, g, begin), true, friction);
+}
+
+LANE_CLONES
+void solver_wide_iterate_range(solver_wide_t *wide, solver_velocity_t *rows, size_t begin,
+                               size_t end) {
+    iterate_range(wide, rows, begin, end, true);
 }
 
 LANE_CLONES
@@ -391,10 +398,7 @@ void solver_wide_relax(solver_wide_t *wide, solver_velocity_t *rows) {
 LANE_CLONES
 void solver_wide_relax_range(solver_wide_t *wide, solver_velocity_t *rows, size_t begin,
                              size_t end) {
-    if (begin == end) return;
-    size_t g = group_of(wide, begin);
-    iterate_batches(wide, rows, begin, end, wide->points + first_point(wide, g, begin),
-                    wide->blocks + first_block(wide, g, begin), true, false);
+    iterate_range(wide, rows, begin, end, false);
 }
 
 /* The bodies' displacements in a batch, lane by lane. */

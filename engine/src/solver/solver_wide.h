@@ -116,6 +116,17 @@ typedef struct {
 } solver_side_t;
 enum { SOLVER_NO_SIDE = UINT32_MAX };
 
+/* Pushes both ends of contact i (between body rows a and b) onto the front
+ * of their bodies' lists (first: each body's first end). */
+static inline void solver_link_sides(uint32_t *first, solver_side_t *sides, uint32_t i,
+                                     uint32_t a, uint32_t b) {
+    uint32_t side = 2 * i; /* fits: 2^31 contacts would not fit in memory */
+    sides[side] = (solver_side_t){first[a], b};
+    first[a] = side;
+    sides[side + 1] = (solver_side_t){first[b], a};
+    first[b] = side + 1;
+}
+
 /* Where a batched contact's accumulated impulses lie in the batches: for
  * solver_wide_impulses. */
 typedef uint32_t solver_slot_t;

@@ -259,16 +259,6 @@ void solver_wide_store(const solver_wide_t *wide, solver_contact_t *contacts) {
     solver_wide_store_range(wide, contacts, 0, wide->batch_count);
 }
 
-/* Pushes both ends of contact batch->contact[l] onto its bodies' lists. */
-LANE_INLINE void link_lane(const solver_batch_t *batch, int l, uint32_t *first,
-                           solver_side_t *sides) {
-    uint32_t a = batch->a[l], b = batch->b[l], side = 2 * batch->contact[l];
-    sides[side] = (solver_side_t){first[a], b};
-    first[a] = side;
-    sides[side + 1] = (solver_side_t){first[b], a};
-    first[b] = side + 1;
-}
-
 bool solver_wide_link_loaded(const solver_wide_t *wide, uint32_t *first, solver_side_t *sides,
                              solver_slot_t *slots) {
     const lane_point_t *points = wide->points;
@@ -281,7 +271,7 @@ bool solver_wide_link_loaded(const solver_wide_t *wide, uint32_t *first, solver_
             /* No slot: only a two-point contact's impulses are asked for. */
             for (int l = 0; l < batch->lanes; l++) {
                 if (!((*first_impulse)[l] > 0.0)) continue;
-                link_lane(batch, l, first, sides);
+                solver_link_sides(first, sides, batch->contact[l], batch->a[l], batch->b[l]);
                 any = true;
             }
             points += 1;
@@ -291,7 +281,7 @@ bool solver_wide_link_loaded(const solver_wide_t *wide, uint32_t *first, solver_
         const lane_t *second_impulse = &points[1].normal_impulse;
         for (int l = 0; l < batch->lanes; l++) {
             if (!((*first_impulse)[l] > 0.0 || (*second_impulse)[l] > 0.0)) continue;
-            link_lane(batch, l, first, sides);
+            solver_link_sides(first, sides, batch->contact[l], batch->a[l], batch->b[l]);
             slots[batch->contact[l]] = slot + (solver_slot_t)l;
             any = true;
         }
