@@ -151,6 +151,38 @@ static void moving_boxes_are_searched_as_they_are(void) {
     pair_tracker_free(tracker);
 }
 
+/* A few boxes leaving their grown boxes at each call (a settling pile)
+ * are grown again and their pairs found by queries, not by a search of
+ * every box: the pairs stay exact, and most calls compare far fewer boxes
+ * than a search does; a search runs again only once enough boxes have
+ * left (pair_tracker.c). The same boxes leave again and again, one of
+ * them back and forth across the grid. */
+static void a_few_boxes_leaving_are_grown_again(void) {
+    scatter(COUNT);
+    pair_tracker_t *tracker = pair_tracker_init();
+    check_call(tracker, COUNT);
+    int cheap = 0;
+    for (int call = 0; call < 40; call++) {
+        moves_by(COUNT, 0.001);
+        for (int k = 0; k < 3; k++) {
+            size_t i = 1 + (size_t)(call * 7 + k * 131) % (COUNT - 1);
+            double dx = k == 0 ? (call % 2 == 0 ? 20.0 : -20.0) : 0.3;
+            proxies[i].box.min.x += dx;
+            proxies[i].box.max.x += dx;
+        }
+        size_t tests = check_call(tracker, COUNT);
+        check_same_as_grid(tracker, COUNT);
+        const broadphase_pair_t *pairs;
+        size_t fresh_tests = 0;
+        pair_tracker_t *fresh = pair_tracker_init();
+        pair_tracker_find(fresh, proxies, COUNT, &pairs, &fresh_tests);
+        pair_tracker_free(fresh);
+        cheap += 2 * tests < fresh_tests;
+    }
+    CHECK(cheap >= 36);
+    pair_tracker_free(tracker);
+}
+
 /* A resting scene is handed last call's pairs again while no box changes
  * cells and the same pairs overlap; a box that starts or stops touching
  * another within the cells it had still changes the pairs. Two 1 m boxes
@@ -192,5 +224,6 @@ static void nan_and_infinite_boxes(void) {
 
 TEST_SUITE(pair_tracker, TEST_CASE(pairs_are_the_overlapping_ones_call_after_call),
            TEST_CASE(resting_boxes_skip_the_search),
+           TEST_CASE(a_few_boxes_leaving_are_grown_again),
            TEST_CASE(moving_boxes_are_searched_as_they_are),
            TEST_CASE(touching_within_the_same_cells), TEST_CASE(nan_and_infinite_boxes));

@@ -367,6 +367,14 @@ size_t broadphase_find_pairs(broadphase_t *broadphase, const broadphase_proxy_t 
     }
     if (large_count > 0) pairs_with_large(broadphase, proxies, count, large_count);
     *pairs = sort_pairs(broadphase, count);
+    /* The grid stays for box queries; bounds all round, as finding them
+     * is a pass the search does not need. */
+    broadphase->inverse_size = inverse_size;
+    broadphase->bucket_count = buckets;
+    broadphase->large_count = large_count;
+    broadphase->proxy_count = count;
+    broadphase->proxies = proxies;
+    broadphase->bounds = (aabb_t){{-INFINITY, -INFINITY}, {INFINITY, INFINITY}};
     *tests += broadphase->tests + n;
     return broadphase->pair_count;
 }

@@ -57,10 +57,12 @@ void broadphase_set_workers(broadphase_t *broadphase, workers_t *workers);
  * broadphase_build files the proxies' boxes (finding no pairs, ignoring
  * filters; one thread), and the queries read that grid until the next
  * build or broadphase_find_pairs, the proxies staying where they were
- * (the caller's array, unchanged). Each visits a proxy at most once per
- * query; visit returns false to stop a box query, and a ray's visit
- * returns the fraction the ray is clipped to from then on (the nearest
- * hit so far), so cells beyond it are not read.
+ * (the caller's array; a proxy too large for the grid is read from it,
+ * the others from the copies filed). broadphase_find_pairs leaves its
+ * grid for box queries the same way (not for rays). Each visits a proxy
+ * at most once per query; visit returns false to stop a box query, and a
+ * ray's visit returns the fraction the ray is clipped to from then on (the
+ * nearest hit so far), so cells beyond it are not read.
  */
 void broadphase_build(broadphase_t *broadphase, const broadphase_proxy_t *proxies, size_t count);
 typedef bool (*broadphase_visit_t)(void *context, uint32_t proxy);

@@ -1,4 +1,5 @@
 #include "collision/pair_tracker.h"
+#include <stdlib.h>
 #include <string.h>
 #include "base/memory.h"
 #include "base/scalar.h"
@@ -18,6 +19,13 @@ static const double GROW_MAX = 0.1;
  * larger pair buffers long after a scene has warmed up (the stability
  * suite's gas of 200 bodies). */
 static const unsigned BACKOFF_MAX = 1024;
+/* Boxes that left their grown boxes since the last search (the stale ones)
+ * are grown again and their pairs found by queries (regrow) while they
+ * are at most this many, or a share of the proxies; beyond, the grid is
+ * searched anew. Each query also compares its box with every stale box,
+ * whose entries in the grid are out of date. */
+static const size_t STALE_MIN = 64;
+static const size_t STALE_SHARE = 16;
 
 struct pair_tracker {
     broadphase_t *broadphase;
@@ -30,10 +38,23 @@ struct pair_tracker {
      * they are before grown ones are tried again, and how many the next
      * grown search kept by no call will wait. */
     unsigned since_search, tight_left, backoff;
-    /* The pairs the last search found, grouped by a: the grid's own
-     * buffer, which stays until this tracker searches it again. */
+    /* The pairs of grown boxes, grouped by a: the grid's own buffer after
+     * a search, which stays until this tracker searches it again, or one of
+     * `candidates` after regrow. */
     const broadphase_pair_t *kept;
     size_t kept_count;
+    broadphase_pair_t *candidates[2];
+    size_t candidate_capacity[2];
+    unsigned candidate_side;
+    /* The proxies grown again since the last search, whose grid entries
+     * are out of date: a flag each (STALE, or GROWN_NOW during a regrow)
+     * and their list; the proxies that left their grown boxes at this call;
+     * the pairs a regrow found. */
+    uint8_t *stale;
+    uint32_t *stale_list, *escaped;
+    size_t stale_capacity, stale_list_capacity, escaped_capacity, stale_count, escaped_count;
+    broadphase_pair_t *found;
+    size_t found_capacity, found_count;
     /* The pairs handed out, and their ranks (pair_rank). */
     broadphase_pair_t *pairs;
     uint64_t *ranks;
@@ -69,6 +90,12 @@ void pair_tracker_free(pair_tracker_t *tracker) {
     memory_free(tracker->last_ranges);
     memory_free(tracker->overlaps);
     memory_free(tracker->last_overlaps);
+    memory_free(tracker->candidates[0]);
+    memory_free(tracker->candidates[1]);
+    memory_free(tracker->stale);
+    memory_free(tracker->stale_list);
+    memory_free(tracker->escaped);
+    memory_free(tracker->found);
     memory_free(tracker);
 }
 
@@ -87,17 +114,26 @@ static bool box_inside(aabb_t inner, aabb_t outer) {
            inner.max.x <= outer.max.x && inner.max.y <= outer.max.y;
 }
 
-/* Whether the pairs of the last search, of grown boxes, still hold every
- * pair of these proxies. */
-static bool still_inside(const pair_tracker_t *tracker, const broadphase_proxy_t *proxies,
+/* The most stale proxies a regrow may leave before a search pays. */
+static size_t stale_limit(size_t count) {
+    return max_of(STALE_MIN, count / STALE_SHARE);
+}
+
+/* Whether the pairs of grown boxes still hold every pair of these proxies
+ * once the boxes that left theirs are grown again (regrow): the same
+ * proxies and filters, and with those that left no more than stale_limit
+ * stale. Lists those that left in escaped, their count in escaped_count. */
+static bool still_inside(pair_tracker_t *tracker, const broadphase_proxy_t *proxies,
                          size_t count) {
     if (count != tracker->count) return false;
+    size_t room = stale_limit(count) - tracker->stale_count, n = 0;
     for (size_t i = 0; i < count; i++) {
-        if (!box_inside(proxies[i].box, tracker->grown[i].box) ||
-            !same_filters(&proxies[i], &tracker->grown[i])) {
-            return false;
-        }
+        if (!same_filters(&proxies[i], &tracker->grown[i])) return false;
+        if (box_inside(proxies[i].box, tracker->grown[i].box)) continue;
+        if (n == room) return false;
+        tracker->escaped[n++] = (uint32_t)i;
     }
+    tracker->escaped_count = n;
     return true;
 }
 
@@ -126,7 +162,14 @@ static aabb_t grown_box(aabb_t box) {
  * pairs. */
 static void search(pair_tracker_t *tracker, const broadphase_proxy_t *proxies, size_t count,
                    bool grow, size_t *tests) {
+    tracker->stale_count = 0;
     if (grow) {
+        memory_reserve((void **)&tracker->stale, &tracker->stale_capacity, count, sizeof(uint8_t));
+        if (count > 0) memset(tracker->stale, 0, count);
+        memory_reserve((void **)&tracker->stale_list, &tracker->stale_list_capacity,
+                       stale_limit(count), sizeof(uint32_t));
+        memory_reserve((void **)&tracker->escaped, &tracker->escaped_capacity, stale_limit(count),
+                       sizeof(uint32_t));
         memory_reserve((void **)&tracker->grown, &tracker->grown_capacity, count,
                        sizeof(broadphase_proxy_t));
         for (size_t i = 0; i < count; i++) {
@@ -140,6 +183,103 @@ static void search(pair_tracker_t *tracker, const broadphase_proxy_t *proxies, s
     tracker->count = count;
     tracker->searched_grown = grow;
     tracker->since_search = 0;
+    tracker->ranked = false;
+}
+
+enum { STALE = 1, GROWN_NOW = 2 };
+
+/* Appends (i, j), a < b, to the pairs found when their filters allow it. */
+static void add_found(pair_tracker_t *tracker, uint32_t i, uint32_t j) {
+    if (!broadphase_filters_allow(&tracker->grown[i], &tracker->grown[j])) return;
+    memory_reserve((void **)&tracker->found, &tracker->found_capacity, tracker->found_count + 1,
+                   sizeof(broadphase_pair_t));
+    tracker->found[tracker->found_count++] = i < j ? (broadphase_pair_t){i, j}
+                                                   : (broadphase_pair_t){j, i};
+}
+
+typedef struct {
+    pair_tracker_t *tracker;
+    uint32_t proxy;
+    size_t visits;
+} regrow_query_t;
+
+/* A proxy whose grid entry overlaps the query's grown box: its entry is
+ * its grown box unless it is stale (those are compared in regrow_one). */
+static bool visit_grown(void *context, uint32_t other) {
+    regrow_query_t *query = context;
+    query->visits++;
+    if (other != query->proxy && !query->tracker->stale[other]) {
+        add_found(query->tracker, query->proxy, other);
+    }
+    return true;
+}
+
+/* The pairs of proxy i, grown now, with the grid's up-to-date entries and
+ * with the stale proxies; a pair of two grown now is found once, from the
+ * lower index. Returns the comparisons made. */
+static size_t regrow_one(pair_tracker_t *tracker, uint32_t i) {
+    regrow_query_t query = {tracker, i, 0};
+    aabb_t box = tracker->grown[i].box;
+    broadphase_query_box(tracker->broadphase, box, visit_grown, &query);
+    for (size_t k = 0; k < tracker->stale_count; k++) {
+        uint32_t j = tracker->stale_list[k];
+        if (j == i || (tracker->stale[j] == GROWN_NOW && j < i)) continue;
+        if (aabb_overlaps(box, tracker->grown[j].box)) add_found(tracker, i, j);
+    }
+    return query.visits + tracker->stale_count;
+}
+
+static int compare_pairs(const void *p, const void *q) {
+    const broadphase_pair_t *x = p, *y = q;
+    if (x->a != y->a) return x->a < y->a ? -1 : 1;
+    return x->b < y->b ? -1 : x->b > y->b;
+}
+
+/* The kept pairs without those of proxies grown now, and the pairs found,
+ * grouped by a, into the other candidate buffer, which becomes the kept. */
+static void merge_found(pair_tracker_t *tracker) {
+    const uint8_t *stale = tracker->stale;
+    unsigned side = tracker->candidate_side ^ 1u;
+    memory_reserve((void **)&tracker->candidates[side], &tracker->candidate_capacity[side],
+                   tracker->kept_count + tracker->found_count, sizeof(broadphase_pair_t));
+    broadphase_pair_t *out = tracker->candidates[side];
+    const broadphase_pair_t *found = tracker->found;
+    size_t n = 0, f = 0, found_count = tracker->found_count;
+    for (size_t k = 0; k < tracker->kept_count; k++) {
+        broadphase_pair_t pair = tracker->kept[k];
+        if ((stale[pair.a] | stale[pair.b]) & GROWN_NOW) continue;
+        while (f < found_count && found[f].a < pair.a) out[n++] = found[f++];
+        out[n++] = pair;
+    }
+    while (f < found_count) out[n++] = found[f++];
+    tracker->kept = out;
+    tracker->kept_count = n;
+    tracker->candidate_side = side;
+}
+
+/*
+ * The proxies that left their grown boxes (escaped) grown again around
+ * their boxes, their pairs with every grown box found by queries on the
+ * grid of the last search, whose other entries are still right: the kept
+ * pairs are then the pairs of grown boxes, as a search would find them,
+ * at the cost of the few that moved.
+ */
+static void regrow(pair_tracker_t *tracker, const broadphase_proxy_t *proxies, size_t *tests) {
+    for (size_t k = 0; k < tracker->escaped_count; k++) {
+        uint32_t i = tracker->escaped[k];
+        tracker->grown[i].box = grown_box(proxies[i].box);
+        if (tracker->stale[i] == 0) tracker->stale_list[tracker->stale_count++] = i;
+        tracker->stale[i] = GROWN_NOW;
+    }
+    tracker->found_count = 0;
+    for (size_t k = 0; k < tracker->escaped_count; k++) {
+        *tests += regrow_one(tracker, tracker->escaped[k]);
+    }
+    if (tracker->found_count > 1) {
+        qsort(tracker->found, tracker->found_count, sizeof(broadphase_pair_t), compare_pairs);
+    }
+    merge_found(tracker);
+    for (size_t k = 0; k < tracker->escaped_count; k++) tracker->stale[tracker->escaped[k]] = STALE;
     tracker->ranked = false;
 }
 
@@ -286,6 +426,7 @@ size_t pair_tracker_find(pair_tracker_t *tracker, const broadphase_proxy_t *prox
             return tracker->kept_count;
         }
     } else {
+        if (tracker->escaped_count > 0) regrow(tracker, proxies, tests);
         tracker->since_search++;
     }
     grid_place_t place = grid_place(tracker, proxies, count);

@@ -7,10 +7,12 @@
  * extent, at most 10 cm); while every box stays inside its grown box, with
  * the same filters, the pairs of grown boxes still include every pair whose
  * boxes overlap, so the search is skipped and only the kept pairs' boxes
- * are compared. A resting pile or pyramid then searches its grid once in
- * many steps (Box2D keeps its tree's boxes enlarged for the same reason);
- * where boxes keep leaving their grown boxes, the grid searches the boxes
- * as they are (pair_tracker.c has the rule).
+ * are compared. A box that leaves its grown box is grown again and its
+ * pairs found by a query of the last search's grid, until so many have
+ * left that a search pays. A resting pile or pyramid then searches its
+ * grid once in many steps (Box2D keeps its tree's boxes enlarged for the
+ * same reason); where boxes keep leaving their grown boxes, the grid
+ * searches the boxes as they are (pair_tracker.c has the rules).
  *
  * What comes out is what broadphase_find_pairs gives for these proxies,
  * bit for bit and in its order, whenever the grid was last searched: the
