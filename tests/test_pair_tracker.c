@@ -90,6 +90,17 @@ static void check_same_as_grid(pair_tracker_t *tracker, size_t count) {
     broadphase_free(grid);
 }
 
+/* The box comparisons of a search of the proxies as they are now (a
+ * tracker's first call). */
+static size_t search_tests(void) {
+    const broadphase_pair_t *pairs;
+    size_t tests = 0;
+    pair_tracker_t *fresh = pair_tracker_init();
+    pair_tracker_find(fresh, proxies, COUNT, &pairs, &tests);
+    pair_tracker_free(fresh);
+    return tests;
+}
+
 static void pairs_are_the_overlapping_ones_call_after_call(void) {
     scatter(COUNT);
     pair_tracker_t *tracker = pair_tracker_init();
@@ -140,11 +151,7 @@ static void moving_boxes_are_searched_as_they_are(void) {
     for (int call = 0; call < 40; call++) {
         moves_by(COUNT, 0.3);
         size_t tests = check_call(tracker, COUNT);
-        const broadphase_pair_t *pairs;
-        size_t fresh_tests = 0;
-        pair_tracker_t *fresh = pair_tracker_init();
-        pair_tracker_find(fresh, proxies, COUNT, &pairs, &fresh_tests);
-        pair_tracker_free(fresh);
+        size_t fresh_tests = search_tests();
         grown += tests == fresh_tests;
     }
     CHECK(grown == 5);
@@ -172,11 +179,7 @@ static void a_few_boxes_leaving_are_grown_again(void) {
         }
         size_t tests = check_call(tracker, COUNT);
         check_same_as_grid(tracker, COUNT);
-        const broadphase_pair_t *pairs;
-        size_t fresh_tests = 0;
-        pair_tracker_t *fresh = pair_tracker_init();
-        pair_tracker_find(fresh, proxies, COUNT, &pairs, &fresh_tests);
-        pair_tracker_free(fresh);
+        size_t fresh_tests = search_tests();
         cheap += 2 * tests < fresh_tests;
     }
     CHECK(cheap >= 36);
