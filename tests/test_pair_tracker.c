@@ -6,6 +6,7 @@
  * only when a box has left its grown box. */
 #include <stdlib.h>
 #include <string.h>
+#include "base/workers.h"
 #include "collision/pair_tracker.h"
 #include "test.h"
 
@@ -186,6 +187,35 @@ static void a_few_boxes_leaving_are_grown_again(void) {
     pair_tracker_free(tracker);
 }
 
+/* Trackers on 2 and 3 threads hand out the pairs of one on the caller
+ * alone, in its order, call after call: the overlaps are marked and the
+ * pairs ranked in chunks of whole first-body groups. */
+static void workers_hand_out_the_same_pairs(void) {
+    scatter(COUNT);
+    pair_tracker_t *alone = pair_tracker_init(), *shared[2];
+    workers_t *workers[2] = {workers_init(2), workers_init(3)};
+    for (int k = 0; k < 2; k++) {
+        shared[k] = pair_tracker_init();
+        pair_tracker_set_workers(shared[k], workers[k]);
+    }
+    for (int call = 0; call < 30; call++) {
+        moves_by(COUNT, call % 10 == 9 ? 0.3 : 0.002);
+        proxies[1 + (size_t)call * 13 % (COUNT - 1)].box.max.y += 0.2;
+        const broadphase_pair_t *want, *got;
+        size_t tests = 0;
+        size_t n = pair_tracker_find(alone, proxies, COUNT, &want, &tests);
+        for (int k = 0; k < 2; k++) {
+            CHECK(pair_tracker_find(shared[k], proxies, COUNT, &got, &tests) == n);
+            CHECK(n == 0 || memcmp(got, want, n * sizeof *got) == 0);
+        }
+    }
+    for (int k = 0; k < 2; k++) {
+        pair_tracker_free(shared[k]);
+        workers_free(workers[k]);
+    }
+    pair_tracker_free(alone);
+}
+
 /* A resting scene is handed last call's pairs again while no box changes
  * cells and the same pairs overlap; a box that starts or stops touching
  * another within the cells it had still changes the pairs. Two 1 m boxes
@@ -228,5 +258,6 @@ static void nan_and_infinite_boxes(void) {
 TEST_SUITE(pair_tracker, TEST_CASE(pairs_are_the_overlapping_ones_call_after_call),
            TEST_CASE(resting_boxes_skip_the_search),
            TEST_CASE(a_few_boxes_leaving_are_grown_again),
+           TEST_CASE(workers_hand_out_the_same_pairs),
            TEST_CASE(moving_boxes_are_searched_as_they_are),
            TEST_CASE(touching_within_the_same_cells), TEST_CASE(nan_and_infinite_boxes));

@@ -3,6 +3,7 @@
 #include <string.h>
 #include "base/memory.h"
 #include "base/scalar.h"
+#include "base/workers.h"
 #include "collision/broadphase_private.h"
 
 /* How far a box is grown all round for the search: a tenth of its extent,
@@ -29,6 +30,7 @@ static const size_t STALE_SHARE = 16;
 
 struct pair_tracker {
     broadphase_t *broadphase;
+    workers_t *workers;
     /* The proxies of the last search and their count, and whether it
      * searched them grown (else as they were). */
     broadphase_proxy_t *grown;
@@ -100,6 +102,7 @@ void pair_tracker_free(pair_tracker_t *tracker) {
 }
 
 void pair_tracker_set_workers(pair_tracker_t *tracker, workers_t *workers) {
+    tracker->workers = workers;
     broadphase_set_workers(tracker->broadphase, workers);
 }
 
@@ -345,19 +348,42 @@ static size_t insert_ranked(pair_tracker_t *tracker, size_t group, size_t n,
     return n + 1;
 }
 
-/* Room for a bit per kept pair in tracker->overlaps, all clear. */
-static void clear_overlaps(pair_tracker_t *tracker) {
-    size_t words = (tracker->kept_count + 63) / 64;
-    if (words == 0) return; /* memset of a null buffer is undefined even for 0 bytes */
-    memory_reserve((void **)&tracker->overlaps, &tracker->overlap_capacity, words,
-                   sizeof(uint64_t));
-    memset(tracker->overlaps, 0, words * sizeof(uint64_t));
-}
-
 static bool kept_overlaps(const pair_tracker_t *tracker, const broadphase_proxy_t *proxies,
                           size_t i) {
     broadphase_pair_t pair = tracker->kept[i];
     return aabb_overlaps(proxies[pair.a].box, proxies[pair.b].box);
+}
+
+typedef struct {
+    pair_tracker_t *tracker;
+    const broadphase_proxy_t *proxies;
+} mark_split_t;
+
+/* Words [begin, end) of tracker->overlaps: a bit per kept pair, set when
+ * its boxes overlap. A chunk writes whole words of its own. */
+static void mark_words(void *context, size_t chunk, size_t begin, size_t end) {
+    (void)chunk;
+    const mark_split_t *split = context;
+    pair_tracker_t *tracker = split->tracker;
+    for (size_t w = begin; w < end; w++) {
+        size_t last = min_of(64 * w + 64, tracker->kept_count);
+        uint64_t bits = 0;
+        for (size_t i = 64 * w; i < last; i++) {
+            bits |= (uint64_t)kept_overlaps(tracker, split->proxies, i) << (i % 64);
+        }
+        tracker->overlaps[w] = bits;
+    }
+}
+
+/* Marks which kept pairs overlap in tracker->overlaps, over the workers;
+ * returns its length in words. */
+static size_t mark_overlaps(pair_tracker_t *tracker, const broadphase_proxy_t *proxies) {
+    size_t words = (tracker->kept_count + 63) / 64;
+    memory_reserve((void **)&tracker->overlaps, &tracker->overlap_capacity, words,
+                   sizeof(uint64_t));
+    mark_split_t split = {tracker, proxies};
+    workers_for(tracker->workers, words, mark_words, &split);
+    return words;
 }
 
 /* Whether every proxy's cells and the bucket mask, all a rank reads, are
@@ -368,41 +394,70 @@ static bool same_cells(const pair_tracker_t *tracker, grid_place_t place, size_t
             memcmp(place.ranges, tracker->last_ranges, count * sizeof(cell_range_t)) == 0);
 }
 
-/* Whether the same kept pairs overlap as at the last call, marking which
- * do in tracker->overlaps. */
-static bool same_overlaps(pair_tracker_t *tracker, const broadphase_proxy_t *proxies) {
-    clear_overlaps(tracker);
-    for (size_t i = 0; i < tracker->kept_count; i++) {
-        tracker->overlaps[i / 64] |= (uint64_t)kept_overlaps(tracker, proxies, i) << (i % 64);
-    }
-    size_t words = (tracker->kept_count + 63) / 64;
+/* Whether the same kept pairs overlap as at the last call (words of
+ * tracker->overlaps marked). */
+static bool same_overlaps(const pair_tracker_t *tracker, size_t words) {
     return words == 0 ||
            memcmp(tracker->overlaps, tracker->last_overlaps, words * sizeof(uint64_t)) == 0;
 }
 
-/* The overlapping kept pairs, each at its rank among its first body's;
- * `marked`: tracker->overlaps already says which overlap, else they are
- * found and marked here. */
-static void rank_kept(pair_tracker_t *tracker, grid_place_t place,
-                      const broadphase_proxy_t *proxies, bool marked) {
+/* Whether kept pair i overlaps (tracker->overlaps marked). */
+static bool marked(const pair_tracker_t *tracker, size_t i) {
+    return tracker->overlaps[i / 64] >> (i % 64) & 1u;
+}
+
+/* The kept pairs of a chunk [begin, end): the groups (pairs of one first
+ * body) that start in it, moved to whole groups. */
+static void whole_groups(const pair_tracker_t *tracker, size_t *begin, size_t *end) {
+    const broadphase_pair_t *kept = tracker->kept;
+    size_t count = tracker->kept_count;
+    while (*begin > 0 && *begin < count && kept[*begin].a == kept[*begin - 1].a) (*begin)++;
+    while (*end > 0 && *end < count && kept[*end].a == kept[*end - 1].a) (*end)++;
+}
+
+typedef struct {
+    pair_tracker_t *tracker;
+    grid_place_t place;
+    size_t starts[WORKERS_MAX_CHUNKS + 1]; /* per chunk: its overlapping pairs, then where they go */
+} rank_split_t;
+
+static void count_chunk(void *context, size_t chunk, size_t begin, size_t end) {
+    rank_split_t *split = context;
+    whole_groups(split->tracker, &begin, &end);
+    size_t n = 0;
+    for (size_t i = begin; i < end; i++) n += marked(split->tracker, i);
+    split->starts[chunk + 1] = n;
+}
+
+/* The chunk's overlapping pairs from its place on, each at its rank among
+ * its first body's, by insertion: a body has a few. */
+static void rank_chunk(void *context, size_t chunk, size_t begin, size_t end) {
+    rank_split_t *split = context;
+    pair_tracker_t *tracker = split->tracker;
+    whole_groups(tracker, &begin, &end);
+    size_t n = split->starts[chunk], group = n;
+    for (size_t i = begin; i < end; i++) {
+        if (!marked(tracker, i)) continue;
+        broadphase_pair_t pair = tracker->kept[i];
+        if (n > group && tracker->pairs[n - 1].a != pair.a) group = n;
+        n = insert_ranked(tracker, group, n, pair, pair_rank(split->place, pair));
+    }
+}
+
+/* The overlapping kept pairs (tracker->overlaps marked), each at its rank
+ * among its first body's: counted, then ranked, chunk by chunk over the
+ * workers, each chunk's groups whole. */
+static void rank_kept(pair_tracker_t *tracker, grid_place_t place) {
     memory_reserve((void **)&tracker->pairs, &tracker->pair_capacity, tracker->kept_count,
                    sizeof(broadphase_pair_t));
     memory_reserve((void **)&tracker->ranks, &tracker->rank_capacity, tracker->kept_count,
                    sizeof(uint64_t));
-    if (!marked) clear_overlaps(tracker);
-    size_t n = 0, group = 0;
-    for (size_t i = 0; i < tracker->kept_count; i++) {
-        if (marked) {
-            if (!(tracker->overlaps[i / 64] >> (i % 64) & 1u)) continue;
-        } else {
-            if (!kept_overlaps(tracker, proxies, i)) continue;
-            tracker->overlaps[i / 64] |= (uint64_t)1 << (i % 64);
-        }
-        broadphase_pair_t pair = tracker->kept[i];
-        if (n > 0 && tracker->pairs[n - 1].a != pair.a) group = n;
-        n = insert_ranked(tracker, group, n, pair, pair_rank(place, pair));
-    }
-    tracker->pair_count = n;
+    rank_split_t split = {tracker, place, {0}};
+    size_t chunks = workers_chunks(tracker->workers, tracker->kept_count);
+    workers_for(tracker->workers, tracker->kept_count, count_chunk, &split);
+    for (size_t k = 0; k < chunks; k++) split.starts[k + 1] += split.starts[k];
+    workers_for(tracker->workers, tracker->kept_count, rank_chunk, &split);
+    tracker->pair_count = split.starts[chunks];
 }
 
 /* Keeps what this call ranked from for the next (same_cells, same_overlaps). */
@@ -430,10 +485,9 @@ size_t pair_tracker_find(pair_tracker_t *tracker, const broadphase_proxy_t *prox
         tracker->since_search++;
     }
     grid_place_t place = grid_place(tracker, proxies, count);
-    if (!same_cells(tracker, place, count)) {
-        rank_kept(tracker, place, proxies, false);
-    } else if (!same_overlaps(tracker, proxies)) {
-        rank_kept(tracker, place, proxies, true);
+    size_t words = mark_overlaps(tracker, proxies);
+    if (!same_cells(tracker, place, count) || !same_overlaps(tracker, words)) {
+        rank_kept(tracker, place);
     }
     remember(tracker, place, count);
     *tests += tracker->kept_count;
