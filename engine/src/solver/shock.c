@@ -21,7 +21,7 @@ void shock_free(shock_t *shock) {
     memory_free(shock->held);
     memory_free(shock->support_end);
     memory_free(shock->jointed);
-    memory_free(shock->marked);
+    memory_free(shock->resting);
     memset(shock, 0, sizeof *shock);
 }
 
@@ -33,48 +33,28 @@ static bool carries_load(const solver_contact_t *c) {
 }
 
 /*
- * Links both ends of every contact i < count marked (shock->marked[i]
- * nonzero, its ends' other bodies written by solver_mark_sides) onto the
- * front of its bodies' lists, in contact order. Returns the marks or'ed.
- */
-static uint8_t link_marked(shock_t *shock, size_t count, size_t body_count) {
-    uint32_t *first = shock->first;
-    solver_side_t *sides = shock->sides;
-    const uint8_t *marked = shock->marked;
-    memset(first, 0xff, body_count * sizeof(uint32_t)); /* SOLVER_NO_SIDE */
-    uint8_t any = 0;
-    for (uint32_t i = 0; i < count; i++) {
-        if (!marked[i]) continue;
-        any |= marked[i];
-        uint32_t side = 2 * i, a = sides[side + 1].other, b = sides[side].other;
-        sides[side].next = first[a];
-        first[a] = side;
-        sides[side + 1].next = first[b];
-        first[b] = side + 1;
-    }
-    return any;
-}
-
-/*
- * Lists each body's load-bearing contacts, the batched ones read straight
- * from the batches' impulses over the workers (solver_wide_mark_loaded),
- * the loose ones here. hold_up puts a body's supports in contact order, so
- * what the pass does hangs on no list's order. Returns whether any contact
- * carries load.
+ * Lists each body's load-bearing contacts: contact i's sides are 2i (seen
+ * from a) and 2i + 1 (from b), each pushed on its body's list, the batched
+ * contacts' straight from the batches' impulses (solver_wide_link_loaded),
+ * then the loose ones'. The lists are in no particular order; hold_up puts
+ * a body's supports in contact order. Returns whether any contact carries
+ * load.
  */
 static bool link_bodies(shock_t *shock, const solver_wide_t *wide,
-                        const solver_contact_t *contacts, size_t count, size_t body_count) {
-    memset(shock->marked, 0, count);
-    solver_wide_mark_loaded(wide, shock->marked, shock->sides, shock->slots);
+                        const solver_contact_t *contacts, size_t body_count) {
+    uint32_t *first = shock->first;
+    solver_side_t *sides = shock->sides;
+    memset(first, 0xff, body_count * sizeof(uint32_t)); /* SOLVER_NO_SIDE */
+    bool any = solver_wide_link_loaded(wide, first, sides, shock->slots);
     for (size_t k = 0; k < wide->loose_count; k++) {
         uint32_t i = wide->loose[k];
         const solver_contact_t *c = &contacts[i];
-        shock->marked[i] = carries_load(c);
-        if (!shock->marked[i]) continue;
-        solver_mark_sides(shock->sides, i, c->a, c->b);
+        if (!carries_load(c)) continue;
+        solver_link_sides(first, sides, i, c->a, c->b);
         shock->slots[i] = IN_CONTACT;
+        any = true;
     }
-    return link_marked(shock, count, body_count) != 0;
+    return any;
 }
 
 /* The relative normal velocity of b over a at point p, less its target:
@@ -415,7 +395,6 @@ static void reserve(shock_t *shock, size_t count, size_t body_count) {
     memory_reserve((void **)&shock->sides, &shock->side_capacity, 2 * count,
                    sizeof(solver_side_t));
     memory_reserve((void **)&shock->slots, &shock->slot_capacity, count, sizeof(solver_slot_t));
-    memory_reserve((void **)&shock->marked, &shock->marked_capacity, count, sizeof(uint8_t));
     /* One more than can be kept, for the stores done regardless. */
     memory_reserve((void **)&shock->queue, &shock->queue_capacity, body_count + 1,
                    sizeof(uint32_t));
@@ -431,7 +410,7 @@ void shock_propagate(shock_t *shock, const solver_wide_t *wide, const solver_con
                      size_t count, solver_velocity_t *velocities, size_t body_count) {
     if (count == 0) return;
     reserve(shock, count, body_count);
-    if (!link_bodies(shock, wide, contacts, count, body_count)) return;
+    if (!link_bodies(shock, wide, contacts, body_count)) return;
     propagate(shock, wide, contacts, velocities, body_count);
 }
 
@@ -457,11 +436,12 @@ typedef struct {
     shock_t *shock;
     const solver_contact_t *contacts;
     const solver_state_t *states;
+    size_t count;
 } resting_split_t;
 
 /* For contacts [begin, end): whether one body rests on the other while
- * they touch (shock->marked, RESTING, the ends told their other bodies for
- * link_marked), and whether one is deep (DEEP). A chunk writes only its own
+ * they touch (a flag each in shock->resting, the sides' other ends written
+ * for link_resting), and whether one is deep. A chunk writes only its own
  * contacts' entries, so the workers may share the scan of the states,
  * which lie anywhere. */
 static void classify_resting(void *context, size_t chunk, size_t begin, size_t end) {
@@ -469,7 +449,8 @@ static void classify_resting(void *context, size_t chunk, size_t begin, size_t e
     const resting_split_t *split = context;
     const solver_contact_t *contacts = split->contacts;
     const solver_state_t *states = split->states;
-    uint8_t *marked = split->shock->marked;
+    uint8_t *resting = split->shock->resting;
+    solver_side_t *sides = split->shock->sides;
     for (size_t i = begin; i < end; i++) {
         /* The contacts a record apart, their bodies' states anywhere. */
         if (i + 2 * PREFETCH_AHEAD < end) PREFETCH_CONTACT(&contacts[i + 2 * PREFETCH_AHEAD]);
@@ -484,21 +465,35 @@ static void classify_resting(void *context, size_t chunk, size_t begin, size_t e
             least = c->points[1].separation;
         }
         bool rests = least <= 0.0 && (rests_on(c, states, true) || rests_on(c, states, false));
-        marked[i] = (uint8_t)(rests ? RESTING | (least + c->slop < 0.0 ? DEEP : 0) : 0);
-        solver_mark_sides(split->shock->sides, (uint32_t)i, c->a, c->b);
+        resting[i] = (uint8_t)(rests ? RESTING | (least + c->slop < 0.0 ? DEEP : 0) : 0);
+        sides[2 * i].other = c->b;
+        sides[2 * i + 1].other = c->a;
     }
 }
 
 /* Lists each body's touching contacts on which one of the two rests, as
  * link_bodies lists the loaded ones: classified over the workers, then
- * linked in contact order, the order the lift takes a body's supports in.
- * Returns whether one of them started the step deeper than its slop (else
- * the lift has nothing to do). */
+ * linked in contact order. Returns whether one of them started the step
+ * deeper than its slop (else the lift has nothing to do). */
 static bool link_resting(shock_t *shock, workers_t *workers, const solver_contact_t *contacts,
                          size_t count, const solver_state_t *states, size_t body_count) {
-    resting_split_t split = {shock, contacts, states};
+    resting_split_t split = {shock, contacts, states, count};
     workers_for(workers, count, classify_resting, &split);
-    return (link_marked(shock, count, body_count) & DEEP) != 0;
+    uint32_t *first = shock->first;
+    solver_side_t *sides = shock->sides;
+    memset(first, 0xff, body_count * sizeof(uint32_t)); /* SOLVER_NO_SIDE */
+    const uint8_t *resting = shock->resting;
+    uint8_t any = 0;
+    for (uint32_t i = 0; i < count; i++) {
+        if (!resting[i]) continue;
+        any |= resting[i];
+        uint32_t side = 2 * i, a = sides[side + 1].other, b = sides[side].other;
+        sides[side].next = first[a];
+        first[a] = side;
+        sides[side + 1].next = first[b];
+        first[b] = side + 1;
+    }
+    return (any & DEEP) != 0;
 }
 
 /* The pushes at contact c's points (kg m, >= 0) that move its upper body
@@ -574,6 +569,7 @@ void shock_lift(shock_t *shock, workers_t *workers, const solver_contact_t *cont
     if (count == 0) return;
     size_t body_count = bodies->body_count;
     reserve(shock, count, body_count);
+    memory_reserve((void **)&shock->resting, &shock->resting_capacity, count, sizeof(uint8_t));
     if (!link_resting(shock, workers, contacts, count, bodies->states, body_count)) return;
     size_t reached = find_levels(shock, bodies->velocities, body_count);
     lift_t lift = {shock, contacts, bodies, mark_jointed(shock, bodies, joints)};

@@ -116,23 +116,29 @@ typedef struct {
 } solver_side_t;
 enum { SOLVER_NO_SIDE = UINT32_MAX };
 
-/* Contact i's two ends told their other bodies (of rows a and b), before
- * the caller links the ends it marked onto their bodies' lists. */
-static inline void solver_mark_sides(solver_side_t *sides, uint32_t i, uint32_t a, uint32_t b) {
-    sides[2 * i].other = b; /* fits: 2^31 contacts would not fit in memory */
-    sides[2 * i + 1].other = a;
+/* Pushes both ends of contact i (between body rows a and b) onto the front
+ * of their bodies' lists (first: each body's first end). */
+static inline void solver_link_sides(uint32_t *first, solver_side_t *sides, uint32_t i,
+                                     uint32_t a, uint32_t b) {
+    uint32_t side = 2 * i; /* fits: 2^31 contacts would not fit in memory */
+    sides[side] = (solver_side_t){first[a], b};
+    first[a] = side;
+    sides[side + 1] = (solver_side_t){first[b], a};
+    first[b] = side + 1;
 }
 
 /* Where a batched contact's accumulated impulses lie in the batches: for
  * solver_wide_impulses. */
 typedef uint32_t solver_slot_t;
 
-/* For every batched contact i: marked[i], whether it carries load (either
- * point's accumulated normal impulse > 0), and for one that does its ends
- * (solver_mark_sides) and, for two points, slots[i], where its impulses
- * lie. Over wide's workers, each batch writing its own contacts' entries.
- * Reads the impulses in the batches, so nothing is stored back first. */
-void solver_wide_mark_loaded(const solver_wide_t *wide, uint8_t *marked, solver_side_t *sides,
+/* Pushes both ends of every batched contact that carries load (either
+ * point's accumulated normal impulse > 0) onto its bodies' lists: first[body]
+ * is a body's first end (the caller sets them all to SOLVER_NO_SIDE before),
+ * sides[end] its next and the body at the other end, and for a two-point
+ * contact i, slots[i] where its impulses lie. The lists come out in no particular order.
+ * Reads the impulses in the batches, so nothing is stored back first.
+ * Returns whether any contact carries load. */
+bool solver_wide_link_loaded(const solver_wide_t *wide, uint32_t *first, solver_side_t *sides,
                              solver_slot_t *slots);
 
 /* The accumulated impulses of the batched two-point contact at slot:

@@ -7,7 +7,6 @@
 #include <string.h>
 #include "base/memory.h"
 #include "base/prefetch.h"
-#include "base/workers.h"
 #include "solver/solver_wide_private.h"
 
 /* Where a batch is packed: its index, its first point's and its block's. */
@@ -260,41 +259,36 @@ void solver_wide_store(const solver_wide_t *wide, solver_contact_t *contacts) {
     solver_wide_store_range(wide, contacts, 0, wide->batch_count);
 }
 
-typedef struct {
-    const solver_wide_t *wide;
-    uint8_t *marked;
-    solver_side_t *sides;
-    solver_slot_t *slots;
-} loaded_split_t;
-
-static void mark_loaded_chunk(void *context, size_t chunk, size_t begin, size_t end) {
-    (void)chunk;
-    const loaded_split_t *split = context;
-    const solver_wide_t *wide = split->wide;
-    size_t g = begin < end ? group_of(wide, begin) : 0;
-    for (size_t i = begin; i < end; i++) {
-        while (wide->group_batch[g + 1] <= i) g++;
-        const solver_batch_t *batch = &wide->batches[i];
-        size_t first = first_point(wide, g, i);
-        const lane_point_t *points = &wide->points[first];
-        bool two = batch->kind != BATCH_SINGLE;
-        for (int l = 0; l < batch->lanes; l++) {
-            uint32_t c = batch->contact[l];
-            bool loaded = points[0].normal_impulse[l] > 0.0 ||
-                          (two && points[1].normal_impulse[l] > 0.0);
-            split->marked[c] = loaded;
-            if (!loaded) continue;
-            solver_mark_sides(split->sides, c, batch->a[l], batch->b[l]);
-            /* Only a two-point contact's impulses are asked for. */
-            if (two) split->slots[c] = (solver_slot_t)(LANES * first) + (solver_slot_t)l;
-        }
-    }
-}
-
-void solver_wide_mark_loaded(const solver_wide_t *wide, uint8_t *marked, solver_side_t *sides,
+bool solver_wide_link_loaded(const solver_wide_t *wide, uint32_t *first, solver_side_t *sides,
                              solver_slot_t *slots) {
-    loaded_split_t split = {wide, marked, sides, slots};
-    workers_for(wide->workers, wide->batch_count, mark_loaded_chunk, &split);
+    const lane_point_t *points = wide->points;
+    solver_slot_t slot = 0; /* LANES times the index of the batch's first point */
+    bool any = false;
+    for (size_t i = 0; i < wide->batch_count; i++) {
+        const solver_batch_t *batch = &wide->batches[i];
+        const lane_t *first_impulse = &points[0].normal_impulse;
+        if (batch->kind == BATCH_SINGLE) {
+            /* No slot: only a two-point contact's impulses are asked for. */
+            for (int l = 0; l < batch->lanes; l++) {
+                if (!((*first_impulse)[l] > 0.0)) continue;
+                solver_link_sides(first, sides, batch->contact[l], batch->a[l], batch->b[l]);
+                any = true;
+            }
+            points += 1;
+            slot += LANES;
+            continue;
+        }
+        const lane_t *second_impulse = &points[1].normal_impulse;
+        for (int l = 0; l < batch->lanes; l++) {
+            if (!((*first_impulse)[l] > 0.0 || (*second_impulse)[l] > 0.0)) continue;
+            solver_link_sides(first, sides, batch->contact[l], batch->a[l], batch->b[l]);
+            slots[batch->contact[l]] = slot + (solver_slot_t)l;
+            any = true;
+        }
+        points += 2;
+        slot += 2 * LANES;
+    }
+    return any;
 }
 
 void solver_wide_impulses(const solver_wide_t *wide, solver_slot_t slot, int point_count,
