@@ -21,7 +21,6 @@ void shock_free(shock_t *shock) {
     memory_free(shock->held);
     memory_free(shock->support_end);
     memory_free(shock->jointed);
-    memory_free(shock->resting);
     memset(shock, 0, sizeof *shock);
 }
 
@@ -428,33 +427,19 @@ static inline bool rests_on(const solver_contact_t *c, const solver_state_t *sta
     return along < 0.0 && along * along > RESTING_COSINE * RESTING_COSINE * vec_dot(pull, pull);
 }
 
-/* What classify_resting found of a contact: whether it is linked, and
- * whether it started the step deeper than its slop. */
-enum { RESTING = 1, DEEP = 2 };
-
-typedef struct {
-    shock_t *shock;
-    const solver_contact_t *contacts;
-    const solver_state_t *states;
-    size_t count;
-} resting_split_t;
-
-/* For contacts [begin, end): whether one body rests on the other while
- * they touch (a flag each in shock->resting, the sides' other ends written
- * for link_resting), and whether one is deep. A chunk writes only its own
- * contacts' entries, so the workers may share the scan of the states,
- * which lie anywhere. */
-static void classify_resting(void *context, size_t chunk, size_t begin, size_t end) {
-    (void)chunk;
-    const resting_split_t *split = context;
-    const solver_contact_t *contacts = split->contacts;
-    const solver_state_t *states = split->states;
-    uint8_t *resting = split->shock->resting;
-    solver_side_t *sides = split->shock->sides;
-    for (size_t i = begin; i < end; i++) {
+/* Lists each body's touching contacts on which one of the two rests, as
+ * link_bodies lists the loaded ones. Returns whether one of them started
+ * the step deeper than its slop (else the lift has nothing to do). */
+static bool link_resting(shock_t *shock, const solver_contact_t *contacts, size_t count,
+                         const solver_state_t *states, size_t body_count) {
+    uint32_t *first = shock->first;
+    solver_side_t *sides = shock->sides;
+    memset(first, 0xff, body_count * sizeof(uint32_t)); /* SOLVER_NO_SIDE */
+    bool deep = false;
+    for (size_t i = 0; i < count; i++) {
         /* The contacts a record apart, their bodies' states anywhere. */
-        if (i + 2 * PREFETCH_AHEAD < end) PREFETCH_CONTACT(&contacts[i + 2 * PREFETCH_AHEAD]);
-        if (i + PREFETCH_AHEAD < end) {
+        if (i + 2 * PREFETCH_AHEAD < count) PREFETCH_CONTACT(&contacts[i + 2 * PREFETCH_AHEAD]);
+        if (i + PREFETCH_AHEAD < count) {
             const solver_contact_t *ahead = &contacts[i + PREFETCH_AHEAD];
             __builtin_prefetch(&states[ahead->a].acceleration);
             __builtin_prefetch(&states[ahead->b].acceleration);
@@ -464,36 +449,12 @@ static void classify_resting(void *context, size_t chunk, size_t begin, size_t e
         if (c->point_count == 2 && c->points[1].separation < least) {
             least = c->points[1].separation;
         }
-        bool rests = least <= 0.0 && (rests_on(c, states, true) || rests_on(c, states, false));
-        resting[i] = (uint8_t)(rests ? RESTING | (least + c->slop < 0.0 ? DEEP : 0) : 0);
-        sides[2 * i].other = c->b;
-        sides[2 * i + 1].other = c->a;
+        if (least > 0.0) continue;
+        if (!rests_on(c, states, true) && !rests_on(c, states, false)) continue;
+        deep |= least + c->slop < 0.0;
+        solver_link_sides(first, sides, (uint32_t)i, c->a, c->b);
     }
-}
-
-/* Lists each body's touching contacts on which one of the two rests, as
- * link_bodies lists the loaded ones: classified over the workers, then
- * linked in contact order. Returns whether one of them started the step
- * deeper than its slop (else the lift has nothing to do). */
-static bool link_resting(shock_t *shock, workers_t *workers, const solver_contact_t *contacts,
-                         size_t count, const solver_state_t *states, size_t body_count) {
-    resting_split_t split = {shock, contacts, states, count};
-    workers_for(workers, count, classify_resting, &split);
-    uint32_t *first = shock->first;
-    solver_side_t *sides = shock->sides;
-    memset(first, 0xff, body_count * sizeof(uint32_t)); /* SOLVER_NO_SIDE */
-    const uint8_t *resting = shock->resting;
-    uint8_t any = 0;
-    for (uint32_t i = 0; i < count; i++) {
-        if (!resting[i]) continue;
-        any |= resting[i];
-        uint32_t side = 2 * i, a = sides[side + 1].other, b = sides[side].other;
-        sides[side].next = first[a];
-        first[a] = side;
-        sides[side + 1].next = first[b];
-        first[b] = side + 1;
-    }
-    return (any & DEEP) != 0;
+    return deep;
 }
 
 /* The pushes at contact c's points (kg m, >= 0) that move its upper body
@@ -569,8 +530,7 @@ void shock_lift(shock_t *shock, workers_t *workers, const solver_contact_t *cont
     if (count == 0) return;
     size_t body_count = bodies->body_count;
     reserve(shock, count, body_count);
-    memory_reserve((void **)&shock->resting, &shock->resting_capacity, count, sizeof(uint8_t));
-    if (!link_resting(shock, workers, contacts, count, bodies->states, body_count)) return;
+    if (!link_resting(shock, contacts, count, bodies->states, body_count)) return;
     size_t reached = find_levels(shock, bodies->velocities, body_count);
     lift_t lift = {shock, contacts, bodies, mark_jointed(shock, bodies, joints)};
     if (reached == 0) return;

@@ -32,13 +32,12 @@ struct shock {
     uint32_t *first;         /* per body: its first side, SOLVER_NO_SIDE when it has none */
     solver_side_t *sides;    /* 2i and 2i + 1: contact i from its a and its b, if it carries load */
     uint8_t *jointed;        /* the lift: per body, whether a joint holds it */
-    uint8_t *resting;        /* the lift: per contact, whether a body rests on it (shock.c) */
     solver_slot_t *slots;    /* per two-point contact that carries load: where its impulses are */
     uint32_t *queue;         /* bodies in the order the levels reached them */
     uint32_t *held;          /* the sides by which the bodies are held up, in queue order */
     uint32_t *support_end;   /* per queue place: where its body's supports end in held */
     size_t level_capacity, first_capacity, side_capacity, slot_capacity, queue_capacity,
-        held_capacity, support_end_capacity, jointed_capacity, resting_capacity;
+        held_capacity, support_end_capacity, jointed_capacity;
 };
 
 void shock_free(shock_t *shock);
