@@ -352,8 +352,17 @@ static const broadphase_pair_t *sort_pairs(broadphase_t *broadphase, size_t coun
     return broadphase->pairs_by_a;
 }
 
+/* The pair buffers start at this many pairs per proxy: a scene's pair
+ * count wanders from step to step (a gas), and one a little above a
+ * doubled capacity late in a run is an allocation in a warm step. */
+static const size_t PAIRS_PER_PROXY = 2;
+
 size_t broadphase_find_pairs(broadphase_t *broadphase, const broadphase_proxy_t *proxies,
                              size_t count, const broadphase_pair_t **pairs, size_t *tests) {
+    memory_reserve((void **)&broadphase->pairs, &broadphase->pair_capacity,
+                   PAIRS_PER_PROXY * count, sizeof(broadphase_pair_t));
+    memory_reserve((void **)&broadphase->pairs_by_a, &broadphase->pairs_by_a_capacity,
+                   PAIRS_PER_PROXY * count, sizeof(broadphase_pair_t));
     broadphase->pair_count = 0;
     broadphase->tests = 0;
     double inverse_size = 1.0 / choose_cell_size(proxies, count);

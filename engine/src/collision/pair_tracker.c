@@ -25,8 +25,11 @@ static const unsigned BACKOFF_MAX = 1024;
  * are at most this many, or a share of the proxies; beyond, the grid is
  * searched anew. Each query also compares its box with every stale box,
  * whose entries in the grid are out of date. */
-static const size_t STALE_MIN = 64;
+static const size_t STALE_MIN = 8;
 static const size_t STALE_SHARE = 16;
+/* The pairs a box grown again is given room for when a grown search
+ * reserves what the calls after it write (reserve_after_search). */
+static const size_t FOUND_PER_BOX = 16;
 
 struct pair_tracker {
     broadphase_t *broadphase;
@@ -161,6 +164,23 @@ static aabb_t grown_box(aabb_t box) {
     return (aabb_t){{box.min.x - grow, box.min.y - grow}, {box.max.x + grow, box.max.y + grow}};
 }
 
+/* Room, reserved with a grown search, for what the calls until the next
+ * search write (regrow's pairs and merge, the ranked pairs, the overlap
+ * bits), as many pairs as it found and those of the most boxes that may
+ * go stale at FOUND_PER_BOX each: a warm step then allocates nothing,
+ * unless a box grown again takes in more pairs than that. */
+static void reserve_after_search(pair_tracker_t *tracker, size_t count) {
+    size_t found = stale_limit(count) * FOUND_PER_BOX, room = tracker->kept_count + found;
+    size_t size = sizeof(broadphase_pair_t);
+    memory_reserve((void **)&tracker->found, &tracker->found_capacity, found, size);
+    memory_reserve((void **)&tracker->candidates[0], &tracker->candidate_capacity[0], room, size);
+    memory_reserve((void **)&tracker->candidates[1], &tracker->candidate_capacity[1], room, size);
+    memory_reserve((void **)&tracker->pairs, &tracker->pair_capacity, room, size);
+    memory_reserve((void **)&tracker->ranks, &tracker->rank_capacity, room, sizeof(uint64_t));
+    memory_reserve((void **)&tracker->overlaps, &tracker->overlap_capacity, (room + 63) / 64,
+                   sizeof(uint64_t));
+}
+
 /* Searches the grid, with every box grown when `grow`, and keeps the
  * pairs. */
 static void search(pair_tracker_t *tracker, const broadphase_proxy_t *proxies, size_t count,
@@ -187,6 +207,7 @@ static void search(pair_tracker_t *tracker, const broadphase_proxy_t *proxies, s
     tracker->searched_grown = grow;
     tracker->since_search = 0;
     tracker->ranked = false;
+    if (grow) reserve_after_search(tracker, count);
 }
 
 enum { STALE = 1, GROWN_NOW = 2 };
