@@ -308,12 +308,20 @@ static void regrow(pair_tracker_t *tracker, const broadphase_proxy_t *proxies, s
 }
 
 /* Where the grid would find each pair if it searched the boxes
- * themselves this step: its cells (ranges, each proxy's), their size, and
- * the bucket mask. */
+ * themselves this step: its cells (ranges, each proxy's; TOO_LARGE for a
+ * proxy over more than BROADPHASE_MAX_CELLS, which the grid leaves out),
+ * and the bucket mask. */
 typedef struct {
     const cell_range_t *ranges;
     uint32_t mask;
 } grid_place_t;
+
+/* No box's range: its first column past its last. */
+static const cell_range_t TOO_LARGE = {1, 0, 0, 0};
+
+static bool too_large(cell_range_t r) {
+    return r.x0 > r.x1;
+}
 
 static grid_place_t grid_place(pair_tracker_t *tracker, const broadphase_proxy_t *proxies,
                                size_t count) {
@@ -323,9 +331,9 @@ static grid_place_t grid_place(pair_tracker_t *tracker, const broadphase_proxy_t
     size_t entries = 0;
     for (size_t i = 0; i < count; i++) {
         cell_range_t r = cell_range(&proxies[i].box, inverse_size);
-        tracker->ranges[i] = r;
         double cells = range_cells(r);
         if (cells <= BROADPHASE_MAX_CELLS) entries += (size_t)cells;
+        tracker->ranges[i] = cells <= BROADPHASE_MAX_CELLS ? r : TOO_LARGE;
     }
     return (grid_place_t){tracker->ranges, (uint32_t)(bucket_count(entries) - 1)};
 }
@@ -345,9 +353,7 @@ static grid_place_t grid_place(pair_tracker_t *tracker, const broadphase_proxy_t
  */
 static uint64_t pair_rank(grid_place_t place, broadphase_pair_t pair) {
     cell_range_t a = place.ranges[pair.a], b = place.ranges[pair.b];
-    if (range_cells(a) > BROADPHASE_MAX_CELLS || range_cells(b) > BROADPHASE_MAX_CELLS) {
-        return UINT64_MAX;
-    }
+    if (too_large(a) || too_large(b)) return UINT64_MAX;
     int32_t x = a.x0 > b.x0 ? a.x0 : b.x0, y = a.y0 > b.y0 ? a.y0 : b.y0;
     uint64_t within = (uint64_t)(y - a.y0) * (uint64_t)(a.x1 - a.x0 + 1) + (uint64_t)(x - a.x0);
     return (uint64_t)hash_cell(x, y, place.mask) << 32 | within;
