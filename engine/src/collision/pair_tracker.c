@@ -428,9 +428,13 @@ static bool same_overlaps(const pair_tracker_t *tracker, size_t words) {
            memcmp(tracker->overlaps, tracker->last_overlaps, words * sizeof(uint64_t)) == 0;
 }
 
-/* Whether kept pair i overlaps (tracker->overlaps marked). */
-static bool marked(const pair_tracker_t *tracker, size_t i) {
-    return tracker->overlaps[i / 64] >> (i % 64) & 1u;
+/* The marks (tracker->overlaps) of kept pairs [64 w, 64 w + 64) that lie
+ * in [begin, end). */
+static uint64_t marks_within(const pair_tracker_t *tracker, size_t w, size_t begin, size_t end) {
+    uint64_t bits = tracker->overlaps[w];
+    if (begin > 64 * w) bits &= ~(uint64_t)0 << (begin - 64 * w);
+    if (end < 64 * w + 64) bits &= ((uint64_t)1 << (end - 64 * w)) - 1;
+    return bits;
 }
 
 /* The kept pairs of a chunk [begin, end): the groups (pairs of one first
@@ -452,22 +456,26 @@ static void count_chunk(void *context, size_t chunk, size_t begin, size_t end) {
     rank_split_t *split = context;
     whole_groups(split->tracker, &begin, &end);
     size_t n = 0;
-    for (size_t i = begin; i < end; i++) n += marked(split->tracker, i);
+    for (size_t w = begin / 64; 64 * w < end; w++) {
+        n += (size_t)__builtin_popcountll(marks_within(split->tracker, w, begin, end));
+    }
     split->starts[chunk + 1] = n;
 }
 
 /* The chunk's overlapping pairs from its place on, each at its rank among
- * its first body's, by insertion: a body has a few. */
+ * its first body's, by insertion: a body has a few. They are found a mark
+ * word at a time: a branch on each pair's mark mispredicted. */
 static void rank_chunk(void *context, size_t chunk, size_t begin, size_t end) {
     rank_split_t *split = context;
     pair_tracker_t *tracker = split->tracker;
     whole_groups(tracker, &begin, &end);
     size_t n = split->starts[chunk], group = n;
-    for (size_t i = begin; i < end; i++) {
-        if (!marked(tracker, i)) continue;
-        broadphase_pair_t pair = tracker->kept[i];
-        if (n > group && tracker->pairs[n - 1].a != pair.a) group = n;
-        n = insert_ranked(tracker, group, n, pair, pair_rank(split->place, pair));
+    for (size_t w = begin / 64; 64 * w < end; w++) {
+        for (uint64_t bits = marks_within(tracker, w, begin, end); bits != 0; bits &= bits - 1) {
+            broadphase_pair_t pair = tracker->kept[64 * w + (size_t)__builtin_ctzll(bits)];
+            if (n > group && tracker->pairs[n - 1].a != pair.a) group = n;
+            n = insert_ranked(tracker, group, n, pair, pair_rank(split->place, pair));
+        }
     }
 }
 
