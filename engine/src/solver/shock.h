@@ -32,12 +32,13 @@ struct shock {
     uint32_t *first;         /* per body: its first side, SOLVER_NO_SIDE when it has none */
     solver_side_t *sides;    /* 2i and 2i + 1: contact i from its a and its b, if it carries load */
     uint8_t *jointed;        /* the lift: per body, whether a joint holds it */
+    vector_t *pulls;         /* the lift: per body, its free acceleration */
     solver_slot_t *slots;    /* per two-point contact that carries load: where its impulses are */
     uint32_t *queue;         /* bodies in the order the levels reached them */
     uint32_t *held;          /* the sides by which the bodies are held up, in queue order */
     uint32_t *support_end;   /* per queue place: where its body's supports end in held */
     size_t level_capacity, first_capacity, side_capacity, slot_capacity, queue_capacity,
-        held_capacity, support_end_capacity, jointed_capacity;
+        held_capacity, support_end_capacity, jointed_capacity, pull_capacity;
 };
 
 void shock_free(shock_t *shock);
