@@ -177,8 +177,11 @@ static void reserve_after_search(pair_tracker_t *tracker, size_t count) {
     memory_reserve((void **)&tracker->candidates[1], &tracker->candidate_capacity[1], room, size);
     memory_reserve((void **)&tracker->pairs, &tracker->pair_capacity, room, size);
     memory_reserve((void **)&tracker->ranks, &tracker->rank_capacity, room, sizeof(uint64_t));
+    /* Both: remember swaps them at every ranked call. */
     memory_reserve((void **)&tracker->overlaps, &tracker->overlap_capacity, (room + 63) / 64,
                    sizeof(uint64_t));
+    memory_reserve((void **)&tracker->last_overlaps, &tracker->last_overlap_capacity,
+                   (room + 63) / 64, sizeof(uint64_t));
 }
 
 /* Searches the grid, with every box grown when `grow`, and keeps the
