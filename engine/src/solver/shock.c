@@ -547,8 +547,8 @@ void shock_lift(shock_t *shock, workers_t *workers, const solver_contact_t *cont
     const vector_t *pulls = gather_pulls(shock, bodies);
     if (!link_resting(shock, contacts, count, pulls, body_count)) return;
     size_t reached = find_levels(shock, bodies->velocities, body_count);
-    lift_t lift = {shock, contacts, bodies, mark_jointed(shock, bodies, joints)};
     if (reached == 0) return;
+    lift_t lift = {shock, contacts, bodies, mark_jointed(shock, bodies, joints)};
     if (workers == NULL) {
         lift_range(&lift, 0, reached);
         return;
