@@ -268,10 +268,10 @@ bool scene_get_contacts_enabled(scene_t *scene);
  * that rests on a body of infinite mass (or feels no force and no gravity),
  * is taken out of the step. Slow: over each half second the body moved
  * (counting its rim's turn) under 0.01 m/s, or, when gravity or a force
- * pulls it, under 0.05 m/s and against the pull under 0.005 m/s, with
- * velocities within that plus one step of its pull (all less for bodies
- * under half a metre across). Out of the step means no integration,
- * no contacts, no solving, its velocities 0 (body_is_sleeping). It wakes
+ * pulls it, under 0.05 m/s, with velocities within that plus one step of
+ * its pull (all less for bodies under half a metre across). Out of the
+ * step means no integration, no contacts, no solving, its velocities 0
+ * (body_is_sleeping). It wakes
  * when a moving body comes within a step of it, when a pose, velocity,
  * material, filter, nonzero force, torque or impulse is set on one of its
  * bodies, when one of them is removed, and when gravity changes. A body

@@ -10,9 +10,6 @@
  * v3's 0.05 m/s): a pile's bodies creep by millimetres a second long after
  * it has come to rest (docs/design.md, Sleeping). */
 static const double SLEEP_PRESSED_FACTOR = 5.0;
-/* But it may rise against that pull (an overlapping stack being pushed
- * apart) at only half the free tolerance. */
-static const double SLEEP_RISE_SHARE = 0.5;
 /* The tolerance is at most this many body radii per second. */
 static const double SLEEP_SIZE_RATE = 0.02;
 
@@ -53,9 +50,11 @@ static void anchor_at(body_t *body) {
 
 /* Slow: over each sleep time the body has moved no farther than the
  * tolerance speed covers in that time (its rim's motion counted with its
- * centroid's), and no higher against its pull than SLEEP_RISE_SHARE of the
- * free tolerance; its velocities stay within the tolerance plus what one
- * step of its free acceleration adds. A deep pile's solve leaves each body a
+ * centroid's); its velocities stay within the tolerance plus what one
+ * step of its free acceleration adds. Which way it moved does not count:
+ * overlaps are lifted out within a second (shock_lift), and a heap's
+ * flanks creeping up its walls at a centimetre a second are at rest enough
+ * (docs/design.md, Sleeping). A deep pile's solve leaves each body a
  * velocity of that order that the next step takes back (Chipmunk's idle
  * speed is the same dt |g|), so what counts is how far the body goes. The
  * tolerance shrinks for small bodies (a centimetre box at 1 cm/s is still
@@ -76,8 +75,7 @@ static bool is_slow(const sleep_step_t *step, const solver_velocity_t *row,
     vector_t drift = vec_subtract(vec_add(body->centroid, moved->dx), body->sleep_anchor);
     double turn = body->angle + moved->dtheta - body->sleep_anchor_angle;
     double moved_by = vec_get_length(drift) + body->radius * fabs(turn);
-    double rise = jitter > 0.0 ? -vec_dot(drift, state->acceleration) * dt / jitter : 0.0;
-    if (moved_by > tolerance * sleep_time || rise > SLEEP_RISE_SHARE * linear * sleep_time) {
+    if (moved_by > tolerance * sleep_time) {
         anchor_at(body);
         body->sleep_time = 0.0;
     }
