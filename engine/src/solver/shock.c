@@ -4,6 +4,7 @@
 #include "base/memory.h"
 #include "base/workers.h"
 #include "solver/position_pass.h"
+#include "solver/resting.h"
 
 static const uint32_t UNREACHED = UINT32_MAX;
 /* The slot of a loose contact: its impulses are in the contact. */
@@ -21,7 +22,6 @@ void shock_free(shock_t *shock) {
     memory_free(shock->held);
     memory_free(shock->support_end);
     memory_free(shock->jointed);
-    memory_free(shock->pulls);
     memset(shock, 0, sizeof *shock);
 }
 
@@ -414,57 +414,20 @@ void shock_propagate(shock_t *shock, const solver_wide_t *wide, const solver_con
     propagate(shock, wide, contacts, velocities, body_count);
 }
 
-/* The lift (shock_lift): how near straight against the upper body's pull
- * a contact's normal must be for the body to rest on it (cos 60 degrees). */
-static const double RESTING_COSINE = 0.5;
-
-/* Whether the upper body (b, or a) of contact c rests on the other: the
- * normal from the other to it points against its pull. A body of infinite
- * mass has none (integrator.c), so it rests on nothing. */
-static inline bool rests_on(const solver_contact_t *c, const vector_t *pulls, bool upper_is_b) {
-    vector_t pull = pulls[upper_is_b ? c->b : c->a];
-    double along = SIGN[upper_is_b] * vec_dot(c->normal, pull);
-    return along < 0.0 && along * along > RESTING_COSINE * RESTING_COSINE * vec_dot(pull, pull);
-}
-
-/* Each body's pull (its free acceleration) in a row of its own: the lift
- * reads it for both bodies of every touching contact and again for each
- * support, and in the states, each a few lines long, every read was a
- * line of its own. */
-static const vector_t *gather_pulls(shock_t *shock, const solver_bodies_t *bodies) {
-    memory_reserve((void **)&shock->pulls, &shock->pull_capacity, bodies->body_count,
-                   sizeof(vector_t));
-    for (size_t i = 0; i < bodies->body_count; i++) {
-        shock->pulls[i] = bodies->states[i].acceleration;
-    }
-    return shock->pulls;
-}
-
-/* Lists each body's touching contacts on which one of the two rests, as
- * link_bodies lists the loaded ones. Returns whether one of them started
- * the step deeper than its slop (else the lift has nothing to do). */
+/* Lists each body's touching contacts on which one of the two rests (the
+ * bits preparing set, resting.h), as link_bodies lists the loaded ones.
+ * Returns whether one of them started the step deeper than its slop (else
+ * the lift has nothing to do). */
 static bool link_resting(shock_t *shock, const solver_contact_t *contacts, size_t count,
-                         const vector_t *pulls, size_t body_count) {
+                         size_t body_count) {
     uint32_t *first = shock->first;
     solver_side_t *sides = shock->sides;
     memset(first, 0xff, body_count * sizeof(uint32_t)); /* SOLVER_NO_SIDE */
     bool deep = false;
     for (size_t i = 0; i < count; i++) {
-        /* The contacts a record apart, their bodies' pulls anywhere. */
-        if (i + 2 * PREFETCH_AHEAD < count) PREFETCH_CONTACT(&contacts[i + 2 * PREFETCH_AHEAD]);
-        if (i + PREFETCH_AHEAD < count) {
-            const solver_contact_t *ahead = &contacts[i + PREFETCH_AHEAD];
-            __builtin_prefetch(&pulls[ahead->a]);
-            __builtin_prefetch(&pulls[ahead->b]);
-        }
         const solver_contact_t *c = &contacts[i];
-        double least = c->points[0].separation;
-        if (c->point_count == 2 && c->points[1].separation < least) {
-            least = c->points[1].separation;
-        }
-        if (least > 0.0) continue;
-        if (!rests_on(c, pulls, true) && !rests_on(c, pulls, false)) continue;
-        deep |= least + c->slop < 0.0;
+        if (c->rests == 0) continue;
+        deep |= (c->rests & RESTS_DEEP) != 0;
         solver_link_sides(first, sides, (uint32_t)i, c->a, c->b);
     }
     return deep;
@@ -487,13 +450,16 @@ static void lift_pushes(const solver_contact_t *c, const solver_velocity_t *row,
     x[0] = solve_one(row, rn[0], e1);
 }
 
+/* The RESTS_ bit of the upper body, b or a, looked up as SIGN is. */
+static const uint8_t UPPER_RESTS[2] = {RESTS_A_ON_B, RESTS_B_ON_A};
+
 /* Lifts the upper body (b of contact c, or a) off the other, when it rests
  * on it (the levels may have reached it first through another contact) and
  * no joint holds it (jointed NULL: none holds any). */
 static void lift_off(const solver_contact_t *c, const solver_bodies_t *bodies,
-                     const vector_t *pulls, const uint8_t *jointed, bool upper_is_b) {
+                     const uint8_t *jointed, bool upper_is_b) {
     uint32_t body = upper_is_b ? c->b : c->a;
-    if ((jointed != NULL && jointed[body]) || !rests_on(c, pulls, upper_is_b)) return;
+    if ((jointed != NULL && jointed[body]) || !(c->rests & UPPER_RESTS[upper_is_b])) return;
     const solver_velocity_t *row = &bodies->velocities[body];
     solver_displacement_t *displacements = bodies->displacements;
     double rn[2] = {upper_rn(&c->points[0], upper_is_b),
@@ -534,8 +500,7 @@ static void lift_range(void *context, size_t begin, size_t end) {
         if (k + PREFETCH_AHEAD < stop) {
             PREFETCH_CONTACT(&lift->contacts[held[k + PREFETCH_AHEAD] / 2]);
         }
-        lift_off(&lift->contacts[held[k] / 2], lift->bodies, lift->shock->pulls, lift->jointed,
-                 held[k] % 2 == 1);
+        lift_off(&lift->contacts[held[k] / 2], lift->bodies, lift->jointed, held[k] % 2 == 1);
     }
 }
 
@@ -544,8 +509,7 @@ void shock_lift(shock_t *shock, workers_t *workers, const solver_contact_t *cont
     if (count == 0) return;
     size_t body_count = bodies->body_count;
     reserve(shock, count, body_count);
-    const vector_t *pulls = gather_pulls(shock, bodies);
-    if (!link_resting(shock, contacts, count, pulls, body_count)) return;
+    if (!link_resting(shock, contacts, count, body_count)) return;
     size_t reached = find_levels(shock, bodies->velocities, body_count);
     if (reached == 0) return;
     lift_t lift = {shock, contacts, bodies, mark_jointed(shock, bodies, joints)};

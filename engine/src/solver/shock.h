@@ -32,13 +32,12 @@ struct shock {
     uint32_t *first;         /* per body: its first side, SOLVER_NO_SIDE when it has none */
     solver_side_t *sides;    /* 2i and 2i + 1: contact i from its a and its b, if it carries load */
     uint8_t *jointed;        /* the lift: per body, whether a joint holds it */
-    vector_t *pulls;         /* the lift: per body, its free acceleration */
     solver_slot_t *slots;    /* per two-point contact that carries load: where its impulses are */
     uint32_t *queue;         /* bodies in the order the levels reached them */
     uint32_t *held;          /* the sides by which the bodies are held up, in queue order */
     uint32_t *support_end;   /* per queue place: where its body's supports end in held */
     size_t level_capacity, first_capacity, side_capacity, slot_capacity, queue_capacity,
-        held_capacity, support_end_capacity, jointed_capacity, pull_capacity;
+        held_capacity, support_end_capacity, jointed_capacity;
 };
 
 void shock_free(shock_t *shock);
@@ -55,7 +54,8 @@ void shock_propagate(shock_t *shock, const solver_wide_t *wide, const solver_con
  * each contact. Bodies get levels from the static bodies through the
  * touching contacts on which one body rests: the normal, from the lower
  * body to the upper, within 60 degrees of straight against the upper
- * body's pull (its free acceleration). Level by level from the ground up,
+ * body's pull (its free acceleration), as preparing marked them in each
+ * contact's rests (resting.h). Level by level from the ground up,
  * each body is moved out of the overlap with its supports beyond the slop
  * by SOLVER_STATIC_POSITION_RATE of it, the lower body held still as a
  * static one is. A body pulled by nothing is never lifted, nor one that a

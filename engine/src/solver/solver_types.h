@@ -112,6 +112,7 @@ typedef struct {
     /* A point has an impact within the step (impact_time >= 0): set where
      * impact times are, so passes over every contact read no further. */
     bool impact;
+    uint8_t rests;           /* which body rests on the other: resting.h's bits, set by prepare */
     solver_point_t points[2];
     vector_t normal;         /* unit, from a toward b; the tangent is perp(normal) */
     double friction, restitution;

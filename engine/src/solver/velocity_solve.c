@@ -3,6 +3,7 @@
 #include "base/prefetch.h"
 #include "base/scalar.h"
 #include "solver/contact_point.h"
+#include "solver/resting.h"
 
 /* The block solve needs a well-conditioned 2x2 matrix; beyond this
  * condition number the two points are solved one at a time. */
@@ -183,6 +184,7 @@ static inline __attribute__((always_inline)) bool prepare(solver_contact_t *c, c
     }
     if (c->point_count == 2) same_impact_moment(c, s->dt);
     c->impact = impact;
+    c->rests = resting_of(c, states[c->a].acceleration, states[c->b].acceleration);
     c->block = false;
     if (c->point_count == 2) {
         solver_block_k_t k = solver_contact_k(c, a, b);
