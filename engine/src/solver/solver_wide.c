@@ -7,13 +7,6 @@
 #include <string.h>
 #include "solver/solver_wide_private.h"
 
-/* Vectors are returned from static functions only (always inlined), so
- * GCC's warning that AVX changes how they are returned between objects does
- * not apply. */
-#if defined(__GNUC__)
-#pragma GCC diagnostic ignored "-Wpsabi"
-#endif
-
 /* The two bodies of a batch, lane by lane: velocities, and the inverse
  * masses, which are loaded with them. */
 typedef struct {
@@ -29,37 +22,6 @@ typedef struct {
     ((lane_t)(((mask_t)(yes) & (condition)) | ((mask_t)(no) & ~(condition))))
 #define max_lane(a, b) select_lane((mask_t)((a) > (b)), (a), (b))
 #define min_lane(a, b) select_lane((mask_t)((a) < (b)), (a), (b))
-
-/* Lanes picked from two vectors: indices 0 to 3 name a's lanes, 4 to 7
- * b's (GCC and Clang spell the builtin differently). */
-#if defined(__clang__)
-#define shuffle_lanes(a, b, i, j, k, l) __builtin_shufflevector((a), (b), i, j, k, l)
-#else
-#define shuffle_lanes(a, b, i, j, k, l) __builtin_shuffle((a), (b), (mask_t){i, j, k, l})
-#endif
-
-/* Four vectors of four doubles, as rows or as columns. */
-typedef struct {
-    lane_t v0, v1, v2, v3;
-} lane_quad_t;
-
-/* Rows to columns and back: out.v<c>[l] = in.v<l>[c]. */
-LANE_INLINE lane_quad_t transpose(lane_quad_t in) {
-    lane_t low01 = shuffle_lanes(in.v0, in.v1, 0, 4, 2, 6);
-    lane_t high01 = shuffle_lanes(in.v0, in.v1, 1, 5, 3, 7);
-    lane_t low23 = shuffle_lanes(in.v2, in.v3, 0, 4, 2, 6);
-    lane_t high23 = shuffle_lanes(in.v2, in.v3, 1, 5, 3, 7);
-    return (lane_quad_t){shuffle_lanes(low01, low23, 0, 1, 4, 5),
-                         shuffle_lanes(high01, high23, 0, 1, 4, 5),
-                         shuffle_lanes(low01, low23, 2, 3, 6, 7),
-                         shuffle_lanes(high01, high23, 2, 3, 6, 7)};
-}
-
-LANE_INLINE lane_t load_lane(const void *source) {
-    lane_t value;
-    memcpy(&value, source, sizeof value);
-    return value;
-}
 
 /* Rows of `stride` bytes at rows + index[l] * stride begin with four
  * doubles; each row's four are one vector load, and four rows transposed
@@ -292,19 +254,6 @@ LANE_INLINE void solve_normal_block(const solver_batch_t *batch, lane_point_t *p
     p2->normal_impulse = x2;
 }
 
-/* Built twice where the compiler can (GCC on x86-64 with ifunc support):
- * once for AVX2, which does a batch's four lanes in one instruction, and
- * once for the baseline (two SSE2 instructions); the loader picks the one
- * the processor runs. Neither uses fused multiply-add, so both give the
- * same numbers. Clang 14 leaves calls to such functions undefined at link
- * time, so it builds the baseline only; so does ThreadSanitizer (make
- * tsan), whose instrumented resolver runs before it is set up, and crashes. */
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && defined(__ELF__) && \
-    !defined(__SANITIZE_THREAD__)
-#define LANE_CLONES __attribute__((target_clones("avx2", "default")))
-#else
-#define LANE_CLONES
-#endif
 
 LANE_INLINE void warm_batches(solver_wide_t *wide, solver_velocity_t *rows, size_t begin,
                               size_t end, const lane_point_t *points, bool shared) {

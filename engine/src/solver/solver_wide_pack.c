@@ -14,49 +14,97 @@ typedef struct {
     size_t batch, point, block;
 } pack_at_t;
 
-LANE_INLINE void pack_lane(solver_wide_t *wide, pack_at_t at, const solver_contact_t *c, uint32_t index,
-                      int l, const solver_velocity_t *rows) {
+/* Double k of a group of four adjacent doubles of each of four records
+ * (at r0 .. r3) into lane l of column k: each group one vector load. */
+LANE_INLINE lane_quad_t gather_records(const void *r0, const void *r1, const void *r2,
+                                       const void *r3) {
+    return transpose((lane_quad_t){load_lane(r0), load_lane(r1), load_lane(r2), load_lane(r3)});
+}
+
+/* The fields load_batch packs come in groups of four adjacent doubles. */
+_Static_assert(offsetof(solver_point_t, rn_b) == offsetof(solver_point_t, normal_impulse) + 24 &&
+                   offsetof(solver_point_t, tangent_mass) == offsetof(solver_point_t, rt_a) + 24 &&
+                   offsetof(solver_point_t, separation) == offsetof(solver_point_t, target) + 8 &&
+                   offsetof(solver_contact_t, friction) == offsetof(solver_contact_t, normal) + 16 &&
+                   offsetof(solver_contact_t, m22) == offsetof(solver_contact_t, slop) + 24,
+               "solver_point_t and solver_contact_t: load_batch reads four doubles at a time");
+
+/* An empty lane's contact: all zeros, body row 0. */
+static const solver_contact_t NO_CONTACT;
+
+/* Packs order[0 .. count) (at most LANES contacts of one kind) into the
+ * batch, points and block at `at`; an empty lane holds zeros, masses too.
+ * Each group of four adjacent doubles of the contacts is one vector load
+ * per contact, transposed into the lanes. */
+LANE_INLINE void load_batch(solver_wide_t *wide, pack_at_t at, const uint32_t *order, int count,
+                            batch_kind_t kind, const solver_contact_t *contacts,
+                            const solver_velocity_t *rows) {
+    int points = kind_points(kind);
     solver_batch_t *batch = &wide->batches[at.batch];
     solver_position_batch_t *position = &wide->position_batches[at.batch];
-    batch->a[l] = position->a[l] = c->a;
-    batch->b[l] = position->b[l] = c->b;
-    batch->contact[l] = index;
-    batch->normal.x[l] = position->normal.x[l] = c->normal.x;
-    batch->normal.y[l] = position->normal.y[l] = c->normal.y;
-    batch->friction[l] = c->friction;
-    position->ma[l] = rows[c->a].inverse_mass;
-    position->mb[l] = rows[c->b].inverse_mass;
-    batch->ia[l] = position->ia[l] = rows[c->a].inverse_inertia;
-    batch->ib[l] = position->ib[l] = rows[c->b].inverse_inertia;
-    position->rate[l] = solver_position_rate(&rows[c->a], &rows[c->b]);
-    position->slop[l] = c->slop;
-    if (batch->kind == BATCH_BLOCK) {
-        lane_block_t *k = &wide->blocks[at.block];
-        solver_block_k_t kc = solver_contact_k(c, &rows[c->a], &rows[c->b]);
-        k->k11[l] = kc.k11;
-        k->k12[l] = kc.k12;
-        k->k22[l] = kc.k22;
-        k->m11[l] = c->m11;
-        k->m12[l] = c->m12;
-        k->m22[l] = c->m22;
+    batch->lanes = position->lanes = (uint8_t)count;
+    batch->kind = position->kind = (uint8_t)kind;
+    position->point_count = (uint8_t)points;
+    const solver_contact_t *c[LANES];
+    lane_t ma = {0.0}, mb = {0.0}, ia = {0.0}, ib = {0.0}, rate = {0.0};
+    for (int l = 0; l < LANES; l++) {
+        c[l] = l < count ? &contacts[order[l]] : &NO_CONTACT;
+        batch->a[l] = position->a[l] = c[l]->a;
+        batch->b[l] = position->b[l] = c[l]->b;
+        batch->contact[l] = l < count ? order[l] : 0;
+        if (l >= count) continue;
+        const solver_velocity_t *row_a = &rows[c[l]->a], *row_b = &rows[c[l]->b];
+        ma[l] = row_a->inverse_mass;
+        mb[l] = row_b->inverse_mass;
+        ia[l] = row_a->inverse_inertia;
+        ib[l] = row_b->inverse_inertia;
+        rate[l] = solver_position_rate(row_a, row_b);
     }
-    for (int i = 0; i < c->point_count; i++) {
-        const solver_point_t *p = &c->points[i];
+    /* normal.x, normal.y, friction, restitution; slop, m11, m12, m22 */
+    lane_quad_t n = gather_records(&c[0]->normal, &c[1]->normal, &c[2]->normal, &c[3]->normal);
+    lane_quad_t s = gather_records(&c[0]->slop, &c[1]->slop, &c[2]->slop, &c[3]->slop);
+    batch->normal.x = position->normal.x = n.v0;
+    batch->normal.y = position->normal.y = n.v1;
+    batch->friction = n.v2;
+    batch->ia = position->ia = ia;
+    batch->ib = position->ib = ib;
+    position->ma = ma;
+    position->mb = mb;
+    position->rate = rate;
+    position->slop = s.v0;
+    lane_t rn_a[2], rn_b[2];
+    for (int i = 0; i < points; i++) {
         lane_point_t *lp = &wide->points[at.point + (size_t)i];
-        lp->rn.a[l] = p->rn_a;
-        lp->rn.b[l] = p->rn_b;
-        lp->rt.a[l] = p->rt_a;
-        lp->rt.b[l] = p->rt_b;
-        lp->normal_mass[l] = p->normal_mass;
-        lp->tangent_mass[l] = p->tangent_mass;
-        lp->target[l] = p->target;
-        lp->normal_impulse[l] = p->normal_impulse;
-        lp->tangent_impulse[l] = p->tangent_impulse;
         solver_position_point_t *pp = &wide->position_points[at.point + (size_t)i];
-        pp->rn.a[l] = p->rn_a;
-        pp->rn.b[l] = p->rn_b;
-        pp->normal_mass[l] = p->normal_mass;
-        pp->separation[l] = p->separation;
+        /* normal_impulse, tangent_impulse, rn_a, rn_b; rt_a, rt_b,
+         * normal_mass, tangent_mass; target, separation and two more */
+        lane_quad_t q1 = gather_records(&c[0]->points[i].normal_impulse, &c[1]->points[i].normal_impulse,
+                                        &c[2]->points[i].normal_impulse, &c[3]->points[i].normal_impulse);
+        lane_quad_t q2 = gather_records(&c[0]->points[i].rt_a, &c[1]->points[i].rt_a,
+                                        &c[2]->points[i].rt_a, &c[3]->points[i].rt_a);
+        lane_quad_t q3 = gather_records(&c[0]->points[i].target, &c[1]->points[i].target,
+                                        &c[2]->points[i].target, &c[3]->points[i].target);
+        lp->normal_impulse = q1.v0;
+        lp->tangent_impulse = q1.v1;
+        lp->rn.a = pp->rn.a = rn_a[i] = q1.v2;
+        lp->rn.b = pp->rn.b = rn_b[i] = q1.v3;
+        lp->rt.a = q2.v0;
+        lp->rt.b = q2.v1;
+        lp->normal_mass = pp->normal_mass = q2.v2;
+        lp->tangent_mass = q2.v3;
+        lp->target = q3.v0;
+        pp->separation = q3.v1;
+    }
+    if (kind == BATCH_BLOCK) {
+        /* solver_contact_k, lane by lane: the same operations in the same
+         * order, so the same bits. */
+        lane_block_t *k = &wide->blocks[at.block];
+        k->k11 = ma + mb + ia * rn_a[0] * rn_a[0] + ib * rn_b[0] * rn_b[0];
+        k->k12 = ma + mb + ia * rn_a[0] * rn_a[1] + ib * rn_b[0] * rn_b[1];
+        k->k22 = ma + mb + ia * rn_a[1] * rn_a[1] + ib * rn_b[1] * rn_b[1];
+        k->m11 = s.v1;
+        k->m12 = s.v2;
+        k->m22 = s.v3;
     }
 }
 
@@ -86,28 +134,6 @@ enum { PACK_AHEAD = 4 * LANES };
             __builtin_prefetch(&(rows)[c_->b]);                                             \
         }                                                                                   \
     } while (0)
-
-/* Packs order[0 .. count) (at most LANES contacts of one kind) into the
- * batch, points and block at `at`. */
-LANE_INLINE void load_batch(solver_wide_t *wide, pack_at_t at, const uint32_t *order, int count,
-                       batch_kind_t kind, const solver_contact_t *contacts,
-                       const solver_velocity_t *rows) {
-    int points = kind_points(kind);
-    solver_batch_t *batch = &wide->batches[at.batch];
-    solver_position_batch_t *position = &wide->position_batches[at.batch];
-    if (count < LANES) { /* a full batch has every lane written below */
-        memset(batch, 0, sizeof *batch);
-        memset(position, 0, sizeof *position);
-        memset(&wide->points[at.point], 0, (size_t)points * sizeof(lane_point_t));
-        memset(&wide->position_points[at.point], 0,
-               (size_t)points * sizeof(solver_position_point_t));
-        if (kind == BATCH_BLOCK) memset(&wide->blocks[at.block], 0, sizeof(lane_block_t));
-    }
-    batch->lanes = position->lanes = (uint8_t)count;
-    batch->kind = position->kind = (uint8_t)kind;
-    position->point_count = (uint8_t)points;
-    for (int l = 0; l < count; l++) pack_lane(wide, at, &contacts[order[l]], order[l], l, rows);
-}
 
 static batch_kind_t kind_of(const solver_contact_t *c) {
     if (c->block) return BATCH_BLOCK;
@@ -182,6 +208,7 @@ static void place_groups(solver_wide_t *wide, const uint32_t *start) {
     wide->block_count = wide->group_block[GROUPS];
 }
 
+LANE_CLONES
 void solver_wide_pack(solver_wide_t *wide, const solver_contact_t *contacts,
                       const solver_velocity_t *rows, size_t begin, size_t end) {
     size_t g = begin < end ? group_of(wide, begin) : 0;
@@ -207,6 +234,7 @@ void solver_wide_arrange(solver_wide_t *wide, const solver_contact_t *contacts, 
     place_groups(wide, start);
 }
 
+LANE_CLONES
 void solver_wide_pack_all(solver_wide_t *wide, const solver_contact_t *contacts,
                           const solver_velocity_t *rows) {
     const uint32_t *start = wide->group_start;

@@ -6,11 +6,13 @@
  * (solver_wide_pack.c) and the sweeps (solver_wide.c): up to four contacts
  * of one colour and kind lane by lane, their points and block matrices in
  * arrays of their own, and where each group's batches, points and blocks
- * begin.
+ * begin; and the lane vectors both build on (rows of four doubles loaded
+ * as one vector and transposed into columns).
  */
 
 #include <stddef.h>
 #include <stdint.h>
+#include <string.h>
 #include "solver/solver_wide.h"
 
 enum { LANES = 4 };
@@ -20,11 +22,63 @@ enum { LANES = 4 };
  * GCC otherwise keeps the larger ones out of line, as baseline code. */
 #define LANE_INLINE static inline __attribute__((always_inline))
 
+/* Built twice where the compiler can (GCC on x86-64 with ifunc support):
+ * once for AVX2, which does a batch's four lanes in one instruction, and
+ * once for the baseline (two SSE2 instructions); the loader picks the one
+ * the processor runs. Neither uses fused multiply-add, so both give the
+ * same numbers. Clang 14 leaves calls to such functions undefined at link
+ * time, so it builds the baseline only; so does ThreadSanitizer (make
+ * tsan), whose instrumented resolver runs before it is set up, and crashes. */
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && defined(__ELF__) && \
+    !defined(__SANITIZE_THREAD__)
+#define LANE_CLONES __attribute__((target_clones("avx2", "default")))
+#else
+#define LANE_CLONES
+#endif
+
 /* Four doubles, and four 64-bit lane masks (all ones where a comparison
  * held). aligned(8): the batches come from malloc, which promises less
  * than the 32 bytes a vector would otherwise demand. */
 typedef double lane_t __attribute__((vector_size(LANES * sizeof(double)), aligned(8)));
 typedef int64_t mask_t __attribute__((vector_size(LANES * sizeof(int64_t)), aligned(8)));
+
+/* Vectors are returned from static functions only (always inlined), so
+ * GCC's warning that AVX changes how they are returned between objects does
+ * not apply. */
+#if defined(__GNUC__)
+#pragma GCC diagnostic ignored "-Wpsabi"
+#endif
+
+/* Lanes picked from two vectors: indices 0 to 3 name a's lanes, 4 to 7
+ * b's (GCC and Clang spell the builtin differently). */
+#if defined(__clang__)
+#define shuffle_lanes(a, b, i, j, k, l) __builtin_shufflevector((a), (b), i, j, k, l)
+#else
+#define shuffle_lanes(a, b, i, j, k, l) __builtin_shuffle((a), (b), (mask_t){i, j, k, l})
+#endif
+
+/* Four vectors of four doubles, as rows or as columns. */
+typedef struct {
+    lane_t v0, v1, v2, v3;
+} lane_quad_t;
+
+/* Rows to columns and back: out.v<c>[l] = in.v<l>[c]. */
+LANE_INLINE lane_quad_t transpose(lane_quad_t in) {
+    lane_t low01 = shuffle_lanes(in.v0, in.v1, 0, 4, 2, 6);
+    lane_t high01 = shuffle_lanes(in.v0, in.v1, 1, 5, 3, 7);
+    lane_t low23 = shuffle_lanes(in.v2, in.v3, 0, 4, 2, 6);
+    lane_t high23 = shuffle_lanes(in.v2, in.v3, 1, 5, 3, 7);
+    return (lane_quad_t){shuffle_lanes(low01, low23, 0, 1, 4, 5),
+                         shuffle_lanes(high01, high23, 0, 1, 4, 5),
+                         shuffle_lanes(low01, low23, 2, 3, 6, 7),
+                         shuffle_lanes(high01, high23, 2, 3, 6, 7)};
+}
+
+LANE_INLINE lane_t load_lane(const void *source) {
+    lane_t value;
+    memcpy(&value, source, sizeof value);
+    return value;
+}
 
 /* A direction, lane by lane. */
 typedef struct {
