@@ -254,7 +254,6 @@ LANE_INLINE void solve_normal_block(const solver_batch_t *batch, lane_point_t *p
     p2->normal_impulse = x2;
 }
 
-
 LANE_INLINE void warm_batches(solver_wide_t *wide, solver_velocity_t *rows, size_t begin,
                               size_t end, const lane_point_t *points, bool shared) {
     for (size_t i = begin; i < end; i++) {
