@@ -104,9 +104,8 @@ static void slow_free_flight_keeps_moving(void) {
 
 /* Twenty boxes stacked 10 cm into each other: the lift pushes the column
  * apart within a second, and it sleeps 1.7 cm under the top's resting
- * height (19.497 m), the nineteen contacts' slops of 1 mm less what the
- * last position iteration took. Frozen mid-way, it would be up to 1.9 m
- * under. */
+ * height (19.497 m), about the nineteen contacts' slops of 1 mm each.
+ * Frozen mid-way, it would be up to 1.9 m under. */
 static void a_column_sleeps_only_once_pushed_apart(void) {
     scene_t *scene = sleep_scene();
     body_t *boxes[20];
@@ -548,11 +547,11 @@ static void a_deep_pile_falls_asleep(void) {
     scene_free(scene);
 }
 
-/* 800 polygons of 0.35 m radius dropped 20 wide into a box 16 m wide: the
- * heap's flanks creep up its walls at about a centimetre a second for two
- * seconds after the rest has settled, which is at rest enough to sleep. It
- * is asleep at 5.9 s; when a body could not rise against its pull faster
- * than 5 mm/s over half a second and sleep, at 7.3 s. */
+/* 800 polygons of 0.35 m radius dropped 20 wide into a box 16 m wide are
+ * asleep at 5.9 s. A body's travel counts whichever way it goes: held
+ * awake while any body rose against its pull faster than 5 mm/s over half
+ * a second, as a heap's flanks do while its middle settles, the heap slept
+ * at 7.3 s. */
 static void a_heap_sleeps_while_its_flanks_creep(void) {
     enum { COUNT = 800, PER_ROW = 20 };
     const double width = 16.0;
