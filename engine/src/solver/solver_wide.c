@@ -29,10 +29,8 @@ typedef struct {
 LANE_INLINE lane_quad_t load_columns(const void *rows, size_t stride,
                                      const uint32_t index[LANES]) {
     const char *base = rows;
-    return transpose((lane_quad_t){load_lane(base + index[0] * stride),
-                                   load_lane(base + index[1] * stride),
-                                   load_lane(base + index[2] * stride),
-                                   load_lane(base + index[3] * stride)});
+    return gather_records(base + index[0] * stride, base + index[1] * stride,
+                          base + index[2] * stride, base + index[3] * stride);
 }
 
 /* The inverse of load_columns, for a full batch: all four rows written

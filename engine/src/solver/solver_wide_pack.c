@@ -14,13 +14,6 @@ typedef struct {
     size_t batch, point, block;
 } pack_at_t;
 
-/* Double k of a group of four adjacent doubles of each of four records
- * (at r0 .. r3) into lane l of column k: each group one vector load. */
-LANE_INLINE lane_quad_t gather_records(const void *r0, const void *r1, const void *r2,
-                                       const void *r3) {
-    return transpose((lane_quad_t){load_lane(r0), load_lane(r1), load_lane(r2), load_lane(r3)});
-}
-
 /* The fields load_batch packs come in groups of four adjacent doubles. */
 _Static_assert(offsetof(solver_point_t, rn_b) == offsetof(solver_point_t, normal_impulse) + 24 &&
                    offsetof(solver_point_t, tangent_mass) == offsetof(solver_point_t, rt_a) + 24 &&

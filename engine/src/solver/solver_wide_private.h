@@ -80,6 +80,13 @@ LANE_INLINE lane_t load_lane(const void *source) {
     return value;
 }
 
+/* Double k of a group of four adjacent doubles of each of four records
+ * (at r0 .. r3) into lane l of column k: each group one vector load. */
+LANE_INLINE lane_quad_t gather_records(const void *r0, const void *r1, const void *r2,
+                                       const void *r3) {
+    return transpose((lane_quad_t){load_lane(r0), load_lane(r1), load_lane(r2), load_lane(r3)});
+}
+
 /* A direction, lane by lane. */
 typedef struct {
     lane_t x, y;
