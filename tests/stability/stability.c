@@ -931,7 +931,7 @@ static const char *const PYRAMID_LIMIT_NOTE =
     "the engine: without the pass the pyramid rests (4e-10 J at 60 s) but its top sinks 5 cm "
     "(why the pass exists). A dead band in the pass (approaches slower than a set speed left to "
     "the iterations, in shock.c's stop_one and stop_two), judged at the 40% rate over the "
-    "benchmark's 8 layout seeds (tests/bench/seeds.sh --judge): applied to every support it "
+    "benchmark's 8 layout seeds (tests/bench/seeds.sh --judge): at 0.2 mm/s on every support it "
     "breaks stack2's exact figures (the heavy box 0.8 mm into the ground at r = 10000) and the "
     "20-box column's drift; applied only to bodies held by two or more supports, at 0.05 mm/s "
     "all 86 figures pass and this pyramid rests (1.3e-10 J at 60 s, its top 1.0 mm down), but "
