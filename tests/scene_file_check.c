@@ -61,6 +61,8 @@ static bool same_settings(scene_file_t *a, scene_file_t *b, char *why, size_t si
         return differ(why, size, "sleep time differs");
     if (scene_get_sleep_phase(x) != scene_get_sleep_phase(y))
         return differ(why, size, "sleep phase differs");
+    if (scene_get_solver_steps(x) != scene_get_solver_steps(y))
+        return differ(why, size, "solver steps differ");
     double last[2], before[2];
     scene_get_step_lengths(x, &last[0], &before[0]);
     scene_get_step_lengths(y, &last[1], &before[1]);

@@ -798,8 +798,8 @@ static const bad_file_t BAD_FILES[] = {
     {"bdoy x { box 1 1 }",
      "t.scene:1:1: expected a statement (body, template, group, gravity, contacts, integrator, "
      "iterations, warm_starting, restitution_threshold, sleep_tolerance, sleep_time, timestep, "
-     "view, game, sleeping, sleep_phase, step_lengths, workers, stepping, category, note, spring, "
-     "newton, drag, collide, contact, joint), found \"bdoy\""},
+     "view, game, sleeping, sleep_phase, solver_steps, step_lengths, workers, stepping, category, "
+     "note, spring, newton, drag, collide, contact, joint), found \"bdoy\""},
     {"warm_starting maybe", "t.scene:1:15: expected on or off (warm starting), found \"maybe\""},
     {"warm_starting on\nwarm_starting off",
      "t.scene:2:1: expected one warm_starting statement per file, found a second (the first at "
@@ -1004,7 +1004,7 @@ static const bad_file_t BAD_FILES[] = {
      "t.scene:2:13: expected the sleep phase, a whole number from 0 to 7, found \"8\""},
     {"body a { box 1 1; asleep 0 }",
      "t.scene:1:19: expected contacts on for the world's state (asleep, contact, sleep_phase, "
-     "step_lengths), found contacts off"},
+     "solver_steps, step_lengths), found contacts off"},
     {"contacts on\nsleeping off\nbody a { box 1 1; asleep 0 }",
      "t.scene:3:19: expected sleeping on for a body asleep, found sleeping off"},
     {"contacts on\nbody a { box 1 1; static; asleep 0 }",
@@ -1041,7 +1041,13 @@ static const bad_file_t BAD_FILES[] = {
      "\"nan\""},
     {"step_lengths 0.01 0.02",
      "t.scene:1:1: expected contacts on for the world's state (asleep, contact, sleep_phase, "
-     "step_lengths), found contacts off"},
+     "solver_steps, step_lengths), found contacts off"},
+    {"solver_steps 3",
+     "t.scene:1:1: expected contacts on for the world's state (asleep, contact, sleep_phase, "
+     "solver_steps, step_lengths), found contacts off"},
+    {"contacts on\nsolver_steps -1",
+     "t.scene:2:14: expected the solver's steps, a whole number from 0 to 18446744073709551615, "
+     "found \"-1\""},
     {"contacts on\nstep_lengths 0 0.02",
      "t.scene:2:1: expected a last step longer than 0 when the step before it has a length, "
      "found 0 and 0.02"},

@@ -82,6 +82,7 @@ static scene_t *copy_of(scene_t *from, bool state) {
     free(sleepers);
     free(islands);
     scene_set_sleep_phase(to, scene_get_sleep_phase(from));
+    scene_set_solver_steps(to, scene_get_solver_steps(from));
     double last, before;
     scene_get_step_lengths(from, &last, &before);
     scene_set_step_lengths(to, last, before);

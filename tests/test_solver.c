@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "solver/coloring.h"
+#include "solver/solver.h"
 #include "solver/solver_split.h"
 #include "solver/solver_wide.h"
 #include "test.h"
@@ -189,7 +190,7 @@ static void batches_solve_isolated_contacts(void) {
     solver_wide_t wide = {0};
     solver_split_load(&wide, contacts, CONTACTS, rows, BODIES);
     CHECK(wide.loose_count == 0);
-    solver_wide_iterate(&wide, rows);
+    solver_wide_iterate(&wide, rows, false);
     solver_wide_store(&wide, contacts);
 
     CHECK_VEC(rows[0].v, 0.0, 0.0, 0.0);
@@ -254,7 +255,7 @@ static void batches_converge_when_iterated(void) {
     }
     solver_wide_t wide = {0};
     solver_split_load(&wide, contacts, 2, rows, 3);
-    for (int iteration = 0; iteration < 60; iteration++) solver_wide_iterate(&wide, rows);
+    for (int iteration = 0; iteration < 60; iteration++) solver_wide_iterate(&wide, rows, false);
     solver_wide_store(&wide, contacts);
     for (int i = 0; i < 2; i++) {
         for (int k = 0; k < 2; k++) {
@@ -333,7 +334,33 @@ static void batches_correct_overlaps_by_their_rate(void) {
     }
 }
 
+/* The steps' sweep orders follow the Thue-Morse sequence, so that steps
+ * of a periodic pattern share both orders: over steps 0 .. 1023 each
+ * residue class modulo 2 and 4 has as many reversed steps as not, and
+ * modulo 3 (which evens out slowly) each has at least a quarter of each. */
+static void sweeps_reverse_in_thue_morse_order(void) {
+    static const bool first[16] = {0, 1, 1, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 1, 1, 0};
+    for (uint64_t n = 0; n < 16; n++) CHECK(solver_sweeps_reversed(n) == first[n]);
+    CHECK(solver_sweeps_reversed(UINT64_C(1) << 63));
+    CHECK(!solver_sweeps_reversed(UINT64_MAX));
+    for (int period = 2; period <= 4; period++) {
+        for (int residue = 0; residue < period; residue++) {
+            int reversed = 0, total = 0;
+            for (uint64_t n = (uint64_t)residue; n < 1024; n += (uint64_t)period) {
+                reversed += solver_sweeps_reversed(n);
+                total++;
+            }
+            if (period == 3) {
+                CHECK(4 * reversed >= total && 4 * (total - reversed) >= total);
+            } else {
+                CHECK(2 * reversed == total);
+            }
+        }
+    }
+}
+
 TEST_SUITE(solver, TEST_CASE(coloring_separates_movable_bodies),
+           TEST_CASE(sweeps_reverse_in_thue_morse_order),
            TEST_CASE(coloring_leaves_the_excess_uncoloured),
            TEST_CASE(batches_solve_isolated_contacts), TEST_CASE(batches_converge_when_iterated),
            TEST_CASE(batches_correct_overlaps_by_their_rate));

@@ -433,11 +433,12 @@ static bool check_state(const sf_doc_t *doc, sf_lexer_t *lexer) {
     sf_where_t needs_contacts = doc->first_island;
     if (needs_contacts.line == 0 && doc->contact_count > 0) needs_contacts = doc->contacts[0].where;
     if (needs_contacts.line == 0) needs_contacts = s->sleep_phase_where;
+    if (needs_contacts.line == 0) needs_contacts = s->solver_steps_where;
     if (needs_contacts.line == 0) needs_contacts = s->step_lengths_where;
     if (needs_contacts.line != 0 && !s->contacts) {
         return sf_fail(lexer, needs_contacts,
                        "expected contacts on for the world's state (asleep, contact, sleep_phase, "
-                       "step_lengths), found contacts off");
+                       "solver_steps, step_lengths), found contacts off");
     }
     if (s->step_lengths_where.line != 0 && s->last_step == 0.0 && s->step_before != 0.0) {
         return sf_fail(lexer, s->step_lengths_where,
@@ -476,6 +477,9 @@ static void restore_state(scene_file_t *file) {
     free(islands);
     if (doc->settings.sleep_phase_where.line != 0) {
         scene_set_sleep_phase(scene, doc->settings.sleep_phase);
+    }
+    if (doc->settings.solver_steps_where.line != 0) {
+        scene_set_solver_steps(scene, doc->settings.solver_steps);
     }
     if (doc->settings.step_lengths_where.line != 0) {
         scene_set_step_lengths(scene, doc->settings.last_step, doc->settings.step_before);

@@ -218,7 +218,7 @@ bool sf_first_time(parser_t *p, sf_where_t *seen, const char *keyword, sf_where_
 static const char *const SETTINGS[] = {
     "gravity",     "contacts",     "integrator",    "iterations",
     "timestep",    "view",         "game",          "sleeping",
-    "sleep_phase", "step_lengths", "warm_starting", "restitution_threshold",
+    "sleep_phase", "solver_steps", "step_lengths", "warm_starting", "restitution_threshold",
     "sleep_tolerance", "sleep_time", "workers",     "stepping",
     "category",    "note"};
 static const char *const FORCES[] = {"spring", "newton", "drag", "collide"};
@@ -265,9 +265,9 @@ static bool parse_one(parser_t *p) {
     if (p->token.kind == TOKEN_BAD_BYTE) return sf_expected(p, "text");
     return sf_expected(p, "a statement (body, template, group, gravity, contacts, integrator, "
                           "iterations, warm_starting, restitution_threshold, sleep_tolerance, "
-                          "sleep_time, timestep, view, game, sleeping, sleep_phase, step_lengths, "
-                          "workers, stepping, category, note, spring, newton, drag, collide, "
-                          "contact, joint)");
+                          "sleep_time, timestep, view, game, sleeping, sleep_phase, solver_steps, "
+                          "step_lengths, workers, stepping, category, note, spring, newton, drag, "
+                          "collide, contact, joint)");
 }
 
 bool sf_parse(sf_lexer_t *lexer, sf_doc_t *doc) {

@@ -232,6 +232,8 @@ typedef struct {
     sf_where_t sleeping_where;
     unsigned sleep_phase;
     sf_where_t sleep_phase_where;
+    uint64_t solver_steps;
+    sf_where_t solver_steps_where;
     double last_step, step_before; /* scene_set_step_lengths */
     sf_where_t step_lengths_where;
     size_t workers; /* 0: the file gives none */

@@ -1,7 +1,7 @@
 /*
  * The settings (scene_file_parse.h): gravity, contacts, integrator,
  * iterations, warm_starting, restitution_threshold, sleep_tolerance,
- * sleep_time, timestep, view, sleeping, sleep_phase, step_lengths, workers,
+ * sleep_time, timestep, view, sleeping, sleep_phase, solver_steps, step_lengths, workers,
  * stepping, category, note and game, each written at most once.
  */
 #include <math.h>
@@ -155,6 +155,10 @@ bool sf_parse_setting(parser_t *p, const char *keyword, sf_where_t here) {
             return false;
         s->sleep_phase = (unsigned)phase;
         return true;
+    }
+    if (strcmp(keyword, "solver_steps") == 0) {
+        return sf_first_time(p, &s->solver_steps_where, keyword, here) &&
+               sf_read_count(p, "the solver's steps", 0, UINT64_MAX, &s->solver_steps);
     }
     if (strcmp(keyword, "step_lengths") == 0) {
         quantity_t last = DURATION, before = DURATION;

@@ -7,6 +7,7 @@
  */
 #include <math.h>
 #include <stdarg.h>
+#include <inttypes.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -118,6 +119,8 @@ static void put_settings(out_t *out, scene_file_t *file, const char *integrator)
     put(out, "sleeping %s\n", scene_get_sleeping(file->scene) ? "on" : "off");
     unsigned phase = scene_get_sleep_phase(file->scene);
     if (phase != 0) put(out, "sleep_phase %u\n", phase);
+    uint64_t solver_steps = scene_get_solver_steps(file->scene);
+    if (solver_steps != 0) put(out, "solver_steps %" PRIu64 "\n", solver_steps);
     double last, before;
     scene_get_step_lengths(file->scene, &last, &before);
     if (last != 0.0) {

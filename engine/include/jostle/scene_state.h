@@ -79,6 +79,13 @@ void scene_restore_sleep(scene_t *scene, body_t *const *bodies, const size_t *is
 unsigned scene_get_sleep_phase(scene_t *scene);
 void scene_set_sleep_phase(scene_t *scene, unsigned phase);
 
+/* The steps the contact solver has taken with world contacts on (0 while
+ * they are off): their count picks whether the next step sweeps its
+ * contacts in one order or in the reverse one (docs/design.md, Sweep
+ * order). Set it to continue a saved scene; refused: world contacts off. */
+uint64_t scene_get_solver_steps(scene_t *scene);
+void scene_set_solver_steps(scene_t *scene, uint64_t steps);
+
 /* ---- Step lengths ------------------------------------------------------------ */
 
 /* The lengths of the last step and of the step before it (s; 0 for a step

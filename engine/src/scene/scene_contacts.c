@@ -8,7 +8,8 @@ static const world_ops_t WORLD_OPS = {
     world_free,         world_set_iterations, world_set_workers,   world_for_bodies,
     world_wake_changed, world_step,           world_contact_count, world_get_contact,
     world_pair_collides, world_pair_contact,  world_get_memory,    world_restore_memory,
-    world_forget_removed, world_get_sleep_phase, world_set_sleep_phase, world_index_sleepers,
+    world_forget_removed, world_get_sleep_phase, world_set_sleep_phase,
+    world_get_solver_steps, world_set_solver_steps, world_index_sleepers,
     world_get_step_lengths, world_set_step_lengths,
 };
 

@@ -98,6 +98,8 @@ typedef struct {
     void (*forget_removed)(world_t *world);
     unsigned (*get_sleep_phase)(const world_t *world);
     void (*set_sleep_phase)(world_t *world, unsigned phase);
+    uint64_t (*get_solver_steps)(const world_t *world);
+    void (*set_solver_steps)(world_t *world, uint64_t steps);
     void (*index_sleepers)(world_t *world, body_t **bodies, size_t count);
     void (*get_step_lengths)(const world_t *world, double *last, double *before);
     void (*set_step_lengths)(world_t *world, double last, double before);

@@ -144,6 +144,20 @@ void scene_set_sleep_phase(scene_t *scene, unsigned phase) {
     ops->set_sleep_phase(world, phase);
 }
 
+uint64_t scene_get_solver_steps(scene_t *scene) {
+    REQUIRE_NOT_NULL(scene);
+    const world_ops_t *ops;
+    world_t *world = scene_world(scene, &ops);
+    return world != NULL ? ops->get_solver_steps(world) : 0;
+}
+
+void scene_set_solver_steps(scene_t *scene, uint64_t steps) {
+    REQUIRE_NOT_NULL(scene);
+    const world_ops_t *ops;
+    world_t *world = world_of(scene, &ops, __func__);
+    ops->set_solver_steps(world, steps);
+}
+
 void scene_get_step_lengths(scene_t *scene, double *last, double *before) {
     REQUIRE_NOT_NULL(scene);
     REQUIRE(last != NULL && before != NULL, "last and before must not be NULL");

@@ -203,11 +203,14 @@ static void impulses_of(const shock_t *shock, const solver_wide_t *wide,
 }
 
 /* Sides in increasing order, which is contact order (a body has one side
- * per contact): insertion sort, as a body has a handful of supports. */
-static void sort_sides(uint32_t *held, uint32_t count) {
+ * per contact), or in decreasing order when reverse: insertion sort, as a
+ * body has a handful of supports. Flipping every bit of a side flips its
+ * order. */
+static void sort_sides(uint32_t *held, uint32_t count, bool reverse) {
+    uint32_t flip = reverse ? UINT32_MAX : 0;
     for (uint32_t k = 1; k < count; k++) {
         uint32_t side = held[k], j = k;
-        for (; j > 0 && held[j - 1] > side; j--) held[j] = held[j - 1];
+        for (; j > 0 && (held[j - 1] ^ flip) > (side ^ flip); j--) held[j] = held[j - 1];
         held[j] = side;
     }
 }
@@ -229,12 +232,14 @@ static void sort_sides(uint32_t *held, uint32_t count) {
 enum { PREFETCH_AHEAD = 8 };
 
 /* body's contacts with the level below (its sides held[0 .. count)), each
- * solved with the lower body held still, in contact order; welded when it
- * is the only one (a column), since a body held by two is pulled two ways. */
+ * solved with the lower body held still, in contact order (reversed when
+ * reverse); welded when it is the only one (a column), since a body held
+ * by two is pulled two ways. */
 static void hold_up(const shock_t *shock, const solver_wide_t *wide,
                     const solver_contact_t *contacts, uint32_t body, uint32_t *held,
-                    uint32_t count, uint32_t readable, solver_velocity_t *velocities) {
-    if (count > 1) sort_sides(held, count);
+                    uint32_t count, uint32_t readable, solver_velocity_t *velocities,
+                    bool reverse) {
+    if (count > 1) sort_sides(held, count, reverse);
     for (uint32_t k = 0; k < count; k++) {
         uint32_t side = held[k];
         if (k + PREFETCH_AHEAD < readable) {
@@ -304,14 +309,14 @@ static size_t find_levels(shock_t *shock, const solver_velocity_t *velocities,
  * `past` entries beyond. */
 static void hold_up_range(shock_t *shock, const solver_wide_t *wide,
                           const solver_contact_t *contacts, solver_velocity_t *velocities,
-                          size_t begin, size_t end, uint32_t past) {
+                          size_t begin, size_t end, uint32_t past, bool reverse) {
     uint32_t start = begin > 0 ? shock->support_end[begin - 1] : 0;
     uint32_t last = end > 0 ? shock->support_end[end - 1] + past : 0;
     for (size_t q = begin; q < end; q++) {
         uint32_t stop = shock->support_end[q];
         if (stop == start) continue;
         hold_up(shock, wide, contacts, shock->queue[q], shock->held + start, stop - start,
-                last - start, velocities);
+                last - start, velocities, reverse);
         start = stop;
     }
 }
@@ -361,13 +366,15 @@ typedef struct {
     const solver_wide_t *wide;
     const solver_contact_t *contacts;
     solver_velocity_t *velocities;
+    bool reverse;
 } hold_t;
 
 /* hold_up reads ahead no further than the range's own supports, which no
  * other thread sorts. */
 static void hold_range(void *context, size_t begin, size_t end) {
     const hold_t *hold = context;
-    hold_up_range(hold->shock, hold->wide, hold->contacts, hold->velocities, begin, end, 0);
+    hold_up_range(hold->shock, hold->wide, hold->contacts, hold->velocities, begin, end, 0,
+                  hold->reverse);
 }
 
 /*
@@ -378,13 +385,13 @@ static void hold_range(void *context, size_t begin, size_t end) {
  */
 static void propagate(shock_t *shock, const solver_wide_t *wide,
                       const solver_contact_t *contacts, solver_velocity_t *velocities,
-                      size_t body_count) {
+                      size_t body_count, bool reverse) {
     size_t reached = find_levels(shock, velocities, body_count);
     if (wide->workers == NULL) {
-        hold_up_range(shock, wide, contacts, velocities, 0, reached, PREFETCH_AHEAD);
+        hold_up_range(shock, wide, contacts, velocities, 0, reached, PREFETCH_AHEAD, reverse);
         return;
     }
-    hold_t hold = {shock, wide, contacts, velocities};
+    hold_t hold = {shock, wide, contacts, velocities, reverse};
     over_levels(shock, wide->workers, reached, hold_range, &hold);
 }
 
@@ -407,11 +414,12 @@ static void reserve(shock_t *shock, size_t count, size_t body_count) {
 }
 
 void shock_propagate(shock_t *shock, const solver_wide_t *wide, const solver_contact_t *contacts,
-                     size_t count, solver_velocity_t *velocities, size_t body_count) {
+                     size_t count, solver_velocity_t *velocities, size_t body_count,
+                     bool reverse) {
     if (count == 0) return;
     reserve(shock, count, body_count);
     if (!link_bodies(shock, wide, contacts, body_count)) return;
-    propagate(shock, wide, contacts, velocities, body_count);
+    propagate(shock, wide, contacts, velocities, body_count, reverse);
 }
 
 /* Lists each body's touching contacts on which one of the two rests (the

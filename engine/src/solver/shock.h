@@ -44,9 +44,12 @@ void shock_free(shock_t *shock);
 
 /* The pass over contacts[0 .. count) and the velocity rows of body_count
  * bodies. The accumulated impulses so far are read from the colour batches
- * of wide (and from the contacts for the loose ones), not stored back. */
+ * of wide (and from the contacts for the loose ones), not stored back.
+ * A body held by several contacts has them solved in contact order, or in
+ * the reverse order when reverse (solver_settings_t). */
 void shock_propagate(shock_t *shock, const solver_wide_t *wide, const solver_contact_t *contacts,
-                     size_t count, solver_velocity_t *velocities, size_t body_count);
+                     size_t count, solver_velocity_t *velocities, size_t body_count,
+                     bool reverse);
 
 /*
  * The same for the overlaps (the lift), once a step before the last

@@ -67,16 +67,23 @@ static void forget_impulses(solver_contact_t *contacts, size_t contact_count) {
     }
 }
 
+/* The k-th of the loose contacts in the step's order. */
+static solver_contact_t *loose_contact(const solver_wide_t *wide, solver_contact_t *contacts,
+                                       size_t k, bool reverse) {
+    return &contacts[wide->loose[reverse ? wide->loose_count - 1 - k : k]];
+}
+
 /*
  * Once the step's motion is fixed (solver_advance), one more iteration of
  * the normals runs with every raised target counted as 0: the end
  * velocities keep no push that only undid a resting approach (set_target),
  * as Box2D v3's relax iterations keep no position bias.
  */
-static void relax(solver_wide_t *wide, solver_contact_t *contacts, solver_velocity_t *velocities) {
-    solver_split_relax(wide, velocities);
-    for (size_t i = 0; i < wide->loose_count; i++) {
-        solver_relax_velocity(&contacts[wide->loose[i]], velocities);
+static void relax(solver_wide_t *wide, solver_contact_t *contacts, solver_velocity_t *velocities,
+                  bool reverse) {
+    solver_split_relax(wide, velocities, reverse);
+    for (size_t k = 0; k < wide->loose_count; k++) {
+        solver_relax_velocity(loose_contact(wide, contacts, k, reverse), velocities);
     }
 }
 
@@ -86,6 +93,7 @@ void solver_solve(solver_wide_t *wide, shock_t *shock, solver_contact_t *contact
                   const joint_step_t *joints) {
     solver_velocity_t *velocities = bodies->velocities;
     solve_split_t split = {contacts, anchors, bodies, settings, {{false, false, false}}};
+    bool reverse = settings->reverse;
     if (!settings->warm_starting) forget_impulses(contacts, contact_count);
     /* A step pays for the collision pass only with an elastic contact, and
      * for timing impacts only with an impact. */
@@ -111,14 +119,18 @@ void solver_solve(solver_wide_t *wide, shock_t *shock, solver_contact_t *contact
      * pushes back over both bodies of each contact (shock.h). */
     int shock_after = settings->velocity_iterations > 1 ? settings->velocity_iterations - 1 : 1;
     for (int iteration = 1; iteration <= settings->velocity_iterations; iteration++) {
-        solver_split_iterate(wide, velocities);
-        for (size_t i = 0; i < wide->loose_count; i++) {
-            solver_solve_velocity(&contacts[wide->loose[i]], velocities);
+        /* The last iteration, which spreads shock propagation's pushes,
+         * always forward: the pyramids leaned less (docs/design.md). */
+        bool backward = reverse && iteration < settings->velocity_iterations;
+        solver_split_iterate(wide, velocities, backward);
+        for (size_t k = 0; k < wide->loose_count; k++) {
+            solver_solve_velocity(loose_contact(wide, contacts, k, backward), velocities);
         }
         if (joints->count > 0) joint_solver_iterate(joints, bodies);
         if (iteration == shock_after) {
             stage_clock_lap(settings->clock, SCENE_STAGE_SOLVER);
-            shock_propagate(shock, wide, contacts, contact_count, velocities, bodies->body_count);
+            shock_propagate(shock, wide, contacts, contact_count, velocities, bodies->body_count,
+                            reverse);
             stage_clock_lap(settings->clock, SCENE_STAGE_SHOCK);
         }
     }
@@ -128,7 +140,7 @@ void solver_solve(solver_wide_t *wide, shock_t *shock, solver_contact_t *contact
     }
     stage_clock_lap(settings->clock, SCENE_STAGE_SOLVER);
     for_bodies(wide->workers, &split, advance_chunk);
-    if (found.raised) relax(wide, contacts, velocities);
+    if (found.raised) relax(wide, contacts, velocities, reverse);
     if (found.raised || !any_impact) solver_split_store(wide, contacts);
     if (joints->count > 0) joint_solver_settle(joints, bodies);
     for (int iteration = 0; iteration < settings->position_iterations; iteration++) {
@@ -137,9 +149,11 @@ void solver_solve(solver_wide_t *wide, shock_t *shock, solver_contact_t *contact
         if (iteration == settings->position_iterations - 1) {
             shock_lift(shock, wide->workers, contacts, contact_count, bodies, joints);
         }
-        solver_split_correct_positions(wide, bodies->displacements, iteration % 2 == 1);
-        for (size_t i = 0; i < wide->loose_count; i++) {
-            solver_solve_position(&contacts[wide->loose[i]], velocities, bodies->displacements);
+        bool backward = (iteration % 2 == 1) != reverse;
+        solver_split_correct_positions(wide, bodies->displacements, backward);
+        for (size_t k = 0; k < wide->loose_count; k++) {
+            solver_solve_position(loose_contact(wide, contacts, k, reverse), velocities,
+                                  bodies->displacements);
         }
         if (joints->count > 0) joint_solver_correct(joints);
     }

@@ -30,6 +30,18 @@
 #include "solver/shock.h"
 #include "solver/solver_wide.h"
 
+/* Whether a world's step n (counted from 0) sweeps its contacts in the
+ * reverse order (solver_settings_t): the Thue-Morse sequence, the parity of
+ * n's one bits. Every aligned block of 2^k steps splits evenly along any
+ * period 2^j < 2^k, and any arithmetic progression of steps in the long run
+ * (Gelfond 1968), so a periodic pattern of step lengths does not keep its
+ * long steps on one order, as plain alternation did with steps of
+ * alternating lengths (docs/design.md, Sweep order). */
+static inline bool solver_sweeps_reversed(uint64_t n) {
+    for (int shift = 32; shift > 0; shift /= 2) n ^= n >> shift;
+    return (n & 1) != 0;
+}
+
 /* Everything after the narrowphase: prepare, warm start, velocity
  * iterations and position iterations (in colour batches, solver_wide.h,
  * whose arrays live in wide), advance, with the step's joints solved

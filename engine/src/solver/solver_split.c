@@ -86,6 +86,18 @@ static void sweep_forward(colour_sweep_t *s) {
     for (int c = 0; c < COLORING_MAX_COLORS; c++) sweep_colour(s, c);
 }
 
+static void sweep_backward(colour_sweep_t *s) {
+    for (int c = COLORING_MAX_COLORS; c-- > 0;) sweep_colour(s, c);
+}
+
+static void sweep_colours(colour_sweep_t *s, bool backward) {
+    if (backward) {
+        sweep_backward(s);
+        return;
+    }
+    sweep_forward(s);
+}
+
 /* Over every batch at once: packing and storing touch no body row. */
 static void sweep_all(colour_sweep_t *s) {
     sweep_groups(s, 0, SOLVER_WIDE_GROUPS);
@@ -123,22 +135,22 @@ void solver_split_warm_start(solver_wide_t *wide, solver_velocity_t *rows) {
     sweep_forward(&s);
 }
 
-void solver_split_iterate(solver_wide_t *wide, solver_velocity_t *rows) {
+void solver_split_iterate(solver_wide_t *wide, solver_velocity_t *rows, bool backward) {
     if (wide->workers == NULL) {
-        solver_wide_iterate(wide, rows);
+        solver_wide_iterate(wide, rows, backward);
         return;
     }
     colour_sweep_t s = {wide, SWEEP_ITERATE, rows, NULL, NULL, 0, 0};
-    sweep_forward(&s);
+    sweep_colours(&s, backward);
 }
 
-void solver_split_relax(solver_wide_t *wide, solver_velocity_t *rows) {
+void solver_split_relax(solver_wide_t *wide, solver_velocity_t *rows, bool backward) {
     if (wide->workers == NULL) {
-        solver_wide_relax(wide, rows);
+        solver_wide_relax(wide, rows, backward);
         return;
     }
     colour_sweep_t s = {wide, SWEEP_RELAX, rows, NULL, NULL, 0, 0};
-    sweep_forward(&s);
+    sweep_colours(&s, backward);
 }
 
 void solver_split_correct_positions(solver_wide_t *wide, solver_displacement_t *displacements,
@@ -148,9 +160,5 @@ void solver_split_correct_positions(solver_wide_t *wide, solver_displacement_t *
         return;
     }
     colour_sweep_t s = {wide, SWEEP_CORRECT, NULL, displacements, NULL, 0, 0};
-    if (!backward) {
-        sweep_forward(&s);
-        return;
-    }
-    for (int c = COLORING_MAX_COLORS; c-- > 0;) sweep_colour(&s, c);
+    sweep_colours(&s, backward);
 }

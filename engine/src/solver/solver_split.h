@@ -22,9 +22,9 @@ void solver_split_load(solver_wide_t *wide, const solver_contact_t *contacts, si
 void solver_split_store(const solver_wide_t *wide, solver_contact_t *contacts);
 
 void solver_split_warm_start(solver_wide_t *wide, solver_velocity_t *rows);
-void solver_split_iterate(solver_wide_t *wide, solver_velocity_t *rows);
-void solver_split_relax(solver_wide_t *wide, solver_velocity_t *rows);
 /* backward: the colours from the last to the first. */
+void solver_split_iterate(solver_wide_t *wide, solver_velocity_t *rows, bool backward);
+void solver_split_relax(solver_wide_t *wide, solver_velocity_t *rows, bool backward);
 void solver_split_correct_positions(solver_wide_t *wide, solver_displacement_t *displacements,
                                     bool backward);
 

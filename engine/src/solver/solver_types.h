@@ -163,6 +163,15 @@ typedef struct {
     /* scene_set_warm_starting, scene_set_restitution_threshold (m/s) */
     bool warm_starting;
     double restitution_threshold;
+    /* Whether this step's sweeps take their contacts in the reverse order:
+     * the velocity iterations but the last, and the relaxation, the colours
+     * from the last to the first and the loose contacts from the last;
+     * shock propagation a body's supports from the last; the position
+     * iterations each the other way than otherwise. A Gauss-Seidel sweep
+     * leaves a bias along its order, and swept one way step after step a
+     * pyramid leaned with it and kept swaying (docs/design.md, Sweep
+     * order). */
+    bool reverse;
     /* The step's stage times (NULL: not timed). */
     stage_clock_t *clock;
 } solver_settings_t;

@@ -315,9 +315,32 @@ LANE_INLINE void iterate_batches(solver_wide_t *wide, solver_velocity_t *rows, s
     }
 }
 
+/* Every batch, the colours from the last to the first: within a colour the
+ * order changes no number, so each colour is swept as forward. */
+LANE_INLINE void iterate_backward(solver_wide_t *wide, solver_velocity_t *rows, bool friction) {
+    for (int c = COLORING_MAX_COLORS; c-- > 0;) {
+        size_t begin = wide->group_batch[c * BATCH_KINDS];
+        size_t end = wide->group_batch[(c + 1) * BATCH_KINDS];
+        if (begin == end) continue;
+        size_t g = group_of(wide, begin);
+        iterate_batches(wide, rows, begin, end, wide->points + first_point(wide, g, begin),
+                        wide->blocks + first_block(wide, g, begin), false, friction);
+    }
+}
+
+LANE_INLINE void iterate_all(solver_wide_t *wide, solver_velocity_t *rows, bool backward,
+                             bool friction) {
+    if (backward) {
+        iterate_backward(wide, rows, friction);
+        return;
+    }
+    iterate_batches(wide, rows, 0, wide->batch_count, wide->points, wide->blocks, false,
+                    friction);
+}
+
 LANE_CLONES
-void solver_wide_iterate(solver_wide_t *wide, solver_velocity_t *rows) {
-    iterate_batches(wide, rows, 0, wide->batch_count, wide->points, wide->blocks, false, true);
+void solver_wide_iterate(solver_wide_t *wide, solver_velocity_t *rows, bool backward) {
+    iterate_all(wide, rows, backward, true);
 }
 
 /* Batches [begin, end) of one colour, from their first point and block;
@@ -337,8 +360,8 @@ void solver_wide_iterate_range(solver_wide_t *wide, solver_velocity_t *rows, siz
 }
 
 LANE_CLONES
-void solver_wide_relax(solver_wide_t *wide, solver_velocity_t *rows) {
-    iterate_batches(wide, rows, 0, wide->batch_count, wide->points, wide->blocks, false, false);
+void solver_wide_relax(solver_wide_t *wide, solver_velocity_t *rows, bool backward) {
+    iterate_all(wide, rows, backward, false);
 }
 
 LANE_CLONES

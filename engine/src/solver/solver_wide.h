@@ -90,12 +90,13 @@ void solver_wide_pack_all(solver_wide_t *wide, const solver_contact_t *contacts,
  * to the velocities. */
 void solver_wide_warm_start(solver_wide_t *wide, solver_velocity_t *rows);
 
-/* One velocity iteration over every batch, colour by colour. */
-void solver_wide_iterate(solver_wide_t *wide, solver_velocity_t *rows);
+/* One velocity iteration over every batch, colour by colour, from the
+ * last colour to the first when backward (solver_settings_t's reverse). */
+void solver_wide_iterate(solver_wide_t *wide, solver_velocity_t *rows, bool backward);
 
 /* One velocity iteration of the normals alone (no friction): the
- * relaxation (solver.c). */
-void solver_wide_relax(solver_wide_t *wide, solver_velocity_t *rows);
+ * relaxation (solver.c); backward as above. */
+void solver_wide_relax(solver_wide_t *wide, solver_velocity_t *rows, bool backward);
 
 /* One position iteration (position_pass.h's solver_solve_position) over
  * every batch, colour by colour, from the last batch back when backward.

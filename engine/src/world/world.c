@@ -386,7 +386,9 @@ static void run_pipeline(world_t *world, body_t **bodies, integrator_motion_t *m
                                   world->position_iterations,
                                   step->warm_starting,
                                   step->restitution_threshold,
+                                  solver_sweeps_reversed(world->solver_steps),
                                   clock};
+    world->solver_steps++;
     solver_bodies_t rows = {world->velocities, world->displacements, world->states, count};
     joint_step_t joints = {step->joints.joints, step->joints.count, &world->joint_tree};
     solver_solve(&world->wide, &world->shock, world->contacts, world->anchors,

@@ -114,6 +114,9 @@ void world_restore_memory(world_t *world, const scene_contact_memory_t *memories
 void world_forget_removed(world_t *world);
 unsigned world_get_sleep_phase(const world_t *world);
 void world_set_sleep_phase(world_t *world, unsigned phase);
+/* The steps the solver has taken (scene_get_solver_steps). */
+uint64_t world_get_solver_steps(const world_t *world);
+void world_set_solver_steps(world_t *world, uint64_t steps);
 void world_index_sleepers(world_t *world, body_t **bodies, size_t count);
 void world_get_step_lengths(const world_t *world, double *last, double *before);
 void world_set_step_lengths(world_t *world, double last, double before);

@@ -170,6 +170,14 @@ void world_set_sleep_phase(world_t *world, unsigned phase) {
     world->sleep.steps = phase;
 }
 
+uint64_t world_get_solver_steps(const world_t *world) {
+    return world->solver_steps;
+}
+
+void world_set_solver_steps(world_t *world, uint64_t steps) {
+    world->solver_steps = steps;
+}
+
 void world_index_sleepers(world_t *world, body_t **bodies, size_t count) {
     sleep_index_asleep(&world->sleep, bodies, count);
 }

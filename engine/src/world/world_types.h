@@ -128,6 +128,10 @@ struct world {
     /* Steps taken, to tell a body's contact group of the last step from an
      * older one. */
     uint64_t step_number;
+    /* Steps the solver has taken since the world began, which pick the
+     * order of the next one's sweeps (solver_sweeps_reversed); kept apart
+     * from step_number because a saved scene carries it. */
+    uint64_t solver_steps;
 
     /* The step's pairs of bodies a joint joins without collide_connected
      * (smaller index in the high half, sorted), and the broadphase's pairs
