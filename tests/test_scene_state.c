@@ -316,6 +316,8 @@ BAD_CALL(lengths_nan, scene_set_step_lengths(bad_scene, 0.01, NAN))
 BAD_CALL(lengths_before_alone, scene_set_step_lengths(bad_scene, 0.0, 0.01))
 BAD_CALL(lengths_contacts_off, scene_set_contacts_enabled(bad_scene, false);
          scene_set_step_lengths(bad_scene, 0.01, 0.0))
+BAD_CALL(solver_steps_contacts_off, scene_set_contacts_enabled(bad_scene, false);
+         scene_set_solver_steps(bad_scene, 3))
 BAD_CALL(memory_previous_count, bad_count = bad_pair(3, 4); bad_count.previous_count = 3;
          scene_restore_contact_memory(bad_scene, &bad_count, 1))
 BAD_CALL(memory_previous_nan, bad_nan = bad_pair(3, 4); bad_nan.previous_count = 1;
@@ -349,6 +351,8 @@ static void bad_state_stops_with_a_message(void) {
     CHECK_DIES(lengths_before_alone, NULL, "engine error in scene_set_step_lengths:",
                "a step before the last needs a last step");
     CHECK_DIES(lengths_contacts_off, NULL, "engine error in scene_set_step_lengths:",
+               "world contacts are off");
+    CHECK_DIES(solver_steps_contacts_off, NULL, "engine error in scene_set_solver_steps:",
                "world contacts are off");
     CHECK_DIES(memory_previous_count, NULL, "engine error in scene_restore_contact_memory:",
                "previous_count must be 0 to 2");
