@@ -315,16 +315,22 @@ LANE_INLINE void iterate_batches(solver_wide_t *wide, solver_velocity_t *rows, s
     }
 }
 
+/* Batches [begin, end) of one colour, from their first point and block;
+ * shared: rows shared with other threads. */
+LANE_INLINE void iterate_range(solver_wide_t *wide, solver_velocity_t *rows, size_t begin,
+                               size_t end, bool shared, bool friction) {
+    if (begin == end) return;
+    size_t g = group_of(wide, begin);
+    iterate_batches(wide, rows, begin, end, wide->points + first_point(wide, g, begin),
+                    wide->blocks + first_block(wide, g, begin), shared, friction);
+}
+
 /* Every batch, the colours from the last to the first: within a colour the
  * order changes no number, so each colour is swept as forward. */
 LANE_INLINE void iterate_backward(solver_wide_t *wide, solver_velocity_t *rows, bool friction) {
     for (int c = COLORING_MAX_COLORS; c-- > 0;) {
-        size_t begin = wide->group_batch[c * BATCH_KINDS];
-        size_t end = wide->group_batch[(c + 1) * BATCH_KINDS];
-        if (begin == end) continue;
-        size_t g = group_of(wide, begin);
-        iterate_batches(wide, rows, begin, end, wide->points + first_point(wide, g, begin),
-                        wide->blocks + first_block(wide, g, begin), false, friction);
+        iterate_range(wide, rows, wide->group_batch[c * BATCH_KINDS],
+                      wide->group_batch[(c + 1) * BATCH_KINDS], false, friction);
     }
 }
 
@@ -343,20 +349,11 @@ void solver_wide_iterate(solver_wide_t *wide, solver_velocity_t *rows, bool back
     iterate_all(wide, rows, backward, true);
 }
 
-/* Batches [begin, end) of one colour, from their first point and block;
- * rows shared with other threads. */
-LANE_INLINE void iterate_range(solver_wide_t *wide, solver_velocity_t *rows, size_t begin,
-                               size_t end, bool friction) {
-    if (begin == end) return;
-    size_t g = group_of(wide, begin);
-    iterate_batches(wide, rows, begin, end, wide->points + first_point(wide, g, begin),
-                    wide->blocks + first_block(wide, g, begin), true, friction);
-}
 
 LANE_CLONES
 void solver_wide_iterate_range(solver_wide_t *wide, solver_velocity_t *rows, size_t begin,
                                size_t end) {
-    iterate_range(wide, rows, begin, end, true);
+    iterate_range(wide, rows, begin, end, true, true);
 }
 
 LANE_CLONES
@@ -367,7 +364,7 @@ void solver_wide_relax(solver_wide_t *wide, solver_velocity_t *rows, bool backwa
 LANE_CLONES
 void solver_wide_relax_range(solver_wide_t *wide, solver_velocity_t *rows, size_t begin,
                              size_t end) {
-    iterate_range(wide, rows, begin, end, false);
+    iterate_range(wide, rows, begin, end, true, false);
 }
 
 /* The bodies' displacements in a batch, lane by lane. */
