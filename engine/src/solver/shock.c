@@ -143,12 +143,22 @@ static void stop_two(const solver_contact_t *c, solver_velocity_t *a, solver_vel
     push_upper(c, upper, upper_is_b, x1, x2, rn1, rn2);
 }
 
+/* Twice the kinetic energy of a body of the row's masses moving at v, w. */
+static double doubled_energy(const solver_velocity_t *row, vector_t v, double w) {
+    return vec_dot(v, v) / row->inverse_mass + w * w / row->inverse_inertia;
+}
+
 /*
  * The upper body moved with the lower one as one rigid body (both points
  * of a two-point contact touching and held, no sliding), when the impulses
  * that takes, added to the iterations' at each point, press (>= 0) and stay
- * within the friction cone. Returns false, changing nothing, when they would not: the contact
- * is then opening, tipping or sliding, and only its approach is stopped.
+ * within the friction cone, and leave the upper body no more kinetic
+ * energy than it had. Returns false, changing nothing, when they would
+ * not: the contact is then opening, tipping or sliding, and only its
+ * approach is stopped. The lower body gets nothing back, so a weld that
+ * sped the upper one up made momentum from nothing: a box at rest on one
+ * sliding over ice took its speed at once, and a column in a pile kept
+ * swaying for seconds (docs/design.md, Shock propagation).
  */
 static bool weld_upper(const solver_contact_t *c, const double normal_impulse[2],
                        const double tangent_impulse[2], solver_velocity_t *upper,
@@ -181,6 +191,9 @@ static bool weld_upper(const solver_contact_t *c, const double normal_impulse[2]
     if (!(pressed1 >= 0.0 && pressed2 >= 0.0)) return false;
     if (fabs(tangent_impulse[0] + 0.5 * jt) > c->friction * pressed1) return false;
     if (fabs(tangent_impulse[1] + 0.5 * jt) > c->friction * pressed2) return false;
+    if (doubled_energy(upper, target_v, lower->w) > doubled_energy(upper, upper->v, upper->w)) {
+        return false;
+    }
     upper->v = target_v;
     upper->w = lower->w;
     return true;
