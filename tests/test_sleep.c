@@ -3,6 +3,7 @@
 #include <math.h>
 #include "jostle/jostle.h"
 #include "dynamics/body_private.h"
+#include "dynamics/integrator.h"
 #include "world/sleep.h"
 #include "test.h"
 
@@ -582,7 +583,40 @@ static void travel_counts_whichever_way_it_goes(void) {
     CHECK(!creeping_body_is_ready((vector_t){0.0, 0.06 * DT}));
 }
 
+/* The integrator's contract for a sleeping body (integrator.h, motion.h):
+ * predicting marks its motion still and writes nothing else of it, and
+ * moving leaves the body as it is, whatever the rest of that motion holds;
+ * a body put to sleep within the step (its motion made by the solve, not
+ * still) is moved by it; an awake one moves as ever. */
+static void a_sleeping_body_is_neither_predicted_nor_moved(void) {
+    body_t *bodies[3];
+    for (int i = 0; i < 3; i++) {
+        bodies[i] = body_init(polygon_make_box((vector_t){2.0 * i, 0.0}, 0.5, 0.5), 1.0, GREY);
+    }
+    bodies[0]->asleep = true;
+    integrator_step_t step = {INTEGRATOR_SEED, DT, {0.0, -10.0}, NULL, NULL, NULL, 0, 0};
+    integrator_motion_t motions[3];
+    for (int i = 0; i < 3; i++) {
+        motions[i] = (integrator_motion_t){.displacement = {NAN, NAN}, .rotation = NAN};
+    }
+    integrator_predict_range(&step, bodies, motions, 0, 3);
+    CHECK(motions[0].still);
+    CHECK(isnan(motions[0].displacement.x)); /* not written */
+    CHECK(!motions[1].still && !motions[2].still);
+    CHECK(motions[1].velocity.y < 0.0);
+    bodies[2]->asleep = true; /* put to sleep by this step's solve */
+    motions[2].displacement = (vector_t){0.25, 0.0};
+    integrator_outcome_t outcome = integrator_move(&step, bodies, 3, motions);
+    CHECK(outcome.failed == 3 && !outcome.removed);
+    CHECK(body_get_centroid(bodies[0]).x == 0.0 && body_get_centroid(bodies[0]).y == 0.0);
+    CHECK(body_get_rotation(bodies[0]) == 0.0);
+    CHECK(body_get_centroid(bodies[1]).y < 0.0);
+    CHECK(body_get_centroid(bodies[2]).x == 4.25);
+    for (int i = 0; i < 3; i++) body_free(bodies[i]);
+}
+
 TEST_SUITE(sleep, TEST_CASE(sleeping_and_waking_allocate_nothing_once_warm), TEST_CASE(settled_pile_falls_asleep),
+           TEST_CASE(a_sleeping_body_is_neither_predicted_nor_moved),
            TEST_CASE(a_deep_pile_falls_asleep), TEST_CASE(travel_counts_whichever_way_it_goes),
            TEST_CASE(sliding_sleeps_only_below_the_tolerance),
            TEST_CASE(slow_free_flight_keeps_moving),

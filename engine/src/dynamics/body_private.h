@@ -158,6 +158,21 @@ static inline struct body *body_public(struct body *body) {
     return body->chain != NULL ? body->chain : body;
 }
 
+/* BODY_PREFETCH (without shape) for a loop that does nothing for a sleeping
+ * body but read its sleep flags: the line of those flags twice as far
+ * ahead, and the rest of the body BODY_AHEAD ahead only when it is awake.
+ * Every line of each of 4000 sleeping bodies, asked for, was four fifths
+ * of a sleeping pile's step. */
+#define BODY_PREFETCH_AWAKE(bodies, at, count)                                            \
+    do {                                                                                  \
+        if ((at) + BODY_AHEAD < (count)) {                                                \
+            __builtin_prefetch(&(bodies)[(at) + BODY_AHEAD]->asleep);                     \
+        }                                                                                 \
+        if ((at) < (count) && !(bodies)[at]->asleep) {                                    \
+            PREFETCH_SPAN((bodies)[at], offsetof(struct body, sleep_time), 0);            \
+        }                                                                                 \
+    } while (0)
+
 /* How many bodies ahead a loop over the step's bodies asks for the next
  * ones: each body is a block of its own, and the loops that walk them all
  * (predicting, loading, moving) waited on each body's first field. */

@@ -288,7 +288,9 @@ static inline void predict_one_stage(const body_t *body, double dt, vector_t gra
         vec_multiply(dt, vec_add(motion->drift, vec_multiply(w, motion->velocity)));
     motion->rotation = dt * (motion->spin_drift + w * motion->angular_velocity);
     motion->inverse_mass = body->inverse_mass;
+    motion->still = false;
 }
+
 
 /* Records each body's start and its first evaluation's forces. */
 static void start_stages(stage_row_t *rows, size_t begun, body_t **bodies, size_t count,
@@ -441,8 +443,12 @@ void integrator_predict_range(const integrator_step_t *step, body_t **bodies,
                               integrator_motion_t *motions, size_t begin, size_t end) {
     double w = integrator_position_weight(step->integrator);
     for (size_t i = begin; i < end; i++) {
-        BODY_PREFETCH(bodies, i + BODY_AHEAD, end, false);
-        predict_one_stage(bodies[i], step->dt, step->gravity, w, &motions[i]);
+        BODY_PREFETCH_AWAKE(bodies, i + BODY_AHEAD, end);
+        if (bodies[i]->asleep) {
+            motions[i].still = true;
+        } else {
+            predict_one_stage(bodies[i], step->dt, step->gravity, w, &motions[i]);
+        }
     }
 }
 
@@ -473,6 +479,7 @@ void integrator_predict(const integrator_step_t *step, body_t **bodies, size_t c
     for (size_t i = 0; i < count; i++) {
         finish_stages(&rows[i], step->dt, w, &motions[i]);
         motions[i].inverse_mass = bodies[i]->inverse_mass;
+        motions[i].still = false;
     }
     (*stages)->begun = 0;
 }
@@ -523,11 +530,11 @@ integrator_outcome_t integrator_move(const integrator_step_t *step, body_t **bod
     integrator_outcome_t outcome = {count, VEC_ZERO, false};
     if (motions != NULL) {
         for (size_t i = 0; i < count; i++) {
-            BODY_PREFETCH(bodies, i + BODY_AHEAD, count, false);
+            BODY_PREFETCH_AWAKE(bodies, i + BODY_AHEAD, count);
             body_t *body = bodies[i];
             if (body->removed) {
                 outcome.removed = true;
-            } else if (!move_body(body, &motions[i], i, &outcome)) {
+            } else if (!motions[i].still && !move_body(body, &motions[i], i, &outcome)) {
                 break;
             }
         }

@@ -203,6 +203,7 @@ WORLD_INLINE void write_back_range(const world_t *world, integrator_motion_t *mo
         motion->angular_velocity = velocity->w;
         motion->displacement = moved->dx;
         motion->rotation = moved->dtheta;
+        motion->still = false;
     }
 }
 
