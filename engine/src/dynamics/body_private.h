@@ -160,9 +160,8 @@ static inline struct body *body_public(struct body *body) {
 
 /* BODY_PREFETCH (without shape) for a loop that does nothing for a sleeping
  * body but read its sleep flags: the line of those flags twice as far
- * ahead, and the rest of the body BODY_AHEAD ahead only when it is awake.
- * Every line of each of 4000 sleeping bodies, asked for, was four fifths
- * of a sleeping pile's step. */
+ * ahead, and the rest of the body BODY_AHEAD ahead only when it is awake,
+ * so that a sleeping pile's step does not fetch the bodies it leaves out. */
 #define BODY_PREFETCH_AWAKE(bodies, at, count)                                            \
     do {                                                                                  \
         if ((at) + BODY_AHEAD < (count)) {                                                \

@@ -291,7 +291,6 @@ static inline void predict_one_stage(const body_t *body, double dt, vector_t gra
     motion->still = false;
 }
 
-
 /* Records each body's start and its first evaluation's forces. */
 static void start_stages(stage_row_t *rows, size_t begun, body_t **bodies, size_t count,
                          vector_t gravity) {

@@ -117,7 +117,8 @@ void integrator_predict(const integrator_step_t *step, body_t **bodies, size_t c
 
 /* integrator_predict for bodies [begin, end) of a per-body scheme
  * (integrator_is_per_body), which calls no force creator: each body's
- * motion is its own, so ranges may run on several threads at once. */
+ * motion is its own, so ranges may run on several threads at once. A
+ * sleeping body's motion is only marked still (motion.h). */
 void integrator_predict_range(const integrator_step_t *step, body_t **bodies,
                               integrator_motion_t *motions, size_t begin, size_t end);
 
@@ -147,7 +148,8 @@ typedef struct {
 /*
  * The integrate stage: moves each body not marked removed by motions[i]
  * (integrator_predict's, as the world changed it) and clears its
- * accumulators. With motions NULL, for a per-body scheme when nothing
+ * accumulators; a still motion (motion.h) leaves its body as it is. With
+ * motions NULL, for a per-body scheme when nothing
  * acts between the forces and the move (no world contacts), each body's
  * free motion is computed as it is moved: one pass over the bodies, the
  * motion never stored.

@@ -36,9 +36,9 @@ typedef struct {
      * no motion (sleeping zeroed its velocities, and anything put in its
      * accumulators woke it), the other fields are not written (a sleeping
      * body is in no solve: the world leaves it out, implicit Euler holds
-     * it), and integrator_move leaves it as it is. Writing each sleeping
-     * body's motion in full, and reading the body for it, was four fifths
-     * of a sleeping pile's step. */
+     * it), and integrator_move leaves it as it is: a sleeping body costs
+     * neither its lines read nor its motion written (docs/design.md,
+     * Sleeping). */
     bool still;
 } integrator_motion_t;
 
