@@ -240,7 +240,7 @@ static void bad_worker_counts_are_refused(void) {
 
 /* The pool: each index of each call is visited once, by the chunk that
  * workers_chunks says holds it, for counts below, at and above the number
- * of chunks, and over many calls in a row. */
+ * of chunks, and over many calls in a row; a chunk holds at least 8. */
 typedef struct {
     unsigned char visits[1000];
     size_t chunk_of[1000];
@@ -267,6 +267,7 @@ static void pool_visits_every_index_once(void) {
                 workers_for(workers, count, visit, &v);
                 size_t chunks = workers_chunks(workers, count);
                 CHECK(chunks <= WORKERS_MAX_CHUNKS && chunks <= count);
+                CHECK(chunks <= 1 || count >= 8 * chunks); /* not a thread woken for less */
                 for (size_t i = 0; i < count; i++) {
                     CHECK(v.visits[i] == 1);
                     size_t k = v.chunk_of[i];

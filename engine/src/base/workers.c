@@ -12,6 +12,10 @@
  * machine leaves its share to the others, few enough that taking a chunk
  * costs nothing next to running it. */
 static const size_t CHUNKS_PER_WORKER = 8;
+/* Each chunk gets at least this many indices: waking the threads for a
+ * loop over a handful (the static bodies of a scene whose every other body
+ * sleeps) cost more than the loop, ten times an all-asleep step's time. */
+static const size_t MIN_CHUNK = 8;
 /* A waiting thread spins this many pauses (each a few tens of cycles:
  * about the gap between two loops of a step), then yields the processor
  * this many times (about a millisecond when nothing else wants it: the
@@ -192,7 +196,8 @@ size_t workers_chunks(const workers_t *workers, size_t count) {
     if (workers == NULL) return count < 1 ? count : 1;
     size_t chunks = workers->count * CHUNKS_PER_WORKER;
     if (chunks > WORKERS_MAX_CHUNKS) chunks = WORKERS_MAX_CHUNKS;
-    return count < chunks ? count : chunks;
+    size_t most = count / MIN_CHUNK > 1 ? count / MIN_CHUNK : (count < 1 ? count : 1);
+    return most < chunks ? most : chunks;
 }
 
 /* Publishes the call and wakes the threads that sleep. The caller's store

@@ -39,8 +39,9 @@ void workers_free(workers_t *workers);
 size_t workers_count(const workers_t *workers);
 
 /* How many chunks workers_for makes of count indices: chunk k is
- * [k count / n, (k + 1) count / n), n = workers_chunks(workers, count).
- * Without a pool (workers NULL) that is one chunk, none for count 0. */
+ * [k count / n, (k + 1) count / n), n = workers_chunks(workers, count),
+ * each of at least a few indices (one chunk for a handful). Without a pool
+ * (workers NULL) that is one chunk, none for count 0. */
 size_t workers_chunks(const workers_t *workers, size_t count);
 
 /* Runs fn over the chunks of [0, count) in parallel; with workers NULL, on
