@@ -583,6 +583,44 @@ static void travel_counts_whichever_way_it_goes(void) {
     CHECK(!creeping_body_is_ready((vector_t){0.0, 0.06 * DT}));
 }
 
+/* The step leaves sleeping bodies out of its loops, listing the awake ones
+ * anew only when who sleeps changes (scene.c, choose_step_bodies): every
+ * change must reach that list. With every box asleep, on one worker and on
+ * two: a box added in mid-air falls in the next step; a box woken by a
+ * push between steps moves in the next one, and its stack sleeps again;
+ * removing a sleeping box drops it from the scene and wakes the boxes on
+ * it, which fall. */
+static void the_step_lists_what_sleeping_leaves_out_anew(void) {
+    for (size_t workers = 1; workers <= 2; workers++) {
+        scene_t *scene = sleep_scene();
+        scene_set_workers(scene, workers);
+        body_t *left[3], *right[3];
+        add_stack(scene, -10.0, left, 3);
+        add_stack(scene, 10.0, right, 3);
+        run(scene, 120);
+        CHECK(count_asleep(left, 3) == 3 && count_asleep(right, 3) == 3);
+        body_t *added = add_box(scene, 0.0, 6.0);
+        run(scene, 1);
+        CHECK(body_get_centroid(added).y < 6.0);
+        run(scene, 120);
+        CHECK(body_is_sleeping(added));
+        body_add_impulse(right[2], (vector_t){0.5, 0.0});
+        run(scene, 1);
+        CHECK(body_get_centroid(right[2]).x > 10.0);
+        run(scene, 240);
+        CHECK(count_asleep(right, 3) == 3);
+        CHECK(count_asleep(left, 3) == 3);
+        double top = body_get_centroid(left[2]).y;
+        body_remove(left[0]);
+        run(scene, 1);
+        CHECK(scene_bodies(scene) == 7); /* the floor, 5 boxes, the added one */
+        CHECK(body_get_centroid(left[2]).y < top);
+        run(scene, 120);
+        CHECK_NEAR(body_get_centroid(left[2]).y, 1.5, 0.01);
+        scene_free(scene);
+    }
+}
+
 /* The integrator's contract for a sleeping body (integrator.h, motion.h):
  * predicting marks its motion still and writes nothing else of it, and
  * moving leaves the body as it is, whatever the rest of that motion holds;
@@ -617,6 +655,7 @@ static void a_sleeping_body_is_neither_predicted_nor_moved(void) {
 
 TEST_SUITE(sleep, TEST_CASE(sleeping_and_waking_allocate_nothing_once_warm), TEST_CASE(settled_pile_falls_asleep),
            TEST_CASE(a_sleeping_body_is_neither_predicted_nor_moved),
+           TEST_CASE(the_step_lists_what_sleeping_leaves_out_anew),
            TEST_CASE(a_deep_pile_falls_asleep), TEST_CASE(travel_counts_whichever_way_it_goes),
            TEST_CASE(sliding_sleeps_only_below_the_tolerance),
            TEST_CASE(slow_free_flight_keeps_moving),

@@ -296,6 +296,7 @@ void *body_get_info(body_t *body) {
 }
 
 void body_wake(body_t *body) {
+    if (body->asleep && body->sleep_changes != NULL) (*body->sleep_changes)++;
     body_t *member = body;
     do {
         body_t *next = member->sleep_next;

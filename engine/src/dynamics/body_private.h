@@ -99,6 +99,10 @@ struct body {
     /* The owning scene's count of moves (scene_private.h, scene_moves),
      * which a pose set here advances; NULL outside a scene. */
     uint64_t *moves;
+    /* The owning scene's count of changes to which of its bodies sleep
+     * (body_wake, body_fall_asleep), by which it keeps its list of awake
+     * bodies; NULL outside a scene. */
+    uint64_t *sleep_changes;
 
     /* What the last search for seams found of a listed body (seams.h; the
      * world owns it). */
@@ -252,6 +256,12 @@ static inline void body_note_move(body_t *body) {
 
 /* Wakes the body and every body of its sleeping island. */
 void body_wake(body_t *body);
+
+/* Marks the body asleep (its island's circle is sleep.c's to link). */
+static inline void body_fall_asleep(body_t *body) {
+    body->asleep = true;
+    if (body->sleep_changes != NULL) (*body->sleep_changes)++;
+}
 
 /* A change that sleeping bodies around the body must see (its pose,
  * velocity, mass, material or filter set, its removal, its arrival in a

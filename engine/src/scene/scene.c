@@ -36,6 +36,18 @@ struct scene {
     integrator_t integrator;
     /* Whether slow islands sleep while world contacts are on. */
     bool sleeping;
+    /* The bodies the step in progress moves (choose_step_bodies): bodies,
+     * or awake, the bodies not asleep in scene order with their indices in
+     * bodies, listed anew only when sleep_changes (the bodies' count of
+     * changes to who sleeps, body_private.h) has moved since awake_changes
+     * or bodies came or went (awake_stale). */
+    body_t **step_bodies;
+    size_t step_count;
+    body_t **awake;
+    size_t *awake_index;
+    size_t awake_count, awake_capacity, awake_index_capacity;
+    uint64_t sleep_changes, awake_changes;
+    bool awake_stale;
     /* Each body's motion over the step in progress (integrator.h), and the
      * multi-stage schemes' storage; reused from step to step. */
     integrator_motion_t *motions;
@@ -87,6 +99,7 @@ scene_t *scene_init(void) {
     scene_t *scene = memory_calloc(1, sizeof(scene_t));
     scene->integrator = INTEGRATOR_SEED;
     scene->sleeping = true;
+    scene->awake_stale = true;
     scene->workers = 1;
     scene_reset_solver_settings(scene);
     return scene;
@@ -137,6 +150,7 @@ void scene_require_idle(const scene_t *scene, const char *function, const char *
 static void free_owned_body(body_t *body) {
     body->scene = NULL;
     body->moves = NULL;
+    body->sleep_changes = NULL;
     body->in_scene = false;
     body_free(body);
 }
@@ -154,6 +168,8 @@ void scene_free(scene_t *scene) {
     memory_free(scene->bodies);
     memory_free(scene->record);
     memory_free(scene->motions);
+    memory_free(scene->awake);
+    memory_free(scene->awake_index);
     memory_free(scene->jacobians);
     integrator_stages_free(scene->stages);
     if (scene->queries != NULL) scene->free_queries(scene->queries);
@@ -184,7 +200,9 @@ void scene_add_body(scene_t *scene, body_t *body) {
     body->in_scene = true;
     body->scene = scene;
     body->moves = &scene->moves;
+    body->sleep_changes = &scene->sleep_changes;
     scene->moves++;
+    scene->awake_stale = true;
     memory_reserve((void **)&scene->bodies, &scene->body_capacity, scene->body_count + 1,
                    sizeof(body_t *));
     body->id = scene->next_body_id++;
@@ -584,6 +602,49 @@ static bool splits_bodies(const scene_t *scene) {
     return scene->world != NULL && scene->workers > 1;
 }
 
+/* Whether the step leaves the sleeping bodies out of its loops: with world
+ * contacts and sleeping on, under a scheme that moves each body by itself
+ * (integrator_is_per_body; the others work on all the bodies at once), so
+ * that a sleeping body costs nothing per step. */
+static bool steps_awake_only(const scene_t *scene) {
+    return scene->world != NULL && scene->sleeping && integrator_is_per_body(scene->integrator);
+}
+
+/* Lists the bodies not asleep, in scene order. */
+static void list_awake(scene_t *scene) {
+    memory_reserve((void **)&scene->awake, &scene->awake_capacity, scene->body_count,
+                   sizeof(body_t *));
+    memory_reserve((void **)&scene->awake_index, &scene->awake_index_capacity, scene->body_count,
+                   sizeof(size_t));
+    size_t count = 0;
+    for (size_t i = 0; i < scene->body_count; i++) {
+        if (scene->bodies[i]->asleep) continue;
+        scene->awake[count] = scene->bodies[i];
+        scene->awake_index[count++] = i;
+    }
+    scene->awake_count = count;
+    scene->awake_changes = scene->sleep_changes;
+    scene->awake_stale = false;
+}
+
+/* Sets the bodies the step moves (step_bodies): every body, or the awake
+ * ones (steps_awake_only), listed anew when who sleeps has changed. */
+static void choose_step_bodies(scene_t *scene) {
+    if (!steps_awake_only(scene)) {
+        scene->step_bodies = scene->bodies;
+        scene->step_count = scene->body_count;
+        return;
+    }
+    if (scene->awake_stale || scene->awake_changes != scene->sleep_changes) list_awake(scene);
+    scene->step_bodies = scene->awake;
+    scene->step_count = scene->awake_count;
+}
+
+/* The scene's index of the step's body k. */
+static size_t scene_index_of(const scene_t *scene, size_t k) {
+    return scene->step_bodies == scene->bodies ? k : scene->awake_index[k];
+}
+
 /* The one-stage schemes' free motions over the world's workers: no force
  * creator runs in them, and each body's motion is its own. */
 typedef struct {
@@ -594,7 +655,8 @@ typedef struct {
 static void predict_chunk(void *context, size_t chunk, size_t begin, size_t end) {
     const predict_split_t *split = context;
     (void)chunk;
-    integrator_predict_range(split->step, split->scene->bodies, split->scene->motions, begin, end);
+    integrator_predict_range(split->step, split->scene->step_bodies, split->scene->motions, begin,
+                             end);
 }
 
 /* The integrator's reuse key (integrator.h): the forces version while
@@ -643,9 +705,11 @@ static const integrator_motion_t *stage_motion(scene_t *scene, integrator_step_t
         stage_forces(scene);
     }
     if (!one_stage || scene->force_count > 0) stage_clock_lap(&scene->clock, SCENE_STAGE_FORCES);
+    choose_step_bodies(scene);
     if (scene->world != NULL && scene->sleeping) {
-        scene->world_ops->wake_changed(scene->world, scene->bodies, scene->body_count, step->dt,
-                                       scene->gravity);
+        scene->world_ops->wake_changed(scene->world, scene->step_bodies, scene->step_count,
+                                       step->dt, scene->gravity);
+        choose_step_bodies(scene); /* with what woke */
         stage_clock_lap(&scene->clock, SCENE_STAGE_SLEEP);
     }
     if (per_body && scene->world == NULL) return NULL;
@@ -655,9 +719,10 @@ static const integrator_motion_t *stage_motion(scene_t *scene, integrator_step_t
     if (scene->integrator == INTEGRATOR_IMPLICIT_EULER) gather_jacobians(scene, step);
     if (splits_bodies(scene) && per_body) {
         predict_split_t split = {step, scene};
-        scene->world_ops->for_bodies(scene->world, scene->body_count, predict_chunk, &split);
+        scene->world_ops->for_bodies(scene->world, scene->step_count, predict_chunk, &split);
     } else {
-        integrator_predict(step, scene->bodies, scene->body_count, scene->motions, &scene->stages);
+        integrator_predict(step, scene->step_bodies, scene->step_count, scene->motions,
+                           &scene->stages);
     }
     scene->stage = 0;
     stage_clock_lap(&scene->clock, SCENE_STAGE_FORCES);
@@ -709,8 +774,8 @@ typedef struct {
 
 static void integrate_chunk(void *context, size_t chunk, size_t begin, size_t end) {
     integrate_split_t *split = context;
-    split->found[chunk] = integrator_move(split->step, split->scene->bodies + begin, end - begin,
-                                          split->motions + begin);
+    split->found[chunk] = integrator_move(split->step, split->scene->step_bodies + begin,
+                                          end - begin, split->motions + begin);
     split->found[chunk].failed += begin; /* end when the chunk did not fail */
     split->end[chunk] = end;
 }
@@ -719,11 +784,11 @@ static integrator_outcome_t integrate_split(scene_t *scene, const integrator_ste
                                             const integrator_motion_t *motions) {
     integrate_split_t split = {step, scene, motions, {{0}}, {0}};
     for (size_t k = 0; k < WORKERS_MAX_CHUNKS; k++) split.end[k] = SIZE_MAX;
-    scene->world_ops->for_bodies(scene->world, scene->body_count, integrate_chunk, &split);
-    integrator_outcome_t outcome = {scene->body_count, VEC_ZERO, false};
+    scene->world_ops->for_bodies(scene->world, scene->step_count, integrate_chunk, &split);
+    integrator_outcome_t outcome = {scene->step_count, VEC_ZERO, false};
     for (size_t k = 0; k < WORKERS_MAX_CHUNKS && split.end[k] != SIZE_MAX; k++) {
         outcome.removed |= split.found[k].removed;
-        if (outcome.failed == scene->body_count && split.found[k].failed < split.end[k]) {
+        if (outcome.failed == scene->step_count && split.found[k].failed < split.end[k]) {
             outcome.failed = split.found[k].failed;
             outcome.failed_start = split.found[k].failed_start;
         }
@@ -737,10 +802,10 @@ static bool stage_integrate(scene_t *scene, const integrator_step_t *step,
                             const integrator_motion_t *motions) {
     integrator_outcome_t outcome = splits_bodies(scene) && motions != NULL
                                        ? integrate_split(scene, step, motions)
-                                       : integrator_move(step, scene->bodies, scene->body_count,
-                                                         motions);
-    if (outcome.failed < scene->body_count) {
-        fail_integrate(scene, outcome.failed, outcome.failed_start);
+                                       : integrator_move(step, scene->step_bodies,
+                                                         scene->step_count, motions);
+    if (outcome.failed < scene->step_count) {
+        fail_integrate(scene, scene_index_of(scene, outcome.failed), outcome.failed_start);
     }
     return outcome.removed;
 }
@@ -795,6 +860,7 @@ static void stage_reap(scene_t *scene) {
         }
     }
     scene->body_count = kept;
+    scene->awake_stale = true;
     if (scene->stats.removed_bodies > 0) stage_clock_lap(&scene->clock, SCENE_STAGE_REMOVAL);
 }
 
@@ -833,9 +899,12 @@ static void tick(scene_t *scene, double dt) {
                                    scene->sleep_time,
                                    &scene->clock,
                                    scene->chain_parts,
-                                   {scene->joints.joints, scene->joints.count, NULL}};
-        scene->world_ops->step(scene->world, scene->bodies, scene->motions, scene->body_count,
-                               &world_step, &scene->stats);
+                                   {scene->joints.joints, scene->joints.count, NULL},
+                                   scene->step_bodies != scene->bodies ? scene->bodies : NULL,
+                                   scene->body_count,
+                                   &scene->sleep_changes};
+        scene->world_ops->step(scene->world, scene->step_bodies, scene->motions,
+                               scene->step_count, &world_step, &scene->stats);
         scene->record_needs_world = true;
         integrator_respond(&step, scene->bodies, scene->motions, scene->stages);
     }

@@ -110,7 +110,7 @@ void scene_restore_sleep(scene_t *scene, body_t *const *bodies, const size_t *is
         REQUIRE(body_is_movable(body), "bodies[%zu] cannot move (infinite mass and inertia): it "
                                        "never sleeps", i);
         REQUIRE(!body->asleep, "bodies[%zu] is asleep already (listed twice?)", i);
-        body->asleep = true;
+        body_fall_asleep(body);
         entries[i] = (island_entry_t){islands[i], body};
     }
     qsort(entries, count, sizeof *entries, compare_islands);

@@ -156,7 +156,7 @@ void sleep_islands(sleep_t *sleep, const sleep_step_t *step, const sleep_link_t 
         if (!body_is_movable(body) || body->removed) continue;
         struct sleep_island *island = &sleep->islands[find_root(sleep->parent, (uint32_t)i)];
         if (!island->ready || (island->pushed && !island->supported)) continue;
-        body->asleep = true;
+        body_fall_asleep(body);
         step->velocities[i].v = VEC_ZERO;
         step->velocities[i].w = 0.0;
         if (island->first == NULL) {
@@ -283,14 +283,26 @@ void sleep_forget_removed(sleep_t *sleep) {
 void sleep_index_asleep(sleep_t *sleep, body_t **bodies, size_t count) {
     rebuild_index(sleep, bodies, count, count_asleep(bodies, count));
     sleep->slept = 0;
+    sleep->checked = false;
+}
+
+/* Whether the index may be out of date: an island fell asleep, or who
+ * sleeps changed since it was last checked (or that is not known). */
+static bool index_may_be_stale(const sleep_t *sleep, const uint64_t *changes) {
+    return sleep->slept > 0 || changes == NULL || !sleep->checked ||
+           *changes != sleep->checked_changes;
 }
 
 void sleep_wake_reached(sleep_t *sleep, const sleep_step_t *step, body_t **all_bodies,
-                        size_t all_count) {
+                        size_t all_count, const uint64_t *changes) {
     if (sleep->slept == 0 && sleep->count == 0) return;
-    size_t asleep = count_asleep(all_bodies, all_count);
-    if (sleep->slept > 0 || asleep != sleep->count) {
-        rebuild_index(sleep, all_bodies, all_count, asleep);
+    if (index_may_be_stale(sleep, changes)) {
+        size_t asleep = count_asleep(all_bodies, all_count);
+        if (sleep->slept > 0 || asleep != sleep->count) {
+            rebuild_index(sleep, all_bodies, all_count, asleep);
+        }
+        sleep->checked = changes != NULL;
+        if (changes != NULL) sleep->checked_changes = *changes;
     }
     sleep->slept = 0;
     if (sleep->count == 0) return;

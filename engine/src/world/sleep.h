@@ -33,6 +33,10 @@ typedef struct {
     size_t count, capacity;
     double widest; /* the widest box in the index (m) */
     size_t slept;  /* bodies put to sleep since the index was built */
+    /* The scene's count of changes to who sleeps when the index was last
+     * checked (sleep_wake_reached); checked: whether it has been. */
+    uint64_t checked_changes;
+    bool checked;
     unsigned steps; /* since islands were last joined */
     uint32_t *parent;
     size_t parent_capacity;
@@ -96,10 +100,12 @@ void sleep_islands(sleep_t *sleep, const sleep_step_t *step, const sleep_link_t 
                    size_t link_count);
 
 /* Keeps the index of sleeping bodies current (all_bodies[0 .. all_count)
- * is every body of the scene) and wakes the sleeping islands that a body
- * moving faster than the tolerances may reach in the next step. */
+ * is every body of the scene; changes, when not NULL, the scene's count of
+ * changes to who sleeps, which spares the check while it stands still) and
+ * wakes the sleeping islands that a body moving faster than the tolerances
+ * may reach in the next step. */
 void sleep_wake_reached(sleep_t *sleep, const sleep_step_t *step, body_t **all_bodies,
-                        size_t all_count);
+                        size_t all_count, const uint64_t *changes);
 
 /* Drops the bodies marked removed from the index, before they are freed
  * without a step (a tick of dt 0), which would rebuild it. */

@@ -287,7 +287,7 @@ static void update_sleep(world_t *world, body_t **bodies, size_t count, const wo
         link_count += joint_links(&ws->joints, world->links + link_count);
         sleep_islands(&world->sleep, &step, world->links, link_count);
     }
-    sleep_wake_reached(&world->sleep, &step, all_bodies, all_count);
+    sleep_wake_reached(&world->sleep, &step, all_bodies, all_count, ws->sleep_changes);
 }
 
 /* The index of the body among the step's bodies[0 .. count), or -1 when it
@@ -465,16 +465,20 @@ void world_wake_changed(world_t *world, body_t **bodies, size_t count, double dt
 void world_step(world_t *world, body_t **bodies, integrator_motion_t *motions, size_t count,
                 const world_step_t *step, scene_stats_t *stats) {
     time_step(world, step->dt);
-    bool sleepers = step->sleeping && sleep_any(&world->sleep);
+    body_t **all_bodies = step->all_bodies != NULL ? step->all_bodies : bodies;
+    size_t all_count = step->all_bodies != NULL ? step->all_count : count;
+    /* Some of the bodies may be asleep, unless the caller left them out. */
+    bool sleepers = step->sleeping && sleep_any(&world->sleep) && step->all_bodies == NULL;
     /* Nobody asleep and no chain: every body is in the step, with nothing
      * to gather. */
     if (!sleepers && step->chain_parts == 0) {
-        run_pipeline(world, bodies, motions, count, step, stats, bodies, count);
+        run_pipeline(world, bodies, motions, count, step, stats, all_bodies, all_count);
         return;
     }
     size_t active = gather_bodies(world, bodies, motions, count, sleepers, step->chain_parts);
     if (sleepers) stage_clock_lap(step->clock, SCENE_STAGE_SLEEP);
-    run_pipeline(world, world->active, world->active_motions, active, step, stats, bodies, count);
+    run_pipeline(world, world->active, world->active_motions, active, step, stats, all_bodies,
+                 all_count);
     for (size_t k = 0; k < active; k++) {
         size_t i = world->active_index[k];
         if (i != SIZE_MAX) motions[i] = world->active_motions[k];

@@ -62,9 +62,19 @@ typedef struct {
     size_t chain_parts;
     /* The scene's joints (joint.h), solved with the contacts. */
     joint_step_t joints;
+    /* Every body of the scene when the step's bodies are only its awake
+     * ones (NULL: they are all of them): the index of sleeping bodies is
+     * kept over these. */
+    body_t **all_bodies;
+    size_t all_count;
+    /* The scene's count of changes to which bodies sleep (body_private.h):
+     * while it stands still and no island fell asleep, that index does
+     * too, and is not checked; NULL: checked every step. */
+    const uint64_t *sleep_changes;
 } world_step_t;
 
-/* Wakes the sleeping islands that a body of bodies[0 .. count) changed
+/* Wakes the sleeping islands that a body of bodies[0 .. count) (all the
+ * scene's, or all but its sleeping ones, which are not marked) changed
  * since the last step (body_mark_changed) touched or may touch in the next
  * step of dt (sleep_wake_changed), and, when this step is longer than the
  * last, those that a moving body may reach in it (sleep_wake_ahead), under
@@ -74,9 +84,11 @@ typedef struct {
 void world_wake_changed(world_t *world, body_t **bodies, size_t count, double dt,
                         vector_t gravity);
 
-/* Runs the pipeline over bodies[0..count) (removed bodies take no part):
- * motions[i] holds body i's free motion on entry and the motion with its
- * contacts on return. Adds to the counters of stats. */
+/* Runs the pipeline over bodies[0..count) (removed and sleeping bodies
+ * take no part), all the scene's, or only its awake ones when
+ * step->all_bodies is set: motions[i] holds body i's free motion on entry
+ * and the motion with its contacts on return. Adds to the counters of
+ * stats. */
 void world_step(world_t *world, body_t **bodies, integrator_motion_t *motions, size_t count,
                 const world_step_t *step, scene_stats_t *stats);
 
