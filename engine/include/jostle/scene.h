@@ -404,7 +404,7 @@ scene_stats_t scene_get_stats(scene_t *scene);
  *                velocity iterations, handing results back;
  *   SHOCK        shock propagation (before the last velocity iteration);
  *   POSITION     advancing the bodies and the position iterations;
- *   INTEGRATE    moving every body by its motion (stage 3);
+ *   INTEGRATE    moving every body not asleep by its motion (stage 3);
  *   SLEEP        waking islands a change reached, sleep timers, islands
  *                put to sleep;
  *   REMOVAL      reaping the bodies marked removed (stage 4).
