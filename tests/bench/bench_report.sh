@@ -381,15 +381,16 @@ $(grep -v '^#' "$work/sleeping")
 \`\`\`
 
 When every movable body of the pile is asleep, one run of $sleep_steps steps
-each ("none": some body was still awake at the end, with how many):
+each ("none": some body was still awake at the end, with how many), and
+the CPU time of a step from then on:
 
-| engine | all asleep at (s) | bodies awake at the end |
-|---|---|---|
-$(awk '{ e = ""; t = ""; a = 0
+| engine | all asleep at (s) | bodies awake at the end | ms per step once all asleep |
+|---|---|---|---|
+$(awk '{ e = ""; t = ""; a = 0; m = "-"
         for (i = 1; i <= NF; i++) { split($i, kv, "=")
             if (kv[1] == "engine") e = kv[2]; if (kv[1] == "asleep_s") t = kv[2]
-            if (kv[1] == "awake_end") a = kv[2] }
-        printf "| %s | %s | %s |\n", e, t, a }' "$work/asleep")
+            if (kv[1] == "awake_end") a = kv[2]; if (kv[1] == "asleep_ms") m = kv[2] }
+        printf "| %s | %s | %s | %s |\n", e, t, a, m }' "$work/asleep")
 EOF
     fi
     cat <<EOF

@@ -231,12 +231,18 @@ static inline void pile_run(const bench_ops_t *ops, const bench_case_t *c, bench
     double late_ke = 0.0, late_p = 0.0, ke_end = 0.0, vmax_end = 0.0;
     int late_fast = 0, fast_end = 0;
     int asleep_step = 0; /* the first step after which every body sleeps */
+    double asleep_total = 0.0; /* ms over the steps after it */
+    int asleep_steps = 0;
     for (int step = 1; step <= steps; step++) {
         double ms = bench_step(ops, w, BENCH_DT);
         if (ops->awake_bodies != NULL && asleep_step == 0 && ops->awake_bodies(w) == 0) {
             asleep_step = step;
         }
         total += ms;
+        if (asleep_step > 0 && step > asleep_step) {
+            asleep_total += ms;
+            asleep_steps++;
+        }
         if (step >= PILE_SETTLED_FIRST) settled += ms;
         if (steps > PILE_LATE_FIRST && step >= PILE_LATE_FIRST) {
             double ke = 0.0, px = 0.0, py = 0.0, vmax = 0.0;
@@ -274,6 +280,10 @@ static inline void pile_run(const bench_ops_t *ops, const bench_case_t *c, bench
         if (asleep_step > 0) {
             len += snprintf(out->quality + len, sizeof out->quality - (size_t)len, " asleep_s=%.2f",
                             asleep_step * BENCH_DT);
+            if (asleep_steps > 0) {
+                len += snprintf(out->quality + len, sizeof out->quality - (size_t)len,
+                                " asleep_ms=%.4g", asleep_total / asleep_steps);
+            }
         } else {
             len += snprintf(out->quality + len, sizeof out->quality - (size_t)len,
                             " asleep_s=none awake_end=%d", ops->awake_bodies(w));
