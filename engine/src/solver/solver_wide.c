@@ -349,7 +349,6 @@ void solver_wide_iterate(solver_wide_t *wide, solver_velocity_t *rows, bool back
     iterate_all(wide, rows, backward, true);
 }
 
-
 LANE_CLONES
 void solver_wide_iterate_range(solver_wide_t *wide, solver_velocity_t *rows, size_t begin,
                                size_t end) {
