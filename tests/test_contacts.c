@@ -575,16 +575,50 @@ typedef struct {
     double normal[2], tangent[2];
 } held_tick_t;
 
+/* Impulses (normal, tangent) along `normal` re-expressed along `to`: the
+ * same impulse vector. The tangent is the normal turned a quarter left. */
+static void reexpress(double *normal_impulse, double *tangent_impulse, vector_t normal,
+                      vector_t to) {
+    vector_t impulse = vec_add(vec_multiply(*normal_impulse, normal),
+                               vec_multiply(*tangent_impulse, vec_perpendicular(normal)));
+    *normal_impulse = vec_dot(impulse, to);
+    *tangent_impulse = vec_dot(impulse, vec_perpendicular(to));
+}
+
+/* The memory remembering a normal turned by `turn` (rad), with each point's
+ * impulses (and those of the step before) re-expressed along it: the same
+ * impulses, as if last step's reference face had been another one; or,
+ * when `numbers`, the same numbers along the turned normal. */
+static void turn_memory(scene_contact_memory_t *memory, double turn, bool numbers) {
+    vector_t turned = vec_rotate(memory->normal, turn);
+    if (numbers) {
+        memory->normal = turned;
+        return;
+    }
+    for (int j = 0; j < memory->point_count; j++) {
+        reexpress(&memory->points[j].normal_impulse, &memory->points[j].tangent_impulse,
+                  memory->normal, turned);
+    }
+    for (int j = 0; j < memory->previous_count; j++) {
+        reexpress(&memory->previous[j].normal_impulse, &memory->previous[j].tangent_impulse,
+                  memory->normal, turned);
+    }
+    memory->normal = turned;
+}
+
 /* The tick with the memory's point ids (and those of the step before)
  * shifted by `rename`: the features then name this step's points
  * differently from last step's, as when a reference face passes to the
  * other body or a corner takes over from its neighbour. The remembered
- * points moved by `moved` (m); kept: -1, none remembered. */
-static held_tick_t tick_renamed(uint32_t rename, double dt, double moved) {
+ * points moved by `moved` (m); kept: -1, none remembered. The remembered
+ * normal turned by `turn` (turn_memory, `numbers` too). */
+static held_tick_t tick_turned(uint32_t rename, double dt, double moved, double turn,
+                               bool numbers) {
     body_t *box;
     scene_contact_memory_t memory;
     scene_t *scene = box_held_on_tilt(&box, &memory);
     if (moved < 0.0) memory.point_count = memory.previous_count = 0;
+    if (turn != 0.0) turn_memory(&memory, turn, numbers);
     for (int j = 0; j < memory.point_count; j++) {
         memory.points[j].id += rename;
         memory.points[j].point.x += moved;
@@ -601,6 +635,10 @@ static held_tick_t tick_renamed(uint32_t rename, double dt, double moved) {
     }
     scene_free(scene);
     return tick;
+}
+
+static held_tick_t tick_renamed(uint32_t rename, double dt, double moved) {
+    return tick_turned(rename, dt, moved, 0.0, false);
 }
 
 /* Warm starting follows a point, not only its feature's name: renamed in
@@ -628,6 +666,43 @@ static void renamed_points_keep_their_warm_start(void) {
             CHECK(far.normal[j] == cold.normal[j] && far.tangent[j] == cold.tangent[j]);
         }
         CHECK(cold.tangent[0] != named.tangent[0]);
+    }
+}
+
+/*
+ * A point that takes a vanished point's impulses takes the impulse they
+ * made, along this step's normal: last step's normal was another face's
+ * (a corner against a corner passes the reference face to a face at an
+ * angle), and the same numbers along the new normal push where nothing
+ * pushed. The held box's memory says its support came along a normal
+ * turned 0.2 to 1.5 rad, with the impulses that give the same push: the
+ * tick comes out as with the true normal, to rounding. Before, the numbers
+ * were carried as they were: in a settled pile(4000), a 55 degree switch
+ * carried 2.95 N s and threw a body at 5.9 m/s, and an avalanche of 300
+ * bodies followed. A point of the same feature keeps its numbers (the
+ * normal turns only as its face does). And an impulse turned to pull
+ * (a normal turned past a right angle) is dropped, as a cold start.
+ */
+static void taken_points_keep_their_push(void) {
+    const double turns[] = {0.2, -0.6, 0.96, -1.5};
+    for (int k = 0; k < 2; k++) {
+        double dt = k == 0 ? DT : 0.5 * DT;
+        held_tick_t named = tick_renamed(0, dt, 0.0);
+        for (size_t t = 0; t < sizeof turns / sizeof turns[0]; t++) {
+            held_tick_t turned = tick_turned(1000, dt, 0.0, turns[t], false);
+            CHECK_NEAR(turned.velocity.x, named.velocity.x, 1e-12);
+            CHECK_NEAR(turned.velocity.y, named.velocity.y, 1e-12);
+            CHECK_NEAR(turned.spin, named.spin, 1e-12);
+            for (int j = 0; j < 2; j++) {
+                CHECK_NEAR(turned.normal[j], named.normal[j], 1e-12);
+                CHECK_NEAR(turned.tangent[j], named.tangent[j], 1e-12);
+            }
+        }
+        held_tick_t cold = tick_renamed(0, dt, -1.0);
+        held_tick_t back = tick_turned(1000, dt, 0.0, M_PI, true);
+        for (int j = 0; j < 2; j++) {
+            CHECK(back.normal[j] == cold.normal[j] && back.tangent[j] == cold.tangent[j]);
+        }
     }
 }
 
@@ -968,6 +1043,7 @@ TEST_SUITE(contacts, TEST_CASE(box_comes_to_rest_on_floor), TEST_CASE(column_of_
            TEST_CASE(static_bodies_never_pair), TEST_CASE(kinematic_body_pushes),
            TEST_CASE(removing_a_body_in_contact_is_safe), TEST_CASE(pile_stays_in_container),
            TEST_CASE(warm_step_allocates_nothing), TEST_CASE(renamed_points_keep_their_warm_start),
+           TEST_CASE(taken_points_keep_their_push),
            TEST_CASE(broadphase_work_grows_no_faster_than_n_log_n),
            TEST_CASE(fast_bullet_does_not_tunnel), TEST_CASE(distant_approach_is_not_an_impact), TEST_CASE(every_integrator_rests_a_stack),
            TEST_CASE(overlaps_are_pushed_apart_no_faster_than_the_push_speed),

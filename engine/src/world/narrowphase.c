@@ -78,14 +78,17 @@ static void warm_rescaled(const world_t *world, solver_contact_t *contact, const
         solver_point_t *point = &contact->points[i];
         const solver_point_t *last = &old->points[match[i]];
         const solver_point_t *before = older != NULL ? same_point(older, last->id) : NULL;
+        double normal = world->warm_ratio * last->normal_impulse;
+        double tangent = world->warm_ratio * last->tangent_impulse;
         if (before != NULL) {
-            point->normal_impulse =
-                world->warm_share * (last->normal_impulse + before->normal_impulse);
-            point->tangent_impulse =
-                world->warm_share * (last->tangent_impulse + before->tangent_impulse);
+            normal = world->warm_share * (last->normal_impulse + before->normal_impulse);
+            tangent = world->warm_share * (last->tangent_impulse + before->tangent_impulse);
+        }
+        if (point->id == last->id) {
+            point->normal_impulse = normal;
+            point->tangent_impulse = tangent;
         } else {
-            point->normal_impulse = world->warm_ratio * last->normal_impulse;
-            point->tangent_impulse = world->warm_ratio * last->tangent_impulse;
+            take_impulses(contact, point, old->normal, normal, tangent);
         }
     }
 }

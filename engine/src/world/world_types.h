@@ -248,10 +248,38 @@ WORLD_INLINE void match_points(const solver_contact_t *contact, const vector_t *
     }
 }
 
+/*
+ * A point of another feature taking the impulses (normal_impulse,
+ * tangent_impulse) of a point of `from`: as the impulse they made, along
+ * this step's normal. The reference face may have passed to a face at an
+ * angle (a corner against a corner), and the same numbers along the new
+ * normal pushed where nothing had pushed: in a settled pile(4000) a 55
+ * degree switch carried 2.95 N s and threw a body at 5.9 m/s, and an
+ * avalanche of 300 bodies followed. A push that would now pull is dropped,
+ * and the friction part stays within the cone of what is left. A point of
+ * the same feature keeps its numbers: its normal turns only as its face.
+ */
+WORLD_INLINE void take_impulses(solver_contact_t *contact, solver_point_t *point,
+                                vector_t from_normal, double normal_impulse,
+                                double tangent_impulse) {
+    if (from_normal.x == contact->normal.x && from_normal.y == contact->normal.y) {
+        point->normal_impulse = normal_impulse;
+        point->tangent_impulse = tangent_impulse;
+        return;
+    }
+    vector_t impulse = vec_add(vec_multiply(normal_impulse, from_normal),
+                               vec_multiply(tangent_impulse, vec_perpendicular(from_normal)));
+    double pushed = max_of(vec_dot(impulse, contact->normal), 0.0);
+    double limit = contact->friction * pushed;
+    point->normal_impulse = pushed;
+    point->tangent_impulse =
+        max_of(-limit, min_of(vec_dot(impulse, vec_perpendicular(contact->normal)), limit));
+}
+
 /* Copies the impulses of `from`'s points to the points of contact that
- * continue them (match_points). The same features are copied at once, as
- * most are; match_points runs only when a point is left over and so is
- * one of `from`'s. */
+ * continue them (match_points; take_impulses for another feature's). The
+ * same features are copied at once, as most are; match_points runs only
+ * when a point is left over and so is one of `from`'s. */
 WORLD_INLINE void carry_impulses(solver_contact_t *contact, const vector_t *points,
                                  const solver_contact_t *from, const vector_t *from_points,
                                  double reach) {
@@ -273,8 +301,9 @@ WORLD_INLINE void carry_impulses(solver_contact_t *contact, const vector_t *poin
     match_points(contact, points, from, from_points, reach, match);
     for (int i = 0; i < contact->point_count; i++) {
         if (match[i] < 0 || contact->points[i].id == from->points[match[i]].id) continue;
-        contact->points[i].normal_impulse = from->points[match[i]].normal_impulse;
-        contact->points[i].tangent_impulse = from->points[match[i]].tangent_impulse;
+        const solver_point_t *taken = &from->points[match[i]];
+        take_impulses(contact, &contact->points[i], from->normal, taken->normal_impulse,
+                      taken->tangent_impulse);
     }
 }
 
