@@ -202,11 +202,11 @@ static inline size_t find_in_step(const contact_source_t *sources, size_t count,
 
 /* How far a point may be from where a vanished point of its contact was
  * and still take that point's impulses (m): a tenth of the smaller body's
- * radius, at most a centimetre (docs/design.md, Warm starting). */
+ * radius, so that a scene scaled up or down matches the same points
+ * (docs/design.md, Warm starting). */
 WORLD_INLINE double warm_reach(const body_t *a, const body_t *b) {
     double smaller = a->radius < b->radius ? a->radius : b->radius;
-    double reach = 0.1 * smaller;
-    return reach < 0.01 ? reach : 0.01;
+    return 0.1 * smaller;
 }
 
 /*
