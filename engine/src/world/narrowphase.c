@@ -67,24 +67,29 @@ static const solver_point_t *same_point(const solver_contact_t *c, uint32_t id) 
  * a kick that grows from step to step (docs/api.md, Step size). The step
  * before is matched by the feature of last step's point.
  */
-static void warm_rescaled(const world_t *world, solver_contact_t *contact, const int match[2],
+static void warm_rescaled(const world_t *world, solver_contact_t *contact, point_match_t match,
                           size_t old_index) {
     const solver_contact_t *old = &world->old_contacts[old_index];
     uint32_t previous = world->old_sources[old_index].previous;
     const solver_contact_t *older =
         previous != NO_CONTACT ? &world->older_contacts[previous] : NULL;
     for (int i = 0; i < contact->point_count; i++) {
-        if (match[i] < 0) continue;
-        solver_point_t *point = &contact->points[i];
-        const solver_point_t *last = &old->points[match[i]];
-        const solver_point_t *before = older != NULL ? same_point(older, last->id) : NULL;
-        double normal = world->warm_ratio * last->normal_impulse;
-        double tangent = world->warm_ratio * last->tangent_impulse;
-        if (before != NULL) {
-            normal = world->warm_share * (last->normal_impulse + before->normal_impulse);
-            tangent = world->warm_share * (last->tangent_impulse + before->tangent_impulse);
+        if (match.takes[i] == 0) continue;
+        double normal = 0.0, tangent = 0.0;
+        for (int j = 0; j < old->point_count; j++) {
+            if (!(match.takes[i] & (1u << j))) continue;
+            const solver_point_t *last = &old->points[j];
+            const solver_point_t *before = older != NULL ? same_point(older, last->id) : NULL;
+            if (before != NULL) {
+                normal += world->warm_share * (last->normal_impulse + before->normal_impulse);
+                tangent += world->warm_share * (last->tangent_impulse + before->tangent_impulse);
+            } else {
+                normal += world->warm_ratio * last->normal_impulse;
+                tangent += world->warm_ratio * last->tangent_impulse;
+            }
         }
-        if (point->id == last->id) {
+        solver_point_t *point = &contact->points[i];
+        if (match.same & (1u << i)) {
             point->normal_impulse = normal;
             point->tangent_impulse = tangent;
         } else {
@@ -102,9 +107,8 @@ WORLD_INLINE void warm_from_old(const world_t *world, solver_contact_t *contact,
     const vector_t *old_points = world->old_sources[old_index].points;
     double reach = warm_reach(source->body_a, source->body_b);
     if (world->warm_ratio != 1.0) {
-        int match[2];
-        match_points(contact, source->points, old, old_points, reach, match);
-        warm_rescaled(world, contact, match, old_index);
+        warm_rescaled(world, contact,
+                      match_points(contact, source->points, old, old_points, reach), old_index);
         return;
     }
     carry_impulses(contact, source->points, old, old_points, reach);

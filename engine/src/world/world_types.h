@@ -209,43 +209,74 @@ WORLD_INLINE double warm_reach(const body_t *a, const body_t *b) {
     return 0.1 * smaller;
 }
 
+/* Which of `from`'s points each point of a contact continues
+ * (match_points): bit j of takes[i] when point i takes from's point j, bit
+ * i of same when that is point i's own feature. */
+typedef struct {
+    unsigned takes[2];
+    unsigned same;
+} point_match_t;
+
+/* The nearest of points[0 .. count) to `to` within reach that is not in
+ * the mask `taken` (bit per point); -1 when none is. */
+WORLD_INLINE int nearest_point(vector_t to, const vector_t *points, int count, unsigned taken,
+                               double reach) {
+    double nearest = reach * reach; /* squared distances: no root */
+    int found = -1;
+    for (int k = 0; k < count; k++) {
+        if (taken & (1u << k)) continue;
+        vector_t d = vec_subtract(points[k], to);
+        double squared = vec_dot(d, d);
+        if (squared >= nearest) continue;
+        nearest = squared;
+        found = k;
+    }
+    return found;
+}
+
 /*
- * Which of `from`'s points each point of contact continues (-1: none).
- * The same feature first. A point whose feature is new (the reference face
- * passed to the other body, a corner took over from its neighbour) then
- * takes the nearest point of `from` that no feature kept, if that was
- * within reach of it: the load the pair carried there does not vanish
- * with the feature's name. points and from_points: where the points are
- * (world frame).
+ * Which of `from`'s points each point of contact continues. The same
+ * feature first. Then a point whose feature is new (the reference face
+ * passed to the other body, a corner took over from its neighbour) takes
+ * the nearest point of `from` that no feature kept, if within reach of it:
+ * the load the pair carried there does not vanish with the feature's name.
+ * A point of `from` still left over goes to the nearest point whose
+ * feature is new, within reach, which then takes two: a manifold's two
+ * points can lie together (a capsule's end against another's), and the
+ * single point that followed them took the one that carried nothing,
+ * while its twin's 2.35 N s was dropped and the warm start threw a capsule
+ * at 6 m/s. points and from_points: where the points are (world frame).
  */
-WORLD_INLINE void match_points(const solver_contact_t *contact, const vector_t *points,
-                               const solver_contact_t *from, const vector_t *from_points,
-                               double reach, int match[2]) {
-    unsigned kept = 0; /* bit j: from's point j is continued */
-    int matched = 0;
-    match[0] = match[1] = -1; /* not in the loop: GCC made that a call to memset */
+WORLD_INLINE point_match_t match_points(const solver_contact_t *contact, const vector_t *points,
+                                        const solver_contact_t *from,
+                                        const vector_t *from_points, double reach) {
+    point_match_t match = {{0u, 0u}, 0u};
+    unsigned kept = 0; /* bit j: from's point j is continued by its feature */
     for (int i = 0; i < contact->point_count; i++) {
         for (int j = 0; j < from->point_count; j++) {
             if (contact->points[i].id != from->points[j].id) continue;
-            match[i] = j;
+            match.takes[i] = 1u << j;
+            match.same |= 1u << i;
             kept |= 1u << j;
         }
-        matched += match[i] >= 0;
     }
-    if (matched == contact->point_count || kept == (1u << from->point_count) - 1u) return;
+    if (match.same == (1u << contact->point_count) - 1u ||
+        kept == (1u << from->point_count) - 1u) {
+        return match;
+    }
     for (int i = 0; i < contact->point_count; i++) {
-        if (match[i] >= 0) continue;
-        double nearest = reach * reach; /* squared distances: no root */
-        for (int j = 0; j < from->point_count; j++) {
-            if (kept & (1u << j)) continue;
-            vector_t d = vec_subtract(from_points[j], points[i]);
-            double squared = vec_dot(d, d);
-            if (squared >= nearest) continue;
-            nearest = squared;
-            match[i] = j;
-        }
-        if (match[i] >= 0) kept |= 1u << match[i];
+        if (match.same & (1u << i)) continue;
+        int j = nearest_point(points[i], from_points, from->point_count, kept, reach);
+        if (j < 0) continue;
+        match.takes[i] = 1u << j;
+        kept |= 1u << j;
     }
+    for (int j = 0; j < from->point_count; j++) {
+        if (kept & (1u << j)) continue;
+        int i = nearest_point(from_points[j], points, contact->point_count, match.same, reach);
+        if (i >= 0) match.takes[i] |= 1u << j;
+    }
+    return match;
 }
 
 /*
@@ -277,7 +308,8 @@ WORLD_INLINE void take_impulses(solver_contact_t *contact, solver_point_t *point
 }
 
 /* Copies the impulses of `from`'s points to the points of contact that
- * continue them (match_points; take_impulses for another feature's). The
+ * continue them (match_points; take_impulses for another feature's, their
+ * sum when it takes two). The
  * same features are copied at once, as most are; match_points runs only
  * when a point is left over and so is one of `from`'s. */
 WORLD_INLINE void carry_impulses(solver_contact_t *contact, const vector_t *points,
@@ -297,13 +329,16 @@ WORLD_INLINE void carry_impulses(solver_contact_t *contact, const vector_t *poin
         left += !same;
     }
     if (left == 0 || kept == (1u << from->point_count) - 1u) return;
-    int match[2];
-    match_points(contact, points, from, from_points, reach, match);
+    point_match_t match = match_points(contact, points, from, from_points, reach);
     for (int i = 0; i < contact->point_count; i++) {
-        if (match[i] < 0 || contact->points[i].id == from->points[match[i]].id) continue;
-        const solver_point_t *taken = &from->points[match[i]];
-        take_impulses(contact, &contact->points[i], from->normal, taken->normal_impulse,
-                      taken->tangent_impulse);
+        if ((match.same & (1u << i)) || match.takes[i] == 0) continue;
+        double normal = 0.0, tangent = 0.0;
+        for (int j = 0; j < from->point_count; j++) {
+            if (!(match.takes[i] & (1u << j))) continue;
+            normal += from->points[j].normal_impulse;
+            tangent += from->points[j].tangent_impulse;
+        }
+        take_impulses(contact, &contact->points[i], from->normal, normal, tangent);
     }
 }
 
