@@ -549,17 +549,24 @@ static void pile_stays_in_container(void) {
     scene_free(scene);
 }
 
+/* A floor 2 half_width long under gravity tilted `tilt` rad, world
+ * contacts on, sleeping off, one velocity iteration: the step's friction
+ * starts within mu times the normal impulse warm starting gave (8 reach
+ * the same answer cold). */
+static scene_t *tilted_floor(double tilt, double half_width) {
+    scene_t *scene = scene_init();
+    scene_set_gravity(scene, (vector_t){-9.8 * sin(tilt), -9.8 * cos(tilt)});
+    scene_set_contacts_enabled(scene, true);
+    scene_set_sleeping(scene, false);
+    scene_set_solver_iterations(scene, 1, 4);
+    add_ground(scene, half_width);
+    return scene;
+}
+
 /* A box at rest on a floor under gravity tilted 0.3 rad (friction 0.6
  * holds it), after 120 steps; its pair's contact memory in *memory. */
 static scene_t *box_held_on_tilt(body_t **box, scene_contact_memory_t *memory) {
-    scene_t *scene = scene_init();
-    scene_set_gravity(scene, (vector_t){-9.8 * sin(0.3), -9.8 * cos(0.3)});
-    scene_set_contacts_enabled(scene, true);
-    scene_set_sleeping(scene, false);
-    /* One iteration: the step's friction starts within mu times the
-     * normal impulse warm starting gave (8 reach the same answer cold). */
-    scene_set_solver_iterations(scene, 1, 4);
-    add_ground(scene, 5.0);
+    scene_t *scene = tilted_floor(0.3, 5.0);
     *box = add_box(scene, 0.0, 0.5, 0.5, 0.5, 1.0);
     for (int i = 0; i < 120; i++) scene_tick(scene, DT);
     CHECK(scene_contact_memory_count(scene) == 1);
@@ -714,19 +721,13 @@ static void taken_points_keep_their_push(void) {
 }
 
 /* A ball rolling down a floor under gravity tilted 0.8 rad after 6 steps
- * (one velocity iteration, as box_held_on_tilt: the step's friction is
- * bounded by the normal impulse warm starting gave, and rolling needs more
- * than a quarter of it), and one tick from its pair's memory as it was, or
+ * (tilted_floor: rolling needs more friction than a quarter of the normal
+ * impulse warm starting gives), and one tick from its pair's memory as it was, or
  * with its point remembered as two twins at its place under new names,
  * sharing its impulses a quarter and three quarters: the velocity, spin
  * and normal impulse of the tick. */
 static held_tick_t ball_tick(bool twins) {
-    scene_t *scene = scene_init();
-    scene_set_gravity(scene, (vector_t){-9.8 * sin(0.8), -9.8 * cos(0.8)});
-    scene_set_contacts_enabled(scene, true);
-    scene_set_sleeping(scene, false);
-    scene_set_solver_iterations(scene, 1, 4);
-    add_ground(scene, 50.0);
+    scene_t *scene = tilted_floor(0.8, 50.0);
     body_t *ball = body_init_circle((vector_t){0.0, 0.5}, 0.5, 1.0, GREY);
     scene_add_body(scene, ball);
     run(scene, 6, DT); /* 8 mm a step by then: the twins are within reach */
