@@ -309,9 +309,9 @@ WORLD_INLINE void take_impulses(solver_contact_t *contact, solver_point_t *point
 
 /* Copies the impulses of `from`'s points to the points of contact that
  * continue them (match_points; take_impulses for another feature's, their
- * sum when it takes two). The
- * same features are copied at once, as most are; match_points runs only
- * when a point is left over and so is one of `from`'s. */
+ * sum when it takes two). The same features are copied at once, as most
+ * are; match_points runs only when a point is left over and so is one of
+ * `from`'s. */
 WORLD_INLINE void carry_impulses(solver_contact_t *contact, const vector_t *points,
                                  const solver_contact_t *from, const vector_t *from_points,
                                  double reach) {
