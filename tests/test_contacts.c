@@ -722,10 +722,10 @@ static void taken_points_keep_their_push(void) {
 
 /* A ball rolling down a floor under gravity tilted 0.8 rad after 6 steps
  * (tilted_floor: rolling needs more friction than a quarter of the normal
- * impulse warm starting gives), and one tick from its pair's memory as it was, or
- * with its point remembered as two twins at its place under new names,
- * sharing its impulses a quarter and three quarters: the velocity, spin
- * and normal impulse of the tick. */
+ * impulse warm starting gives), and one tick from its pair's memory as it
+ * was, or with its point remembered as two twins at its place under new
+ * names, sharing its impulses a quarter and three quarters: the velocity,
+ * spin and normal impulse of the tick. */
 static held_tick_t ball_tick(bool twins) {
     scene_t *scene = tilted_floor(0.8, 50.0);
     body_t *ball = body_init_circle((vector_t){0.0, 0.5}, 0.5, 1.0, GREY);

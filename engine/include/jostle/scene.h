@@ -299,9 +299,10 @@ void scene_get_solver_iterations(const scene_t *scene, size_t *velocity_iteratio
 /* Warm starting (default on): each contact starts the step's solve from
  * the impulses its same features had at the last step (a point whose
  * feature is new, from the point of last step's that no feature kept, the
- * nearest within a tenth of the smaller body's radius and at most 1 cm), so
- * stacks hold with few iterations. Off, every contact starts from zero
- * impulse (stacks sag and jitter more at the same iterations). */
+ * nearest within a tenth of the smaller body's radius, as the same impulse
+ * along this step's normal; docs/design.md, Warm starting), so stacks hold
+ * with few iterations. Off, every contact starts from zero impulse (stacks
+ * sag and jitter more at the same iterations). */
 void scene_set_warm_starting(scene_t *scene, bool enabled);
 bool scene_get_warm_starting(const scene_t *scene);
 
