@@ -245,7 +245,7 @@ static bool same_memory(const scene_contact_memory_t *m, const scene_contact_mem
                 m->feature_count == n->feature_count &&
                 same_vector(m->face_normal, n->face_normal) &&
                 same_vector(m->face_point, n->face_point) && same_vector(m->pose, n->pose) &&
-                m->pose_angle == n->pose_angle;
+                m->pose_angle == n->pose_angle && m->face_lead == n->face_lead;
     for (int j = 0; same && j < m->point_count; j++) {
         same = same_point(&m->points[j], &n->points[j]);
     }

@@ -3,6 +3,7 @@
  * contact memory of one pair (scene_state.h), read back exactly so that a
  * saved scene continues as it would have.
  */
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 #include "scene_file_parse.h"
@@ -36,7 +37,7 @@ static bool read_previous_point(parser_t *p, scene_memory_previous_t *point) {
            sf_read_quantity(p, &tangent, &point->tangent_impulse);
 }
 
-/* `face a|b NX NY X Y [edge]` */
+/* `face a|b NX NY X Y [lead L] [edge]`; no lead: INFINITY */
 static bool read_face(parser_t *p, scene_contact_memory_t *m) {
     if (!sf_token_is(&p->token, "a") && !sf_token_is(&p->token, "b")) {
         return sf_expected(p, "a or b (the body holding the reference face)");
@@ -48,6 +49,12 @@ static bool read_face(parser_t *p, scene_contact_memory_t *m) {
     if (!sf_read_vector(p, &UNIT_COMPONENT, &m->face_normal) ||
         !sf_read_vector(p, &point, &m->face_point))
         return false;
+    if (sf_token_is(&p->token, "lead")) {
+        next(p);
+        quantity_t lead = STATE_VALUE;
+        lead.what = "the reference face's lead (m)";
+        if (!sf_read_quantity(p, &lead, &m->face_lead)) return false;
+    }
     m->edge_ends = sf_token_is(&p->token, "edge");
     if (m->edge_ends) next(p);
     return true;
@@ -122,6 +129,7 @@ bool sf_parse_contact(parser_t *p, sf_where_t here) {
                sizeof(sf_contact_t));
     sf_contact_t *contact = &doc->contacts[doc->contact_count++];
     *contact = (sf_contact_t){.where = here};
+    contact->memory.face_lead = INFINITY;
     uint64_t a = 0, b = 0;
     const uint64_t last = SCENE_FILE_MAX_BODIES - 1;
     if (!sf_read_count(p, "the number of the contact's first body", 0, last, &a) ||

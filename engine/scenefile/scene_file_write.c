@@ -490,6 +490,10 @@ static void put_contact(out_t *out, const numbered_contact_t *c) {
     put(out, "    face %s", m->flip ? "b" : "a");
     put_vector(out, m->face_normal);
     put_vector(out, m->face_point);
+    if (isfinite(m->face_lead)) {
+        put(out, " lead");
+        put_number(out, m->face_lead);
+    }
     put(out, "%s\n", m->edge_ends ? " edge" : "");
     for (int j = 0; j < m->feature_count; j++) {
         put(out, "    incident %u", (unsigned)m->feature_ids[j]);

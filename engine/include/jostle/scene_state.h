@@ -111,7 +111,10 @@ void scene_set_step_lengths(scene_t *scene, double last, double before);
  * found from, in the bodies' own frames: which body holds the reference
  * face (flip: body_b's), its normal and a point on it in that body's
  * frame, and the incident points in the other body's frame with their
- * ids; edge_ends when those points are the incident edge's own ends. pose
+ * ids; edge_ends when those points are the incident edge's own ends;
+ * face_lead how much the reference face's separation led every other axis
+ * that could have taken its place (m; INFINITY for a pair with a round
+ * shape, a segment or a chain; 0 or less: reused for no step). pose
  * is body_b's centroid in body_a's frame (m) and pose_angle body_b's angle
  * less body_a's (rad), when the features were found: while the bodies stay
  * close to that, the next steps reuse the features. previous holds the
@@ -143,6 +146,7 @@ typedef struct {
     bool flip, edge_ends;
     int feature_count; /* 0 to 2 */
     vector_t face_normal, face_point;
+    double face_lead;
     vector_t feature_points[2];
     uint32_t feature_ids[2];
     vector_t pose;
@@ -163,8 +167,9 @@ scene_contact_memory_t scene_get_contact_memory(scene_t *scene, size_t index);
  * contacts on. Refused: a NULL array with count > 0; a body that is NULL,
  * not in this scene or marked removed; body_a == body_b; a pair listed
  * twice; a count (of points, features or previous points) outside 0 to 2;
- * a value that is not finite; a chain as body_a, a segment beyond body_b's
- * last, a nonzero segment when body_b is not a chain.
+ * a value that is not finite (but a face_lead of INFINITY); a chain as
+ * body_a, a segment beyond body_b's last, a nonzero segment when body_b is
+ * not a chain.
  */
 void scene_restore_contact_memory(scene_t *scene, const scene_contact_memory_t *memories,
                                   size_t count);

@@ -16,17 +16,27 @@ typedef struct {
     size_t edge;
 } face_separation_t;
 
-/* The edge of `reference` whose outward normal separates `other` the most:
- * for each edge, the least signed distance of other's vertices from it.
- * Stops early once an edge separates by more than margin.
+/* A polygon's two faces that separate the other polygon the most. */
+typedef struct {
+    face_separation_t best, second;
+} face_ranking_t;
+
+/* Faces of the two bodies whose normals are closer than this to opposite
+ * (cosine) give nearly the same contact: which of them is the reference is
+ * REFERENCE_TOLERANCE's choice, and not an axis that can overtake it. */
+static const double FACING_COSINE = 0.995;
+
+/* The faces of `reference` whose outward normals separate `other` the
+ * most: for each edge, the least signed distance of other's vertices from
+ * it. Stops early once an edge separates by more than margin.
  *
  * The vertex of `other` nearest an edge's line is its support point in the
  * direction -normal. As the edges turn counter-clockwise, so does that
  * direction, and on a convex counter-clockwise polygon the support vertex
  * only moves forward: one sweep finds all of them, O(n + m) instead of
  * O(n m) (rotating calipers). */
-static face_separation_t max_face_separation(const body_t *reference, const body_t *other,
-                                             double margin) {
+static face_ranking_t max_face_separation(const body_t *reference, const body_t *other,
+                                          double margin) {
     const vector_t *vertices = other->world_vertices;
     size_t count = other->count;
     vector_t normal = reference->world_normals[0];
@@ -39,7 +49,7 @@ static face_separation_t max_face_separation(const body_t *reference, const body
             support = j;
         }
     }
-    face_separation_t best = {-INFINITY, 0};
+    face_ranking_t ranking = {{-INFINITY, 0}, {-INFINITY, 0}};
     for (size_t i = 0; i < reference->count; i++) {
         normal = reference->world_normals[i];
         least = vec_dot(normal, vertices[support]);
@@ -51,12 +61,58 @@ static face_separation_t max_face_separation(const body_t *reference, const body
             support = next;
         }
         double separation = least - vec_dot(normal, reference->world_vertices[i]);
-        if (separation > best.separation) {
-            best = (face_separation_t){separation, i};
+        if (separation > ranking.best.separation) {
+            ranking.second = ranking.best;
+            ranking.best = (face_separation_t){separation, i};
             if (separation > margin) break;
+        } else if (separation > ranking.second.separation) {
+            ranking.second = (face_separation_t){separation, i};
         }
     }
-    return best;
+    return ranking;
+}
+
+/* How much the reference face's separation exceeds that of every other
+ * axis that could take its place (m): its own body's best other face, and
+ * the other body's best face that does not face it (FACING_COSINE). While
+ * the bodies move less than half of this, no other axis overtakes it. */
+static double reference_lead(const body_t *reference, face_separation_t face,
+                             face_ranking_t own, const body_t *other, face_ranking_t theirs) {
+    vector_t normal = reference->world_normals[face.edge];
+    face_separation_t mine = own.best.edge != face.edge ? own.best : own.second;
+    face_separation_t rival = theirs.best;
+    if (vec_dot(normal, other->world_normals[rival.edge]) < -FACING_COSINE) rival = theirs.second;
+    return face.separation - max_of(mine.separation, rival.separation);
+}
+
+/* The separation of `other` from `reference`'s face `edge` (m). */
+static double face_separation(const body_t *reference, size_t edge, const body_t *other) {
+    vector_t normal = reference->world_normals[edge];
+    double least = INFINITY;
+    for (size_t j = 0; j < other->count; j++) {
+        least = min_of(least, vec_dot(normal, other->world_vertices[j]));
+    }
+    return least - vec_dot(normal, reference->world_vertices[edge]);
+}
+
+/* Last step's reference face of the pair when it is still within
+ * REFERENCE_TOLERANCE of the best face now (*face: it and its separation),
+ * so that faces of nearly equal separation (a corner against a corner, the
+ * flush faces of many-sided polygons) do not take turns from step to step,
+ * each turn a new normal and new points. */
+static bool keep_last_face(const body_t *a, const body_t *b, const manifold_features_t *last,
+                           double best, face_separation_t *face) {
+    if (last == NULL || last->point_count == 0 || !isfinite(last->lead)) return false;
+    const body_t *reference = last->flip ? b : a;
+    for (size_t i = 0; i < reference->count; i++) {
+        vector_t n = reference->local_normals[i];
+        if (n.x != last->normal.x || n.y != last->normal.y) continue;
+        double separation = face_separation(reference, i, last->flip ? a : b);
+        if (separation < best - REFERENCE_TOLERANCE) return false;
+        *face = (face_separation_t){separation, i};
+        return true;
+    }
+    return false;
 }
 
 /* The edge of `incident` most anti-parallel to normal. */
@@ -326,8 +382,8 @@ static manifold_t collide_at_seams(const body_t *a, const body_t *b, bool flip, 
     return face_manifold(a, b, face, &clipped, margin, features);
 }
 
-manifold_t manifold_collide(body_t *a, body_t *b, double margin, manifold_features_t *features,
-                            double *separation) {
+manifold_t manifold_collide(body_t *a, body_t *b, double margin, const manifold_features_t *last,
+                            manifold_features_t *features, double *separation) {
     if ((a->kind | b->kind) != BODY_SHAPE_POLYGON) {
         if (a->kind == BODY_SHAPE_SEGMENT || b->kind == BODY_SHAPE_SEGMENT) {
             return segment_manifold_collide(a, b, margin, features, separation);
@@ -335,21 +391,37 @@ manifold_t manifold_collide(body_t *a, body_t *b, double margin, manifold_featur
         return round_manifold_collide(a, b, margin, features, separation);
     }
     manifold_t manifold = {VEC_ZERO, 0, {{VEC_ZERO, 0.0, 0}, {VEC_ZERO, 0.0, 0}}};
-    face_separation_t face_a = max_face_separation(a, b, margin);
+    face_ranking_t faces_a = max_face_separation(a, b, margin);
+    face_separation_t face_a = faces_a.best;
     *separation = face_a.separation;
     if (face_a.separation > margin) return manifold;
-    face_separation_t face_b = max_face_separation(b, a, margin);
+    face_ranking_t faces_b = max_face_separation(b, a, margin);
+    face_separation_t face_b = faces_b.best;
     *separation = max_of(face_a.separation, face_b.separation);
     if (face_b.separation > margin) return manifold;
 
     bool flip = face_b.separation > face_a.separation + REFERENCE_TOLERANCE;
-    size_t ref_edge = flip ? face_b.edge : face_a.edge;
-    if (a->has_seams || b->has_seams) {
-        return collide_at_seams(a, b, flip, ref_edge, margin, features);
+    face_separation_t face = flip ? face_b : face_a;
+    bool seams = a->has_seams || b->has_seams;
+    if (!seams && keep_last_face(a, b, last, *separation, &face)) flip = last->flip;
+    size_t ref_edge = face.edge;
+    double lead = flip ? reference_lead(b, face, faces_b, a, faces_a)
+                       : reference_lead(a, face, faces_a, b, faces_b);
+    if (seams) {
+        manifold = collide_at_seams(a, b, flip, ref_edge, margin, features);
+        if (manifold.point_count == 0) return manifold;
+        /* A seam can move the contact to another face: no lead known. */
+        vector_t normal = (flip ? b : a)->local_normals[ref_edge];
+        bool same_face = features->flip == flip && features->normal.x == normal.x &&
+                         features->normal.y == normal.y;
+        features->lead = same_face ? lead : 0.0;
+        return manifold;
     }
     clipped_t clipped;
     if (!clip_incident(flip ? b : a, ref_edge, flip ? a : b, &clipped)) return manifold;
-    return clipped_manifold(a, b, flip, ref_edge, &clipped, margin, features);
+    manifold = clipped_manifold(a, b, flip, ref_edge, &clipped, margin, features);
+    features->lead = lead;
+    return manifold;
 }
 
 manifold_t manifold_evaluate(const manifold_features_t *features, const body_t *a,

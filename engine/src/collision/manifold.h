@@ -27,9 +27,11 @@
  * including clipped points beyond the margin (a later evaluate may keep
  * them). *separation receives the largest separation of a face found, a
  * lower bound on the distance between the polygons when it exceeds margin
- * (no points then). Both bodies' world polygons must be up to date. */
-manifold_t manifold_collide(body_t *a, body_t *b, double margin, manifold_features_t *features,
-                            double *separation);
+ * (no points then). last: the pair's features of last step, or NULL; its
+ * reference face is kept while within a tolerance of the best (0.5 mm).
+ * Both bodies' world polygons must be up to date. */
+manifold_t manifold_collide(body_t *a, body_t *b, double margin, const manifold_features_t *last,
+                            manifold_features_t *features, double *separation);
 
 /* The manifold the features give at the bodies' current poses (a round
  * pair's: found again). */

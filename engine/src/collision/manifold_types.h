@@ -45,6 +45,12 @@ typedef struct {
      * body is, so the features are not reused from step to step. */
     bool on_run;
     int point_count;
+    /* How much the reference face's separation led every other axis that
+     * could take its place when found (m; manifold.c's reference_lead):
+     * the features are reused only while the bodies have moved less than
+     * half of it. INFINITY for a pair with a round shape or a segment,
+     * whose contact is found again each step. */
+    double lead;
     vector_t normal;     /* reference frame */
     vector_t face_point; /* reference frame */
     vector_t points[2];  /* incident frame */

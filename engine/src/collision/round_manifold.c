@@ -348,7 +348,7 @@ static manifold_t circle_pair(const body_t *body_a, const body_t *body_b, double
     double ra = body_a->round_radius, rb = body_b->round_radius;
     double distance = sqrt(vec_get_length_squared(vec_subtract(centre_b, centre_a)));
     *separation = distance - (ra + rb);
-    *features = (manifold_features_t){.point_count = 0};
+    *features = (manifold_features_t){.point_count = 0, .lead = INFINITY};
     if (*separation > margin) return no_manifold(VEC_ZERO);
     vector_t normal = distance > 0.0 ? vec_multiply(1.0 / distance, vec_subtract(centre_b, centre_a))
                                      : (vector_t){0.0, 1.0};
@@ -359,7 +359,7 @@ static manifold_t circle_pair(const body_t *body_a, const body_t *body_b, double
     manifold.points[0].separation = gap;
     manifold.points[0].point = vec_add(centre_a, vec_multiply(ra + 0.5 * gap, normal));
     manifold.points[0].id = VERTEX_ID;
-    *features = (manifold_features_t){.point_count = 1, .ids = {VERTEX_ID}};
+    *features = (manifold_features_t){.point_count = 1, .lead = INFINITY, .ids = {VERTEX_ID}};
     return manifold;
 }
 
@@ -372,7 +372,7 @@ manifold_t round_manifold_collide(const body_t *body_a, const body_t *body_b, do
     core_of(body_a, &a);
     core_of(body_b, &b);
     manifold_t manifold = cores_manifold(&a, &b, margin, separation);
-    *features = (manifold_features_t){.point_count = manifold.point_count};
+    *features = (manifold_features_t){.point_count = manifold.point_count, .lead = INFINITY};
     for (int i = 0; i < manifold.point_count; i++) features->ids[i] = manifold.points[i].id;
     return manifold;
 }

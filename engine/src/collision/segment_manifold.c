@@ -145,7 +145,7 @@ manifold_t segment_manifold_collide(const body_t *a, const body_t *b, double mar
     manifold_t m = segment_is_b ? segment_first(b, a, margin, separation)
                                 : segment_first(a, b, margin, separation);
     if (segment_is_b) m.normal = vec_negate(m.normal);
-    *features = (manifold_features_t){.point_count = m.point_count};
+    *features = (manifold_features_t){.point_count = m.point_count, .lead = INFINITY};
     for (int i = 0; i < m.point_count; i++) features->ids[i] = m.points[i].id;
     return m;
 }

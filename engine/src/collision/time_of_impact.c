@@ -242,7 +242,7 @@ static bool contact_at(const pair_t *pair, double t, double margin, toi_scratch_
     pose_at(&ghost_a, &pair->a, t, scratch->vectors);
     pose_at(&ghost_b, &pair->b, t, scratch->vectors + 2 * a->count);
     double separation;
-    contact->manifold = manifold_collide(&ghost_a, &ghost_b, margin, &contact->features,
+    contact->manifold = manifold_collide(&ghost_a, &ghost_b, margin, NULL, &contact->features,
                                          &separation);
     contact->time = t;
     contact->centroid_a = ghost_a.centroid;

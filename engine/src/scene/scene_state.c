@@ -201,10 +201,12 @@ static bool finite_vector(vector_t v) {
     return isfinite(v.x) && isfinite(v.y);
 }
 
-/* Whether every number of the memory is finite. */
+/* Whether every number of the memory is finite (face_lead may be
+ * INFINITY: a pair whose contact is found again each step). */
 static bool memory_is_finite(const scene_contact_memory_t *m) {
     bool finite = finite_vector(m->normal) && finite_vector(m->face_normal) &&
-                  finite_vector(m->face_point) && finite_vector(m->pose) && isfinite(m->pose_angle);
+                  finite_vector(m->face_point) && finite_vector(m->pose) &&
+                  isfinite(m->pose_angle) && !isnan(m->face_lead) && m->face_lead != -INFINITY;
     for (int j = 0; j < m->point_count; j++) {
         const scene_memory_point_t *p = &m->points[j];
         finite = finite && finite_vector(p->point) && isfinite(p->separation) &&

@@ -18,6 +18,9 @@
  * 0.01 rad, with the same penetrations and the same pyramid (measured). */
 static const double REUSE_DISTANCE = 0.01;
 static const double REUSE_ANGLE = 0.02;
+/* How far another axis may have overtaken the reused reference face (m):
+ * as far as a fresh search keeps last step's face (manifold.h). */
+static const double REUSE_OVERTAKE = 0.0005;
 
 /* Last step's contact of the pair, while this step's are being found. */
 static size_t find_old(const world_t *world, const body_t *a, uint64_t key) {
@@ -36,17 +39,23 @@ static const pair_gap_t *find_old_gap(const world_t *world, const body_t *a, uin
     return NULL;
 }
 
+/* How far any face's separation of the pair can have moved since the
+ * relative pose `then` (m): in a's frame, no point of b has moved further
+ * than |dp| + r_b |da| (dp, da: the change of the relative pose), and in
+ * b's frame no point of a further than |dp| + (|p| + r_a) |da|; a face's
+ * separation moves no more than the points do. */
+static double pose_drift(relative_pose_t then, relative_pose_t now, const body_t *a,
+                         const body_t *b) {
+    double turn = fabs(now.angle - then.angle);
+    return vec_get_length(vec_subtract(now.position, then.position)) +
+           (vec_get_length(now.position) + a->radius + b->radius) * turn;
+}
+
 /* Whether the pair is still further apart than margin by its gap of last
- * step: in a's frame, no point of b has moved further than |dp| + r_b |da|
- * since the gap was found (dp, da: the change of the relative pose), and
- * in b's frame no point of a further than |dp| + (|p| + r_a) |da|; a
- * face's separation moves no more than the points do. */
+ * step. */
 static bool still_apart(const pair_gap_t *gap, relative_pose_t now, const body_t *a,
                         const body_t *b, double margin) {
-    double turn = fabs(now.angle - gap->pose.angle);
-    double moved = vec_get_length(vec_subtract(now.position, gap->pose.position)) +
-                   (vec_get_length(now.position) + a->radius + b->radius) * turn;
-    return gap->separation - moved > margin;
+    return gap->separation - pose_drift(gap->pose, now, a, b) > margin;
 }
 
 /* The point of contact c that is the feature id; NULL when it has none. */
@@ -118,10 +127,19 @@ static relative_pose_t relative_pose(const body_t *a, const body_t *b) {
     return (relative_pose_t){body_to_local(a, b->centroid), b->angle - a->angle};
 }
 
-static bool pose_is_close(relative_pose_t now, relative_pose_t then) {
+/* Whether last step's features still hold: the pose is within the reuse
+ * window, and no other axis can have overtaken the reference face's (its
+ * lead exceeds what the separations can have moved, on both sides). A
+ * corner against a corner has axes of nearly equal separation: reused as
+ * the bodies slid, their features held a phantom overlap where a fresh
+ * search found them apart (pile(10000)). */
+static bool features_hold(const contact_source_t *old, relative_pose_t now, const body_t *a,
+                          const body_t *b) {
+    relative_pose_t then = old->pose;
     return fabs(now.position.x - then.position.x) < REUSE_DISTANCE &&
            fabs(now.position.y - then.position.y) < REUSE_DISTANCE &&
-           fabs(now.angle - then.angle) < REUSE_ANGLE;
+           fabs(now.angle - then.angle) < REUSE_ANGLE && !old->features.on_run &&
+           2.0 * pose_drift(then, now, a, b) < old->features.lead + REUSE_OVERTAKE;
 }
 
 /* Writes contact n of the step from the pair's result. */
@@ -168,8 +186,7 @@ WORLD_INLINE void collide_pair(const world_t *world, body_t *a, body_t *b, const
     found->old = old;
     found->apart = false;
     found->pose = relative_pose(a, b);
-    if (old != SIZE_MAX && pose_is_close(found->pose, world->old_sources[old].pose) &&
-        !world->old_sources[old].features.on_run) {
+    if (old != SIZE_MAX && features_hold(&world->old_sources[old], found->pose, a, b)) {
         found->features = world->old_sources[old].features;
         found->pose = world->old_sources[old].pose; /* measure drift from where they were found */
         found->manifold = manifold_evaluate(&found->features, a, b, margin);
@@ -183,7 +200,8 @@ WORLD_INLINE void collide_pair(const world_t *world, body_t *a, body_t *b, const
         return;
     }
     double separation;
-    found->manifold = manifold_collide(a, b, margin, &found->features, &separation);
+    const manifold_features_t *last = old != SIZE_MAX ? &world->old_sources[old].features : NULL;
+    found->manifold = manifold_collide(a, b, margin, last, &found->features, &separation);
     if (separation > margin) {
         found->apart = true;
         found->gap = (pair_gap_t){key, found->pose, separation};

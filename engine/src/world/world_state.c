@@ -46,6 +46,7 @@ void world_get_memory(const world_t *world, size_t index, scene_contact_memory_t
         .feature_count = source->features.point_count,
         .face_normal = source->features.normal,
         .face_point = source->features.face_point,
+        .face_lead = source->features.lead,
         .pose = source->pose.position,
         .pose_angle = source->pose.angle,
     };
@@ -100,7 +101,8 @@ static void add_remembered(world_t *world, size_t n, const scene_contact_memory_
                      .edge_ends = memory->edge_ends,
                      .point_count = memory->feature_count,
                      .normal = memory->face_normal,
-                     .face_point = memory->face_point},
+                     .face_point = memory->face_point,
+                     .lead = memory->face_lead},
         .pose = {memory->pose, memory->pose_angle},
         .previous = add_remembered_before(world, n, memory),
     };
