@@ -128,18 +128,25 @@ static relative_pose_t relative_pose(const body_t *a, const body_t *b) {
 }
 
 /* Whether last step's features still hold: the pose is within the reuse
- * window, and no other axis can have overtaken the reference face's (its
- * lead exceeds what the separations can have moved, on both sides). A
- * corner against a corner has axes of nearly equal separation: reused as
- * the bodies slid, their features held a phantom overlap where a fresh
- * search found them apart (pile(10000)). */
-static bool features_hold(const contact_source_t *old, relative_pose_t now, const body_t *a,
-                          const body_t *b) {
+ * window, and no other axis can have overtaken the reference face's by
+ * more than REUSE_OVERTAKE: each separation has moved no more than
+ * pose_drift (here with |p| bounded by |x| + |y|, to spare a square root),
+ * so the lead has shrunk by no more than twice that. A corner against a
+ * corner has axes of nearly equal separation: reused as the bodies slid,
+ * their features held a phantom overlap where a fresh search found them
+ * apart (pile(10000)). */
+WORLD_INLINE bool features_hold(const contact_source_t *old, relative_pose_t now,
+                                const body_t *a, const body_t *b) {
     relative_pose_t then = old->pose;
-    return fabs(now.position.x - then.position.x) < REUSE_DISTANCE &&
-           fabs(now.position.y - then.position.y) < REUSE_DISTANCE &&
-           fabs(now.angle - then.angle) < REUSE_ANGLE && !old->features.on_run &&
-           2.0 * pose_drift(then, now, a, b) < old->features.lead + REUSE_OVERTAKE;
+    double dx = now.position.x - then.position.x, dy = now.position.y - then.position.y;
+    double turn = fabs(now.angle - then.angle);
+    if (!(fabs(dx) < REUSE_DISTANCE && fabs(dy) < REUSE_DISTANCE && turn < REUSE_ANGLE) ||
+        old->features.on_run) {
+        return false;
+    }
+    double reach = fabs(now.position.x) + fabs(now.position.y) + a->radius + b->radius;
+    double room = 0.5 * (old->features.lead + REUSE_OVERTAKE) - reach * turn;
+    return room > 0.0 && dx * dx + dy * dy < room * room;
 }
 
 /* Writes contact n of the step from the pair's result. */
