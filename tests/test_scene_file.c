@@ -714,14 +714,15 @@ static void a_running_scene_is_written_as_it_is_now(void) {
     CHECK(test_no_leaks());
 }
 
-/* step_lengths and a contact's previous points reach the world, and a
- * scene written after steps of two lengths carries them. */
+/* step_lengths, a contact's previous points and its face's lead reach the
+ * world (a face without a lead: INFINITY, reused as before leads were
+ * kept), and a scene written after steps of two lengths carries them. */
 static void step_lengths_and_previous_points_reach_the_world(void) {
     const char *text = "contacts on\nstep_lengths 1/120 0.0125\n"
                        "body floor { box 10 1; static; position 0 -0.5 }\n"
                        "body box { box 1 1; position 0 0.5 }\n"
                        "contact 0 1 {\n    normal 0 1\n    point 131072 -0.5 0 0 0.02 0 0 0\n"
-                       "    face a 0 1 5 0.5 edge\n    incident 131072 -0.5 -0.5\n"
+                       "    face a 0 1 5 0.5 lead 0.75 edge\n    incident 131072 -0.5 -0.5\n"
                        "    pose 0 1 0\n    previous 131072 0.03 -0.25\n"
                        "    previous 7 1e-300 0\n}\n";
     scene_file_t *file = parse(text);
@@ -732,6 +733,7 @@ static void step_lengths_and_previous_points_reach_the_world(void) {
     CHECK(scene_contact_memory_count(scene) == 1);
     scene_contact_memory_t m = scene_get_contact_memory(scene, 0);
     CHECK(m.previous_count == 2);
+    CHECK(m.face_lead == 0.75 && m.edge_ends);
     CHECK(m.previous[0].id == 131072 && m.previous[0].normal_impulse == 0.03 &&
           m.previous[0].tangent_impulse == -0.25);
     CHECK(m.previous[1].id == 7 && m.previous[1].normal_impulse == 1e-300 &&
@@ -739,6 +741,13 @@ static void step_lengths_and_previous_points_reach_the_world(void) {
     char why[256] = "";
     CHECK(scene_file_round_trip((const uint8_t *)text, strlen(text), "t.scene", why, sizeof why));
     if (why[0] != '\0') printf("    %s\n", why);
+    scene_file_free(file);
+
+    file = parse("contacts on\nbody floor { box 10 1; static; position 0 -0.5 }\n"
+                 "body box { box 1 1; position 0 0.5 }\n"
+                 "contact 0 1 { normal 0 1; face a 0 1 0 0; pose 0 1 0 }\n");
+    m = scene_get_contact_memory(scene_file_get_scene(file), 0);
+    CHECK(m.face_lead == INFINITY);
     scene_file_free(file);
 
     file = parse("gravity 0 -10\ncontacts on\nbody floor { box 10 1; static; position 0 -0.5 }\n"
@@ -1036,6 +1045,8 @@ static const bad_file_t BAD_FILES[] = {
      "t.scene:1:47: expected at most two incident lines in a contact, found a third"},
     {"contact 0 1 { previous 1 0 0; previous 2 0 0; previous 3 0 0 }",
      "t.scene:1:47: expected at most two previous lines in a contact, found a third"},
+    {"contact 0 1 { face a 0 1 0 0 lead edge }",
+     "t.scene:1:35: expected the reference face's lead (m), a number, found \"edge\""},
     {"contact 0 1 { previous 1 0 nan }",
      "t.scene:1:28: expected the tangent impulse of the step before (N s), a number, found "
      "\"nan\""},
