@@ -11,6 +11,8 @@
  * the two separations are nearly equal. */
 static const double REFERENCE_TOLERANCE = 0.0005;
 
+const double MANIFOLD_KEEP_TOLERANCE = 0.0001;
+
 typedef struct {
     double separation;
     size_t edge;
@@ -96,7 +98,7 @@ static double face_separation(const body_t *reference, size_t edge, const body_t
 }
 
 /* Last step's reference face of the pair when it is still within
- * REFERENCE_TOLERANCE of the best face now (*face: it and its separation),
+ * MANIFOLD_KEEP_TOLERANCE of the best face now (*face: it and its separation),
  * so that faces of nearly equal separation (a corner against a corner, the
  * flush faces of many-sided polygons) do not take turns from step to step,
  * each turn a new normal and new points. */
@@ -108,7 +110,7 @@ static bool keep_last_face(const body_t *a, const body_t *b, const manifold_feat
         vector_t n = reference->local_normals[i];
         if (n.x != last->normal.x || n.y != last->normal.y) continue;
         double separation = face_separation(reference, i, last->flip ? a : b);
-        if (separation < best - REFERENCE_TOLERANCE) return false;
+        if (separation < best - MANIFOLD_KEEP_TOLERANCE) return false;
         *face = (face_separation_t){separation, i};
         return true;
     }

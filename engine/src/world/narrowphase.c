@@ -18,9 +18,6 @@
  * 0.01 rad, with the same penetrations and the same pyramid (measured). */
 static const double REUSE_DISTANCE = 0.01;
 static const double REUSE_ANGLE = 0.02;
-/* How far another axis may have overtaken the reused reference face (m):
- * as far as a fresh search keeps last step's face (manifold.h). */
-static const double REUSE_OVERTAKE = 0.0005;
 
 /* Last step's contact of the pair, while this step's are being found. */
 static size_t find_old(const world_t *world, const body_t *a, uint64_t key) {
@@ -129,7 +126,7 @@ static relative_pose_t relative_pose(const body_t *a, const body_t *b) {
 
 /* Whether last step's features still hold: the pose is within the reuse
  * window, and no other axis can have overtaken the reference face's by
- * more than REUSE_OVERTAKE: each separation has moved no more than
+ * more than a fresh search would let it (MANIFOLD_KEEP_TOLERANCE): each separation has moved no more than
  * pose_drift (here with |p| bounded by |x| + |y|, to spare a square root),
  * so the lead has shrunk by no more than twice that. A corner against a
  * corner has axes of nearly equal separation: reused as the bodies slid,
@@ -145,7 +142,7 @@ WORLD_INLINE bool features_hold(const contact_source_t *old, relative_pose_t now
         return false;
     }
     double reach = fabs(now.position.x) + fabs(now.position.y) + a->radius + b->radius;
-    double room = 0.5 * (old->features.lead + REUSE_OVERTAKE) - reach * turn;
+    double room = 0.5 * (old->features.lead + MANIFOLD_KEEP_TOLERANCE) - reach * turn;
     return room > 0.0 && dx * dx + dy * dy < room * room;
 }
 
