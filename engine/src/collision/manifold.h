@@ -22,6 +22,12 @@
 #include "jostle/body.h"
 #include "collision/manifold_types.h"
 
+/* How far another face may lead last step's reference face before a fresh
+ * search gives it up, and reused features may have been overtaken (m): a
+ * tenth of the solver's linear slop, so the overlap a kept face overstates
+ * is never pushed apart (docs/design.md, Narrowphase). */
+extern const double MANIFOLD_KEEP_TOLERANCE;
+
 /* The manifold of two bodies' current polygons (point_count 0 when they are
  * further apart than margin). When it has points, *features receives them,
  * including clipped points beyond the margin (a later evaluate may keep
@@ -30,13 +36,6 @@
  * (no points then). last: the pair's features of last step, or NULL; its
  * reference face is kept while within MANIFOLD_KEEP_TOLERANCE of the best.
  * Both bodies' world polygons must be up to date. */
-/* How far another face may lead last step's reference face before a fresh
- * search gives it up, and reused features may have been overtaken (m): a
- * tenth of the solver's linear slop, so the overlap a kept face overstates
- * is never pushed apart. With 0.5 mm, a settled pile(4000) took 0.6 s
- * longer to fall asleep (median of 8 layouts). */
-extern const double MANIFOLD_KEEP_TOLERANCE;
-
 manifold_t manifold_collide(body_t *a, body_t *b, double margin, const manifold_features_t *last,
                             manifold_features_t *features, double *separation);
 

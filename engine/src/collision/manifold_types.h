@@ -48,7 +48,7 @@ typedef struct {
     /* How much the reference face's separation led every other axis that
      * could take its place when found (m; manifold.c's reference_lead):
      * the features are reused only while the bodies have moved less than
-     * half of it. INFINITY for a pair with a round shape or a segment,
+     * half of it and MANIFOLD_KEEP_TOLERANCE (manifold.h). INFINITY for a pair with a round shape or a segment,
      * whose contact is found again each step. */
     double lead;
     vector_t normal;     /* reference frame */
