@@ -126,9 +126,10 @@ static relative_pose_t relative_pose(const body_t *a, const body_t *b) {
 
 /* Whether last step's features still hold: the pose is within the reuse
  * window, and no other axis can have overtaken the reference face's by
- * more than a fresh search would let it (MANIFOLD_KEEP_TOLERANCE): each separation has moved no more than
- * pose_drift (here with |p| bounded by |x| + |y|, to spare a square root),
- * so the lead has shrunk by no more than twice that. A corner against a
+ * more than a fresh search would let it (MANIFOLD_KEEP_TOLERANCE): each
+ * separation has moved no more than pose_drift (here with |p| bounded by
+ * |x| + |y|, to spare a square root), so the lead has shrunk by no more
+ * than twice that. A corner against a
  * corner has axes of nearly equal separation: reused as the bodies slid,
  * their features held a phantom overlap where a fresh search found them
  * apart (pile(10000)). */
