@@ -97,15 +97,20 @@ static double face_separation(const body_t *reference, size_t edge, const body_t
     return least - vec_dot(normal, reference->world_vertices[edge]);
 }
 
-/* Last step's reference face of the pair when it is still within
- * MANIFOLD_KEEP_TOLERANCE of the best face now (*face: it and its separation),
- * so that faces of nearly equal separation (a corner against a corner, the
- * flush faces of many-sided polygons) do not take turns from step to step,
- * each turn a new normal and new points. */
+/* Last step's reference face of the pair when it is not the face chosen
+ * now (flip, *face) but still within MANIFOLD_KEEP_TOLERANCE of the best
+ * (*face: it and its separation), so that faces of nearly equal separation
+ * (a corner against a corner, the flush faces of many-sided polygons) do
+ * not take turns from step to step, each turn a new normal and new points.
+ * Mostly last step's face is the one chosen: then nothing is searched. */
 static bool keep_last_face(const body_t *a, const body_t *b, const manifold_features_t *last,
-                           double best, face_separation_t *face) {
+                           bool flip, double best, face_separation_t *face) {
     if (last == NULL || last->point_count == 0 || !isfinite(last->lead)) return false;
     const body_t *reference = last->flip ? b : a;
+    if (last->flip == flip) {
+        vector_t chosen = reference->local_normals[face->edge];
+        if (chosen.x == last->normal.x && chosen.y == last->normal.y) return false;
+    }
     for (size_t i = 0; i < reference->count; i++) {
         vector_t n = reference->local_normals[i];
         if (n.x != last->normal.x || n.y != last->normal.y) continue;
@@ -405,7 +410,7 @@ manifold_t manifold_collide(body_t *a, body_t *b, double margin, const manifold_
     bool flip = face_b.separation > face_a.separation + REFERENCE_TOLERANCE;
     face_separation_t face = flip ? face_b : face_a;
     bool seams = a->has_seams || b->has_seams;
-    if (!seams && keep_last_face(a, b, last, *separation, &face)) flip = last->flip;
+    if (!seams && keep_last_face(a, b, last, flip, *separation, &face)) flip = last->flip;
     size_t ref_edge = face.edge;
     double lead = flip ? reference_lead(b, face, faces_b, a, faces_a)
                        : reference_lead(a, face, faces_a, b, faces_b);

@@ -129,10 +129,9 @@ static relative_pose_t relative_pose(const body_t *a, const body_t *b) {
  * more than a fresh search would let it (MANIFOLD_KEEP_TOLERANCE): each
  * separation has moved no more than pose_drift (here with |p| bounded by
  * |x| + |y|, to spare a square root), so the lead has shrunk by no more
- * than twice that. A corner against a
- * corner has axes of nearly equal separation: reused as the bodies slid,
- * their features held a phantom overlap where a fresh search found them
- * apart (pile(10000)). */
+ * than twice that. A corner against a corner has axes of nearly equal
+ * separation: reused as the bodies slid, their features held a phantom
+ * overlap where a fresh search found them apart (pile(10000)). */
 WORLD_INLINE bool features_hold(const contact_source_t *old, relative_pose_t now,
                                 const body_t *a, const body_t *b) {
     relative_pose_t then = old->pose;
