@@ -173,6 +173,7 @@ static void profile_of_orbits_runs_no_contact_stage(void) {
     CHECK(p.seconds[SCENE_STAGE_FORCES] >= 0.0 && p.seconds[SCENE_STAGE_INTEGRATE] >= 0.0);
     CHECK(p.islands == 0 && p.awake_bodies == 2 && p.sleeping_bodies == 0 && p.static_bodies == 0);
     CHECK(strcmp(scene_stage_name(SCENE_STAGE_FORCES), "forces") == 0);
+    CHECK(strcmp(scene_stage_name(SCENE_STAGE_PREPARE), "prepare") == 0);
     CHECK(strcmp(scene_stage_name(SCENE_STAGE_REMOVAL), "removal") == 0);
     scene_free(scene);
 }
@@ -246,7 +247,7 @@ static void profiling_times_the_stages_only_when_on(void) {
         CHECK(on.ran[k] ? on.seconds[k] >= 0.0 : on.seconds[k] == 0.0);
         total += on.seconds[k];
     }
-    CHECK(on.ran[SCENE_STAGE_SOLVER] && total > 0.0);
+    CHECK(on.ran[SCENE_STAGE_PREPARE] && on.ran[SCENE_STAGE_SOLVER] && total > 0.0);
     scene_set_profiling(scenes[1], false);
     scene_tick(scenes[1], 1.0 / 60.0);
     CHECK(scene_get_profile(scenes[1]).seconds[SCENE_STAGE_SOLVER] == 0.0);

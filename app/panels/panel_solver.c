@@ -69,10 +69,11 @@ const ui_section_t UI_SOLVER = {"SOLVER (click < > or a switch)",
 /* The stages' names as the legend shows them (scene_stage_name's, cut to
  * fit a third of the side bar). */
 static const char *const SHORT[SCENE_STAGE_COUNT] = {
-    "forces", "broad", "narrow", "solver", "shock", "position", "integrate", "sleep", "removal"};
+    "forces", "broad",     "narrow", "prepare", "solver",
+    "shock",  "position", "integrate", "sleep", "removal"};
 #define COUNT_LINES 2
-#define LEGEND_ROWS 3
-#define LEFT_OUT_LINES 2
+#define LEGEND_ROWS ((SCENE_STAGE_COUNT + 2) / 3)
+#define LEFT_OUT_LINES 3
 
 /* The chart: a column per frame (its last step), the stages stacked
  * bottom up in their colours, scaled by stage_chart_scale (a taller

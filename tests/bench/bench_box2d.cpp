@@ -320,7 +320,7 @@ const bench_ops_t box2d_ops = {
     b2_set_velocity, b2_add_gravity_pair, b2_step,
     b2_get_state,    b2_max_penetration, b2_pair_penetration,
     b2_add_spring,   b2_set_angular_velocity, 1.0, NULL,
-    b2_add_revolute, b2_set_group,
+    b2_add_revolute, b2_set_group, NULL,
 };
 
 const bench_ops_t box2d_nosleep_ops = {
@@ -330,7 +330,7 @@ const bench_ops_t box2d_nosleep_ops = {
     b2_set_velocity,   b2_add_gravity_pair,           b2_step,
     b2_get_state,      b2_max_penetration,            b2_pair_penetration,
     b2_add_spring,     b2_set_angular_velocity,       1.0, NULL,
-    b2_add_revolute, b2_set_group,
+    b2_add_revolute, b2_set_group, NULL,
 };
 
 const bench_ops_t box2d_matched_ops = {
@@ -340,7 +340,7 @@ const bench_ops_t box2d_matched_ops = {
     b2_set_velocity,   b2_add_gravity_pair,           b2_step,
     b2_get_state,      b2_max_penetration,            b2_pair_penetration,
     b2_add_spring,     b2_set_angular_velocity,       1.0, NULL,
-    b2_add_revolute, b2_set_group,
+    b2_add_revolute, b2_set_group, NULL,
 };
 
 const bench_ops_t box2d_discrete_ops = {
@@ -350,7 +350,7 @@ const bench_ops_t box2d_discrete_ops = {
     b2_set_velocity,  b2_add_gravity_pair, b2_step,
     b2_get_state,     b2_max_penetration, b2_pair_penetration,
     b2_add_spring,    b2_set_angular_velocity, 1.0, NULL,
-    b2_add_revolute, b2_set_group,
+    b2_add_revolute, b2_set_group, NULL,
 };
 
 } // namespace

@@ -432,6 +432,36 @@ static void b3_set_group(void *world, int body, int group) {
     b2Shape_SetFilter(w->shapes[body], filter);
 }
 
+/* Its own profile of the last step (b2World_GetProfile, ms), as parts
+ * that do not overlap: the solve's stages (b2Profile nests them in
+ * constraints and solve), then what else the step timed. */
+static int b3_stage_ms(void *world, const char **names, double *ms, int max) {
+    b3_world_t *w = (b3_world_t *)world;
+    b2Profile p = b2World_GetProfile(w->world);
+    static const char *const parts[] = {"pairs",       "collide", "setup",      "prepare",
+                                        "warm_start",  "solve",   "relax",      "integrate",
+                                        "restitution", "store",   "transforms", "refit",
+                                        "continuous",  "sleep",   "other"};
+    double values[] = {p.pairs,        p.collide,
+                       p.solverSetup,  p.prepareConstraints,
+                       p.warmStart,    p.solveImpulses,
+                       p.relaxImpulses, (double)p.integrateVelocities + p.integratePositions,
+                       p.applyRestitution, p.storeImpulses,
+                       p.transforms,   p.refit,
+                       p.bullets,      (double)p.sleepIslands + p.splitIslands,
+                       0.0};
+    int count = (int)(sizeof parts / sizeof parts[0]);
+    double listed = 0.0;
+    for (int k = 0; k + 1 < count; k++) listed += values[k];
+    values[count - 1] = p.step > listed ? p.step - listed : 0.0;
+    if (count > max) count = max;
+    for (int k = 0; k < count; k++) {
+        names[k] = parts[k];
+        ms[k] = values[k];
+    }
+    return count;
+}
+
 #define B3_OPS(name, only, describe, world_new, awake)                                                  \
     {name,                                                                                         \
      only,                                                                                         \
@@ -453,7 +483,8 @@ static void b3_set_group(void *world, int body, int group) {
      B3_SPRING_REST,                                                                               \
      awake,                                                                                        \
      b3_add_revolute,                                                                              \
-     b3_set_group}
+     b3_set_group,                                                                                 \
+     b3_stage_ms}
 
 static const bench_ops_t box2d3_ops =
     B3_OPS("box2d3-" BENCH_BOX2D3_BUILD, NULL, b3_describe, b3_world_new, NULL);

@@ -390,7 +390,7 @@ static const bench_ops_t chipmunk_ops = {
     cp_step,             cp_get_state,   cp_max_penetration,
     cp_pair_penetration, cp_add_spring,  cp_set_angular_velocity,
     1.0,                 NULL,
-    cp_add_revolute,     cp_set_group,
+    cp_add_revolute,     cp_set_group,   NULL,
 };
 
 static const bench_ops_t chipmunk_default_ops = {
@@ -400,7 +400,7 @@ static const bench_ops_t chipmunk_default_ops = {
     cp_step,              cp_get_state,   cp_max_penetration,
     cp_pair_penetration,  cp_add_spring,  cp_set_angular_velocity,
     1.0,                 NULL,
-    cp_add_revolute,     cp_set_group,
+    cp_add_revolute,     cp_set_group,   NULL,
 };
 
 int main(int argc, char **argv) {

@@ -186,6 +186,22 @@ static int bench_count_steps = 0;
 static double bench_wall_ms = 0.0;
 static long bench_timed_steps = 0;
 
+/* --stages: after each timed step the engine's own account of its stages
+ * (bench_ops_t's stage_ms) is summed, over every step of the case's runs
+ * and over the pile's settled steps, and printed after the result line as
+ *   # stages engine=NAME scene=S size=N part=step|settled STAGE=MS ...
+ * (mean ms per step, in the engine's order). Each engine times its stages
+ * with its own clock, outside bench_step's timing but inside the run. */
+#define BENCH_MAX_STAGES 24
+typedef struct {
+    const char *names[BENCH_MAX_STAGES];
+    double step_ms[BENCH_MAX_STAGES], settled_ms[BENCH_MAX_STAGES];
+    int count;
+    long steps, settled_steps;
+} bench_stage_sums_t;
+static int bench_stages = 0;
+static bench_stage_sums_t bench_stage_sums;
+
 static inline double bench_mean(const double *values, int count) {
     double sum = 0.0;
     for (int i = 0; i < count; i++) sum += values[i];
@@ -325,6 +341,10 @@ typedef struct bench_ops {
     /* Bodies given the same group (> 0) make no contact with one another;
      * their other contacts are kept. Needed with add_revolute. */
     void (*set_group)(void *world, int body, int group);
+    /* The last step by the engine's own stages (--stages): names and ms,
+     * at most max of them, in the order it runs them; returns how many.
+     * NULL for an engine that does not say. */
+    int (*stage_ms)(void *world, const char **names, double *ms, int max);
 } bench_ops_t;
 
 /* Area (m^2) of a shape: mass = area at density 1. */

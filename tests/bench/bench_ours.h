@@ -94,6 +94,7 @@ static void *ours_world_new_common(double gy, int contacts, int capacity, int se
     }
     if (bench_iterations > 0) scene_set_solver_iterations(w->scene, (size_t)bench_iterations, 4);
     if (bench_workers > 1) scene_set_workers(w->scene, bench_workers);
+    if (bench_stages) scene_set_profiling(w->scene, true);
     w->capacity = capacity > 0 ? capacity : 4;
     w->bodies = (body_t **)malloc(sizeof(body_t *) * (size_t)w->capacity);
     w->angle0 = (double *)malloc(sizeof(double) * (size_t)w->capacity);
@@ -289,13 +290,24 @@ static void ours_set_group(void *world, int body, int group) {
     body_set_collision_filter(w->bodies[body], category, mask, (uint32_t)group);
 }
 
+/* The scene's profile of the last step (--stages), in ms. */
+static int ours_stage_ms(void *world, const char **names, double *ms, int max) {
+    scene_profile_t profile = scene_get_profile(((ours_world_t *)world)->scene);
+    int count = SCENE_STAGE_COUNT < max ? SCENE_STAGE_COUNT : max;
+    for (int k = 0; k < count; k++) {
+        names[k] = scene_stage_name((scene_stage_t)k);
+        ms[k] = 1e3 * profile.seconds[k];
+    }
+    return count;
+}
+
 static const bench_ops_t ours_ops = {
     "ours",          NULL,           0, 0, ours_describe,
     ours_world_new,  ours_world_free, ours_add_static_box,
     ours_add_body,   ours_set_velocity, ours_add_gravity_pair,
     ours_step,       ours_get_state, ours_max_penetration,
     ours_pair_penetration, ours_add_spring, ours_set_angular_velocity, 0.0,
-    NULL,                  ours_add_revolute, ours_set_group,
+    NULL,                  ours_add_revolute, ours_set_group,     ours_stage_ms,
 };
 
 static const bench_ops_t ours_seed_ops = {
@@ -304,7 +316,7 @@ static const bench_ops_t ours_seed_ops = {
     ours_add_body,       ours_set_velocity, ours_add_gravity_pair,
     ours_step,           ours_get_state,  ours_max_penetration,
     ours_pair_penetration, ours_add_spring, ours_set_angular_velocity, 0.0,
-    NULL,                  NULL,              NULL,
+    NULL,                  NULL,              NULL,              NULL,
 };
 
 static const bench_ops_t ours_symplectic_ops = {
@@ -313,7 +325,7 @@ static const bench_ops_t ours_symplectic_ops = {
     ours_add_body,             ours_set_velocity, ours_add_gravity_pair,
     ours_step,                 ours_get_state,  ours_max_penetration,
     ours_pair_penetration, ours_add_spring, ours_set_angular_velocity, 0.0,
-    NULL,                  ours_add_revolute, ours_set_group,
+    NULL,                  ours_add_revolute, ours_set_group,     NULL,
 };
 
 static const bench_ops_t ours_sleeping_ops = {
@@ -322,7 +334,7 @@ static const bench_ops_t ours_sleeping_ops = {
     ours_add_body,           ours_set_velocity, ours_add_gravity_pair,
     ours_step,               ours_get_state,  ours_max_penetration,
     ours_pair_penetration, ours_add_spring, ours_set_angular_velocity, 0.0,
-    ours_awake_bodies,     ours_add_revolute, ours_set_group,
+    ours_awake_bodies,     ours_add_revolute, ours_set_group,     ours_stage_ms,
 };
 
 #endif // #ifndef BENCH_OURS_H

@@ -16,6 +16,8 @@
 # BENCH_CFLAGS (printed as the flags), BENCH_ARGS (more
 # options for the speed table's programs, e.g. --scene pile --size 1000),
 # BENCH_SEEDS_ARGS (options of seeds.sh, e.g. --quick: a trial run only),
+# BENCH_STAGE_CASES (scene:size cases whose stages each engine times
+# itself, default "pyramid:40 pile:4000"; empty leaves them out),
 # BENCH_SCALE_SIZES (pile sizes of the scale fit, default
 # 1000,2000,4000,10000,20000; empty leaves it out), BENCH_SLEEP_STEPS (how
 # long the sleeping piles run to find when they are all asleep, default
@@ -48,6 +50,7 @@ scale_sizes=${BENCH_SCALE_SIZES-1000,2000,4000,10000,20000}
 sleep_steps=${BENCH_SLEEP_STEPS:-1800}
 workers_size=${BENCH_WORKERS_SIZE:-10000}
 round_sizes=${BENCH_ROUND_SIZES-1000,4000}
+stage_cases=${BENCH_STAGE_CASES-pyramid:40 pile:4000}
 joint_variants=${BENCH_JOINT_VARIANTS:-ours,box2d3-sse2,chipmunk}
 dir=$(dirname "$0")
 work=$(mktemp -d "${TMPDIR:-/tmp}/bench-report.XXXXXX") || exit 1
@@ -225,6 +228,15 @@ echo "bench-report: speed, $rounds rounds" >&2
 # shellcheck disable=SC2086
 sh "$dir/alternate.sh" -o "$work/raw" "$rounds" "$@" -- --variant "$variants" $BENCH_ARGS \
     >"$work/speed" || exit 1
+if [ -n "$stage_cases" ]; then
+    echo "bench-report: stages ($stage_cases)" >&2
+    for case in $stage_cases; do
+        for p in "$ours" $v3; do
+            taskset -c "$(($(getconf _NPROCESSORS_ONLN) - 1))" "$p" --scene "${case%%:*}" \
+                --size "${case#*:}" --runs 3 --stages --variant ours,box2d3-sse2 | grep '^# stages '
+        done
+    done >"$work/stages"
+fi
 if [ -n "$sleepers" ]; then
     echo "bench-report: sleeping on, pile 4000" >&2
     # shellcheck disable=SC2086
@@ -332,6 +344,35 @@ slower): the figure the speed targets are stated in.
 $(grep -v '^#' "$work/speed")
 \`\`\`
 EOF
+    if [ -s "$work/stages" ]; then
+        cat <<EOF
+
+## Where a step's time goes: each engine's own stages, one core
+
+Each engine's account of its stages (this engine's scene profile, Box2D
+v3's b2World_GetProfile), in ms per step averaged over 3 runs of the case,
+pinned; stages that took no time are left out. The stages are not the same:
+this engine prepares its contacts once a step (prepare: lever arms,
+effective masses, targets, impacts; then colouring and packing the batches)
+and its solver stage is the warm start, 8 velocity iterations and a relaxing
+one; shock propagation (shock) and the position iterations with the lift
+(position) are its own. Box2D v3 prepares once and then, for each of its 4
+sub-steps, warm starts, solves and relaxes every constraint (warm_start,
+solve, relax) and integrates (integrate); transforms moves its bodies and
+their boxes, pairs finds new pairs in its tree. Each engine reads its clock
+around its own stages, so a row's sum differs a little from the step's
+time in the speed table.
+
+| scene | steps | engine | stages (ms per step) | sum |
+|---|---|---|---|---|
+$(awk '{ e = ""; s = ""; n = ""; part = ""; list = ""; sum = 0
+        for (i = 3; i <= NF; i++) { split($i, kv, "=")
+            if (kv[1] == "engine") e = kv[2]; else if (kv[1] == "scene") s = kv[2]
+            else if (kv[1] == "size") n = kv[2]; else if (kv[1] == "part") part = kv[2]
+            else if (kv[2] + 0 > 0) { list = list (list == "" ? "" : ", ") kv[1] " " kv[2]; sum += kv[2] } }
+        printf "| %s(%s) | %s | %s | %s | %.4g |\n", s, n, part == "settled" ? "301 to 600" : "all", e, list, sum }' "$work/stages")
+EOF
+    fi
     if [ -s "$work/instructions" ]; then
         cat <<EOF
 

@@ -22,6 +22,8 @@
  *                    each line; mean_ms and median_ms are CPU time of the
  *                    process (CLOCK_PROCESS_CPUTIME_ID)
  *   --count-steps    adds timed_steps (step calls of the last run)
+ *   --stages         prints, after each result line, the engine's own
+ *                    account of its stages (bench_common.h)
  *   --layout-seed K  the random generator's first state (0 .. 2^31 - 1;
  *                    default 12345, the canonical layout): pile, column and
  *                    the stability scenes drawing random numbers get another
@@ -139,6 +141,33 @@ typedef struct {
     double max_return_speed;
 } bench_run_t;
 
+/* Adds the last step's stages to bench_stage_sums (--stages); a step of
+ * the run from PILE_SETTLED_FIRST on counts as settled too (printed for the
+ * piles only). */
+static inline void bench_add_stages(const bench_ops_t *ops, void *world) {
+    bench_stage_sums_t *sums = &bench_stage_sums;
+    double ms[BENCH_MAX_STAGES];
+    int count = ops->stage_ms(world, sums->names, ms, BENCH_MAX_STAGES);
+    sums->count = count;
+    int settled = bench_timed_steps >= PILE_SETTLED_FIRST;
+    for (int k = 0; k < count; k++) {
+        sums->step_ms[k] += ms[k];
+        if (settled) sums->settled_ms[k] += ms[k];
+    }
+    sums->steps++;
+    sums->settled_steps += settled;
+}
+
+static inline void bench_print_stages_part(const char *engine, const char *scene,
+                                           const char *size, const char *part,
+                                           const double *sum, long steps) {
+    const bench_stage_sums_t *sums = &bench_stage_sums;
+    if (steps == 0 || sums->count == 0) return;
+    printf("# stages engine=%s scene=%s size=%s part=%s", engine, scene, size, part);
+    for (int k = 0; k < sums->count; k++) printf(" %s=%.4g", sums->names[k], sum[k] / steps);
+    printf("\n");
+}
+
 /* A timed step: returns its CPU time in ms (and adds its wall time to
  * bench_wall_ms under --wall). Never inlined, so that an instruction count
  * can be restricted to it (callgrind --toggle-collect='bench_step*',
@@ -153,6 +182,7 @@ static double bench_step(const bench_ops_t *ops, void *world, double dt) {
     double ms = bench_cpu_ms() - t0;
     if (bench_wall) bench_wall_ms += bench_now_ms() - w0;
     bench_timed_steps++;
+    if (bench_stages && ops->stage_ms != NULL) bench_add_stages(ops, world);
     return ms;
 }
 
@@ -1307,6 +1337,7 @@ static inline void bench_run_case(const bench_ops_t *ops, const bench_case_t *c,
     double *wall = (double *)malloc(sizeof(double) * (size_t)runs);
     bench_run_t first, run;
     int differ = 0;
+    memset(&bench_stage_sums, 0, sizeof bench_stage_sums);
     for (int i = 0; i < runs; i++) {
         bench_run_t *r = i == 0 ? &first : &run;
         memset(r, 0, sizeof *r);
@@ -1336,6 +1367,15 @@ static inline void bench_run_case(const bench_ops_t *ops, const bench_case_t *c,
     }
     bench_print_result(ops->name, bench_scene_names[c->scene], size, runs, ms,
                        bench_scene_is_pile(c->scene) ? settled : NULL, quality);
+    if (bench_stages) {
+        const bench_stage_sums_t *sums = &bench_stage_sums;
+        const char *scene = bench_scene_names[c->scene];
+        bench_print_stages_part(ops->name, scene, size, "step", sums->step_ms, sums->steps);
+        if (bench_scene_is_pile(c->scene)) {
+            bench_print_stages_part(ops->name, scene, size, "settled", sums->settled_ms,
+                                    sums->settled_steps);
+        }
+    }
     if (bench_scene_has_summary(c->scene)) {
         if (first.tunnelled > 0 && (!*summary_tunnelled_v_found || c->size < *summary_first_v)) {
             *summary_tunnelled_v_found = 1;
@@ -1383,7 +1423,7 @@ static inline void bench_usage(FILE *out, const char *program) {
     fprintf(out,
             "usage: %s [--scene NAME[,NAME]] [--size X[,X]] [--dt X[,X]] [--runs R] [--quick]\n"
             "          [--iterations N] [--variant NAME[,NAME]] [--steps N] [--layout-seed K]\n"
-            "          [--wall] [--count-steps]\n"
+            "          [--wall] [--count-steps] [--stages]\n"
             "  scenes: pile pyramid bounce cradle orbit stack2 tunnel overlap column\n"
             "  circlepile capsulepile mixedpile jointchain ragdolls all\n"
             "  stability scenes: spring springpair chain heavytop headon tunnelmove bullet rod\n"
@@ -1398,7 +1438,8 @@ static inline void bench_usage(FILE *out, const char *program) {
             "  program has are ignored, so one list serves every program).\n"
             "  --layout-seed K: the random layouts' seed (default 12345, the canonical\n"
             "  one); other seeds also jitter the pyramids' and overlap's boxes by 1e-4 m.\n"
-            "  Times are CPU time of the process; --wall adds wall_median_ms.\n",
+            "  Times are CPU time of the process; --wall adds wall_median_ms; --stages\n"
+            "  prints each engine's own timing of its stages after each result line.\n",
             program);
 }
 
@@ -1483,6 +1524,8 @@ static inline int bench_main(int argc, char **argv, const bench_ops_t *const *op
             bench_wall = 1;
         } else if (strcmp(arg, "--count-steps") == 0) {
             bench_count_steps = 1;
+        } else if (strcmp(arg, "--stages") == 0) {
+            bench_stages = 1;
         } else if (value == NULL) {
             fprintf(stderr, "%s: unknown option or missing value: %s\n", argv[0], arg);
             bench_usage(stderr, argv[0]);

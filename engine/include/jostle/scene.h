@@ -11,7 +11,7 @@
  *   1. forces: the force creators, in the order they were added (again at
  *      each later stage of a multi-stage integrator), and from them each
  *      body's free motion over the step;
- *   2. world contacts, when enabled: broadphase, narrowphase, solver, which
+ *   2. world contacts, when enabled: broadphase, narrowphase, the solver, which
  *      change those motions, leaving out the islands that sleep
  *      (scene_set_sleeping);
  *   3. integrate: move every body by its motion;
@@ -401,8 +401,11 @@ scene_stats_t scene_get_stats(scene_t *scene);
  *                boxes overlap;
  *   NARROWPHASE  the pairs' contact manifolds and impacts timed within the
  *                step;
- *   SOLVER       preparing the contacts, restitution, warm starting and the
- *                velocity iterations, handing results back;
+ *   PREPARE      the contacts made ready for the iterations: lever arms,
+ *                effective masses, targets and impacts within the step;
+ *                then coloured, sorted and packed four to a batch;
+ *   SOLVER       restitution, warm starting and the velocity iterations,
+ *                handing results back;
  *   SHOCK        shock propagation (before the last velocity iteration);
  *   POSITION     advancing the bodies and the position iterations;
  *   INTEGRATE    moving every body not asleep by its motion (stage 3);
@@ -420,6 +423,7 @@ typedef enum {
     SCENE_STAGE_FORCES,
     SCENE_STAGE_BROADPHASE,
     SCENE_STAGE_NARROWPHASE,
+    SCENE_STAGE_PREPARE,
     SCENE_STAGE_SOLVER,
     SCENE_STAGE_SHOCK,
     SCENE_STAGE_POSITION,

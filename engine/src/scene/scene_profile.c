@@ -8,7 +8,7 @@
 #include "scene/scene_private.h"
 
 static const char *const STAGE_NAMES[SCENE_STAGE_COUNT] = {
-    "forces", "broadphase", "narrowphase", "solver", "shock",
+    "forces", "broadphase", "narrowphase", "prepare", "solver", "shock",
     "position", "integrate", "sleep", "removal",
 };
 

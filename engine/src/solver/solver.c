@@ -98,6 +98,7 @@ void solver_solve(solver_wide_t *wide, shock_t *shock, solver_contact_t *contact
     /* A step pays for the collision pass only with an elastic contact, and
      * for timing impacts only with an impact. */
     prepared_t found = prepare_all(wide->workers, &split, contact_count);
+    stage_clock_lap(settings->clock, SCENE_STAGE_PREPARE);
     bool any_elastic = found.elastic, any_impact = found.impact;
     /* Bounces before warm starting: last step's impulses, applied one by
      * one inside a deep pile, leave approaches above the threshold that no
@@ -106,8 +107,10 @@ void solver_solve(solver_wide_t *wide, shock_t *shock, solver_contact_t *contact
         any_impact |= solver_collision_pass(contacts, contact_count, velocities, bodies->states,
                                             settings->dt, settings->restitution_threshold,
                                             settings->velocity_iterations);
+        stage_clock_lap(settings->clock, SCENE_STAGE_SOLVER);
     }
     solver_split_load(wide, contacts, contact_count, velocities, bodies->body_count);
+    stage_clock_lap(settings->clock, SCENE_STAGE_PREPARE);
     solver_split_warm_start(wide, velocities);
     for (size_t i = 0; i < wide->loose_count; i++) {
         solver_warm_start(&contacts[wide->loose[i]], velocities);
