@@ -8,8 +8,6 @@
  * near yellow (axes) or magenta (impulses).
  */
 
-#include "jostle/scene.h"
-
 typedef struct {
     unsigned char r, g, b;
 } palette_rgb_t;
@@ -68,7 +66,8 @@ static const palette_rgb_t PALETTE_JOINT_MOTOR = {255, 220, 90};
 /* The step's stages in the STEP panel's chart, in scene_stage_t's order:
  * forces, broadphase, narrowphase, prepare, solver, shock, position,
  * integrate, sleep, removal. */
-static const palette_rgb_t PALETTE_STAGES[SCENE_STAGE_COUNT] = {
+#define PALETTE_STAGE_COUNT 10
+static const palette_rgb_t PALETTE_STAGES[PALETTE_STAGE_COUNT] = {
     {120, 200, 70}, {66, 135, 245},  {38, 190, 160}, {250, 190, 130}, {242, 140, 40},
     {225, 75, 75},  {150, 110, 230}, {235, 210, 90}, {160, 170, 240}, {175, 175, 180},
 };

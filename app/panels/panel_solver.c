@@ -68,6 +68,7 @@ const ui_section_t UI_SOLVER = {"SOLVER (click < > or a switch)",
 
 /* The stages' names as the legend shows them (scene_stage_name's, cut to
  * fit a third of the side bar). */
+_Static_assert(PALETTE_STAGE_COUNT == SCENE_STAGE_COUNT, "palette.h colours every stage");
 static const char *const SHORT[SCENE_STAGE_COUNT] = {
     "forces", "broad",     "narrow", "prepare", "solver",
     "shock",  "position", "integrate", "sleep", "removal"};
