@@ -70,8 +70,8 @@ const ui_section_t UI_SOLVER = {"SOLVER (click < > or a switch)",
  * fit a third of the side bar). */
 _Static_assert(PALETTE_STAGE_COUNT == SCENE_STAGE_COUNT, "palette.h colours every stage");
 static const char *const SHORT[SCENE_STAGE_COUNT] = {
-    "forces", "broad",     "narrow", "prepare", "solver",
-    "shock",  "position", "integrate", "sleep", "removal"};
+    "forces", "broad",    "narrow",    "prepare", "solver",
+    "shock",  "position", "integrate", "sleep",   "removal"};
 #define COUNT_LINES 2
 #define LEGEND_ROWS ((SCENE_STAGE_COUNT + 2) / 3)
 #define LEFT_OUT_LINES 3

@@ -11,7 +11,7 @@
  *   1. forces: the force creators, in the order they were added (again at
  *      each later stage of a multi-stage integrator), and from them each
  *      body's free motion over the step;
- *   2. world contacts, when enabled: broadphase, narrowphase, the solver, which
+ *   2. world contacts, when enabled: broadphase, narrowphase, solver, which
  *      change those motions, leaving out the islands that sleep
  *      (scene_set_sleeping);
  *   3. integrate: move every body by its motion;
