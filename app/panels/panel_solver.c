@@ -66,9 +66,9 @@ const ui_section_t UI_SOLVER = {"SOLVER (click < > or a switch)",
 
 #define CHART_H 48
 
+_Static_assert(PALETTE_STAGE_COUNT == SCENE_STAGE_COUNT, "palette.h colours every stage");
 /* The stages' names as the legend shows them (scene_stage_name's, cut to
  * fit a third of the side bar). */
-_Static_assert(PALETTE_STAGE_COUNT == SCENE_STAGE_COUNT, "palette.h colours every stage");
 static const char *const SHORT[SCENE_STAGE_COUNT] = {
     "forces", "broad",    "narrow",    "prepare", "solver",
     "shock",  "position", "integrate", "sleep",   "removal"};
