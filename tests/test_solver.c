@@ -1,8 +1,9 @@
 /* The solver's internals that the scene tests cannot see directly: the
- * colouring of the contact graph and the four-lane velocity iterations.
- * Contacts are built by hand here, with the effective masses computed from
- * their definitions, so a mistake in velocity_solve.c's preparation cannot hide
- * one in the batches. */
+ * colouring of the contact graph, and the four-lane preparing and
+ * iterations. Contacts are built by hand here and prepared into the
+ * batches as the solver does; the effective masses are checked against
+ * their definitions, so a mistake in preparing cannot hide one in the
+ * iterations. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -10,6 +11,7 @@
 #include "solver/solver.h"
 #include "solver/solver_split.h"
 #include "solver/solver_wide.h"
+#include "solver/velocity_solve.h"
 #include "test.h"
 
 /* The SCENES.md generator, for reproducible random graphs. */
@@ -98,39 +100,71 @@ static void coloring_leaves_the_excess_uncoloured(void) {
     coloring_free(&coloring);
 }
 
-/* A contact point from its lever arms, with the effective masses of their
- * definition: 1 / (ma + mb + ia (r_a x d)^2 + ib (r_b x d)^2). */
-static solver_point_t make_point(vector_t r_a, vector_t r_b, vector_t normal,
-                                 const solver_velocity_t *a, const solver_velocity_t *b,
-                                 double target, uint32_t id) {
-    vector_t tangent = {-normal.y, normal.x};
-    solver_point_t p = {.rn_a = vec_cross(r_a, normal), .rn_b = vec_cross(r_b, normal),
-                        .rt_a = vec_cross(r_a, tangent), .rt_b = vec_cross(r_b, tangent),
-                        .target = target, .id = id};
-    double m = a->inverse_mass + b->inverse_mass;
-    p.normal_mass =
-        1.0 / (m + a->inverse_inertia * p.rn_a * p.rn_a + b->inverse_inertia * p.rn_b * p.rn_b);
-    p.tangent_mass =
-        1.0 / (m + a->inverse_inertia * p.rt_a * p.rt_a + b->inverse_inertia * p.rt_b * p.rt_b);
-    return p;
+/* The step length of the tests' preparing. */
+static const double DT = 1.0 / 60.0;
+
+/* Prepares contacts [0, count) (anchors[i] are contact i's) into wide's
+ * batches as the solver does, from bodies at rest at the start of the
+ * step (no start velocity, drift or pull) and a position weight of 1: a
+ * touching point's target is then 0, and that of a point apart by s,
+ * -s / DT. The rows' velocities are where the iterations start. */
+static prepared_t prepare_contacts(solver_wide_t *wide, solver_contact_t *contacts,
+                                   const solver_anchor_t *anchors, size_t count,
+                                   solver_velocity_t *rows, size_t body_count) {
+    enum { MOST = 32 };
+    static solver_state_t states[MOST];
+    static solver_displacement_t displacements[MOST];
+    CHECK(body_count <= MOST);
+    memset(states, 0, sizeof states);
+    solver_bodies_t bodies = {rows, displacements, states, body_count};
+    solver_settings_t settings = {.dt = DT,
+                                  .position_weight = 1.0,
+                                  .velocity_iterations = 8,
+                                  .position_iterations = 3,
+                                  .warm_starting = true,
+                                  .restitution_threshold = 1.0};
+    return solver_split_prepare(wide, contacts, anchors, count, &bodies, &settings);
 }
 
-static void make_block(solver_contact_t *c, const solver_velocity_t *a,
-                       const solver_velocity_t *b) {
+/* The separation that gives a point apart target `target` < 0 in
+ * prepare_contacts, or a touching one for target 0. */
+static double separation_for(double target) {
+    return target < 0.0 ? -target * DT : -0.001;
+}
+
+/* Checks point p of a prepared contact against its definitions, from its
+ * lever arms: r x d, and effective masses
+ * 1 / (ma + mb + ia (r_a x d)^2 + ib (r_b x d)^2). */
+static void check_point(const solver_point_t *p, vector_t r_a, vector_t r_b, vector_t normal,
+                        const solver_velocity_t *a, const solver_velocity_t *b, double target) {
+    vector_t tangent = {-normal.y, normal.x};
+    double rn_a = vec_cross(r_a, normal), rn_b = vec_cross(r_b, normal);
+    double rt_a = vec_cross(r_a, tangent), rt_b = vec_cross(r_b, tangent);
+    CHECK_NEAR(p->rn_a, rn_a, 1e-15);
+    CHECK_NEAR(p->rn_b, rn_b, 1e-15);
+    CHECK_NEAR(p->rt_a, rt_a, 1e-15);
+    CHECK_NEAR(p->rt_b, rt_b, 1e-15);
+    double m = a->inverse_mass + b->inverse_mass;
+    double ia = a->inverse_inertia, ib = b->inverse_inertia;
+    CHECK_NEAR(p->normal_mass, 1.0 / (m + ia * rn_a * rn_a + ib * rn_b * rn_b), 1e-14);
+    CHECK_NEAR(p->tangent_mass, 1.0 / (m + ia * rt_a * rt_a + ib * rt_b * rt_b), 1e-14);
+    CHECK_NEAR(p->target, target, 1e-12);
+}
+
+/* Checks a prepared block contact's inverse matrix against K's definition. */
+static void check_block(const solver_contact_t *c, const solver_velocity_t *a,
+                        const solver_velocity_t *b) {
     const solver_point_t *p = c->points, *q = c->points + 1;
     double m = a->inverse_mass + b->inverse_mass;
     double ia = a->inverse_inertia, ib = b->inverse_inertia;
     double k11 = m + ia * p->rn_a * p->rn_a + ib * p->rn_b * p->rn_b;
     double k22 = m + ia * q->rn_a * q->rn_a + ib * q->rn_b * q->rn_b;
     double k12 = m + ia * p->rn_a * q->rn_a + ib * p->rn_b * q->rn_b;
-    /* The solver recomputes K from the rows (solver_contact_k): the same. */
-    solver_block_k_t k = solver_contact_k(c, a, b);
-    CHECK(k.k11 == k11 && k.k12 == k12 && k.k22 == k22);
     double det = k11 * k22 - k12 * k12;
-    c->m11 = k22 / det;
-    c->m12 = -k12 / det;
-    c->m22 = k11 / det;
-    c->block = true;
+    CHECK(c->block);
+    CHECK_NEAR(c->m11, k22 / det, 1e-12);
+    CHECK_NEAR(c->m12, -k12 / det, 1e-12);
+    CHECK_NEAR(c->m22, k11 / det, 1e-12);
 }
 
 static double normal_velocity(const solver_contact_t *c, const solver_point_t *p,
@@ -142,11 +176,13 @@ static double normal_velocity(const solver_contact_t *c, const solver_point_t *p
 /*
  * Eleven contacts on distinct pairs of bodies (three share the static
  * floor, row 0), of three kinds: two-point block solves, two points one at
- * a time, and one point. They fill three batches, the last partly. Each
- * approaches at its own velocity. Because no two share a movable body, a
- * block or one-point contact must be solved exactly in one iteration (the
- * complementarity conditions hold to rounding), and every body's velocity
- * must have changed by exactly the impulses its contacts report.
+ * a time (their points nearly coincide, too ill-conditioned to solve
+ * together), and one point. They fill three batches, the last partly.
+ * Each approaches at its own velocity. Because no two share a movable
+ * body, a block or one-point contact must be solved exactly in one
+ * iteration (the complementarity conditions hold to rounding), and every
+ * body's velocity must have changed by exactly the impulses its contacts
+ * report.
  */
 static void batches_solve_isolated_contacts(void) {
     enum { CONTACTS = 11, BODIES = 2 * CONTACTS + 1 };
@@ -158,6 +194,8 @@ static void batches_solve_isolated_contacts(void) {
                                       2.0 + lcg_uniform()};
     }
     solver_contact_t contacts[CONTACTS];
+    solver_anchor_t anchors[CONTACTS];
+    double targets[CONTACTS][2];
     for (int i = 0; i < CONTACTS; i++) {
         solver_contact_t *c = &contacts[i];
         memset(c, 0, sizeof *c);
@@ -172,24 +210,34 @@ static void batches_solve_isolated_contacts(void) {
         int kind = i % 3; /* 0 block, 1 two points one by one, 2 one point */
         c->point_count = kind == 2 ? 1 : 2;
         for (int k = 0; k < c->point_count; k++) {
-            vector_t along = vec_multiply(k == 0 ? 0.4 : -0.4, tangent);
-            vector_t r_a = vec_add(vec_multiply(0.5, c->normal), along);
-            vector_t r_b = vec_add(vec_multiply(-0.5, c->normal), along);
+            double offset = k == 0 ? 0.4 : kind == 1 ? 0.3999 : -0.4;
+            vector_t along = vec_multiply(offset, tangent);
+            anchors[i].r_a[k] = vec_add(vec_multiply(0.5, c->normal), along);
+            anchors[i].r_b[k] = vec_add(vec_multiply(-0.5, c->normal), along);
             /* Block contacts 3, 6 and 9 leave the second point, the first,
              * and both free to separate: each case of the block solve. */
             bool free = (k == 0 && (i == 6 || i == 9)) || (k == 1 && (i == 3 || i == 9));
-            double target = free ? -5.0 : k == 0 ? 0.0 : 0.3;
-            c->points[k] = make_point(r_a, r_b, c->normal, &rows[c->a], &rows[c->b], target,
-                                      (uint32_t)k);
+            targets[i][k] = free ? -5.0 : k == 0 ? 0.0 : -0.3;
+            c->points[k].separation = separation_for(targets[i][k]);
+            c->points[k].id = (uint32_t)k;
             c->points[k].normal_impulse = 0.1 * k; /* a warm start */
         }
-        if (kind == 0) make_block(c, &rows[c->a], &rows[c->b]);
     }
-    memcpy(before, rows, sizeof rows);
-
     solver_wide_t wide = {0};
-    solver_split_load(&wide, contacts, CONTACTS, rows, BODIES);
+    prepared_t found = prepare_contacts(&wide, contacts, anchors, CONTACTS, rows, BODIES);
+    CHECK(!found.impact && !found.elastic && !found.raised);
     CHECK(wide.loose_count == 0);
+    for (int i = 0; i < CONTACTS; i++) {
+        const solver_contact_t *c = &contacts[i];
+        for (int k = 0; k < c->point_count; k++) {
+            check_point(&c->points[k], anchors[i].r_a[k], anchors[i].r_b[k], c->normal,
+                        &rows[c->a], &rows[c->b], targets[i][k]);
+        }
+        if (i % 3 == 0) check_block(c, &rows[c->a], &rows[c->b]);
+        CHECK(c->block == (i % 3 == 0));
+    }
+    solver_wide_warm_start(&wide, rows);
+    memcpy(before, rows, sizeof rows);
     solver_wide_iterate(&wide, rows, false);
     solver_wide_store(&wide, contacts);
 
@@ -231,13 +279,15 @@ static void batches_solve_isolated_contacts(void) {
     solver_wide_free(&wide);
 }
 
-/* The two-points-one-by-one contacts converge to the same complementarity
- * conditions when iterated. */
+/* Two-point contacts on a floor, one solved as a block and one a point
+ * at a time (its points 3 cm apart, too ill-conditioned to solve
+ * together), converge to the complementarity conditions when iterated. */
 static void batches_converge_when_iterated(void) {
     solver_velocity_t rows[3] = {{{0.0, 0.0}, 0.0, 0.0, 0.0},
                                  {{0.3, -2.0}, 0.7, 1.0, 3.0},
                                  {{-0.2, -1.0}, -0.4, 0.5, 1.5}};
     solver_contact_t contacts[2];
+    solver_anchor_t anchors[2];
     vector_t up = {0.0, 1.0}, tangent = {-1.0, 0.0};
     for (int i = 0; i < 2; i++) {
         solver_contact_t *c = &contacts[i];
@@ -248,14 +298,21 @@ static void batches_converge_when_iterated(void) {
         c->friction = 0.6;
         c->point_count = 2;
         for (int k = 0; k < 2; k++) {
-            vector_t along = vec_multiply(k == 0 ? 0.5 : -0.3, tangent);
-            c->points[k] = make_point(along, vec_add(along, (vector_t){0.0, -0.5}), up,
-                                      &rows[c->a], &rows[c->b], 0.0, (uint32_t)k);
+            double offset = k == 0 ? 0.5 : i == 0 ? -0.3 : 0.47;
+            vector_t along = vec_multiply(offset, tangent);
+            anchors[i].r_a[k] = along;
+            anchors[i].r_b[k] = vec_add(along, (vector_t){0.0, -0.5});
+            c->points[k].separation = separation_for(0.0);
+            c->points[k].id = (uint32_t)k;
         }
     }
     solver_wide_t wide = {0};
-    solver_split_load(&wide, contacts, 2, rows, 3);
-    for (int iteration = 0; iteration < 60; iteration++) solver_wide_iterate(&wide, rows, false);
+    prepare_contacts(&wide, contacts, anchors, 2, rows, 3);
+    CHECK(contacts[0].block && !contacts[1].block);
+    /* The pair's rows differ by 3%: one by one, a slow sweep. */
+    for (int iteration = 0; iteration < 20000; iteration++) {
+        solver_wide_iterate(&wide, rows, false);
+    }
     solver_wide_store(&wide, contacts);
     for (int i = 0; i < 2; i++) {
         for (int k = 0; k < 2; k++) {
@@ -293,6 +350,7 @@ static void batches_correct_overlaps_by_their_rate(void) {
         solver_velocity_t rows[BODIES];
         solver_displacement_t moved[BODIES];
         solver_contact_t contacts[CONTACTS];
+        solver_anchor_t anchors[CONTACTS];
         for (int i = 0; i < BODIES; i++) {
             rows[i] = (solver_velocity_t){{0.0, 0.0}, 0.0, 1.0 / (1.0 + i), 0.5 / (1.0 + i)};
             moved[i] = (solver_displacement_t){{0.01 * i, -0.02 * i}, 0.001 * i, 0.0};
@@ -311,15 +369,17 @@ static void batches_correct_overlaps_by_their_rate(void) {
             c->normal = (vector_t){cos(angle), sin(angle)};
             c->point_count = 1;
             c->slop = i < 2 ? SOLVER_LINEAR_SLOP : 0.0001 * i;
-            c->points[0] = make_point((vector_t){0.3, 0.1}, (vector_t){-0.2, 0.4}, c->normal,
-                                      &rows[c->a], &rows[c->b], 0.0, 0);
+            anchors[i].r_a[0] = (vector_t){0.3, 0.1};
+            anchors[i].r_b[0] = (vector_t){-0.2, 0.4};
             /* The separation at the start of the step, chosen so that the
-             * pass sees the overlap the test names. */
-            c->points[0].separation = 0.0;
+             * pass sees the overlap the test names: the lever terms are
+             * the ones preparing finds. */
+            c->points[0].rn_a = vec_cross(anchors[i].r_a[0], c->normal);
+            c->points[0].rn_b = vec_cross(anchors[i].r_b[0], c->normal);
             c->points[0].separation = -overlaps[i] - moved_separation(c, &c->points[0], moved);
         }
         solver_wide_t wide = {0};
-        solver_split_load(&wide, contacts, CONTACTS, rows, BODIES);
+        prepare_contacts(&wide, contacts, anchors, CONTACTS, rows, BODIES);
         solver_wide_correct_positions(&wide, moved, backward);
         for (int i = 0; i < CONTACTS; i++) {
             double before = -overlaps[i];
@@ -359,8 +419,126 @@ static void sweeps_reverse_in_thue_morse_order(void) {
     }
 }
 
+/* Whether two doubles have the same bits (NAN included). */
+static bool same_bits(double x, double y) {
+    return memcmp(&x, &y, sizeof x) == 0;
+}
+
+/* Checks that preparing in the batches gave contact c what preparing it
+ * alone gave `alone`, bit for bit. */
+static void check_same_preparing(const solver_contact_t *c, const solver_contact_t *alone) {
+    CHECK(c->block == alone->block && c->impact == alone->impact && c->rests == alone->rests);
+    if (c->block) {
+        CHECK(same_bits(c->m11, alone->m11) && same_bits(c->m12, alone->m12) &&
+              same_bits(c->m22, alone->m22));
+    }
+    for (int k = 0; k < c->point_count; k++) {
+        const solver_point_t *p = &c->points[k], *q = &alone->points[k];
+        CHECK(same_bits(p->rn_a, q->rn_a) && same_bits(p->rn_b, q->rn_b));
+        CHECK(same_bits(p->rt_a, q->rt_a) && same_bits(p->rt_b, q->rt_b));
+        CHECK(same_bits(p->normal_mass, q->normal_mass));
+        CHECK(same_bits(p->tangent_mass, q->tangent_mass));
+        CHECK(same_bits(p->target, q->target));
+        CHECK(same_bits(p->impact_time, q->impact_time));
+        CHECK(same_bits(p->impact_offset, q->impact_offset));
+        CHECK(p->touched == q->touched && p->lands == q->lands);
+        CHECK(p->restitution_impulse == 0.0 && p->restitution_tangent_impulse == 0.0);
+    }
+}
+
+/*
+ * Random contacts of every kind, touching, apart, closing within the step
+ * or not, elastic or not, between bodies in free motion (start velocity,
+ * drift, pull): preparing them four at a time into the batches gives each
+ * the bits preparing it alone gives (solver_prepare_contact), impacts,
+ * raised targets and which body rests on which included, and the same
+ * findings; and each lane holds its own contact's impulses.
+ */
+static void batches_prepare_as_one_contact_alone(void) {
+    enum { CONTACTS = 400, BODIES = 31 };
+    solver_velocity_t rows[BODIES];
+    solver_state_t states[BODIES];
+    solver_displacement_t displacements[BODIES];
+    memset(states, 0, sizeof states);
+    rows[0] = (solver_velocity_t){{0.0, 0.0}, 0.0, 0.0, 0.0};
+    for (int i = 1; i < BODIES; i++) {
+        rows[i] = (solver_velocity_t){{0.0, 0.0}, 0.0, 0.5 + lcg_uniform(), 1.0 + lcg_uniform()};
+        solver_state_t *st = &states[i];
+        st->v_start = (vector_t){4.0 * lcg_uniform() - 2.0, 4.0 * lcg_uniform() - 2.0};
+        st->w_start = lcg_uniform() - 0.5;
+        st->drift = (vector_t){0.1 * lcg_uniform(), -0.1 * lcg_uniform()};
+        st->spin_drift = 0.01 * lcg_uniform();
+        /* A few bodies in free fall, the rest pulled by gravity. */
+        st->acceleration = i % 7 == 0 ? (vector_t){0.0, 0.0} : (vector_t){0.0, -9.81};
+    }
+    static solver_contact_t contacts[CONTACTS], alone[CONTACTS];
+    static solver_anchor_t anchors[CONTACTS];
+    for (int i = 0; i < CONTACTS; i++) {
+        solver_contact_t *c = &contacts[i];
+        memset(c, 0, sizeof *c);
+        c->a = lcg_below(BODIES);
+        do c->b = lcg_below(BODIES); while (c->b == c->a);
+        double angle = 2.0 * M_PI * lcg_uniform();
+        c->normal = (vector_t){cos(angle), sin(angle)};
+        c->friction = 0.5;
+        c->restitution = i % 5 == 0 ? 0.5 : 0.0;
+        c->slop = 0.001;
+        c->point_count = i % 3 == 2 ? 1 : 2;
+        c->edge_ends = i % 11 == 0;
+        vector_t tangent = {-c->normal.y, c->normal.x};
+        for (int k = 0; k < c->point_count; k++) {
+            /* Every fourth contact's points nearly coincide: no block. */
+            double offset = k == 0 ? 0.4 : i % 4 == 0 ? 0.4 + 1e-5 : -0.3;
+            vector_t along = vec_multiply(offset, tangent);
+            anchors[i].r_a[k] = vec_add(vec_multiply(0.5, c->normal), along);
+            anchors[i].r_b[k] = vec_add(vec_multiply(-0.5, c->normal), along);
+            c->points[k].separation = 0.06 * lcg_uniform() - 0.02;
+            c->points[k].normal_impulse = lcg_uniform();
+            c->points[k].tangent_impulse = 0.2 * lcg_uniform() - 0.1;
+        }
+    }
+    memcpy(alone, contacts, sizeof contacts);
+    solver_bodies_t bodies = {rows, displacements, states, BODIES};
+    solver_settings_t settings = {.dt = DT, .position_weight = 0.5, .velocity_iterations = 8,
+                                  .position_iterations = 3, .warm_starting = true,
+                                  .restitution_threshold = 1.0};
+    solver_wide_t wide = {0};
+    prepared_t found =
+        solver_split_prepare(&wide, contacts, anchors, CONTACTS, &bodies, &settings);
+    prepared_t expected = {false, false, false};
+    int impacts = 0, raised = 0, blocks = 0;
+    for (int i = 0; i < CONTACTS; i++) {
+        solver_contact_t *c = &alone[i];
+        c->block = solver_contact_blocks(c, &anchors[i], &rows[c->a], &rows[c->b]);
+        bool point_raised = false;
+        expected.impact |=
+            solver_prepare_contact(c, &anchors[i], &bodies, &settings, &point_raised);
+        expected.raised |= point_raised;
+        expected.elastic |= c->restitution > 0.0;
+        impacts += c->impact;
+        raised += point_raised;
+        blocks += c->block;
+        check_same_preparing(&contacts[i], c);
+    }
+    CHECK(found.impact == expected.impact && found.elastic == expected.elastic &&
+          found.raised == expected.raised);
+    /* Each case came up. */
+    CHECK(impacts > 0 && raised > 0 && blocks > 0 && blocks < 2 * CONTACTS / 3);
+    /* Stored back before any sweep, the lanes' impulses are the contacts' own. */
+    solver_wide_store(&wide, contacts);
+    for (int i = 0; i < CONTACTS; i++) {
+        for (int k = 0; k < contacts[i].point_count; k++) {
+            const solver_point_t *p = &contacts[i].points[k], *q = &alone[i].points[k];
+            CHECK(same_bits(p->normal_impulse, q->normal_impulse));
+            CHECK(same_bits(p->tangent_impulse, q->tangent_impulse));
+        }
+    }
+    solver_wide_free(&wide);
+}
+
 TEST_SUITE(solver, TEST_CASE(coloring_separates_movable_bodies),
            TEST_CASE(sweeps_reverse_in_thue_morse_order),
            TEST_CASE(coloring_leaves_the_excess_uncoloured),
            TEST_CASE(batches_solve_isolated_contacts), TEST_CASE(batches_converge_when_iterated),
-           TEST_CASE(batches_correct_overlaps_by_their_rate));
+           TEST_CASE(batches_correct_overlaps_by_their_rate),
+           TEST_CASE(batches_prepare_as_one_contact_alone));

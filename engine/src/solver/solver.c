@@ -7,22 +7,12 @@
 #include "solver/solver_wide.h"
 #include "solver/velocity_solve.h"
 
-/* The loops over contacts and over bodies of solver_solve that the workers
- * share (scene_set_workers): each contact or body writes only its own, and
- * what preparing found is gathered per chunk and joined in chunk order. */
+/* The loops over bodies of solver_solve that the workers share
+ * (scene_set_workers): each body writes only its own row. */
 typedef struct {
-    solver_contact_t *contacts;
-    const solver_anchor_t *anchors;
     const solver_bodies_t *bodies;
     const solver_settings_t *settings;
-    prepared_t found[WORKERS_MAX_CHUNKS];
 } solve_split_t;
-
-static void prepare_chunk(void *context, size_t chunk, size_t begin, size_t end) {
-    solve_split_t *split = context;
-    split->found[chunk] = solver_prepare_range(split->contacts, split->anchors, split->bodies,
-                                               split->settings, begin, end);
-}
 
 static void advance_chunk(void *context, size_t chunk, size_t begin, size_t end) {
     const solve_split_t *split = context;
@@ -34,21 +24,6 @@ static void limit_chunk(void *context, size_t chunk, size_t begin, size_t end) {
     const solve_split_t *split = context;
     (void)chunk;
     solver_limit_corrections(split->bodies, split->settings->dt, begin, end);
-}
-
-static prepared_t prepare_all(workers_t *workers, solve_split_t *split, size_t contact_count) {
-    if (workers == NULL) {
-        return solver_prepare_range(split->contacts, split->anchors, split->bodies,
-                                    split->settings, 0, contact_count);
-    }
-    workers_for(workers, contact_count, prepare_chunk, split);
-    prepared_t found = {false, false, false};
-    for (size_t k = 0; k < workers_chunks(workers, contact_count); k++) {
-        found.impact |= split->found[k].impact;
-        found.elastic |= split->found[k].elastic;
-        found.raised |= split->found[k].raised;
-    }
-    return found;
 }
 
 /* fn over every body: on the workers when there are. */
@@ -92,12 +67,13 @@ void solver_solve(solver_wide_t *wide, shock_t *shock, solver_contact_t *contact
                   const solver_bodies_t *bodies, const solver_settings_t *settings,
                   const joint_step_t *joints) {
     solver_velocity_t *velocities = bodies->velocities;
-    solve_split_t split = {contacts, anchors, bodies, settings, {{false, false, false}}};
+    solve_split_t split = {bodies, settings};
     bool reverse = settings->reverse;
     if (!settings->warm_starting) forget_impulses(contacts, contact_count);
     /* A step pays for the collision pass only with an elastic contact, and
      * for timing impacts only with an impact. */
-    prepared_t found = prepare_all(wide->workers, &split, contact_count);
+    prepared_t found =
+        solver_split_prepare(wide, contacts, anchors, contact_count, bodies, settings);
     stage_clock_lap(settings->clock, SCENE_STAGE_PREPARE);
     bool any_elastic = found.elastic, any_impact = found.impact;
     /* Bounces before warm starting: last step's impulses, applied one by
@@ -109,8 +85,6 @@ void solver_solve(solver_wide_t *wide, shock_t *shock, solver_contact_t *contact
                                             settings->velocity_iterations);
         stage_clock_lap(settings->clock, SCENE_STAGE_SOLVER);
     }
-    solver_split_load(wide, contacts, contact_count, velocities, bodies->body_count);
-    stage_clock_lap(settings->clock, SCENE_STAGE_PREPARE);
     solver_split_warm_start(wide, velocities);
     for (size_t i = 0; i < wide->loose_count; i++) {
         solver_warm_start(&contacts[wide->loose[i]], velocities);

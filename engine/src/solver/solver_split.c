@@ -1,12 +1,13 @@
 #include "solver/solver_split.h"
 #include "base/workers.h"
+#include "solver/velocity_solve.h"
 
 /* A colour with fewer batches than this is swept by the calling thread
  * alone: waking the others would cost more than it saves. */
 static const size_t SPLIT_MIN_BATCHES = 16;
 
 typedef enum {
-    SWEEP_PACK,
+    SWEEP_PREPARE,
     SWEEP_STORE,
     SWEEP_WARM,
     SWEEP_ITERATE,
@@ -19,15 +20,27 @@ typedef struct {
     sweep_t sweep;
     solver_velocity_t *rows;
     solver_displacement_t *displacements;
-    solver_contact_t *contacts; /* packing reads them, storing writes them */
+    solver_contact_t *contacts; /* preparing and storing write them */
     int first_group, end_group; /* the groups swept (solver_wide.h) */
+    /* Preparing's inputs, and what each chunk found. */
+    const solver_anchor_t *anchors;
+    const solver_bodies_t *bodies;
+    const solver_settings_t *settings;
+    prepared_t found[WORKERS_MAX_CHUNKS];
 } colour_sweep_t;
 
-static void sweep_range(const colour_sweep_t *s, size_t begin, size_t end) {
+static void join(prepared_t *found, prepared_t more) {
+    found->impact |= more.impact;
+    found->elastic |= more.elastic;
+    found->raised |= more.raised;
+}
+
+static void sweep_range(colour_sweep_t *s, size_t chunk, size_t begin, size_t end) {
     switch (s->sweep) {
-    case SWEEP_PACK:
-        solver_wide_pack(s->wide, s->contacts, s->rows, begin, end);
-        solver_wide_mark_fixed(s->wide, s->rows, begin, end);
+    case SWEEP_PREPARE:
+        join(&s->found[chunk], solver_wide_prepare(s->wide, s->contacts, s->anchors, s->bodies,
+                                                   s->settings, begin, end));
+        solver_wide_mark_fixed(s->wide, s->bodies->velocities, begin, end);
         break;
     case SWEEP_STORE:
         solver_wide_store_range(s->wide, s->contacts, begin, end);
@@ -56,13 +69,13 @@ static void sweep_range(const colour_sweep_t *s, size_t begin, size_t end) {
  * each row crossed between the cores at each colour: two workers' sweeps
  * took 1.9 times one worker's CPU time (pile(10000)). */
 static void sweep_chunk(void *context, size_t chunk, size_t begin, size_t end) {
-    const colour_sweep_t *s = context;
+    colour_sweep_t *s = context;
     const uint32_t *group_batch = s->wide->group_batch;
     size_t total = group_batch[s->end_group] - group_batch[s->first_group];
-    (void)chunk;
     for (int g = s->first_group; g < s->end_group; g++) {
         size_t size = group_batch[g + 1] - group_batch[g];
-        sweep_range(s, group_batch[g] + begin * size / total, group_batch[g] + end * size / total);
+        sweep_range(s, chunk, group_batch[g] + begin * size / total,
+                    group_batch[g] + end * size / total);
     }
 }
 
@@ -70,7 +83,7 @@ static void sweep_groups(colour_sweep_t *s, int first_group, int end_group) {
     const solver_wide_t *wide = s->wide;
     size_t begin = wide->group_batch[first_group], end = wide->group_batch[end_group];
     if (end - begin < SPLIT_MIN_BATCHES) {
-        sweep_range(s, begin, end);
+        sweep_range(s, 0, begin, end);
         return;
     }
     s->first_group = first_group;
@@ -98,22 +111,32 @@ static void sweep_colours(colour_sweep_t *s, bool backward) {
     sweep_forward(s);
 }
 
-/* Over every batch at once: packing and storing touch no body row. */
+/* Over every batch at once: preparing and storing write no body row. */
 static void sweep_all(colour_sweep_t *s) {
     sweep_groups(s, 0, SOLVER_WIDE_GROUPS);
 }
 
-void solver_split_load(solver_wide_t *wide, const solver_contact_t *contacts, size_t count,
-                       const solver_velocity_t *rows, size_t body_count) {
-    solver_wide_arrange(wide, contacts, count, rows, body_count);
-    if (wide->workers == NULL) {
-        solver_wide_pack_all(wide, contacts, rows);
-        return;
+prepared_t solver_split_prepare(solver_wide_t *wide, solver_contact_t *contacts,
+                                const solver_anchor_t *anchors, size_t count,
+                                const solver_bodies_t *bodies, const solver_settings_t *settings) {
+    solver_wide_arrange(wide, contacts, anchors, count, bodies->velocities, bodies->body_count);
+    prepared_t found = {false, false, false};
+    for (size_t k = 0; k < wide->loose_count; k++) {
+        uint32_t i = wide->loose[k];
+        found.impact |= solver_prepare_contact(&contacts[i], &anchors[i], bodies, settings,
+                                               &found.raised);
+        found.elastic |= contacts[i].restitution > 0.0;
     }
-    /* Both are only read. */
-    colour_sweep_t s = {wide, SWEEP_PACK, (solver_velocity_t *)rows, NULL,
-                        (solver_contact_t *)contacts, 0, 0};
+    if (wide->workers == NULL) {
+        join(&found, solver_wide_prepare(wide, contacts, anchors, bodies, settings, 0,
+                                         wide->batch_count));
+        return found;
+    }
+    colour_sweep_t s = {.wide = wide, .sweep = SWEEP_PREPARE, .contacts = contacts,
+                        .anchors = anchors, .bodies = bodies, .settings = settings};
     sweep_all(&s);
+    for (size_t k = 0; k < WORKERS_MAX_CHUNKS; k++) join(&found, s.found[k]);
+    return found;
 }
 
 void solver_split_store(const solver_wide_t *wide, solver_contact_t *contacts) {
@@ -122,7 +145,7 @@ void solver_split_store(const solver_wide_t *wide, solver_contact_t *contacts) {
         return;
     }
     /* Only read. */
-    colour_sweep_t s = {(solver_wide_t *)wide, SWEEP_STORE, NULL, NULL, contacts, 0, 0};
+    colour_sweep_t s = {.wide = (solver_wide_t *)wide, .sweep = SWEEP_STORE, .contacts = contacts};
     sweep_all(&s);
 }
 
@@ -131,7 +154,7 @@ void solver_split_warm_start(solver_wide_t *wide, solver_velocity_t *rows) {
         solver_wide_warm_start(wide, rows);
         return;
     }
-    colour_sweep_t s = {wide, SWEEP_WARM, rows, NULL, NULL, 0, 0};
+    colour_sweep_t s = {.wide = wide, .sweep = SWEEP_WARM, .rows = rows};
     sweep_forward(&s);
 }
 
@@ -140,7 +163,7 @@ void solver_split_iterate(solver_wide_t *wide, solver_velocity_t *rows, bool bac
         solver_wide_iterate(wide, rows, backward);
         return;
     }
-    colour_sweep_t s = {wide, SWEEP_ITERATE, rows, NULL, NULL, 0, 0};
+    colour_sweep_t s = {.wide = wide, .sweep = SWEEP_ITERATE, .rows = rows};
     sweep_colours(&s, backward);
 }
 
@@ -149,7 +172,7 @@ void solver_split_relax(solver_wide_t *wide, solver_velocity_t *rows, bool backw
         solver_wide_relax(wide, rows, backward);
         return;
     }
-    colour_sweep_t s = {wide, SWEEP_RELAX, rows, NULL, NULL, 0, 0};
+    colour_sweep_t s = {.wide = wide, .sweep = SWEEP_RELAX, .rows = rows};
     sweep_colours(&s, backward);
 }
 
@@ -159,6 +182,6 @@ void solver_split_correct_positions(solver_wide_t *wide, solver_displacement_t *
         solver_wide_correct_positions(wide, displacements, backward);
         return;
     }
-    colour_sweep_t s = {wide, SWEEP_CORRECT, NULL, displacements, NULL, 0, 0};
+    colour_sweep_t s = {.wide = wide, .sweep = SWEEP_CORRECT, .displacements = displacements};
     sweep_colours(&s, backward);
 }

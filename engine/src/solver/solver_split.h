@@ -14,10 +14,13 @@
 #include <stdbool.h>
 #include "solver/solver_wide.h"
 
-/* solver_wide_arrange, then every batch packed (and, split, its fixed
- * lanes marked). */
-void solver_split_load(solver_wide_t *wide, const solver_contact_t *contacts, size_t count,
-                       const solver_velocity_t *rows, size_t body_count);
+/* Prepares the step's contacts (anchors[i] are contact i's):
+ * solver_wide_arrange, then every batch prepared (and, split, its fixed
+ * lanes marked), and the loose contacts one at a time
+ * (solver_prepare_contact). Returns what they hold. */
+prepared_t solver_split_prepare(solver_wide_t *wide, solver_contact_t *contacts,
+                                const solver_anchor_t *anchors, size_t count,
+                                const solver_bodies_t *bodies, const solver_settings_t *settings);
 /* solver_wide_store_range over every batch. */
 void solver_split_store(const solver_wide_t *wide, solver_contact_t *contacts);
 

@@ -176,6 +176,13 @@ typedef struct {
     stage_clock_t *clock;
 } solver_settings_t;
 
+/* What preparing contacts found: an impact within the step, an elastic
+ * contact, a touching point whose target was raised above 0 (a resting
+ * approach, velocity_solve.c). */
+typedef struct {
+    bool impact, elastic, raised;
+} prepared_t;
+
 /* Below solver_settings_t's restitution_threshold (m/s) contacts are
  * inelastic (scene_set_restitution_threshold). This one replaces it for an
  * elastic pair of bodies that nothing accelerates (no gravity, no force on

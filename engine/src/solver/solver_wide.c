@@ -14,15 +14,6 @@ typedef struct {
     lane_t inverse_mass, inverse_inertia;
 } lane_body_t;
 
-/* yes where condition holds, no elsewhere; and scalar.h's max_of and
- * min_of, lane by lane. Macros, not functions: a vector passed by value
- * goes through memory on the baseline instruction set. Arguments must be
- * free of side effects. */
-#define select_lane(condition, yes, no) \
-    ((lane_t)(((mask_t)(yes) & (condition)) | ((mask_t)(no) & ~(condition))))
-#define max_lane(a, b) select_lane((mask_t)((a) > (b)), (a), (b))
-#define min_lane(a, b) select_lane((mask_t)((a) < (b)), (a), (b))
-
 /* Rows of `stride` bytes at rows + index[l] * stride begin with four
  * doubles; each row's four are one vector load, and four rows transposed
  * give each double's four lanes. */

@@ -4,9 +4,9 @@
 /*
  * Warm starting, the velocity iterations and the position iterations, four
  * contacts at a time. Contacts of one colour (coloring.h) share no movable
- * body, so four of them are packed lane by lane into a batch,
+ * body, so four of them are prepared lane by lane into a batch,
  * structure-of-arrays, and solved with vector arithmetic: the same
- * friction, two-point block, one-point and position solves as
+ * preparing, friction, two-point block, one-point and position solves as
  * velocity_solve.c and position_pass.c, in the same order within a contact
  * and with the same rounding (no fused multiply-add), so a contact gets the
  * answer they would give it at its place in the order. The order across contacts is by colour.
@@ -73,15 +73,23 @@ struct solver_wide {
 
 void solver_wide_free(solver_wide_t *wide);
 
-/* Colours the contacts and places each colour's groups, ready to be packed
- * into batches (solver_wide_pack_all, or solver_wide_pack by ranges). The
- * contacts must be prepared (velocity_solve.h). */
-void solver_wide_arrange(solver_wide_t *wide, const solver_contact_t *contacts, size_t count,
+/* Colours the contacts, decides each one's kind (which sets its block
+ * field: solver_contact_blocks) and places each colour's groups, ready to
+ * be prepared into batches (solver_wide_prepare); anchors[i] are contact
+ * i's. */
+void solver_wide_arrange(solver_wide_t *wide, solver_contact_t *contacts,
+                         const solver_anchor_t *anchors, size_t count,
                          const solver_velocity_t *rows, size_t body_count);
 
-/* Packs every batch with its contacts' current accumulated impulses. */
-void solver_wide_pack_all(solver_wide_t *wide, const solver_contact_t *contacts,
-                          const solver_velocity_t *rows);
+/* Prepares batches [begin, end) of the contacts solver_wide_arrange
+ * placed, as solver_prepare_contact prepares one contact, with their
+ * current accumulated impulses, and writes what preparing found back to
+ * the contacts too; returns what they hold. Each batch
+ * writes only its own contacts and lanes: ranges may run on several
+ * threads. */
+prepared_t solver_wide_prepare(solver_wide_t *wide, solver_contact_t *contacts,
+                               const solver_anchor_t *anchors, const solver_bodies_t *bodies,
+                               const solver_settings_t *settings, size_t begin, size_t end);
 
 /* The sweeps below run on the calling thread; solver_split.h runs them
  * over the workers when there are some. */
@@ -147,13 +155,8 @@ bool solver_wide_link_loaded(const solver_wide_t *wide, uint32_t *first, solver_
 void solver_wide_impulses(const solver_wide_t *wide, solver_slot_t slot, int point_count,
                           double normal[2], double tangent[2]);
 
-/* Packs batches [begin, end) of the contacts solver_wide_arrange coloured
- * and placed, for solver_split.c. */
-void solver_wide_pack(solver_wide_t *wide, const solver_contact_t *contacts,
-                      const solver_velocity_t *rows, size_t begin, size_t end);
-
 /* Marks in batches [begin, end) the lanes whose bodies cannot move, which
- * the ranges below must not write: solver_split.c does it after packing. */
+ * the ranges below must not write: solver_split.c does it after preparing. */
 void solver_wide_mark_fixed(solver_wide_t *wide, const solver_velocity_t *rows, size_t begin,
                             size_t end);
 

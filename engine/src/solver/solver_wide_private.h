@@ -2,12 +2,13 @@
 #define SOLVER_WIDE_PRIVATE_H
 
 /*
- * The colour batches' layout (solver_wide.h), shared by the packing
- * (solver_wide_pack.c) and the sweeps (solver_wide.c): up to four contacts
- * of one colour and kind lane by lane, their points and block matrices in
- * arrays of their own, and where each group's batches, points and blocks
- * begin; and the lane vectors both build on (rows of four doubles loaded
- * as one vector and transposed into columns).
+ * The colour batches' layout (solver_wide.h), shared by their arranging
+ * (solver_wide_arrange.c), preparing (solver_wide_prepare.c) and sweeps
+ * (solver_wide.c): up to four contacts of one colour and kind lane by
+ * lane, their points and block matrices in arrays of their own, and where
+ * each group's batches, points and blocks begin; and the lane vectors they
+ * build on (rows of four doubles loaded as one vector and transposed into
+ * columns).
  */
 
 #include <stddef.h>
@@ -17,7 +18,7 @@
 
 enum { LANES = 4 };
 
-/* The kernels of the sweeps and the packing must be inlined into each
+/* The kernels of the sweeps and of preparing must be inlined into each
  * clone of the exported functions to be compiled for its instruction set;
  * GCC otherwise keeps the larger ones out of line, as baseline code. */
 #define LANE_INLINE static inline __attribute__((always_inline))
@@ -56,6 +57,15 @@ typedef int64_t mask_t __attribute__((vector_size(LANES * sizeof(int64_t)), alig
 #else
 #define shuffle_lanes(a, b, i, j, k, l) __builtin_shuffle((a), (b), (mask_t){i, j, k, l})
 #endif
+
+/* yes where condition holds, no elsewhere; and scalar.h's max_of and
+ * min_of, lane by lane. Macros, not functions: a vector passed by value
+ * goes through memory on the baseline instruction set. Arguments must be
+ * free of side effects. */
+#define select_lane(condition, yes, no) \
+    ((lane_t)(((mask_t)(yes) & (condition)) | ((mask_t)(no) & ~(condition))))
+#define max_lane(a, b) select_lane((mask_t)((a) > (b)), (a), (b))
+#define min_lane(a, b) select_lane((mask_t)((a) < (b)), (a), (b))
 
 /* Four vectors of four doubles, as rows or as columns. */
 typedef struct {

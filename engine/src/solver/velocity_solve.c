@@ -1,6 +1,5 @@
 #include "solver/velocity_solve.h"
 #include <math.h>
-#include "base/prefetch.h"
 #include "base/scalar.h"
 #include "solver/contact_point.h"
 #include "solver/resting.h"
@@ -158,10 +157,25 @@ static void same_impact_moment(solver_contact_t *c, double dt) {
     p1->impact_offset = p2->impact_offset = first;
 }
 
-/* Returns whether a point of c has an impact within the step. Inlined into
- * its loop, as it was before the loop could run on workers too (called,
- * pile(1000) ran 2% more instructions). */
-static inline __attribute__((always_inline)) bool prepare(solver_contact_t *c, const solver_anchor_t *anchor,
+bool solver_contact_blocks(const solver_contact_t *c, const solver_anchor_t *anchor,
+                          const solver_velocity_t *a, const solver_velocity_t *b) {
+    if (c->point_count != 2) return false;
+    double ma = a->inverse_mass, mb = b->inverse_mass;
+    double ia = a->inverse_inertia, ib = b->inverse_inertia;
+    /* prepare's lever terms and solver_contact_k's K: the same bits. */
+    vector_t n = c->normal;
+    double rn_a1 = vec_cross(anchor->r_a[0], n), rn_b1 = vec_cross(anchor->r_b[0], n);
+    double rn_a2 = vec_cross(anchor->r_a[1], n), rn_b2 = vec_cross(anchor->r_b[1], n);
+    double k11 = ma + mb + ia * rn_a1 * rn_a1 + ib * rn_b1 * rn_b1;
+    double k12 = ma + mb + ia * rn_a1 * rn_a2 + ib * rn_b1 * rn_b2;
+    double k22 = ma + mb + ia * rn_a2 * rn_a2 + ib * rn_b2 * rn_b2;
+    double det = k11 * k22 - k12 * k12;
+    double condition = c->edge_ends ? MAX_EDGE_CONDITION_NUMBER : MAX_CONDITION_NUMBER;
+    return k11 * k11 < condition * det;
+}
+
+/* Returns whether a point of c has an impact within the step. */
+static bool prepare(solver_contact_t *c, const solver_anchor_t *anchor,
                     const solver_velocity_t *velocities, const solver_state_t *states,
                     const solver_settings_t *s, bool *raised) {
     const solver_velocity_t *a = &velocities[c->a], *b = &velocities[c->b];
@@ -185,18 +199,12 @@ static inline __attribute__((always_inline)) bool prepare(solver_contact_t *c, c
     if (c->point_count == 2) same_impact_moment(c, s->dt);
     c->impact = impact;
     c->rests = resting_of(c, states[c->a].acceleration, states[c->b].acceleration);
-    c->block = false;
-    if (c->point_count == 2) {
+    if (c->block) {
         solver_block_k_t k = solver_contact_k(c, a, b);
-        double det = k.k11 * k.k22 - k.k12 * k.k12;
-        double condition = c->edge_ends ? MAX_EDGE_CONDITION_NUMBER : MAX_CONDITION_NUMBER;
-        if (k.k11 * k.k11 < condition * det) {
-            c->block = true;
-            double inv = 1.0 / det;
-            c->m11 = inv * k.k22;
-            c->m12 = -inv * k.k12;
-            c->m22 = inv * k.k11;
-        }
+        double inv = 1.0 / (k.k11 * k.k22 - k.k12 * k.k12);
+        c->m11 = inv * k.k22;
+        c->m12 = -inv * k.k12;
+        c->m22 = inv * k.k11;
     }
     return impact;
 }
@@ -301,36 +309,8 @@ void solver_relax_velocity(solver_contact_t *c, solver_velocity_t *velocities) {
     velocities[c->b] = b;
 }
 
-/* How many contacts ahead preparing asks for body b's rows: the contacts
- * come grouped by body a, so b is anywhere in the rows. And the contact and
- * its anchor, which the narrowphase wrote long enough ago to have left the
- * cache in a large pile: read in order but five lines apart, they were a
- * sixth of preparing's time waiting (pile(4000)). */
-enum { PREPARE_AHEAD = 4 };
-#define PREFETCH_PREPARED(contacts, anchors, at)                             \
-    do {                                                                     \
-        PREFETCH_SPAN(&(contacts)[at], sizeof(solver_contact_t), 1);         \
-        PREFETCH_SPAN(&(anchors)[at], sizeof(solver_anchor_t), 0);           \
-    } while (0)
-
-prepared_t solver_prepare_range(solver_contact_t *contacts, const solver_anchor_t *anchors,
-                                const solver_bodies_t *bodies, const solver_settings_t *settings,
-                                size_t begin, size_t end) {
-    prepared_t found = {false, false, false};
-    for (size_t i = begin; i < end; i++) {
-        if (i + PREPARE_AHEAD < end) {
-            const solver_contact_t *ahead = &contacts[i + PREPARE_AHEAD];
-            __builtin_prefetch(&bodies->states[ahead->b]);
-            __builtin_prefetch((const char *)&bodies->states[ahead->b] + 64);
-            __builtin_prefetch(&bodies->velocities[ahead->b]);
-        }
-        if (i + 2 * PREPARE_AHEAD < end) {
-            PREFETCH_PREPARED(contacts, anchors, i + 2 * PREPARE_AHEAD);
-        }
-        solver_contact_t *c = &contacts[i];
-        found.impact |= prepare(c, &anchors[i], bodies->velocities, bodies->states, settings,
-                                &found.raised);
-        found.elastic |= c->restitution > 0.0;
-    }
-    return found;
+bool solver_prepare_contact(solver_contact_t *c, const solver_anchor_t *anchor,
+                            const solver_bodies_t *bodies, const solver_settings_t *settings,
+                            bool *raised) {
+    return prepare(c, anchor, bodies->velocities, bodies->states, settings, raised);
 }

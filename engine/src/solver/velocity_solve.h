@@ -28,19 +28,23 @@ double solver_time_of_impact(double s, double v, double a, double dt);
 double solver_bounce_threshold(double restitution, const solver_state_t *sa,
                                const solver_state_t *sb, double threshold);
 
-/* What preparing contacts found: an impact within the step, an elastic
- * contact, a touching point whose target was raised above 0 (a resting
- * approach, velocity_solve.c). */
-typedef struct {
-    bool impact, elastic, raised;
-} prepared_t;
+/* Whether contact c, with these anchors between bodies with rows a and b,
+ * is solved by the block solve: two points whose 2x2 normal
+ * effective-mass matrix is well conditioned. Decided when the contacts
+ * are arranged into batches (solver_wide_arrange), since a batch holds one
+ * kind, before they are prepared. */
+bool solver_contact_blocks(const solver_contact_t *c, const solver_anchor_t *anchor,
+                           const solver_velocity_t *a, const solver_velocity_t *b);
 
-/* Prepares contacts [begin, end) for the step (their anchors are anchors[i]
- * of contact i); returns what they hold. Each contact writes only itself:
- * ranges may run on several threads. */
-prepared_t solver_prepare_range(solver_contact_t *contacts, const solver_anchor_t *anchors,
-                                const solver_bodies_t *bodies, const solver_settings_t *settings,
-                                size_t begin, size_t end);
+/* Prepares contact c (anchors `anchor`, block decided) for the step: lever
+ * terms, effective masses, targets, impacts within the step, which body
+ * rests on which, and a block contact's inverse matrix. Returns whether a
+ * point has an impact within the step; sets *raised when a touching
+ * point's target was raised. Writes only c. The batches prepare their
+ * contacts four at a time (solver_wide_prepare) with the same bits. */
+bool solver_prepare_contact(solver_contact_t *c, const solver_anchor_t *anchor,
+                            const solver_bodies_t *bodies, const solver_settings_t *settings,
+                            bool *raised);
 
 /* Applies prepared contact c's accumulated impulses to its bodies' rows. */
 void solver_warm_start(const solver_contact_t *c, solver_velocity_t *velocities);
