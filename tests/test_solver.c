@@ -105,7 +105,8 @@ static const double DT = 1.0 / 60.0;
 
 /* Prepares contacts [0, count) (anchors[i] are contact i's) into wide's
  * batches as the solver does, from bodies at rest at the start of the
- * step (no start velocity, drift or pull) and a position weight of 1: a
+ * step (no start velocity, drift or pull) and a position weight of 1,
+ * each contact's kind decided as the narrowphase decides it: a
  * touching point's target is then 0, and that of a point apart by s,
  * -s / DT. The rows' velocities are where the iterations start. */
 static prepared_t prepare_contacts(solver_wide_t *wide, solver_contact_t *contacts,
@@ -116,6 +117,10 @@ static prepared_t prepare_contacts(solver_wide_t *wide, solver_contact_t *contac
     static solver_displacement_t displacements[MOST];
     CHECK(body_count <= MOST);
     memset(states, 0, sizeof states);
+    for (size_t i = 0; i < count; i++) {
+        solver_contact_t *c = &contacts[i];
+        c->block = solver_contact_blocks(c, &anchors[i], &rows[c->a], &rows[c->b]);
+    }
     solver_bodies_t bodies = {rows, displacements, states, body_count};
     solver_settings_t settings = {.dt = DT,
                                   .position_weight = 1.0,
@@ -497,6 +502,10 @@ static void batches_prepare_as_one_contact_alone(void) {
             c->points[k].tangent_impulse = 0.2 * lcg_uniform() - 0.1;
         }
     }
+    for (int i = 0; i < CONTACTS; i++) {
+        solver_contact_t *c = &contacts[i];
+        c->block = solver_contact_blocks(c, &anchors[i], &rows[c->a], &rows[c->b]);
+    }
     memcpy(alone, contacts, sizeof contacts);
     solver_bodies_t bodies = {rows, displacements, states, BODIES};
     solver_settings_t settings = {.dt = DT, .position_weight = 0.5, .velocity_iterations = 8,
@@ -509,7 +518,6 @@ static void batches_prepare_as_one_contact_alone(void) {
     int impacts = 0, raised = 0, blocks = 0;
     for (int i = 0; i < CONTACTS; i++) {
         solver_contact_t *c = &alone[i];
-        c->block = solver_contact_blocks(c, &anchors[i], &rows[c->a], &rows[c->b]);
         bool point_raised = false;
         expected.impact |=
             solver_prepare_contact(c, &anchors[i], &bodies, &settings, &point_raised);

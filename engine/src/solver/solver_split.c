@@ -7,7 +7,6 @@
 static const size_t SPLIT_MIN_BATCHES = 16;
 
 typedef enum {
-    SWEEP_PREPARE,
     SWEEP_STORE,
     SWEEP_WARM,
     SWEEP_ITERATE,
@@ -20,28 +19,12 @@ typedef struct {
     sweep_t sweep;
     solver_velocity_t *rows;
     solver_displacement_t *displacements;
-    solver_contact_t *contacts; /* preparing and storing write them */
+    solver_contact_t *contacts; /* storing writes them */
     int first_group, end_group; /* the groups swept (solver_wide.h) */
-    /* Preparing's inputs, and what each chunk found. */
-    const solver_anchor_t *anchors;
-    const solver_bodies_t *bodies;
-    const solver_settings_t *settings;
-    prepared_t found[WORKERS_MAX_CHUNKS];
 } colour_sweep_t;
 
-static void join(prepared_t *found, prepared_t more) {
-    found->impact |= more.impact;
-    found->elastic |= more.elastic;
-    found->raised |= more.raised;
-}
-
-static void sweep_range(colour_sweep_t *s, size_t chunk, size_t begin, size_t end) {
+static void sweep_range(const colour_sweep_t *s, size_t begin, size_t end) {
     switch (s->sweep) {
-    case SWEEP_PREPARE:
-        join(&s->found[chunk], solver_wide_prepare(s->wide, s->contacts, s->anchors, s->bodies,
-                                                   s->settings, begin, end));
-        solver_wide_mark_fixed(s->wide, s->bodies->velocities, begin, end);
-        break;
     case SWEEP_STORE:
         solver_wide_store_range(s->wide, s->contacts, begin, end);
         break;
@@ -69,13 +52,13 @@ static void sweep_range(colour_sweep_t *s, size_t chunk, size_t begin, size_t en
  * each row crossed between the cores at each colour: two workers' sweeps
  * took 1.9 times one worker's CPU time (pile(10000)). */
 static void sweep_chunk(void *context, size_t chunk, size_t begin, size_t end) {
-    colour_sweep_t *s = context;
+    const colour_sweep_t *s = context;
     const uint32_t *group_batch = s->wide->group_batch;
     size_t total = group_batch[s->end_group] - group_batch[s->first_group];
+    (void)chunk;
     for (int g = s->first_group; g < s->end_group; g++) {
         size_t size = group_batch[g + 1] - group_batch[g];
-        sweep_range(s, chunk, group_batch[g] + begin * size / total,
-                    group_batch[g] + end * size / total);
+        sweep_range(s, group_batch[g] + begin * size / total, group_batch[g] + end * size / total);
     }
 }
 
@@ -83,7 +66,7 @@ static void sweep_groups(colour_sweep_t *s, int first_group, int end_group) {
     const solver_wide_t *wide = s->wide;
     size_t begin = wide->group_batch[first_group], end = wide->group_batch[end_group];
     if (end - begin < SPLIT_MIN_BATCHES) {
-        sweep_range(s, 0, begin, end);
+        sweep_range(s, begin, end);
         return;
     }
     s->first_group = first_group;
@@ -111,15 +94,39 @@ static void sweep_colours(colour_sweep_t *s, bool backward) {
     sweep_forward(s);
 }
 
-/* Over every batch at once: preparing and storing write no body row. */
+/* Over every batch at once: storing writes no body row. */
 static void sweep_all(colour_sweep_t *s) {
     sweep_groups(s, 0, SOLVER_WIDE_GROUPS);
+}
+
+/* Preparing the batches over the workers: chunks of the visits, each
+ * batch writing only its own lanes and contacts; what each chunk found is
+ * joined after. */
+typedef struct {
+    solver_wide_t *wide;
+    solver_contact_t *contacts;
+    const solver_anchor_t *anchors;
+    const solver_bodies_t *bodies;
+    const solver_settings_t *settings;
+    prepared_t found[WORKERS_MAX_CHUNKS];
+} prepare_split_t;
+
+static void join(prepared_t *found, prepared_t more) {
+    found->impact |= more.impact;
+    found->elastic |= more.elastic;
+    found->raised |= more.raised;
+}
+
+static void prepare_chunk(void *context, size_t chunk, size_t begin, size_t end) {
+    prepare_split_t *p = context;
+    p->found[chunk] =
+        solver_wide_prepare(p->wide, p->contacts, p->anchors, p->bodies, p->settings, begin, end);
 }
 
 prepared_t solver_split_prepare(solver_wide_t *wide, solver_contact_t *contacts,
                                 const solver_anchor_t *anchors, size_t count,
                                 const solver_bodies_t *bodies, const solver_settings_t *settings) {
-    solver_wide_arrange(wide, contacts, anchors, count, bodies->velocities, bodies->body_count);
+    solver_wide_arrange(wide, contacts, count, bodies->velocities, bodies->body_count);
     prepared_t found = {false, false, false};
     for (size_t k = 0; k < wide->loose_count; k++) {
         uint32_t i = wide->loose[k];
@@ -127,15 +134,16 @@ prepared_t solver_split_prepare(solver_wide_t *wide, solver_contact_t *contacts,
                                                &found.raised);
         found.elastic |= contacts[i].restitution > 0.0;
     }
-    if (wide->workers == NULL) {
+    if (wide->workers == NULL || wide->batch_count < SPLIT_MIN_BATCHES) {
         join(&found, solver_wide_prepare(wide, contacts, anchors, bodies, settings, 0,
                                          wide->batch_count));
         return found;
     }
-    colour_sweep_t s = {.wide = wide, .sweep = SWEEP_PREPARE, .contacts = contacts,
-                        .anchors = anchors, .bodies = bodies, .settings = settings};
-    sweep_all(&s);
-    for (size_t k = 0; k < WORKERS_MAX_CHUNKS; k++) join(&found, s.found[k]);
+    prepare_split_t split = {wide, contacts, anchors, bodies, settings, {{false, false, false}}};
+    workers_for(wide->workers, wide->batch_count, prepare_chunk, &split);
+    for (size_t k = 0; k < workers_chunks(wide->workers, wide->batch_count); k++) {
+        join(&found, split.found[k]);
+    }
     return found;
 }
 

@@ -15,9 +15,9 @@
 #include "solver/solver_wide.h"
 
 /* Prepares the step's contacts (anchors[i] are contact i's):
- * solver_wide_arrange, then every batch prepared (and, split, its fixed
- * lanes marked), and the loose contacts one at a time
- * (solver_prepare_contact). Returns what they hold. */
+ * solver_wide_arrange, then every batch prepared, and the loose contacts
+ * one at a time (solver_prepare_contact). The contacts' block fields must
+ * be decided (solver_contact_blocks). Returns what they hold. */
 prepared_t solver_split_prepare(solver_wide_t *wide, solver_contact_t *contacts,
                                 const solver_anchor_t *anchors, size_t count,
                                 const solver_bodies_t *bodies, const solver_settings_t *settings);

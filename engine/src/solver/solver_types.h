@@ -105,7 +105,7 @@ typedef struct {
 typedef struct {
     uint32_t a, b;           /* body rows */
     int point_count;
-    bool block;
+    bool block; /* decided with the geometry: solver_contact_blocks */
     /* The two points are an incident edge's own ends (manifold_features_t),
      * so the block solve may take a worse condition (velocity_solve.c). */
     bool edge_ends;

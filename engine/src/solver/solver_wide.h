@@ -59,6 +59,12 @@ struct solver_wide {
     size_t block_count, block_capacity;
     uint32_t *loose;
     size_t loose_count, loose_capacity;
+    /* The batches (and their groups) in the order preparing visits them:
+     * by their first contact's place in the contact buffer, so that it
+     * walks the buffer forward once rather than once per group. */
+    uint32_t *visits;
+    uint8_t *visit_groups;
+    size_t visit_capacity, visit_group_capacity;
     /* Where each group's contacts (in order), batches, points and blocks
      * begin (and the end); a colour's batches are those of its
      * SOLVER_WIDE_KINDS groups. */
@@ -73,20 +79,19 @@ struct solver_wide {
 
 void solver_wide_free(solver_wide_t *wide);
 
-/* Colours the contacts, decides each one's kind (which sets its block
- * field: solver_contact_blocks) and places each colour's groups, ready to
- * be prepared into batches (solver_wide_prepare); anchors[i] are contact
- * i's. */
-void solver_wide_arrange(solver_wide_t *wide, solver_contact_t *contacts,
-                         const solver_anchor_t *anchors, size_t count,
+/* Colours the contacts and places each colour's groups of each kind (the
+ * contacts' block fields decided: solver_contact_blocks), ready to be
+ * prepared into batches (solver_wide_prepare). */
+void solver_wide_arrange(solver_wide_t *wide, const solver_contact_t *contacts, size_t count,
                          const solver_velocity_t *rows, size_t body_count);
 
-/* Prepares batches [begin, end) of the contacts solver_wide_arrange
- * placed, as solver_prepare_contact prepares one contact, with their
- * current accumulated impulses, and writes what preparing found back to
- * the contacts too; returns what they hold. Each batch
- * writes only its own contacts and lanes: ranges may run on several
- * threads. */
+/* Prepares the batches visits[begin .. end) of the contacts
+ * solver_wide_arrange placed, as solver_prepare_contact prepares one
+ * contact, with their current accumulated impulses, and writes what
+ * preparing found back to the contacts too; marks the lanes whose bodies
+ * cannot move (solver_batch's fixed_a, fixed_b); returns what they hold.
+ * Each batch writes only its own contacts and lanes: ranges may run on
+ * several threads. */
 prepared_t solver_wide_prepare(solver_wide_t *wide, solver_contact_t *contacts,
                                const solver_anchor_t *anchors, const solver_bodies_t *bodies,
                                const solver_settings_t *settings, size_t begin, size_t end);
@@ -154,11 +159,6 @@ bool solver_wide_link_loaded(const solver_wide_t *wide, uint32_t *first, solver_
  * normal and tangent at each of its point_count points. */
 void solver_wide_impulses(const solver_wide_t *wide, solver_slot_t slot, int point_count,
                           double normal[2], double tangent[2]);
-
-/* Marks in batches [begin, end) the lanes whose bodies cannot move, which
- * the ranges below must not write: solver_split.c does it after preparing. */
-void solver_wide_mark_fixed(solver_wide_t *wide, const solver_velocity_t *rows, size_t begin,
-                            size_t end);
 
 /* The sweeps above over batches [begin, end) only, which must lie in one
  * colour, for solver_split.c: several threads may sweep ranges of one

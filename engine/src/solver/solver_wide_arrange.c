@@ -1,6 +1,6 @@
 /*
  * The colour batches arranged and read back (solver_wide.h): the contacts
- * coloured, given their kind and sorted by colour and kind, ready to be
+ * coloured and sorted by colour and kind, ready to be
  * prepared into the batches (solver_wide_prepare.c); their impulses stored
  * back to the contacts, or read for shock propagation.
  */
@@ -8,7 +8,6 @@
 #include <string.h>
 #include "base/memory.h"
 #include "solver/solver_wide_private.h"
-#include "solver/velocity_solve.h"
 
 static batch_kind_t kind_of(const solver_contact_t *c) {
     if (c->block) return BATCH_BLOCK;
@@ -21,26 +20,36 @@ enum { SORT_AHEAD = 16 };
 
 _Static_assert((int)GROUPS < (int)COLORING_NONE, "a group fits where its contact's colour was");
 
-/* Decides each contact's block solve (solver_contact_blocks), and orders
- * the contacts by colour, and within a colour by kind; the uncoloured go to
- * the loose list. Fills start (GROUPS + 1 entries) with the group
- * boundaries in wide->order. The first pass turns each colour into its
- * group, so that the second reads a byte per contact rather than the
- * contact. */
-static void sort_by_color(solver_wide_t *wide, solver_contact_t *contacts,
-                          const solver_anchor_t *anchors, size_t count,
-                          const solver_velocity_t *rows, uint32_t *start) {
+/* Where each group's batches, points and blocks begin, from where its
+ * contacts begin in wide->order (start, GROUPS + 1 entries). */
+static void place_groups(solver_wide_t *wide, const uint32_t *start) {
+    wide->group_batch[0] = wide->group_point[0] = wide->group_block[0] = 0;
+    for (int g = 0; g < GROUPS; g++) {
+        uint32_t batches = (start[g + 1] - start[g] + LANES - 1) / LANES;
+        batch_kind_t kind = (batch_kind_t)(g % BATCH_KINDS);
+        wide->group_batch[g + 1] = wide->group_batch[g] + batches;
+        wide->group_point[g + 1] = wide->group_point[g] + batches * (uint32_t)kind_points(kind);
+        wide->group_block[g + 1] = wide->group_block[g] + (kind == BATCH_BLOCK ? batches : 0);
+    }
+    wide->batch_count = wide->group_batch[GROUPS];
+    wide->point_count = wide->group_point[GROUPS];
+    wide->block_count = wide->group_block[GROUPS];
+}
+
+/* Orders the contacts by colour, and within a colour by kind; the
+ * uncoloured go to the loose list. Fills start (GROUPS + 1 entries) with the group
+ * boundaries in wide->order, places the groups' batches, and lists the
+ * batches in the order preparing visits them (wide->visits). The first
+ * pass turns each colour into its group, so that the second reads a byte
+ * per contact rather than the contact. */
+static void sort_by_color(solver_wide_t *wide, const solver_contact_t *contacts, size_t count,
+                          uint32_t *start) {
     memset(start, 0, (GROUPS + 1) * sizeof(uint32_t));
     wide->loose_count = 0;
     uint8_t *group = wide->colors;
     for (size_t i = 0; i < count; i++) {
         /* A record apart: waiting on them was most of this loop's time. */
-        if (i + SORT_AHEAD < count) {
-            __builtin_prefetch(&contacts[i + SORT_AHEAD]);
-            __builtin_prefetch(&anchors[i + SORT_AHEAD]);
-        }
-        solver_contact_t *c = &contacts[i];
-        c->block = solver_contact_blocks(c, &anchors[i], &rows[c->a], &rows[c->b]);
+        if (i + SORT_AHEAD < count) __builtin_prefetch(&contacts[i + SORT_AHEAD]);
         if (group[i] == COLORING_NONE) {
             wide->loose[wide->loose_count++] = (uint32_t)i;
             continue;
@@ -49,11 +58,18 @@ static void sort_by_color(solver_wide_t *wide, solver_contact_t *contacts,
         start[group[i] + 1]++;
     }
     for (int g = 0; g < GROUPS; g++) start[g + 1] += start[g];
+    place_groups(wide, start);
     uint32_t next[GROUPS];
     memcpy(next, start, sizeof next);
+    size_t visit = 0;
     for (size_t i = 0; i < count; i++) {
-        if (group[i] == COLORING_NONE) continue;
-        wide->order[next[group[i]]++] = (uint32_t)i;
+        int g = group[i];
+        if (g == COLORING_NONE) continue;
+        uint32_t at = next[g]++, in_group = at - start[g];
+        wide->order[at] = (uint32_t)i;
+        if (in_group % LANES != 0) continue;
+        wide->visits[visit] = wide->group_batch[g] + in_group / LANES;
+        wide->visit_groups[visit++] = (uint8_t)g;
     }
 }
 
@@ -72,46 +88,16 @@ static void reserve(solver_wide_t *wide, size_t count) {
     memory_reserve((void **)&wide->position_points, &wide->position_point_capacity, 2 * batches,
                    sizeof(solver_position_point_t));
     memory_reserve((void **)&wide->blocks, &wide->block_capacity, batches, sizeof(lane_block_t));
+    memory_reserve((void **)&wide->visits, &wide->visit_capacity, batches, sizeof(uint32_t));
+    memory_reserve((void **)&wide->visit_groups, &wide->visit_group_capacity, batches,
+                   sizeof(uint8_t));
 }
 
-/* Where each group's batches, points and blocks begin, from where its
- * contacts begin in wide->order (start, GROUPS + 1 entries). */
-static void place_groups(solver_wide_t *wide, const uint32_t *start) {
-    wide->group_batch[0] = wide->group_point[0] = wide->group_block[0] = 0;
-    for (int g = 0; g < GROUPS; g++) {
-        uint32_t batches = (start[g + 1] - start[g] + LANES - 1) / LANES;
-        batch_kind_t kind = (batch_kind_t)(g % BATCH_KINDS);
-        wide->group_batch[g + 1] = wide->group_batch[g] + batches;
-        wide->group_point[g + 1] = wide->group_point[g] + batches * (uint32_t)kind_points(kind);
-        wide->group_block[g + 1] = wide->group_block[g] + (kind == BATCH_BLOCK ? batches : 0);
-    }
-    wide->batch_count = wide->group_batch[GROUPS];
-    wide->point_count = wide->group_point[GROUPS];
-    wide->block_count = wide->group_block[GROUPS];
-}
-
-void solver_wide_arrange(solver_wide_t *wide, solver_contact_t *contacts,
-                         const solver_anchor_t *anchors, size_t count,
+void solver_wide_arrange(solver_wide_t *wide, const solver_contact_t *contacts, size_t count,
                          const solver_velocity_t *rows, size_t body_count) {
     reserve(wide, count);
     coloring_assign(&wide->coloring, contacts, count, rows, body_count, wide->colors);
-    uint32_t *start = wide->group_start;
-    sort_by_color(wide, contacts, anchors, count, rows, start);
-    place_groups(wide, start);
-}
-
-void solver_wide_mark_fixed(solver_wide_t *wide, const solver_velocity_t *rows, size_t begin,
-                            size_t end) {
-    for (size_t i = begin; i < end; i++) {
-        solver_batch_t *batch = &wide->batches[i];
-        uint8_t fixed_a = 0, fixed_b = 0;
-        for (int l = 0; l < batch->lanes; l++) {
-            fixed_a |= (uint8_t)(solver_row_is_static(&rows[batch->a[l]]) << l);
-            fixed_b |= (uint8_t)(solver_row_is_static(&rows[batch->b[l]]) << l);
-        }
-        batch->fixed_a = wide->position_batches[i].fixed_a = fixed_a;
-        batch->fixed_b = wide->position_batches[i].fixed_b = fixed_b;
-    }
+    sort_by_color(wide, contacts, count, wide->group_start);
 }
 
 void solver_wide_store_range(const solver_wide_t *wide, solver_contact_t *contacts, size_t begin,
@@ -187,5 +173,7 @@ void solver_wide_free(solver_wide_t *wide) {
     memory_free(wide->position_points);
     memory_free(wide->blocks);
     memory_free(wide->loose);
+    memory_free(wide->visits);
+    memory_free(wide->visit_groups);
     memset(wide, 0, sizeof *wide);
 }

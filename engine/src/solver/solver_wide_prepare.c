@@ -10,16 +10,19 @@
  * change in the lanes.
  */
 #include <math.h>
+#include <stddef.h>
 #include "base/prefetch.h"
 #include "solver/resting.h"
 #include "solver/solver_wide.h"
 #include "solver/solver_wide_private.h"
 #include "solver/velocity_solve.h"
 
-/* An empty lane's inputs: all zeros, body row 0. */
+/* An empty lane's inputs: all zeros, body row 0 (whose row it does not
+ * read). */
 static const solver_contact_t NO_CONTACT;
 static const solver_anchor_t NO_ANCHOR;
 static const solver_state_t NO_STATE;
+static const solver_velocity_t NO_ROW;
 
 /* The inputs gathered four doubles at a time: a contact's normal,
  * friction, restitution, then slop and the block inverse; a point's
@@ -187,32 +190,68 @@ LANE_INLINE void rests_lanes(solver_contact_t *const c[LANES], int count, lane_v
     }
 }
 
-/* How many contacts ahead of the one being prepared are asked for: the
- * colours' order scatters the reads over the contact buffer, which a pile
- * of 4000 bodies holds more of than the cache. Their bodies' rows are
- * asked for half as far ahead, when the contact's own first line has
- * come. */
-enum { PREPARE_AHEAD = 4 * LANES };
+/* How many batches ahead of the one being prepared its contacts and
+ * anchors are asked for; their bodies' rows half as far ahead, when the
+ * contact's own first line has come. The visits walk the contact buffer
+ * forward, but a batch's contacts lie a group's stride apart. */
+enum { PREPARE_AHEAD = 4 };
 
-/* A macro: GCC deems a function of prefetches alone const and drops its
- * calls. */
-#define PREFETCH_INPUTS(contacts, anchors, bodies, order, from, total)                      \
+/* Where visit k's batch begins in wide->order, and how many contacts it
+ * has. */
+static inline uint32_t visit_first(const solver_wide_t *wide, size_t k, int *count) {
+    size_t g = wide->visit_groups[k];
+    uint32_t first = wide->group_start[g] + (wide->visits[k] - wide->group_batch[g]) * LANES;
+    uint32_t left = wide->group_start[g + 1] - first;
+    *count = (int)(left < LANES ? left : LANES);
+    return first;
+}
+
+/* A contact's five lines (the buffer is aligned to a line), its anchor's
+ * one; a body's velocity row and the start of its state row, up to its
+ * pull. A macro: GCC deems a function of prefetches alone const and drops
+ * its calls. */
+#define PREFETCH_CONTACT(c, anchor)                                                         \
     do {                                                                                    \
-        size_t end_ = (from) + LANES < (total) ? (from) + LANES : (total);                  \
-        for (size_t k_ = (from); k_ < end_; k_++) {                                         \
-            PREFETCH_SPAN(&(contacts)[(order)[k_]], sizeof(solver_contact_t), 1);          \
-            __builtin_prefetch(&(anchors)[(order)[k_]]);                                    \
+        const char *line_ = (const char *)(c);                                              \
+        __builtin_prefetch(line_, 1);                                                       \
+        __builtin_prefetch(line_ + PREFETCH_LINE, 1);                                       \
+        __builtin_prefetch(line_ + 2 * PREFETCH_LINE, 1);                                   \
+        __builtin_prefetch(line_ + 3 * PREFETCH_LINE, 1);                                   \
+        __builtin_prefetch(line_ + 4 * PREFETCH_LINE, 1);                                   \
+        __builtin_prefetch(anchor);                                                         \
+    } while (0)
+#define PREFETCH_BODY(bodies, row)                                                          \
+    do {                                                                                    \
+        __builtin_prefetch(&(bodies)->velocities[row]);                                     \
+        const char *state_ = (const char *)&(bodies)->states[row];                          \
+        __builtin_prefetch(state_);                                                         \
+        __builtin_prefetch(state_ + offsetof(solver_state_t, acceleration) + 8);            \
+    } while (0)
+_Static_assert(sizeof(solver_contact_t) == 5 * PREFETCH_LINE, "a contact fills five lines");
+#define PREFETCH_INPUTS(wide, contacts, anchors, bodies, k, end)                            \
+    do {                                                                                    \
+        int n_;                                                                             \
+        if ((k) + PREPARE_AHEAD < (end)) {                                                  \
+            uint32_t first_ = visit_first(wide, (k) + PREPARE_AHEAD, &n_);                  \
+            for (int l_ = 0; l_ < n_; l_++) {                                               \
+                uint32_t i_ = (wide)->order[first_ + (uint32_t)l_];                         \
+                PREFETCH_CONTACT(&(contacts)[i_], &(anchors)[i_]);                          \
+            }                                                                               \
         }                                                                                   \
-        size_t near_ = (from) - PREPARE_AHEAD / 2;                                          \
-        end_ = near_ + LANES < (total) ? near_ + LANES : (total);                           \
-        for (size_t k_ = near_; k_ < end_; k_++) {                                          \
-            const solver_contact_t *c_ = &(contacts)[(order)[k_]];                          \
-            __builtin_prefetch(&(bodies)->velocities[c_->a]);                               \
-            __builtin_prefetch(&(bodies)->velocities[c_->b]);                               \
-            PREFETCH_SPAN(&(bodies)->states[c_->a].v_start, 88, 0);                         \
-            PREFETCH_SPAN(&(bodies)->states[c_->b].v_start, 88, 0);                         \
+        if ((k) + PREPARE_AHEAD / 2 < (end)) {                                              \
+            uint32_t first_ = visit_first(wide, (k) + PREPARE_AHEAD / 2, &n_);              \
+            for (int l_ = 0; l_ < n_; l_++) {                                               \
+                const solver_contact_t *c_ = &(contacts)[(wide)->order[first_ + (uint32_t)l_]]; \
+                PREFETCH_BODY(bodies, c_->a);                                               \
+                PREFETCH_BODY(bodies, c_->b);                                               \
+            }                                                                               \
         }                                                                                   \
     } while (0)
+
+/* A lane's position rate: 0 when empty. */
+static inline double rate_of(const solver_velocity_t *a, const solver_velocity_t *b, bool live) {
+    return live ? solver_position_rate(a, b) : 0.0;
+}
 
 /* A batch's fixed part: bodies, normal, friction, masses, rate, slop; and
  * the lanes' inverse masses into a and b, their normal, friction and
@@ -226,19 +265,30 @@ LANE_INLINE void fill_batch(solver_wide_t *wide, size_t index, solver_contact_t 
     batch->lanes = position->lanes = (uint8_t)count;
     batch->kind = position->kind = (uint8_t)kind;
     position->point_count = (uint8_t)kind_points(kind);
-    lane_t ma = {0.0}, mb = {0.0}, ia = {0.0}, ib = {0.0}, rate = {0.0};
+    const solver_velocity_t *row_a[LANES], *row_b[LANES];
+    unsigned fixed_a = 0, fixed_b = 0;
     for (int l = 0; l < LANES; l++) {
         batch->a[l] = position->a[l] = c[l]->a;
         batch->b[l] = position->b[l] = c[l]->b;
         batch->contact[l] = l < count ? order[l] : 0;
-        if (l >= count) continue;
-        const solver_velocity_t *row_a = &rows[c[l]->a], *row_b = &rows[c[l]->b];
-        ma[l] = row_a->inverse_mass;
-        mb[l] = row_b->inverse_mass;
-        ia[l] = row_a->inverse_inertia;
-        ib[l] = row_b->inverse_inertia;
-        rate[l] = solver_position_rate(row_a, row_b);
+        row_a[l] = l < count ? &rows[c[l]->a] : &NO_ROW;
+        row_b[l] = l < count ? &rows[c[l]->b] : &NO_ROW;
+        fixed_a |= (unsigned)(l < count && solver_row_is_static(row_a[l])) << l;
+        fixed_b |= (unsigned)(l < count && solver_row_is_static(row_b[l])) << l;
     }
+    batch->fixed_a = position->fixed_a = (uint8_t)fixed_a;
+    batch->fixed_b = position->fixed_b = (uint8_t)fixed_b;
+    /* Each vector built from its four values at once: written lane by
+     * lane into a vector in memory and then loaded, it waited on the
+     * stores (a seventh of preparing's time). */
+    lane_t ma = {row_a[0]->inverse_mass, row_a[1]->inverse_mass, row_a[2]->inverse_mass,
+                 row_a[3]->inverse_mass};
+    lane_t mb = {row_b[0]->inverse_mass, row_b[1]->inverse_mass, row_b[2]->inverse_mass,
+                 row_b[3]->inverse_mass};
+    lane_t ia = {row_a[0]->inverse_inertia, row_a[1]->inverse_inertia,
+                 row_a[2]->inverse_inertia, row_a[3]->inverse_inertia};
+    lane_t ib = {row_b[0]->inverse_inertia, row_b[1]->inverse_inertia,
+                 row_b[2]->inverse_inertia, row_b[3]->inverse_inertia};
     /* normal.x, normal.y, friction, restitution; slop, m11, m12, m22 */
     *n = gather_records(&c[0]->normal, &c[1]->normal, &c[2]->normal, &c[3]->normal);
     *s = gather_records(&c[0]->slop, &c[1]->slop, &c[2]->slop, &c[3]->slop);
@@ -249,7 +299,10 @@ LANE_INLINE void fill_batch(solver_wide_t *wide, size_t index, solver_contact_t 
     batch->ib = position->ib = ib;
     position->ma = ma;
     position->mb = mb;
-    position->rate = rate;
+    position->rate = (lane_t){rate_of(row_a[0], row_b[0], 0 < count),
+                              rate_of(row_a[1], row_b[1], 1 < count),
+                              rate_of(row_a[2], row_b[2], 2 < count),
+                              rate_of(row_a[3], row_b[3], 3 < count)};
     position->slop = s->v0;
     a->mass = ma;
     a->inertia = ia;
@@ -413,16 +466,12 @@ prepared_t solver_wide_prepare(solver_wide_t *wide, solver_contact_t *contacts,
                                const solver_anchor_t *anchors, const solver_bodies_t *bodies,
                                const solver_settings_t *settings, size_t begin, size_t end) {
     prepared_t found = {false, false, false};
-    if (begin == end) return found;
-    size_t g = group_of(wide, begin);
-    for (size_t i = begin; i < end; i++) {
-        while (wide->group_batch[g + 1] <= i) g++;
+    for (size_t k = begin; k < end; k++) {
+        size_t g = wide->visit_groups[k], i = wide->visits[k];
         batch_at_t at = {i, first_point(wide, g, i), first_block(wide, g, i)};
-        uint32_t first = wide->group_start[g] + (uint32_t)(i - wide->group_batch[g]) * LANES;
-        uint32_t left = wide->group_start[g + 1] - first;
-        int n = (int)(left < LANES ? left : LANES);
-        PREFETCH_INPUTS(contacts, anchors, bodies, wide->order, first + PREPARE_AHEAD,
-                        wide->group_start[SOLVER_WIDE_GROUPS]);
+        int n;
+        uint32_t first = visit_first(wide, k, &n);
+        PREFETCH_INPUTS(wide, contacts, anchors, bodies, k, end);
         prepare_batch(wide, at, wide->order + first, n, (batch_kind_t)(g % BATCH_KINDS), contacts,
                       anchors, bodies, settings, &found);
     }

@@ -30,9 +30,9 @@ double solver_bounce_threshold(double restitution, const solver_state_t *sa,
 
 /* Whether contact c, with these anchors between bodies with rows a and b,
  * is solved by the block solve: two points whose 2x2 normal
- * effective-mass matrix is well conditioned. Decided when the contacts
- * are arranged into batches (solver_wide_arrange), since a batch holds one
- * kind, before they are prepared. */
+ * effective-mass matrix is well conditioned. Whoever writes a contact's
+ * geometry sets its block field with this (the narrowphase, impacts):
+ * the batches are arranged by kind before the contacts are prepared. */
 bool solver_contact_blocks(const solver_contact_t *c, const solver_anchor_t *anchor,
                            const solver_velocity_t *a, const solver_velocity_t *b);
 

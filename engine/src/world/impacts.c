@@ -83,6 +83,8 @@ static void take_at(world_t *world, size_t n, const toi_contact_t *hit) {
         point->normal_impulse = point->tangent_impulse = 0.0;
         source->points[i] = manifold->points[i].point;
     }
+    c->block = solver_contact_blocks(c, anchor, &world->velocities[c->a],
+                                     &world->velocities[c->b]);
     carry_impulses(c, source->points, &before, before_points,
                    warm_reach(source->body_a, source->body_b));
     double cos_a = cos(hit->angle_a), sin_a = sin(hit->angle_a);

@@ -8,6 +8,7 @@
 #include "base/prefetch.h"
 #include "base/scalar.h"
 #include "base/workers.h"
+#include "solver/velocity_solve.h"
 
 /* A pair's manifold features are reused while the pair's relative pose
  * stays this close (m, rad) to the pose they were found at. The points are
@@ -153,7 +154,10 @@ WORLD_INLINE void add_contact(world_t *world, size_t n, body_t *a, body_t *b,
     solver_contact_t *contact = &world->contacts[n];
     solver_anchor_t *anchor = &world->anchors[n];
     contact_source_t *source = &world->sources[n];
-    /* The solver's other fields are all set by its prepare step. */
+    /* The solver's other fields are all set by its prepare step; the kind
+     * of solve is decided here, where the contact and its anchors are in
+     * the cache (read again for it before preparing, they cost a large
+     * pile 2.5% of its step). */
     contact->a = a->solver_index;
     contact->b = b->solver_index;
     contact->normal = manifold->normal;
@@ -171,6 +175,8 @@ WORLD_INLINE void add_contact(world_t *world, size_t n, body_t *a, body_t *b,
         point->normal_impulse = point->tangent_impulse = 0.0;
         source->points[i] = manifold->points[i].point;
     }
+    contact->block = solver_contact_blocks(contact, anchor, &world->velocities[contact->a],
+                                           &world->velocities[contact->b]);
     source->key = pair_key(a, b);
     source->body_a = a;
     source->body_b = b;
