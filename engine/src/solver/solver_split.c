@@ -7,7 +7,6 @@
 static const size_t SPLIT_MIN_BATCHES = 16;
 
 typedef enum {
-    SWEEP_STORE,
     SWEEP_WARM,
     SWEEP_ITERATE,
     SWEEP_RELAX,
@@ -19,15 +18,11 @@ typedef struct {
     sweep_t sweep;
     solver_velocity_t *rows;
     solver_displacement_t *displacements;
-    solver_contact_t *contacts; /* storing writes them */
     int first_group, end_group; /* the groups swept (solver_wide.h) */
 } colour_sweep_t;
 
 static void sweep_range(const colour_sweep_t *s, size_t begin, size_t end) {
     switch (s->sweep) {
-    case SWEEP_STORE:
-        solver_wide_store_range(s->wide, s->contacts, begin, end);
-        break;
     case SWEEP_WARM:
         solver_wide_warm_start_range(s->wide, s->rows, begin, end);
         break;
@@ -94,14 +89,9 @@ static void sweep_colours(colour_sweep_t *s, bool backward) {
     sweep_forward(s);
 }
 
-/* Over every batch at once: storing writes no body row. */
-static void sweep_all(colour_sweep_t *s) {
-    sweep_groups(s, 0, SOLVER_WIDE_GROUPS);
-}
-
-/* Preparing the batches over the workers: chunks of the visits, each
- * batch writing only its own lanes and contacts; what each chunk found is
- * joined after. */
+/* Preparing and storing over the workers: chunks of the visits
+ * (solver_wide.h), each batch writing only its own lanes and contacts;
+ * what each chunk of preparing found is joined after. */
 typedef struct {
     solver_wide_t *wide;
     solver_contact_t *contacts;
@@ -109,7 +99,7 @@ typedef struct {
     const solver_bodies_t *bodies;
     const solver_settings_t *settings;
     prepared_t found[WORKERS_MAX_CHUNKS];
-} prepare_split_t;
+} visit_split_t;
 
 static void join(prepared_t *found, prepared_t more) {
     found->impact |= more.impact;
@@ -118,7 +108,7 @@ static void join(prepared_t *found, prepared_t more) {
 }
 
 static void prepare_chunk(void *context, size_t chunk, size_t begin, size_t end) {
-    prepare_split_t *p = context;
+    visit_split_t *p = context;
     p->found[chunk] =
         solver_wide_prepare(p->wide, p->contacts, p->anchors, p->bodies, p->settings, begin, end);
 }
@@ -139,7 +129,7 @@ prepared_t solver_split_prepare(solver_wide_t *wide, solver_contact_t *contacts,
                                          wide->batch_count));
         return found;
     }
-    prepare_split_t split = {wide, contacts, anchors, bodies, settings, {{false, false, false}}};
+    visit_split_t split = {wide, contacts, anchors, bodies, settings, {{false, false, false}}};
     workers_for(wide->workers, wide->batch_count, prepare_chunk, &split);
     for (size_t k = 0; k < workers_chunks(wide->workers, wide->batch_count); k++) {
         join(&found, split.found[k]);
@@ -147,14 +137,20 @@ prepared_t solver_split_prepare(solver_wide_t *wide, solver_contact_t *contacts,
     return found;
 }
 
+static void store_chunk(void *context, size_t chunk, size_t begin, size_t end) {
+    const visit_split_t *p = context;
+    (void)chunk;
+    solver_wide_store_range(p->wide, p->contacts, begin, end);
+}
+
 void solver_split_store(const solver_wide_t *wide, solver_contact_t *contacts) {
-    if (wide->workers == NULL) {
+    if (wide->workers == NULL || wide->batch_count < SPLIT_MIN_BATCHES) {
         solver_wide_store(wide, contacts);
         return;
     }
     /* Only read. */
-    colour_sweep_t s = {.wide = (solver_wide_t *)wide, .sweep = SWEEP_STORE, .contacts = contacts};
-    sweep_all(&s);
+    visit_split_t split = {.wide = (solver_wide_t *)wide, .contacts = contacts};
+    workers_for(wide->workers, wide->batch_count, store_chunk, &split);
 }
 
 void solver_split_warm_start(solver_wide_t *wide, solver_velocity_t *rows) {

@@ -175,8 +175,9 @@ void solver_wide_relax_range(solver_wide_t *wide, solver_velocity_t *rows, size_
                              size_t end);
 void solver_wide_correct_range(solver_wide_t *wide, solver_displacement_t *displacements,
                                size_t begin, size_t end);
-/* solver_wide_store of batches [begin, end) (any batches: each writes its
- * own contacts). */
+/* solver_wide_store of the batches visits[begin .. end), in the order
+ * preparing visits them, which walks the contacts forward (each batch
+ * writes its own contacts: ranges may run on several threads). */
 void solver_wide_store_range(const solver_wide_t *wide, solver_contact_t *contacts, size_t begin,
                              size_t end);
 

@@ -102,10 +102,10 @@ void solver_wide_arrange(solver_wide_t *wide, const solver_contact_t *contacts, 
 
 void solver_wide_store_range(const solver_wide_t *wide, solver_contact_t *contacts, size_t begin,
                              size_t end) {
-    if (begin == end) return;
-    const lane_point_t *points = wide->points + first_point(wide, group_of(wide, begin), begin);
-    for (size_t i = begin; i < end; i++) {
+    for (size_t v = begin; v < end; v++) {
+        size_t i = wide->visits[v];
         const solver_batch_t *batch = &wide->batches[i];
+        const lane_point_t *points = &wide->points[first_point(wide, wide->visit_groups[v], i)];
         for (int l = 0; l < batch->lanes; l++) {
             solver_contact_t *c = &contacts[batch->contact[l]];
             for (int k = 0; k < c->point_count; k++) {
@@ -113,7 +113,6 @@ void solver_wide_store_range(const solver_wide_t *wide, solver_contact_t *contac
                 c->points[k].tangent_impulse = points[k].tangent_impulse[l];
             }
         }
-        points += kind_points((batch_kind_t)batch->kind);
     }
 }
 

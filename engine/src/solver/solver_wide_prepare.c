@@ -408,11 +408,15 @@ LANE_INLINE void prepare_batch(solver_wide_t *wide, batch_at_t at, const uint32_
     const solver_anchor_t *anchor[LANES];
     const solver_state_t *sa[LANES], *sb[LANES];
     for (int l = 0; l < LANES; l++) {
-        bool live = l < count;
-        c[l] = live ? &contacts[order[l]] : (solver_contact_t *)&NO_CONTACT;
-        anchor[l] = live ? &anchors[order[l]] : &NO_ANCHOR;
-        sa[l] = live ? &bodies->states[c[l]->a] : &NO_STATE;
-        sb[l] = live ? &bodies->states[c[l]->b] : &NO_STATE;
+        c[l] = (solver_contact_t *)&NO_CONTACT;
+        anchor[l] = &NO_ANCHOR;
+        sa[l] = sb[l] = &NO_STATE;
+    }
+    for (int l = 0; l < count; l++) {
+        c[l] = &contacts[order[l]];
+        anchor[l] = &anchors[order[l]];
+        sa[l] = &bodies->states[c[l]->a];
+        sb[l] = &bodies->states[c[l]->b];
     }
     lane_contact_t k;
     lane_quad_t n, s;
