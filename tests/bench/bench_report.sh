@@ -352,8 +352,9 @@ EOF
 Each engine's account of its stages (this engine's scene profile, Box2D
 v3's b2World_GetProfile), in ms per step averaged over 3 runs of the case,
 pinned; stages that took no time are left out. The stages are not the same:
-this engine prepares its contacts once a step (prepare: lever arms,
-effective masses, targets, impacts; then colouring and packing the batches)
+this engine prepares its contacts once a step (prepare: colouring and
+sorting, then lever arms, effective masses, targets and impacts, four
+contacts at a time into the batches)
 and its solver stage is the warm start, 8 velocity iterations and a relaxing
 one; shock propagation (shock) and the position iterations with the lift
 (position) are its own. Box2D v3 prepares once and then, for each of its 4

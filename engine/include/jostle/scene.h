@@ -342,7 +342,7 @@ void scene_reset_solver_settings(scene_t *scene);
  * calling thread and workers - 1 of the scene's own, in [1,
  * SCENE_MAX_WORKERS]; anything else stops the program ("workers must be in
  * [1, 64] (got 0)"). Spread over them: the broadphase's filling, sorting
- * and search of its grid cells, the narrowphase, preparing the contacts and packing them into
+ * and search of its grid cells, the narrowphase, preparing the contacts into
  * colour batches, each colour of batches (the colours one after another),
  * the loops over bodies that load the solver and take its results, the
  * free motions of the explicit one-stage integrators (stage 1, after the force
@@ -401,9 +401,9 @@ scene_stats_t scene_get_stats(scene_t *scene);
  *                boxes overlap;
  *   NARROWPHASE  the pairs' contact manifolds and impacts timed within the
  *                step;
- *   PREPARE      the contacts made ready for the iterations: lever arms,
- *                effective masses, targets and impacts within the step;
- *                then coloured, sorted and packed four to a batch;
+ *   PREPARE      the contacts made ready for the iterations: coloured and
+ *                sorted, then lever arms, effective masses, targets and
+ *                impacts within the step, four to a batch;
  *   SOLVER       restitution, warm starting and the velocity iterations,
  *                handing results back;
  *   SHOCK        shock propagation (before the last velocity iteration);
