@@ -275,34 +275,100 @@ void solver_wide_warm_start_range(solver_wide_t *wide, solver_velocity_t *rows, 
 /* friction false: the normals only, raised targets counted as 0 (the
  * relaxation, solver.c), a constant
  * at every call, so each sweep is compiled with or without it. */
+/* One batch's friction and normals, its bodies gathered in a and b; points
+ * and blocks advanced past it. */
+LANE_INLINE void solve_batch(const solver_batch_t *batch, lane_point_t **points,
+                             const lane_block_t **blocks, lane_body_t *a, lane_body_t *b,
+                             bool friction) {
+    /* Each kind spelled out: its point count a constant, the loops over
+     * points unrolled (one path with the count read from the batch ran
+     * pile(1000) 0.8% more instructions). */
+    switch (batch->kind) {
+    case BATCH_BLOCK:
+        if (friction) solve_friction(batch, *points, 2, a, b);
+        solve_normal_block(batch, *points, (*blocks)++, a, b, !friction);
+        *points += 2;
+        break;
+    case BATCH_PAIR:
+        if (friction) solve_friction(batch, *points, 2, a, b);
+        solve_normal_points(batch, *points, 2, a, b, !friction);
+        *points += 2;
+        break;
+    default:
+        if (friction) solve_friction(batch, *points, 1, a, b);
+        solve_normal_points(batch, *points, 1, a, b, !friction);
+        *points += 1;
+        break;
+    }
+}
+
+/* Two batches of one colour and kind side by side: no movable body in
+ * common, so neither reads what the other writes, and the two chains of
+ * dependent arithmetic overlap. One batch at a time, the sweeps waited on
+ * each chain: pyramid(40)'s step took 10% longer. count: the kind's
+ * points. */
+LANE_INLINE void solve_two(const solver_batch_t *batch, lane_point_t *points,
+                           const lane_block_t *blocks, lane_body_t *a, lane_body_t *b,
+                           int count, bool friction) {
+    if (friction) {
+        solve_friction(&batch[0], points, count, &a[0], &b[0]);
+        solve_friction(&batch[1], points + count, count, &a[1], &b[1]);
+    }
+    if (batch->kind == BATCH_BLOCK) {
+        solve_normal_block(&batch[0], points, blocks, &a[0], &b[0], !friction);
+        solve_normal_block(&batch[1], points + 2, blocks + 1, &a[1], &b[1], !friction);
+        return;
+    }
+    solve_normal_points(&batch[0], points, count, &a[0], &b[0], !friction);
+    solve_normal_points(&batch[1], points + count, count, &a[1], &b[1], !friction);
+}
+
+/* solve_two for the two batches at `batch`, each kind spelled out as in
+ * solve_batch; points and blocks advanced past them. */
+LANE_INLINE void solve_two_of_kind(const solver_batch_t *batch, lane_point_t **points,
+                                   const lane_block_t **blocks, lane_body_t *a, lane_body_t *b,
+                                   bool friction) {
+    switch (batch->kind) {
+    case BATCH_BLOCK:
+        solve_two(batch, *points, *blocks, a, b, 2, friction);
+        *points += 4;
+        *blocks += 2;
+        break;
+    case BATCH_PAIR:
+        solve_two(batch, *points, *blocks, a, b, 2, friction);
+        *points += 4;
+        break;
+    default:
+        solve_two(batch, *points, *blocks, a, b, 1, friction);
+        *points += 2;
+        break;
+    }
+}
+
 LANE_INLINE void iterate_batches(solver_wide_t *wide, solver_velocity_t *rows, size_t begin,
                                  size_t end, lane_point_t *points, const lane_block_t *blocks,
                                  bool shared, bool friction) {
-    for (size_t i = begin; i < end; i++) {
+    size_t g = begin < end ? group_of(wide, begin) : 0;
+    for (size_t i = begin; i < end;) {
+        while (wide->group_batch[g + 1] <= i) g++;
         const solver_batch_t *batch = &wide->batches[i];
+        /* Two at once only within a group: one colour and kind. */
+        size_t group_end = wide->group_batch[g + 1] < end ? wide->group_batch[g + 1] : end;
+        if (i + 1 < group_end) {
+            lane_body_t a[2], b[2];
+            gather_pair(rows, &batch[0], shared, &a[0], &b[0]);
+            gather_pair(rows, &batch[1], shared, &a[1], &b[1]);
+            solve_two_of_kind(batch, &points, &blocks, a, b, friction);
+            scatter_pair(rows, &batch[0], shared, &a[0], &b[0]);
+            scatter_pair(rows, &batch[1], shared, &a[1], &b[1]);
+            i += 2;
+            continue;
+        }
         lane_body_t a, b;
         gather_pair(rows, batch, shared, &a, &b);
-        /* Each kind spelled out: its point count a constant, the loops over
-         * points unrolled (one path with the count read from the batch ran
-         * pile(1000) 0.8% more instructions). */
-        switch (batch->kind) {
-        case BATCH_BLOCK:
-            if (friction) solve_friction(batch, points, 2, &a, &b);
-            solve_normal_block(batch, points, blocks++, &a, &b, !friction);
-            points += 2;
-            break;
-        case BATCH_PAIR:
-            if (friction) solve_friction(batch, points, 2, &a, &b);
-            solve_normal_points(batch, points, 2, &a, &b, !friction);
-            points += 2;
-            break;
-        default:
-            if (friction) solve_friction(batch, points, 1, &a, &b);
-            solve_normal_points(batch, points, 1, &a, &b, !friction);
-            points += 1;
-            break;
-        }
+        solve_batch(batch, &points, &blocks, &a, &b, friction);
         scatter_pair(rows, batch, shared, &a, &b);
+        i++;
     }
 }
 
