@@ -15,7 +15,8 @@
  * and one contact's solve is a short chain of dependent arithmetic that
  * leaves most of the processor idle. Four independent chains fill it (the
  * vectors are GCC/Clang vector extensions: four doubles, two SSE2 or one
- * AVX instruction each).
+ * AVX instruction each), and the velocity iterations solve two batches of
+ * a colour side by side, which fills it more (solver_wide.c).
  *
  * Contacts no colour could take are listed in loose; the caller solves them
  * one at a time after the batches, in each iteration.
