@@ -272,9 +272,6 @@ void solver_wide_warm_start_range(solver_wide_t *wide, solver_velocity_t *rows, 
     warm_batches(wide, rows, begin, end, wide->points + first_point(wide, g, begin), true);
 }
 
-/* friction false: the normals only, raised targets counted as 0 (the
- * relaxation, solver.c), a constant
- * at every call, so each sweep is compiled with or without it. */
 /* One batch's friction and normals, its bodies gathered in a and b; points
  * and blocks advanced past it. */
 LANE_INLINE void solve_batch(const solver_batch_t *batch, lane_point_t **points,
@@ -345,6 +342,10 @@ LANE_INLINE void solve_two_of_kind(const solver_batch_t *batch, lane_point_t **p
     }
 }
 
+/* Batches [begin, end) from their first point and block, two at a time
+ * within a group. friction false: the normals only, raised targets
+ * counted as 0 (the relaxation, solver.c), a constant at every call, so
+ * each sweep is compiled with or without it. */
 LANE_INLINE void iterate_batches(solver_wide_t *wide, solver_velocity_t *rows, size_t begin,
                                  size_t end, lane_point_t *points, const lane_block_t *blocks,
                                  bool shared, bool friction) {
