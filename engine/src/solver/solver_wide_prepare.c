@@ -3,8 +3,8 @@
  * straight into their batch's lanes, with velocity_solve.c's arithmetic
  * lane by lane in its order (no fused multiply-add), so each contact gets
  * the bits preparing it alone gives. What the rest of the step reads from
- * the contacts (the collision pass, the loose solves, shock propagation,
- * impacts) is written back to them too. A contact that may have an impact
+ * the contacts (the collision pass, shock propagation and the lift,
+ * impacts, the scene's contact queries) is written back to them too. A contact that may have an impact
  * within the step, rare, is then prepared again alone
  * (solver_prepare_contact), which times its impacts; only its targets
  * change in the lanes.
