@@ -100,6 +100,15 @@ static void coloring_leaves_the_excess_uncoloured(void) {
     coloring_free(&coloring);
 }
 
+/* Each contact's kind, as the narrowphase decides it. */
+static void decide_blocks(solver_contact_t *contacts, const solver_anchor_t *anchors,
+                          size_t count, const solver_velocity_t *rows) {
+    for (size_t i = 0; i < count; i++) {
+        solver_contact_t *c = &contacts[i];
+        c->block = solver_contact_blocks(c, &anchors[i], &rows[c->a], &rows[c->b]);
+    }
+}
+
 /* The step length of the tests' preparing. */
 static const double DT = 1.0 / 60.0;
 
@@ -117,10 +126,7 @@ static prepared_t prepare_contacts(solver_wide_t *wide, solver_contact_t *contac
     static solver_displacement_t displacements[MOST];
     CHECK(body_count <= MOST);
     memset(states, 0, sizeof states);
-    for (size_t i = 0; i < count; i++) {
-        solver_contact_t *c = &contacts[i];
-        c->block = solver_contact_blocks(c, &anchors[i], &rows[c->a], &rows[c->b]);
-    }
+    decide_blocks(contacts, anchors, count, rows);
     solver_bodies_t bodies = {rows, displacements, states, body_count};
     solver_settings_t settings = {.dt = DT,
                                   .position_weight = 1.0,
@@ -502,10 +508,7 @@ static void batches_prepare_as_one_contact_alone(void) {
             c->points[k].tangent_impulse = 0.2 * lcg_uniform() - 0.1;
         }
     }
-    for (int i = 0; i < CONTACTS; i++) {
-        solver_contact_t *c = &contacts[i];
-        c->block = solver_contact_blocks(c, &anchors[i], &rows[c->a], &rows[c->b]);
-    }
+    decide_blocks(contacts, anchors, CONTACTS, rows);
     memcpy(alone, contacts, sizeof contacts);
     solver_bodies_t bodies = {rows, displacements, states, BODIES};
     solver_settings_t settings = {.dt = DT, .position_weight = 0.5, .velocity_iterations = 8,

@@ -124,11 +124,7 @@ prepared_t solver_split_prepare(solver_wide_t *wide, solver_contact_t *contacts,
                                                &found.raised);
         found.elastic |= contacts[i].restitution > 0.0;
     }
-    if (wide->workers == NULL || wide->batch_count < SPLIT_MIN_BATCHES) {
-        join(&found, solver_wide_prepare(wide, contacts, anchors, bodies, settings, 0,
-                                         wide->batch_count));
-        return found;
-    }
+    /* Without workers, or with few batches, one chunk on this thread. */
     visit_split_t split = {wide, contacts, anchors, bodies, settings, {{false, false, false}}};
     workers_for(wide->workers, wide->batch_count, prepare_chunk, &split);
     for (size_t k = 0; k < workers_chunks(wide->workers, wide->batch_count); k++) {
@@ -144,10 +140,6 @@ static void store_chunk(void *context, size_t chunk, size_t begin, size_t end) {
 }
 
 void solver_split_store(const solver_wide_t *wide, solver_contact_t *contacts) {
-    if (wide->workers == NULL || wide->batch_count < SPLIT_MIN_BATCHES) {
-        solver_wide_store(wide, contacts);
-        return;
-    }
     /* Only read. */
     visit_split_t split = {.wide = (solver_wide_t *)wide, .contacts = contacts};
     workers_for(wide->workers, wide->batch_count, store_chunk, &split);

@@ -134,17 +134,26 @@ typedef struct {
     double k11, k12, k22;
 } solver_block_k_t;
 
+/* K from the bodies' rows and the two points' lever terms along the
+ * normal (rn_a[i] = r_a[i] x n, rn_b[i] = r_b[i] x n). */
+static inline solver_block_k_t solver_block_k(const solver_velocity_t *a,
+                                              const solver_velocity_t *b, const double rn_a[2],
+                                              const double rn_b[2]) {
+    double ma = a->inverse_mass, mb = b->inverse_mass;
+    double ia = a->inverse_inertia, ib = b->inverse_inertia;
+    return (solver_block_k_t){
+        ma + mb + ia * rn_a[0] * rn_a[0] + ib * rn_b[0] * rn_b[0],
+        ma + mb + ia * rn_a[0] * rn_a[1] + ib * rn_b[0] * rn_b[1],
+        ma + mb + ia * rn_a[1] * rn_a[1] + ib * rn_b[1] * rn_b[1],
+    };
+}
+
 static inline solver_block_k_t solver_contact_k(const solver_contact_t *c,
                                                 const solver_velocity_t *a,
                                                 const solver_velocity_t *b) {
-    double ma = a->inverse_mass, mb = b->inverse_mass;
-    double ia = a->inverse_inertia, ib = b->inverse_inertia;
     const solver_point_t *p1 = &c->points[0], *p2 = &c->points[1];
-    return (solver_block_k_t){
-        ma + mb + ia * p1->rn_a * p1->rn_a + ib * p1->rn_b * p1->rn_b,
-        ma + mb + ia * p1->rn_a * p2->rn_a + ib * p1->rn_b * p2->rn_b,
-        ma + mb + ia * p2->rn_a * p2->rn_a + ib * p2->rn_b * p2->rn_b,
-    };
+    return solver_block_k(a, b, (const double[2]){p1->rn_a, p2->rn_a},
+                          (const double[2]){p1->rn_b, p2->rn_b});
 }
 
 /* The rows of every body, body_count of each. */

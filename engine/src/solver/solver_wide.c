@@ -321,7 +321,9 @@ LANE_INLINE void solve_two(const solver_batch_t *batch, lane_point_t *points,
 }
 
 /* solve_two for the two batches at `batch`, each kind spelled out as in
- * solve_batch; points and blocks advanced past them. */
+ * solve_batch; points and blocks advanced past them. Apart from solve_batch:
+ * one function taking one or two batches, its count a constant at each
+ * call, ran pile(1000) 3.5% slower (measured). */
 LANE_INLINE void solve_two_of_kind(const solver_batch_t *batch, lane_point_t **points,
                                    const lane_block_t **blocks, lane_body_t *a, lane_body_t *b,
                                    bool friction) {

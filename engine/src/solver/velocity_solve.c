@@ -160,25 +160,21 @@ static void same_impact_moment(solver_contact_t *c, double dt) {
 bool solver_contact_blocks(const solver_contact_t *c, const solver_anchor_t *anchor,
                           const solver_velocity_t *a, const solver_velocity_t *b) {
     if (c->point_count != 2) return false;
-    double ma = a->inverse_mass, mb = b->inverse_mass;
-    double ia = a->inverse_inertia, ib = b->inverse_inertia;
-    /* prepare's lever terms and solver_contact_k's K: the same bits. */
+    /* The lever terms preparing finds, so K has solver_contact_k's bits. */
     vector_t n = c->normal;
-    double rn_a1 = vec_cross(anchor->r_a[0], n), rn_b1 = vec_cross(anchor->r_b[0], n);
-    double rn_a2 = vec_cross(anchor->r_a[1], n), rn_b2 = vec_cross(anchor->r_b[1], n);
-    double k11 = ma + mb + ia * rn_a1 * rn_a1 + ib * rn_b1 * rn_b1;
-    double k12 = ma + mb + ia * rn_a1 * rn_a2 + ib * rn_b1 * rn_b2;
-    double k22 = ma + mb + ia * rn_a2 * rn_a2 + ib * rn_b2 * rn_b2;
-    double det = k11 * k22 - k12 * k12;
+    double rn_a[2] = {vec_cross(anchor->r_a[0], n), vec_cross(anchor->r_a[1], n)};
+    double rn_b[2] = {vec_cross(anchor->r_b[0], n), vec_cross(anchor->r_b[1], n)};
+    solver_block_k_t k = solver_block_k(a, b, rn_a, rn_b);
+    double det = k.k11 * k.k22 - k.k12 * k.k12;
     double condition = c->edge_ends ? MAX_EDGE_CONDITION_NUMBER : MAX_CONDITION_NUMBER;
-    return k11 * k11 < condition * det;
+    return k.k11 * k.k11 < condition * det;
 }
 
-/* Returns whether a point of c has an impact within the step. */
-static bool prepare(solver_contact_t *c, const solver_anchor_t *anchor,
-                    const solver_velocity_t *velocities, const solver_state_t *states,
-                    const solver_settings_t *s, bool *raised) {
-    const solver_velocity_t *a = &velocities[c->a], *b = &velocities[c->b];
+bool solver_prepare_contact(solver_contact_t *c, const solver_anchor_t *anchor,
+                            const solver_bodies_t *bodies, const solver_settings_t *s,
+                            bool *raised) {
+    const solver_state_t *states = bodies->states;
+    const solver_velocity_t *a = &bodies->velocities[c->a], *b = &bodies->velocities[c->b];
     vector_t tangent = tangent_of(c->normal);
     double ma = a->inverse_mass, mb = b->inverse_mass;
     double ia = a->inverse_inertia, ib = b->inverse_inertia;
@@ -307,10 +303,4 @@ void solver_relax_velocity(solver_contact_t *c, solver_velocity_t *velocities) {
     solve_normals(c, &a, &b, true);
     velocities[c->a] = a;
     velocities[c->b] = b;
-}
-
-bool solver_prepare_contact(solver_contact_t *c, const solver_anchor_t *anchor,
-                            const solver_bodies_t *bodies, const solver_settings_t *settings,
-                            bool *raised) {
-    return prepare(c, anchor, bodies->velocities, bodies->states, settings, raised);
 }
