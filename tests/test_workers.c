@@ -280,6 +280,34 @@ static void pool_visits_every_index_once(void) {
     workers_free(NULL);
 }
 
+/* workers_each: each index its own chunk, visited once, for counts up to
+ * the most chunks (the broadphase's parts: one per worker, which
+ * workers_for's least chunk ran on the calling thread alone), with and
+ * without a pool; more items than chunks are refused. */
+static void each_item_is_a_chunk_of_its_own(void) {
+    workers_t *workers = workers_init(2);
+    workers_t *pools[2] = {NULL, workers};
+    for (size_t p = 0; p < 2; p++) {
+        for (size_t count = 0; count <= WORKERS_MAX_CHUNKS; count++) {
+            static visits_t v;
+            memset(&v, 0, sizeof v);
+            workers_each(pools[p], count, visit, &v);
+            for (size_t i = 0; i < count; i++) CHECK(v.visits[i] == 1 && v.chunk_of[i] == i);
+            CHECK(v.visits[count] == 0);
+        }
+    }
+    workers_free(workers);
+}
+
+BAD_CALL(too_many_items, {
+    static visits_t v;
+    workers_each(NULL, WORKERS_MAX_CHUNKS + 1, visit, &v);
+})
+
+static void too_many_items_are_refused(void) {
+    CHECK_DIES(too_many_items, NULL, "engine error in workers_each", "at most 64 items (got 65)");
+}
+
 /* Three rows of 100 boxes on a floor: each row is a level of the shock
  * pass with more bodies than it spreads over the workers (shock.c's
  * SPLIT_LEVEL), so this runs that pass on several threads. */
@@ -317,4 +345,5 @@ TEST_SUITE(workers, TEST_CASE(any_worker_count_gives_the_same_bytes),
            TEST_CASE(sleeping_with_workers_gives_the_same_bytes),
            TEST_CASE(warm_step_with_workers_allocates_nothing),
            TEST_CASE(a_failed_integration_names_the_first_body),
-           TEST_CASE(bad_worker_counts_are_refused), TEST_CASE(pool_visits_every_index_once));
+           TEST_CASE(bad_worker_counts_are_refused), TEST_CASE(pool_visits_every_index_once),
+           TEST_CASE(each_item_is_a_chunk_of_its_own), TEST_CASE(too_many_items_are_refused));

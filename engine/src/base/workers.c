@@ -224,12 +224,9 @@ static void finish(workers_t *workers) {
     }
 }
 
-void workers_for(workers_t *workers, size_t count, workers_fn_t fn, void *context) {
-    size_t chunks = workers_chunks(workers, count);
-    if (chunks <= 1) {
-        if (count > 0) fn(context, 0, 0, count);
-        return;
-    }
+/* Runs fn over [0, count) in `chunks` chunks (at least 2) on the pool. */
+static void run_call(workers_t *workers, size_t count, size_t chunks, workers_fn_t fn,
+                     void *context) {
     start_threads(workers);
     workers->fn = fn;
     workers->context = context;
@@ -244,4 +241,22 @@ void workers_for(workers_t *workers, size_t count, workers_fn_t fn, void *contex
     publish(workers);
     run_chunks(workers, 0);
     finish(workers);
+}
+
+void workers_for(workers_t *workers, size_t count, workers_fn_t fn, void *context) {
+    size_t chunks = workers_chunks(workers, count);
+    if (chunks <= 1) {
+        if (count > 0) fn(context, 0, 0, count);
+        return;
+    }
+    run_call(workers, count, chunks, fn, context);
+}
+
+void workers_each(workers_t *workers, size_t count, workers_fn_t fn, void *context) {
+    REQUIRE(count <= WORKERS_MAX_CHUNKS, "at most %d items (got %zu)", WORKERS_MAX_CHUNKS, count);
+    if (workers == NULL || count <= 1) {
+        for (size_t i = 0; i < count; i++) fn(context, i, i, i + 1);
+        return;
+    }
+    run_call(workers, count, count, fn, context);
 }

@@ -49,4 +49,11 @@ size_t workers_chunks(const workers_t *workers, size_t count);
  * fn must not call workers_for on the same pool. */
 void workers_for(workers_t *workers, size_t count, workers_fn_t fn, void *context);
 
+/* Runs fn on each index of [0, count) as a chunk of its own (chunk i is
+ * [i, i + 1)), in parallel: for a few heavy items, such as the
+ * broadphase's parts, which workers_for's least chunk would run on the
+ * calling thread alone. count <= WORKERS_MAX_CHUNKS (asserted); with
+ * workers NULL, one after the other on the calling thread. */
+void workers_each(workers_t *workers, size_t count, workers_fn_t fn, void *context);
+
 #endif // #ifndef WORKERS_H

@@ -186,7 +186,7 @@ static size_t fill_grid(broadphase_t *broadphase, workers_t *workers,
     size_t parts = workers != NULL ? workers_count(workers) * PARTS_PER_WORKER : 1;
     if (parts > WORKERS_MAX_CHUNKS) parts = WORKERS_MAX_CHUNKS;
     fill_split_t split = {broadphase, proxies, count, parts, 0, inverse_size};
-    workers_for(workers, parts, count_part, &split);
+    workers_each(workers, parts, count_part, &split);
     *n = total_parts(broadphase, parts, large_count);
     split.buckets = bucket_count(*n);
     memory_reserve((void **)&broadphase->large, &broadphase->large_capacity, *large_count,
@@ -197,9 +197,9 @@ static size_t fill_grid(broadphase_t *broadphase, workers_t *workers,
                    sizeof(cell_entry_t));
     memory_reserve((void **)&broadphase->part_place, &broadphase->part_place_capacity,
                    parts * split.buckets, sizeof(uint32_t));
-    workers_for(workers, parts, histogram_part, &split);
+    workers_each(workers, parts, histogram_part, &split);
     places_from_counts(broadphase, parts, split.buckets);
-    workers_for(workers, parts, place_part, &split);
+    workers_each(workers, parts, place_part, &split);
     return split.buckets;
 }
 
