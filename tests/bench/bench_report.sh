@@ -356,8 +356,8 @@ this engine prepares its contacts once a step (prepare: colouring and
 sorting, then lever arms, effective masses, targets and impacts, four
 contacts at a time into the batches)
 and its solver stage is the warm start, 8 velocity iterations and a relaxing
-one; shock propagation (shock) and the position iterations with the lift
-(position) are its own. Box2D v3 prepares once and then, for each of its 4
+one; shock propagation with the lift's levels (shock) and the position
+iterations with the lift (position) are its own. Box2D v3 prepares once and then, for each of its 4
 sub-steps, warm starts, solves and relaxes every constraint (warm_start,
 solve, relax) and integrates (integrate); transforms moves its bodies and
 their boxes, pairs finds new pairs in its tree. Each engine reads its clock

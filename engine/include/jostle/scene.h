@@ -406,8 +406,10 @@ scene_stats_t scene_get_stats(scene_t *scene);
  *                impacts within the step, four to a batch;
  *   SOLVER       restitution, warm starting and the velocity iterations,
  *                handing results back;
- *   SHOCK        shock propagation (before the last velocity iteration);
- *   POSITION     advancing the bodies and the position iterations;
+ *   SHOCK        shock propagation (before the last velocity iteration),
+ *                with the levels of the lift;
+ *   POSITION     advancing the bodies, relaxing, the lift and the position
+ *                iterations;
  *   INTEGRATE    moving every body not asleep by its motion (stage 3);
  *   SLEEP        waking islands a change reached, sleep timers, islands
  *                put to sleep;

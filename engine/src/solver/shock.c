@@ -13,14 +13,19 @@ static const solver_slot_t IN_CONTACT = UINT32_MAX;
  * which one it is is random and a branch on it mispredicted. */
 static const double SIGN[2] = {-1.0, 1.0};
 
+static void free_levels(shock_levels_t *levels) {
+    memory_free(levels->level);
+    memory_free(levels->first);
+    memory_free(levels->sides);
+    memory_free(levels->queue);
+    memory_free(levels->held);
+    memory_free(levels->support_end);
+}
+
 void shock_free(shock_t *shock) {
-    memory_free(shock->level);
-    memory_free(shock->first);
-    memory_free(shock->sides);
+    free_levels(&shock->load);
+    free_levels(&shock->rest);
     memory_free(shock->slots);
-    memory_free(shock->queue);
-    memory_free(shock->held);
-    memory_free(shock->support_end);
     memory_free(shock->jointed);
     memset(shock, 0, sizeof *shock);
 }
@@ -42,8 +47,8 @@ static bool carries_load(const solver_contact_t *c) {
  */
 static bool link_bodies(shock_t *shock, const solver_wide_t *wide,
                         const solver_contact_t *contacts, size_t body_count) {
-    uint32_t *first = shock->first;
-    solver_side_t *sides = shock->sides;
+    uint32_t *first = shock->load.first;
+    solver_side_t *sides = shock->load.sides;
     memset(first, 0xff, body_count * sizeof(uint32_t)); /* SOLVER_NO_SIDE */
     bool any = solver_wide_link_loaded(wide, first, sides, shock->slots);
     for (size_t k = 0; k < wide->loose_count; k++) {
@@ -261,7 +266,7 @@ static void hold_up(const shock_t *shock, const solver_wide_t *wide,
         const solver_contact_t *c = &contacts[side / 2];
         bool upper_is_b = side % 2 == 1; /* the odd side is b's */
         solver_velocity_t *upper = &velocities[body];
-        solver_velocity_t *lower = &velocities[shock->sides[side].other];
+        solver_velocity_t *lower = &velocities[shock->load.sides[side].other];
         solver_velocity_t *a = upper_is_b ? lower : upper, *b = upper_is_b ? upper : lower;
         if (c->point_count == 1) {
             stop_one(c, a, b, upper_is_b);
@@ -286,12 +291,12 @@ static void hold_up(const shock_t *shock, const solver_wide_t *wide,
  * neighbour is below, level or unreached is random in a pile, and
  * mispredicting it cost more than the stores done regardless.
  */
-static size_t find_levels(shock_t *shock, const solver_velocity_t *velocities,
+static size_t find_levels(shock_levels_t *levels, const solver_velocity_t *velocities,
                           size_t body_count) {
-    uint32_t *level = shock->level, *queue = shock->queue, *held = shock->held;
-    uint32_t *support_end = shock->support_end;
-    const uint32_t *first = shock->first;
-    const solver_side_t *sides = shock->sides;
+    uint32_t *level = levels->level, *queue = levels->queue, *held = levels->held;
+    uint32_t *support_end = levels->support_end;
+    const uint32_t *first = levels->first;
+    const solver_side_t *sides = levels->sides;
     size_t head = 0, tail = 0;
     for (size_t k = 0; k < body_count; k++) {
         level[k] = solver_row_is_static(&velocities[k]) ? 0 : UNREACHED;
@@ -323,12 +328,13 @@ static size_t find_levels(shock_t *shock, const solver_velocity_t *velocities,
 static void hold_up_range(shock_t *shock, const solver_wide_t *wide,
                           const solver_contact_t *contacts, solver_velocity_t *velocities,
                           size_t begin, size_t end, uint32_t past, bool reverse) {
-    uint32_t start = begin > 0 ? shock->support_end[begin - 1] : 0;
-    uint32_t last = end > 0 ? shock->support_end[end - 1] + past : 0;
+    const shock_levels_t *load = &shock->load;
+    uint32_t start = begin > 0 ? load->support_end[begin - 1] : 0;
+    uint32_t last = end > 0 ? load->support_end[end - 1] + past : 0;
     for (size_t q = begin; q < end; q++) {
-        uint32_t stop = shock->support_end[q];
+        uint32_t stop = load->support_end[q];
         if (stop == start) continue;
-        hold_up(shock, wide, contacts, shock->queue[q], shock->held + start, stop - start,
+        hold_up(shock, wide, contacts, load->queue[q], load->held + start, stop - start,
                 last - start, velocities, reverse);
         start = stop;
     }
@@ -357,13 +363,14 @@ static void level_chunk(void *context, size_t chunk, size_t begin, size_t end) {
  * level of SPLIT_LEVEL bodies or more over the workers: a body's work
  * changes only its own row and reads its supports', all of lower levels,
  * so the bodies of a level may go in any order with the same result. */
-static void over_levels(const shock_t *shock, workers_t *workers, size_t reached,
-                        level_range_t range, void *context) {
+static void over_levels(const shock_levels_t *levels, workers_t *workers, level_range_t range,
+                        void *context) {
     level_split_t split = {range, context, 0};
+    size_t reached = levels->reached;
     for (size_t q = 0; q < reached;) {
-        uint32_t level = shock->level[shock->queue[q]];
+        uint32_t level = levels->level[levels->queue[q]];
         size_t end = q + 1;
-        while (end < reached && shock->level[shock->queue[end]] == level) end++;
+        while (end < reached && levels->level[levels->queue[end]] == level) end++;
         if (end - q >= SPLIT_LEVEL) {
             split.first = q;
             workers_for(workers, end - q, level_chunk, &split);
@@ -398,41 +405,74 @@ static void hold_range(void *context, size_t begin, size_t end) {
  */
 static void propagate(shock_t *shock, const solver_wide_t *wide,
                       const solver_contact_t *contacts, solver_velocity_t *velocities,
-                      size_t body_count, bool reverse) {
-    size_t reached = find_levels(shock, velocities, body_count);
+                      bool reverse) {
     if (wide->workers == NULL) {
-        hold_up_range(shock, wide, contacts, velocities, 0, reached, PREFETCH_AHEAD, reverse);
+        hold_up_range(shock, wide, contacts, velocities, 0, shock->load.reached, PREFETCH_AHEAD,
+                      reverse);
         return;
     }
     hold_t hold = {shock, wide, contacts, velocities, reverse};
-    over_levels(shock, wide->workers, reached, hold_range, &hold);
+    over_levels(&shock->load, wide->workers, hold_range, &hold);
 }
 
-/* The arrays for count contacts and body_count bodies. */
-static void reserve(shock_t *shock, size_t count, size_t body_count) {
-    memory_reserve((void **)&shock->level, &shock->level_capacity, body_count, sizeof(uint32_t));
-    memory_reserve((void **)&shock->first, &shock->first_capacity, body_count, sizeof(uint32_t));
-    memory_reserve((void **)&shock->sides, &shock->side_capacity, 2 * count,
-                   sizeof(solver_side_t));
-    memory_reserve((void **)&shock->slots, &shock->slot_capacity, count, sizeof(solver_slot_t));
-    /* One more than can be kept, for the stores done regardless. */
-    memory_reserve((void **)&shock->queue, &shock->queue_capacity, body_count + 1,
+/* A set of levels' arrays for count contacts and body_count bodies. */
+static void reserve_levels(shock_levels_t *levels, size_t count, size_t body_count) {
+    memory_reserve((void **)&levels->level, &levels->level_capacity, body_count,
                    sizeof(uint32_t));
-    memory_reserve((void **)&shock->support_end, &shock->support_end_capacity, body_count,
+    memory_reserve((void **)&levels->first, &levels->first_capacity, body_count,
+                   sizeof(uint32_t));
+    memory_reserve((void **)&levels->sides, &levels->side_capacity, 2 * count,
+                   sizeof(solver_side_t));
+    /* One more than can be kept, for the stores done regardless. */
+    memory_reserve((void **)&levels->queue, &levels->queue_capacity, body_count + 1,
+                   sizeof(uint32_t));
+    memory_reserve((void **)&levels->support_end, &levels->support_end_capacity, body_count,
                    sizeof(uint32_t));
     /* One more than can be kept, for the store done regardless, and what
      * hold_up fetches ahead. */
-    memory_reserve((void **)&shock->held, &shock->held_capacity, count + 1 + PREFETCH_AHEAD,
+    memory_reserve((void **)&levels->held, &levels->held_capacity, count + 1 + PREFETCH_AHEAD,
                    sizeof(uint32_t));
+}
+
+static bool link_resting(shock_t *shock, const solver_contact_t *contacts, size_t count,
+                         size_t body_count);
+
+/* What the two walks of the levels read. */
+typedef struct {
+    shock_t *shock;
+    const solver_wide_t *wide;
+    const solver_contact_t *contacts;
+    size_t count;
+    const solver_velocity_t *velocities;
+    size_t body_count;
+} walk_t;
+
+/* Walk 0 finds the levels through the loaded contacts, walk 1 those
+ * through the resting ones when one is deeper than its slop (else the
+ * lift has nothing to do). Each writes its own arrays. */
+static void walk_chunk(void *context, size_t chunk, size_t begin, size_t end) {
+    const walk_t *walk = context;
+    (void)chunk;
+    shock_t *shock = walk->shock;
+    for (size_t k = begin; k < end; k++) {
+        shock_levels_t *levels = k == 0 ? &shock->load : &shock->rest;
+        bool any = k == 0 ? link_bodies(shock, walk->wide, walk->contacts, walk->body_count)
+                          : link_resting(shock, walk->contacts, walk->count, walk->body_count);
+        levels->reached = any ? find_levels(levels, walk->velocities, walk->body_count) : 0;
+    }
 }
 
 void shock_propagate(shock_t *shock, const solver_wide_t *wide, const solver_contact_t *contacts,
                      size_t count, solver_velocity_t *velocities, size_t body_count,
                      bool reverse) {
+    shock->load.reached = shock->rest.reached = 0;
     if (count == 0) return;
-    reserve(shock, count, body_count);
-    if (!link_bodies(shock, wide, contacts, body_count)) return;
-    propagate(shock, wide, contacts, velocities, body_count, reverse);
+    reserve_levels(&shock->load, count, body_count);
+    reserve_levels(&shock->rest, count, body_count);
+    memory_reserve((void **)&shock->slots, &shock->slot_capacity, count, sizeof(solver_slot_t));
+    walk_t walk = {shock, wide, contacts, count, velocities, body_count};
+    workers_each(wide->workers, 2, walk_chunk, &walk);
+    propagate(shock, wide, contacts, velocities, reverse);
 }
 
 /* Lists each body's touching contacts on which one of the two rests (the
@@ -441,8 +481,8 @@ void shock_propagate(shock_t *shock, const solver_wide_t *wide, const solver_con
  * the lift has nothing to do). */
 static bool link_resting(shock_t *shock, const solver_contact_t *contacts, size_t count,
                          size_t body_count) {
-    uint32_t *first = shock->first;
-    solver_side_t *sides = shock->sides;
+    uint32_t *first = shock->rest.first;
+    solver_side_t *sides = shock->rest.sides;
     memset(first, 0xff, body_count * sizeof(uint32_t)); /* SOLVER_NO_SIDE */
     bool deep = false;
     for (size_t i = 0; i < count; i++) {
@@ -515,7 +555,8 @@ typedef struct {
 /* The queue's bodies [begin, end) lifted off their supports. */
 static void lift_range(void *context, size_t begin, size_t end) {
     const lift_t *lift = context;
-    const uint32_t *support_end = lift->shock->support_end, *held = lift->shock->held;
+    const shock_levels_t *rest = &lift->shock->rest;
+    const uint32_t *support_end = rest->support_end, *held = rest->held;
     uint32_t stop = support_end[end - 1];
     for (uint32_t k = begin > 0 ? support_end[begin - 1] : 0; k < stop; k++) {
         if (k + PREFETCH_AHEAD < stop) {
@@ -526,17 +567,13 @@ static void lift_range(void *context, size_t begin, size_t end) {
 }
 
 void shock_lift(shock_t *shock, workers_t *workers, const solver_contact_t *contacts,
-                size_t count, const solver_bodies_t *bodies, const joint_step_t *joints) {
-    if (count == 0) return;
-    size_t body_count = bodies->body_count;
-    reserve(shock, count, body_count);
-    if (!link_resting(shock, contacts, count, body_count)) return;
-    size_t reached = find_levels(shock, bodies->velocities, body_count);
+                const solver_bodies_t *bodies, const joint_step_t *joints) {
+    size_t reached = shock->rest.reached;
     if (reached == 0) return;
     lift_t lift = {shock, contacts, bodies, mark_jointed(shock, bodies, joints)};
     if (workers == NULL) {
         lift_range(&lift, 0, reached);
         return;
     }
-    over_levels(shock, workers, reached, lift_range, &lift);
+    over_levels(&shock->rest, workers, lift_range, &lift);
 }

@@ -27,17 +27,26 @@
 
 typedef struct shock shock_t;
 
-struct shock {
-    uint32_t *level;         /* per body; UINT32_MAX when no load path reaches it */
+/* Levels from the static bodies through one kind of contact (shock.c's
+ * find_levels). */
+typedef struct {
+    uint32_t *level;         /* per body; UINT32_MAX when no path reaches it */
     uint32_t *first;         /* per body: its first side, SOLVER_NO_SIDE when it has none */
-    solver_side_t *sides;    /* 2i and 2i + 1: contact i from its a and its b, if it carries load */
-    uint8_t *jointed;        /* the lift: per body, whether a joint holds it */
-    solver_slot_t *slots;    /* per two-point contact that carries load: where its impulses are */
+    solver_side_t *sides;    /* 2i and 2i + 1: contact i from its a and its b, if listed */
     uint32_t *queue;         /* bodies in the order the levels reached them */
     uint32_t *held;          /* the sides by which the bodies are held up, in queue order */
     uint32_t *support_end;   /* per queue place: where its body's supports end in held */
-    size_t level_capacity, first_capacity, side_capacity, slot_capacity, queue_capacity,
-        held_capacity, support_end_capacity, jointed_capacity;
+    size_t reached;          /* how many bodies the queue holds; 0 when there is nothing to do */
+    size_t level_capacity, first_capacity, side_capacity, queue_capacity, held_capacity,
+        support_end_capacity;
+} shock_levels_t;
+
+struct shock {
+    shock_levels_t load;     /* through the contacts that carry load (shock_propagate) */
+    shock_levels_t rest;     /* through the contacts on which a body rests (shock_lift) */
+    uint8_t *jointed;        /* the lift: per body, whether a joint holds it */
+    solver_slot_t *slots;    /* per two-point contact that carries load: where its impulses are */
+    size_t slot_capacity, jointed_capacity;
 };
 
 void shock_free(shock_t *shock);
@@ -46,7 +55,11 @@ void shock_free(shock_t *shock);
  * bodies. The accumulated impulses so far are read from the colour batches
  * of wide (and from the contacts for the loose ones), not stored back.
  * A body held by several contacts has them solved in contact order, or in
- * the reverse order when reverse (solver_settings_t). */
+ * the reverse order when reverse (solver_settings_t).
+ *
+ * It also finds the levels shock_lift uses, which depend on preparing
+ * alone: with workers, the two walks of the levels, each on one thread,
+ * run side by side. */
 void shock_propagate(shock_t *shock, const solver_wide_t *wide, const solver_contact_t *contacts,
                      size_t count, solver_velocity_t *velocities, size_t body_count,
                      bool reverse);
@@ -73,9 +86,9 @@ void shock_propagate(shock_t *shock, const solver_wide_t *wide, const solver_con
  * (docs/design.md, Sleeping). Contacts steeper than 60 degrees hold a
  * body sideways more than up and are left to the position iterations.
  *
- * The levels reuse the arrays of shock_propagate, whose pass is over.
+ * The levels are those shock_propagate found in the same step.
  */
 void shock_lift(shock_t *shock, workers_t *workers, const solver_contact_t *contacts,
-                size_t count, const solver_bodies_t *bodies, const joint_step_t *joints);
+                const solver_bodies_t *bodies, const joint_step_t *joints);
 
 #endif // #ifndef SHOCK_H

@@ -124,7 +124,7 @@ void solver_solve(solver_wide_t *wide, shock_t *shock, solver_contact_t *contact
         /* The lift before the last iteration, which then spreads its moves
          * over both bodies of each contact (shock.h). */
         if (iteration == settings->position_iterations - 1) {
-            shock_lift(shock, wide->workers, contacts, contact_count, bodies, joints);
+            shock_lift(shock, wide->workers, contacts, bodies, joints);
         }
         bool backward = (iteration % 2 == 1) != reverse;
         solver_split_correct_positions(wide, bodies->displacements, backward);
