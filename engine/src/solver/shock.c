@@ -434,8 +434,24 @@ static void reserve_levels(shock_levels_t *levels, size_t count, size_t body_cou
                    sizeof(uint32_t));
 }
 
+/* Lists each body's touching contacts on which one of the two rests (the
+ * bits preparing set, resting.h), as link_bodies lists the loaded ones.
+ * Returns whether one of them started the step deeper than its slop (else
+ * the lift has nothing to do). */
 static bool link_resting(shock_t *shock, const solver_contact_t *contacts, size_t count,
-                         size_t body_count);
+                         size_t body_count) {
+    uint32_t *first = shock->rest.first;
+    solver_side_t *sides = shock->rest.sides;
+    memset(first, 0xff, body_count * sizeof(uint32_t)); /* SOLVER_NO_SIDE */
+    bool deep = false;
+    for (size_t i = 0; i < count; i++) {
+        const solver_contact_t *c = &contacts[i];
+        if (c->rests == 0) continue;
+        deep |= (c->rests & RESTS_DEEP) != 0;
+        solver_link_sides(first, sides, (uint32_t)i, c->a, c->b);
+    }
+    return deep;
+}
 
 /* What the two walks of the levels read. */
 typedef struct {
@@ -473,25 +489,6 @@ void shock_propagate(shock_t *shock, const solver_wide_t *wide, const solver_con
     walk_t walk = {shock, wide, contacts, count, velocities, body_count};
     workers_each(wide->workers, 2, walk_chunk, &walk);
     propagate(shock, wide, contacts, velocities, reverse);
-}
-
-/* Lists each body's touching contacts on which one of the two rests (the
- * bits preparing set, resting.h), as link_bodies lists the loaded ones.
- * Returns whether one of them started the step deeper than its slop (else
- * the lift has nothing to do). */
-static bool link_resting(shock_t *shock, const solver_contact_t *contacts, size_t count,
-                         size_t body_count) {
-    uint32_t *first = shock->rest.first;
-    solver_side_t *sides = shock->rest.sides;
-    memset(first, 0xff, body_count * sizeof(uint32_t)); /* SOLVER_NO_SIDE */
-    bool deep = false;
-    for (size_t i = 0; i < count; i++) {
-        const solver_contact_t *c = &contacts[i];
-        if (c->rests == 0) continue;
-        deep |= (c->rests & RESTS_DEEP) != 0;
-        solver_link_sides(first, sides, (uint32_t)i, c->a, c->b);
-    }
-    return deep;
 }
 
 /* The pushes at contact c's points (kg m, >= 0) that move its upper body
