@@ -299,6 +299,39 @@ if [ -n "$v3" ]; then
 else
     : >"$work/seeds-v3"
 fi
+# The two-worker runs' medians, one line per engine and worker count:
+# engine workers cpu_ms wall_ms (the workers table and the targets read it).
+awk '{ e = ""; n = ""; c = ""; w = ""
+        for (i = 1; i <= NF; i++) { split($i, kv, "=")
+            if (kv[1] == "engine") e = kv[2]; if (kv[1] == "workers") n = kv[2]
+            if (kv[1] == "median_ms") c = kv[2]; if (kv[1] == "wall_median_ms") w = kv[2] }
+        if (!(e in seen)) { seen[e] = 1; order[++engines] = e }
+        k = ++count[e, n]; cpu[e, n, k] = c; wall[e, n, k] = w }
+     function median(arr, e, n, k,   i, j, t, v) {
+        for (i = 1; i <= k; i++) v[i] = arr[e, n, i]
+        for (i = 2; i <= k; i++) for (j = i; j > 1 && v[j - 1] + 0 > v[j] + 0; j--) {
+            t = v[j]; v[j] = v[j - 1]; v[j - 1] = t }
+        return v[int((k + 1) / 2)] }
+     END { for (x = 1; x <= engines; x++) { e = order[x]
+            for (n = 1; n <= 2; n++) if (count[e, n] > 0)
+                print e, n, median(cpu, e, n, count[e, n]), median(wall, e, n, count[e, n]) } }' \
+    "$work/workers" >"$work/workers-medians"
+# The scale fit: engine, then its ms per step at each size (size=ms), then
+# the least-squares exponent of ms per step on N.
+if [ -s "$work/scale" ]; then
+    awk '{ e = ""; n = 0; m = 0
+            for (i = 1; i <= NF; i++) { split($i, kv, "=")
+                if (kv[1] == "engine") e = kv[2]; if (kv[1] == "size") n = kv[2]
+                if (kv[1] == "mean_ms") m = kv[2] }
+            if (!(e in seen)) { seen[e] = 1; engines[++ne] = e }
+            line[e] = line[e] " " n "=" m
+            x = log(n); y = log(m); sx[e] += x; sy[e] += y; sxx[e] += x * x; sxy[e] += x * y; k[e]++ }
+         END { for (i = 1; i <= ne; i++) { e = engines[i]
+                printf "%s%s %.2f\n", e, line[e],
+                    (k[e] * sxy[e] - sx[e] * sy[e]) / (k[e] * sxx[e] - sx[e] * sx[e]) } }' \
+        "$work/scale" >"$work/scale-fit"
+fi
+
 joints_part "$@" || exit 1
 load_end=$(cut -d' ' -f1-3 /proc/loadavg 2>/dev/null || echo unknown)
 
@@ -344,6 +377,60 @@ slower): the figure the speed targets are stated in.
 $(grep -v '^#' "$work/speed")
 \`\`\`
 EOF
+    if [ -n "$v3" ]; then
+        target_files=""
+        for f in speed sleeping asleep workers-medians scale-fit; do
+            [ -s "$work/$f" ] && target_files="$target_files $work/$f"
+        done
+        cat <<EOF
+
+## The speed targets
+
+The targets this engine's speed is held to, with this run's figures (from
+the tables of this page). A ratio is this engine's time over Box2D v3's
+(its SSE2 build), the median over the rounds. Where a target is not met,
+the next section shows where the time goes, part by part of the step, and
+[design.md](design.md) (Memory, Four contacts at a time) why preparing and
+the passes Box2D v3 has not cost what they do.
+
+| target | figure | met |
+|---|---|---|
+$(awk -v v3="$v3name" -v workers_size="$workers_size" '
+        function ratio_table(key,   i) {
+            if ($1 == "ratio") { in_ratios = 1; col = 0; return }
+            if (!in_ratios) return
+            if ($1 == "scene") { for (i = 5; i <= NF; i++) if ($i == "/" key) col = 5 + 2 * (i - 5); return }
+            if (col > 0) r[FILENAME, $1 "(" $2 ")", $4] = $col }
+        FNR == 1 { in_ratios = 0 }
+        FILENAME ~ /\/speed$/ { ratio_table(v3); speed_file = FILENAME; next }
+        FILENAME ~ /\/sleeping$/ { ratio_table(v3 "-sleeping"); sleeping = FILENAME; next }
+        FILENAME ~ /\/asleep$/ { for (i = 1; i <= NF; i++) { split($i, kv, "=")
+                if (kv[1] == "engine") e = kv[2]; if (kv[1] == "asleep_s") at[e] = kv[2] }; next }
+        FILENAME ~ /\/workers-medians$/ { wall[$1, $2] = $4; next }
+        FILENAME ~ /\/scale-fit$/ { fit[$1] = $NF; next }
+        function row(what, figure, met) { printf "| %s | %s | %s |\n", what, figure, met ? "yes" : "no" }
+        function speed(c, metric, what,   x) {
+            x = r[speed_file, c, metric]; if (x == "") return
+            row("one core: " c " " what " at or below Box2D v3", x, x + 0 <= 1) }
+        END { speed("pile(1000)", "step", "every step"); speed("pile(1000)", "settled", "settled")
+            speed("pile(4000)", "step", "every step"); speed("pile(4000)", "settled", "settled")
+            speed("pile(10000)", "step", "every step"); speed("pile(10000)", "settled", "settled")
+            speed("pyramid(40)", "step", "every step")
+            if (wall["ours", 1] > 0 && wall["ours", 2] > 0) {
+                x = wall["ours", 2] / wall["ours", 1]
+                row("two workers: pile(" workers_size ") at most 0.6 of one worker (wall time)", sprintf("%.2f", x), x <= 0.6) }
+            if (wall["ours", 2] > 0 && wall[v3, 2] > 0) {
+                x = wall["ours", 2] / wall[v3, 2]
+                row("two workers: pile(" workers_size ") at or below Box2D v3 with two (wall time)", sprintf("%.2f", x), x <= 1) }
+            if ("ours-sleeping" in at) row("sleeping on: pile(4000) all asleep by 10 s",
+                at["ours-sleeping"] " s", at["ours-sleeping"] != "none" && at["ours-sleeping"] + 0 <= 10)
+            x = r[sleeping, "pile(4000)", "settled"]
+            if (x != "") row("sleeping on: settled pile(4000) at or below Box2D v3 with its sleeping", x, x + 0 <= 1)
+            if (("ours" in fit) && (v3 in fit)) row("scale: exponent of pile(N) no steeper than Box2D v3", \
+                "N^" fit["ours"] " against N^" fit[v3], fit["ours"] + 0 <= fit[v3] + 0) }' \
+    $target_files)
+EOF
+    fi
     if [ -s "$work/stages" ]; then
         cat <<EOF
 
@@ -372,6 +459,37 @@ $(awk '{ e = ""; s = ""; n = ""; part = ""; list = ""; sum = 0
             else if (kv[1] == "size") n = kv[2]; else if (kv[1] == "part") part = kv[2]
             else if (kv[2] + 0 > 0) { list = list (list == "" ? "" : ", ") kv[1] " " kv[2]; sum += kv[2] } }
         printf "| %s(%s) | %s | %s | %s | %.4g |\n", s, n, part == "settled" ? "301 to 600" : "all", e, list, sum }' "$work/stages")
+
+Where the difference lies: the stages gathered into the parts of a step
+both engines have, and this engine's own passes (shock propagation, the
+position iterations and the lift; its relaxing sweep is timed within its
+position stage, so it counts there).
+
+| case | part of the step | this engine | Box2D v3 | difference (ms) |
+|---|---|---|---|---|
+$(awk 'function part(ours, k) {
+            if (k == "narrowphase" || k == "collide") return 2
+            if (k == "prepare" || k == "setup") return 3
+            if (k == "solver" || (!ours && (k == "warm_start" || k == "solve" || k == "relax" ||
+                k == "integrate" || k == "restitution" || k == "store"))) return 4
+            if (k == "shock" || k == "position") return 5
+            return 1 }
+        { e = ""; c = ""; ours = 0
+        for (i = 3; i <= NF; i++) { split($i, kv, "=")
+            if (kv[1] == "engine") { e = kv[2]; ours = e == "ours" }
+            else if (kv[1] == "scene") c = kv[2]; else if (kv[1] == "size") c = c "(" kv[2] ")"
+            else if (kv[1] == "part") c = c (kv[2] == "settled" ? ", steps 301 to 600" : "")
+            else t[c, ours, part(ours, kv[1])] += kv[2] }
+        if (!(c in seen)) { seen[c] = 1; cases[++nc] = c }
+        has[c, ours] = 1 }
+     END { name[1] = "bodies moved, boxes and pairs"; name[2] = "contact geometry"
+        name[3] = "preparing the contacts"; name[4] = "velocity solve"
+        name[5] = "this engine\047s own passes"
+        for (i = 1; i <= nc; i++) { c = cases[i]
+            if (!has[c, 1] || !has[c, 0]) continue
+            for (k = 1; k <= 5; k++)
+                printf "| %s | %s | %.3f | %.3f | %+.3f |\n", c, name[k], t[c, 1, k], t[c, 0, k],
+                    t[c, 1, k] - t[c, 0, k] } }' "$work/stages")
 EOF
     fi
     if [ -s "$work/instructions" ]; then
@@ -451,29 +569,16 @@ gain.
 
 | engine | workers | CPU ms per step (median) | wall ms per step (median) | CPU / wall |
 |---|---|---|---|---|
-$(awk '{ e = ""; n = ""; c = ""; w = ""
-        for (i = 1; i <= NF; i++) { split($i, kv, "=")
-            if (kv[1] == "engine") e = kv[2]; if (kv[1] == "workers") n = kv[2]
-            if (kv[1] == "median_ms") c = kv[2]; if (kv[1] == "wall_median_ms") w = kv[2] }
-        if (!(e in seen)) { seen[e] = 1; order[++engines] = e }
-        k = ++count[e, n]; cpu[e, n, k] = c; wall[e, n, k] = w }
-     function median(arr, e, n, k,   i, j, t, v) {
-        for (i = 1; i <= k; i++) v[i] = arr[e, n, i]
-        for (i = 2; i <= k; i++) for (j = i; j > 1 && v[j - 1] + 0 > v[j] + 0; j--) {
-            t = v[j]; v[j] = v[j - 1]; v[j - 1] = t }
-        return v[int((k + 1) / 2)] }
-     END { for (x = 1; x <= engines; x++) { e = order[x]
-            for (n = 1; n <= 2; n++) if (count[e, n] > 0) {
-                c = median(cpu, e, n, count[e, n]); w = median(wall, e, n, count[e, n])
-                printf "| %s | %d | %s | %s | %.2f |\n", e, n, c, w, c / w
-                two[e, n] = w } }
-        printf "\n"
+$(awk '{ printf "| %s | %d | %s | %s | %.2f |\n", $1, $2, $3, $4, $3 / $4
+        if (!($1 in seen)) { seen[$1] = 1; order[++engines] = $1 }
+        wall[$1, $2] = $4 }
+     END { printf "\n"
         for (x = 1; x <= engines; x++) { e = order[x]
-            if (two[e, 1] > 0 && two[e, 2] > 0)
-                printf "%s: two workers over one, wall time %.2f.\n", e, two[e, 2] / two[e, 1] }
-        if (engines > 1 && two[order[2], 2] > 0)
+            if (wall[e, 1] > 0 && wall[e, 2] > 0)
+                printf "%s: two workers over one, wall time %.2f.\n", e, wall[e, 2] / wall[e, 1] }
+        if (engines > 1 && wall[order[2], 2] > 0)
             printf "Ours over %s, both with two workers, wall time: %.2f.\n", order[2],
-                two[order[1], 2] / two[order[2], 2] }' "$work/workers")
+                wall[order[1], 2] / wall[order[2], 2] }' "$work/workers-medians")
 EOF
     if [ -s "$work/scale" ]; then
         cat <<EOF
@@ -483,23 +588,15 @@ EOF
 Mean ms per step over the 600 steps, one pinned run per size; the exponent
 is the least-squares slope of log(ms per step) on log(N) over the sizes.
 
-$(awk '{ e = ""; n = 0; m = 0
-        for (i = 1; i <= NF; i++) { split($i, kv, "=")
-            if (kv[1] == "engine") e = kv[2]; if (kv[1] == "size") n = kv[2]
-            if (kv[1] == "mean_ms") m = kv[2] }
-        if (!(e in seen)) { seen[e] = 1; engines[++ne] = e }
-        if (!(n in have)) { have[n] = 1; sizes[++ns] = n }
-        ms[e, n] = m }
+$(awk '{ e = $1; engines[++ne] = e; fit[e] = $NF
+        for (j = 2; j < NF; j++) { split($j, kv, "="); ms[e, kv[1]] = kv[2]
+            if (!(kv[1] in have)) { have[kv[1]] = 1; sizes[++ns] = kv[1] } } }
      END {
         printf "| engine |"; for (j = 1; j <= ns; j++) printf " %s |", sizes[j]; print " exponent |"
         printf "|---|"; for (j = 1; j <= ns; j++) printf "---|"; print "---|"
-        for (i = 1; i <= ne; i++) { e = engines[i]; sx = sy = sxx = sxy = k = 0
-            printf "| %s |", e
-            for (j = 1; j <= ns; j++) { n = sizes[j]
-                if ((e, n) in ms) { printf " %s |", ms[e, n]
-                    x = log(n); y = log(ms[e, n]); sx += x; sy += y; sxx += x * x; sxy += x * y; k++ }
-                else printf " - |" }
-            printf " N^%.2f |\n", (k * sxy - sx * sy) / (k * sxx - sx * sx) } }' "$work/scale")
+        for (i = 1; i <= ne; i++) { e = engines[i]; printf "| %s |", e
+            for (j = 1; j <= ns; j++) printf " %s |", ((e, sizes[j]) in ms) ? ms[e, sizes[j]] : "-"
+            printf " N^%s |\n", fit[e] } }' "$work/scale-fit")
 EOF
     fi
     cat <<EOF
