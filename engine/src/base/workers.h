@@ -53,7 +53,8 @@ void workers_for(workers_t *workers, size_t count, workers_fn_t fn, void *contex
  * [i, i + 1)), in parallel: for a few heavy items, such as the
  * broadphase's parts, which workers_for's least chunk would run on the
  * calling thread alone. count <= WORKERS_MAX_CHUNKS (asserted); with
- * workers NULL, one after the other on the calling thread. */
+ * workers NULL, one after the other on the calling thread. Not reentrant,
+ * as workers_for. */
 void workers_each(workers_t *workers, size_t count, workers_fn_t fn, void *context);
 
 #endif // #ifndef WORKERS_H
